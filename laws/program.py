@@ -1,0 +1,193 @@
+"""Cycle programs: the sequence of phases over one cam turn.
+
+Conventions
+-----------
+Cam angle ``phi`` in radians, measured in the cam's sense of rotation from the
+start of the first phase, periodic with period ``2 pi``. The displacement ``s``
+is the follower's swing angle (radians, rocker) or stroke (length, translating)
+measured from the near-dwell position; derivatives are taken with respect to
+``phi`` (analogues), time derivatives follow from the cam speed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from laws.base import Law
+from laws.errors import InputError
+
+__all__ = ["Phase", "Program", "Motion", "TWO_PI"]
+
+TWO_PI = 2.0 * np.pi
+_KINDS = ("rise", "dwell", "return")
+#: Tolerance on the sum of phase angles (radians).
+ANGLE_TOL = 1e-9
+
+
+@dataclass(frozen=True)
+class Phase:
+    """One phase of a cycle.
+
+    Parameters
+    ----------
+    kind : {"rise", "dwell", "return"}
+    angle : float
+        Cam angle the phase lasts, radians, > 0.
+    law : Law or None
+        Normalized law; required for rise and return, ignored for dwell.
+    height : float or None
+        Displacement change of a rise or return (same unit as the lift);
+        ``None`` means the whole lift.
+    """
+
+    kind: str
+    angle: float
+    law: Law | None = None
+    height: float | None = None
+
+
+@dataclass(frozen=True)
+class Motion:
+    """Displacement and its derivatives with respect to the cam angle.
+
+    ``s`` in the lift's unit, ``ds`` per radian, ``d2s`` per radian squared,
+    ``d3s`` per radian cubed.
+    """
+
+    s: np.ndarray
+    ds: np.ndarray
+    d2s: np.ndarray
+    d3s: np.ndarray
+
+    def time_derivatives(self, rpm: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Velocity, acceleration and jerk in time for a cam at ``rpm`` (per s, s^2, s^3)."""
+        if not np.isfinite(rpm) or rpm <= 0:
+            raise InputError("cam.rpm", f"must be a positive number, got {rpm!r}")
+        w = rpm * TWO_PI / 60.0
+        return self.ds * w, self.d2s * w**2, self.d3s * w**3
+
+
+@dataclass(frozen=True)
+class Program:
+    """A cycle program over one cam turn.
+
+    Parameters
+    ----------
+    phases : tuple of Phase
+        In order; their angles sum to ``2 pi``.
+    lift : float
+        Total swing (radians) or stroke (length), > 0.
+
+    Raises
+    ------
+    InputError
+        A phase angle <= 0, angles not summing to 2 pi, a missing law, or
+        heights that leave the follower outside [0, lift] or not back at 0.
+    """
+
+    phases: tuple[Phase, ...]
+    lift: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "phases", tuple(self.phases))
+        if not (np.isfinite(self.lift) and self.lift > 0):
+            raise InputError("lift", f"must be a positive number, got {self.lift!r}")
+        if not self.phases:
+            raise InputError("motion", "needs at least one phase")
+        for i, p in enumerate(self.phases):
+            f = f"motion[{i}]"
+            if p.kind not in _KINDS:
+                raise InputError(f"{f}.phase", f"{p.kind!r} is not valid, must be one of rise, dwell, return")
+            if not (np.isfinite(p.angle) and p.angle > 0):
+                raise InputError(f"{f}.angle", f"must be > 0 degrees, got {np.degrees(p.angle)!r}")
+            if p.kind != "dwell" and p.law is None:
+                raise InputError(f"{f}.law", f"a {p.kind} needs a law")
+            if p.height is not None and not (np.isfinite(p.height) and 0 < p.height <= self.lift * (1 + 1e-12)):
+                raise InputError(f"{f}.height", f"must be in (0, lift={self.lift}], got {p.height!r}")
+        total = sum(p.angle for p in self.phases)
+        if abs(total - TWO_PI) > ANGLE_TOL:
+            raise InputError("motion", f"phase angles sum to {np.degrees(total):.6g} degrees, must sum to 360")
+        level = 0.0
+        top = 0.0
+        tol = 1e-9 * self.lift
+        for i, p in enumerate(self.phases):
+            if p.kind == "rise":
+                level += self.height_of(i)
+            elif p.kind == "return":
+                level -= self.height_of(i)
+            if level > self.lift + tol or level < -tol:
+                raise InputError(f"motion[{i}]", f"takes the follower to {level:.6g}, outside [0, lift={self.lift:.6g}]")
+            top = max(top, level)
+        if abs(level) > tol:
+            raise InputError("motion", f"the follower ends the cycle at {level:.6g}, must return to 0")
+        if abs(top - self.lift) > tol:
+            raise InputError("motion", f"the follower reaches only {top:.6g}, the lift is {self.lift:.6g}")
+
+    # -- structure ---------------------------------------------------------
+    def height_of(self, i: int) -> float:
+        """Displacement change of phase ``i`` (0 for a dwell)."""
+        p = self.phases[i]
+        if p.kind == "dwell":
+            return 0.0
+        return self.lift if p.height is None else float(p.height)
+
+    @property
+    def starts(self) -> np.ndarray:
+        """Cam angle at the start of each phase (radians), plus ``2 pi`` at the end."""
+        return np.concatenate([[0.0], np.cumsum([p.angle for p in self.phases])])
+
+    @property
+    def levels(self) -> np.ndarray:
+        """Displacement at the start of each phase."""
+        lv = [0.0]
+        for i, p in enumerate(self.phases[:-1]):
+            sign = {"rise": 1.0, "return": -1.0, "dwell": 0.0}[p.kind]
+            lv.append(lv[-1] + sign * self.height_of(i))
+        return np.asarray(lv)
+
+    def phase_of(self, phi: np.ndarray | float) -> np.ndarray:
+        """Index of the phase containing each cam angle (half-open ``[start, end)``)."""
+        x = np.mod(np.asarray(phi, dtype=float), TWO_PI)
+        idx = np.searchsorted(self.starts, x, side="right") - 1
+        return np.clip(idx, 0, len(self.phases) - 1)
+
+    # -- evaluation ----------------------------------------------------------
+    def evaluate_phase(self, i: int, u: np.ndarray | float) -> Motion:
+        """Motion inside phase ``i`` at normalized positions ``u`` in [0, 1].
+
+        One-sided at the phase ends: the values are the limits from inside the
+        phase, which is what the constraint of a phase needs at its ends.
+        """
+        p = self.phases[i]
+        u = np.asarray(u, dtype=float)
+        base = self.levels[i]
+        if p.kind == "dwell":
+            z = np.zeros_like(u)
+            return Motion(base + z, z, z.copy(), z.copy())
+        h = self.height_of(i)
+        S = p.law.evaluate(u)
+        b = p.angle
+        sign = 1.0 if p.kind == "rise" else -1.0
+        s = base + sign * h * S[0]
+        return Motion(s, sign * h * S[1] / b, sign * h * S[2] / b**2, sign * h * S[3] / b**3)
+
+    def evaluate(self, phi: np.ndarray | float) -> Motion:
+        """Motion at cam angles ``phi`` (radians, any real values, periodic).
+
+        At a joint between phases the later phase's values are returned.
+        """
+        phi = np.asarray(phi, dtype=float)
+        x = np.mod(phi, TWO_PI)
+        idx = self.phase_of(x)
+        starts = self.starts
+        out = [np.zeros_like(x) for _ in range(4)]
+        for i, p in enumerate(self.phases):
+            m = idx == i
+            if not np.any(m):
+                continue
+            mo = self.evaluate_phase(i, (x[m] - starts[i]) / p.angle)
+            for k, arr in enumerate((mo.s, mo.ds, mo.d2s, mo.d3s)):
+                out[k][m] = arr
+        return Motion(*out)

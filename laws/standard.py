@@ -1,0 +1,95 @@
+"""The classical closed-form rise laws.
+
+Formulas: Norton, *Cam Design and Manufacturing Handbook*, ch. 3; every law
+is normalized, ``S(0) = 0``, ``S(1) = 1``, ``u`` in [0, 1].
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from laws.base import Law
+
+__all__ = ["Linear", "Parabolic", "Harmonic", "Cycloidal", "Poly345", "Poly4567"]
+
+PI = np.pi
+
+
+@dataclass(frozen=True)
+class Linear(Law):
+    """Constant velocity: ``S = u`` (hard impacts at both ends)."""
+
+    name: str = "linear"
+
+    def _evaluate(self, u):
+        z = np.zeros_like(u)
+        return u.copy(), np.ones_like(u), z, z.copy()
+
+
+@dataclass(frozen=True)
+class Parabolic(Law):
+    """Constant acceleration (parabolic): ``S = 2u^2`` then ``1 - 2(1-u)^2``."""
+
+    name: str = "parabolic"
+
+    def _evaluate(self, u):
+        first = u < 0.5
+        w = 1.0 - u
+        s = np.where(first, 2 * u * u, 1 - 2 * w * w)
+        s1 = np.where(first, 4 * u, 4 * w)
+        s2 = np.where(first, 4.0, -4.0)
+        return s, s1, s2, np.zeros_like(u)
+
+
+@dataclass(frozen=True)
+class Harmonic(Law):
+    """Simple harmonic: ``S = (1 - cos(pi u)) / 2``."""
+
+    name: str = "harmonic"
+
+    def _evaluate(self, u):
+        c, s = np.cos(PI * u), np.sin(PI * u)
+        return (1 - c) / 2, PI / 2 * s, PI**2 / 2 * c, -(PI**3) / 2 * s
+
+
+@dataclass(frozen=True)
+class Cycloidal(Law):
+    """Cycloidal: ``S = u - sin(2 pi u) / (2 pi)``."""
+
+    name: str = "cycloidal"
+
+    def _evaluate(self, u):
+        c, s = np.cos(2 * PI * u), np.sin(2 * PI * u)
+        return u - s / (2 * PI), 1 - c, 2 * PI * s, 4 * PI**2 * c
+
+
+def _poly(coeffs: tuple[float, ...], u: np.ndarray):
+    """Evaluate ``sum c_k u^k`` and its first three derivatives."""
+    p = np.polynomial.polynomial
+    c = np.asarray(coeffs, dtype=float)
+    d1 = p.polyder(c)
+    d2 = p.polyder(d1)
+    d3 = p.polyder(d2)
+    return p.polyval(u, c), p.polyval(u, d1), p.polyval(u, d2), p.polyval(u, d3)
+
+
+@dataclass(frozen=True)
+class Poly345(Law):
+    """3-4-5 polynomial: ``S = 10u^3 - 15u^4 + 6u^5``."""
+
+    name: str = "poly345"
+
+    def _evaluate(self, u):
+        return _poly((0, 0, 0, 10, -15, 6), u)
+
+
+@dataclass(frozen=True)
+class Poly4567(Law):
+    """4-5-6-7 polynomial: ``S = 35u^4 - 84u^5 + 70u^6 - 20u^7``."""
+
+    name: str = "poly4567"
+
+    def _evaluate(self, u):
+        return _poly((0, 0, 0, 0, 35, -84, 70, -20), u)

@@ -1,0 +1,3 @@
+"""Solvers for the allowable-centre zone and the minimum-size cam."""
+
+__all__: list[str] = []
