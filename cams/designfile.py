@@ -1,0 +1,184 @@
+"""Design files (TOML): lengths in the file's unit (mm by default), angles in degrees.
+
+Schema (see ``examples/``)::
+
+    name = "feed cam"
+    [follower]   kind, arm, swing (rocker) | stroke, offset (translating),
+                 roller_radius, rise_direction ("cw" | "ccw", rocker)
+    [cam]        rotation ("cw" | "ccw"), rpm (optional)
+    [[motion]]   phase ("rise" | "dwell" | "return"), law, angle (degrees),
+                 height (optional, part of the lift); one dwell may omit angle
+    [limits]     pressure_angle, return_pressure_angle, closure ("force" | "form"),
+                 safety_factor, centre_distance, min_base_radius
+    [solve]      method ("exact" | "convex" | "exhaustive"), samples, objective ("R0" | "L")
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from cams.design import CamDesign, Limits
+from cams.follower import Rocker, Translating, sense_of
+from laws.errors import InputError, check_option
+from laws.program import Phase, Program
+from laws.registry import get_law
+
+__all__ = ["load_design", "design_from_dict"]
+
+_KEYS = {
+    "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile"},
+    "follower": {"kind", "arm", "swing", "stroke", "offset", "roller_radius", "rise_direction"},
+    "cam": {"rotation", "rpm", "bore_radius"},
+    "motion": {"phase", "law", "angle", "height"},
+    "limits": {"pressure_angle", "return_pressure_angle", "closure", "safety_factor",
+               "centre_distance", "min_base_radius"},
+    "solve": {"method", "samples", "objective"},
+}
+
+
+def _check_keys(table: dict, where: str, field: str) -> None:
+    unknown = set(table) - _KEYS[where]
+    if unknown:
+        allowed = ", ".join(sorted(_KEYS[where]))
+        raise InputError(field or "design", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {allowed}")
+
+
+def _num(table: dict, key: str, field: str, *, required: bool = True, default=None) -> float | None:
+    if key not in table:
+        if required:
+            raise InputError(field, "is required")
+        return default
+    v = table[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
+        raise InputError(field, f"must be a number, got {v!r}")
+    return float(v)
+
+
+def _table(d: dict, key: str) -> dict:
+    t = d.get(key, {})
+    if not isinstance(t, dict):
+        raise InputError(key, "must be a table")
+    return t
+
+
+def design_from_dict(d: dict) -> CamDesign:
+    """Build a :class:`CamDesign` from a parsed design file (degrees, lengths)."""
+    _check_keys(d, "", "")
+    fo = _table(d, "follower")
+    _check_keys(fo, "follower", "follower")
+    kind = check_option("follower.kind", fo.get("kind", "rocker"), ("rocker", "translating"))
+    roller = _num(fo, "roller_radius", "follower.roller_radius", required=False, default=0.0)
+    if kind == "rocker":
+        for k in ("stroke", "offset"):
+            if k in fo:
+                raise InputError(f"follower.{k}", "applies to translating followers; a rocker takes arm and swing")
+        arm = _num(fo, "arm", "follower.arm")
+        swing = _num(fo, "swing", "follower.swing")
+        if not 0 < swing < 180:
+            raise InputError("follower.swing", f"must be in (0, 180) degrees, got {swing!r}")
+        follower = Rocker(arm, roller, sense=sense_of("follower.rise_direction", fo.get("rise_direction", "cw")))
+        lift = np.radians(swing)
+    else:
+        for k in ("arm", "swing", "rise_direction"):
+            if k in fo:
+                raise InputError(f"follower.{k}", "applies to rocker followers; a translating follower takes stroke and offset")
+        stroke = _num(fo, "stroke", "follower.stroke")
+        if stroke <= 0:
+            raise InputError("follower.stroke", f"must be > 0, got {stroke!r}")
+        follower = Translating(roller, offset=_num(fo, "offset", "follower.offset", required=False), stroke_scale=stroke)
+        lift = stroke
+
+    cam = _table(d, "cam")
+    _check_keys(cam, "cam", "cam")
+    cam_sense = sense_of("cam.rotation", cam.get("rotation", "ccw"))
+    rpm = _num(cam, "rpm", "cam.rpm", required=False)
+
+    motion = d.get("motion")
+    if not isinstance(motion, list) or not motion:
+        raise InputError("motion", "needs a list of phases ([[motion]] tables)")
+    specs = []
+    missing = []
+    for i, m in enumerate(motion):
+        f = f"motion[{i}]"
+        if not isinstance(m, dict):
+            raise InputError(f, "must be a table")
+        _check_keys(m, "motion", f)
+        ph = check_option(f"{f}.phase", m.get("phase"), ("rise", "dwell", "return"))
+        ang = _num(m, "angle", f"{f}.angle", required=False)
+        if ang is None:
+            if ph != "dwell":
+                raise InputError(f"{f}.angle", "is required (only one dwell may omit it)")
+            missing.append(i)
+        elif ang <= 0:
+            raise InputError(f"{f}.angle", f"must be > 0 degrees, got {ang!r}")
+        law = None
+        if ph != "dwell":
+            if "law" not in m:
+                raise InputError(f"{f}.law", f"a {ph} needs a law")
+            law = get_law(m["law"], f"{f}.law")
+        elif "law" in m:
+            raise InputError(f"{f}.law", "a dwell takes no law")
+        h = _num(m, "height", f"{f}.height", required=False)
+        if h is not None and kind == "rocker":
+            h = np.radians(h)
+        specs.append([ph, ang, law, h])
+    if len(missing) > 1:
+        raise InputError("motion", "only one dwell may omit its angle")
+    total = sum(s[1] for s in specs if s[1] is not None)
+    if missing:
+        rest = 360.0 - total
+        if rest <= 1e-9:
+            raise InputError(f"motion[{missing[0]}].angle", f"the other phases take {total:g} degrees, nothing is left")
+        specs[missing[0]][1] = rest
+    elif abs(total - 360.0) > 1e-6:
+        raise InputError("motion", f"phase angles sum to {total:g} degrees, must sum to 360")
+    # exact 2 pi: scale away rounding of the degree inputs
+    angles = np.radians([s[1] for s in specs])
+    angles *= 2 * np.pi / angles.sum()
+    program = Program(tuple(Phase(s[0], float(a), s[2], s[3]) for s, a in zip(specs, angles)), lift)
+
+    li = _table(d, "limits")
+    _check_keys(li, "limits", "limits")
+    pa = _num(li, "pressure_angle", "limits.pressure_angle")
+    rpa = _num(li, "return_pressure_angle", "limits.return_pressure_angle", required=False)
+    for name, v in (("pressure_angle", pa), ("return_pressure_angle", rpa)):
+        if v is not None and not 0 < v < 90:
+            raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {v!r}")
+    limits = Limits(
+        pressure_angle=np.radians(pa),
+        return_pressure_angle=None if rpa is None else np.radians(rpa),
+        closure=li.get("closure", "force"),
+        safety_factor=_num(li, "safety_factor", "limits.safety_factor", required=False, default=1.0),
+        centre_distance=_num(li, "centre_distance", "limits.centre_distance", required=False),
+        min_base_radius=_num(li, "min_base_radius", "limits.min_base_radius", required=False),
+    )
+    so = _table(d, "solve")
+    _check_keys(so, "solve", "solve")
+    samples = so.get("samples", 360)
+    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 2:
+        raise InputError("solve.samples", f"must be an integer >= 2, got {samples!r}")
+    name = d.get("name", "cam")
+    if not isinstance(name, str):
+        raise InputError("name", "must be a string")
+    return CamDesign(
+        follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=name,
+        method=so.get("method", "exact"), samples=samples,
+        extra={"objective": check_option("solve.objective", so.get("objective", "R0"), ("R0", "L")), "raw": d},
+    )
+
+
+def load_design(path: str | Path) -> CamDesign:
+    """Read a design file; raise :class:`InputError` for unreadable or invalid files."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as e:
+        raise InputError("FILE", f"cannot read {str(p)!r}: {e.strerror or e}") from None
+    try:
+        d = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise InputError("FILE", f"{p}: not valid TOML: {e}") from None
+    return design_from_dict(d)

@@ -1,0 +1,150 @@
+"""Followers and their geometry in the fixed frame.
+
+Frames and signs
+----------------
+* Rocker: origin at the rocker pivot O1, X along the rocker at the near dwell,
+  Y to make a right-handed (counter-clockwise positive) frame. The roller centre
+  at swing ``psi`` (radians, >= 0 from the near dwell) is
+  ``A = arm * (cos(sense*psi), sin(sense*psi))`` with ``sense = +1`` when the
+  rocker turns counter-clockwise during the rise, ``-1`` clockwise.
+* Translating: origin at the roller centre at the near dwell, Y along the
+  follower's rise, X = Y turned clockwise by 90 degrees. ``A = (0, s)``.
+
+Every follower exposes the roller-centre position ``A(s)`` and its derivative
+``dA/ds``; everything else (velocities, the instant point D, the pressure
+angle) is derived from these two in one place each.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from laws.errors import InputError
+
+__all__ = ["Rocker", "Translating", "Follower", "sense_of"]
+
+
+def sense_of(field: str, word: str) -> int:
+    """Map ``"ccw"`` to +1 and ``"cw"`` to -1, else raise :class:`InputError`."""
+    if word == "ccw":
+        return 1
+    if word == "cw":
+        return -1
+    raise InputError(field, f"{word!r} is not a valid option, must be one of 'cw', 'ccw'")
+
+
+def _positive(field: str, value: float, *, zero_ok: bool = False) -> float:
+    ok = np.isfinite(value) and (value >= 0 if zero_ok else value > 0)
+    if not ok:
+        raise InputError(field, f"must be {'>= 0' if zero_ok else '> 0'}, got {value!r}")
+    return float(value)
+
+
+@dataclass(frozen=True)
+class Rocker:
+    """Oscillating (rocker) follower with a roller (or knife edge).
+
+    Parameters
+    ----------
+    arm : float
+        Pivot to roller centre, length unit of the design (mm by default).
+    roller_radius : float
+        Roller radius, same unit; 0 for a knife edge.
+    sense : {+1, -1}
+        Rocker's sense of rotation during the rise: +1 counter-clockwise.
+    """
+
+    arm: float
+    roller_radius: float = 0.0
+    sense: int = -1
+
+    kind = "rocker"
+
+    def __post_init__(self):
+        _positive("follower.arm", self.arm)
+        _positive("follower.roller_radius", self.roller_radius, zero_ok=True)
+        if self.sense not in (1, -1):
+            raise InputError("follower.rise_direction", "must be 'cw' or 'ccw'")
+
+    @property
+    def scale(self) -> float:
+        """Characteristic length of the design (the arm)."""
+        return self.arm
+
+    @property
+    def pivot(self) -> np.ndarray:
+        """Rocker pivot O1, the reference point of the centre distance L."""
+        return np.zeros(2)
+
+    def position(self, s: np.ndarray) -> np.ndarray:
+        """Roller centre A at swing ``s`` (radians); shape ``s.shape + (2,)``."""
+        th = self.sense * np.asarray(s, dtype=float)
+        return self.arm * np.stack([np.cos(th), np.sin(th)], axis=-1)
+
+    def tangent(self, s: np.ndarray) -> np.ndarray:
+        """``dA/ds``: roller-centre displacement per radian of swing."""
+        th = self.sense * np.asarray(s, dtype=float)
+        return self.sense * self.arm * np.stack([-np.sin(th), np.cos(th)], axis=-1)
+
+    def lever(self, s: np.ndarray) -> np.ndarray:
+        """Unit vector from the pivot to the roller centre (the line D lies on)."""
+        th = self.sense * np.asarray(s, dtype=float)
+        return np.stack([np.cos(th), np.sin(th)], axis=-1)
+
+
+@dataclass(frozen=True)
+class Translating:
+    """Translating follower with a roller (or knife edge).
+
+    Parameters
+    ----------
+    roller_radius : float
+        Roller radius, length unit of the design; 0 for a knife edge.
+    offset : float or None
+        Fixed offset e of the follower axis from the cam centre, positive when
+        the axis lies on the +X side of the cam centre; ``None`` lets the solver
+        choose it.
+    stroke_scale : float
+        Characteristic length (the stroke) for relative tolerances.
+    """
+
+    roller_radius: float = 0.0
+    offset: float | None = None
+    stroke_scale: float = 1.0
+
+    kind = "translating"
+
+    def __post_init__(self):
+        _positive("follower.roller_radius", self.roller_radius, zero_ok=True)
+        if self.offset is not None and not np.isfinite(self.offset):
+            raise InputError("follower.offset", f"must be a finite number, got {self.offset!r}")
+
+    @property
+    def scale(self) -> float:
+        """Characteristic length of the design (the stroke)."""
+        return self.stroke_scale
+
+    @property
+    def pivot(self) -> np.ndarray:
+        """Reference point (the roller centre at the near dwell)."""
+        return np.zeros(2)
+
+    def position(self, s: np.ndarray) -> np.ndarray:
+        """Roller centre A at stroke ``s``; shape ``s.shape + (2,)``."""
+        s = np.asarray(s, dtype=float)
+        return np.stack([np.zeros_like(s), s], axis=-1)
+
+    def tangent(self, s: np.ndarray) -> np.ndarray:
+        """``dA/ds``: the unit vector along the follower's rise."""
+        s = np.asarray(s, dtype=float)
+        return np.stack([np.zeros_like(s), np.ones_like(s)], axis=-1)
+
+    def lever(self, s: np.ndarray) -> np.ndarray:
+        """Unit vector along which the instant point D moves off A (+X)."""
+        s = np.asarray(s, dtype=float)
+        return np.stack([np.ones_like(s), np.zeros_like(s)], axis=-1)
+
+
+Follower = Rocker | Translating

@@ -1,0 +1,114 @@
+"""Admissible centres on a circle: a fixed centre distance L (seed 3.23-3.25) or a fixed R0.
+
+The admissible part of a circle is found by scanning the circle against a
+sampled zone and refining each end of every admissible arc by root finding
+(``brentq``) on the largest violation over the continuous zone. Among the
+admissible points the one that minimizes a given objective is kept (for a
+fixed L: the least R0, i.e. the seed's "larger x").
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+from scipy.optimize import brentq
+
+from cams.design import CamDesign
+from optimize.zone import max_violation, sample_wedges
+
+__all__ = ["admissible_arcs", "best_on_circle", "violation_function"]
+
+
+def violation_function(design: CamDesign, samples: int | None) -> Callable[[np.ndarray], float]:
+    """Largest signed distance outside the zone: continuous (``samples=None``) or sampled."""
+    if samples is None:
+        return lambda O: max_violation(design, O)[0].value
+    N, c = sample_wedges(design, samples).lines()
+    return lambda O: float(np.max(N @ O - c))
+
+
+def admissible_arcs(
+    design: CamDesign, centre: np.ndarray, radius: float, *, samples: int | None = None, scan: int = 1440
+) -> list[tuple[float, float]]:
+    """Angular intervals ``(a, b)`` (radians, a < b) of the circle inside the zone.
+
+    The circle is ``centre + radius (cos t, sin t)``; an interval covering the
+    whole circle is ``(0, 2 pi)``. Ends are refined on the continuous zone to
+    ``~1e-13`` radians, on the continuous zone (``samples=None``) or on the
+    zone sampled with ``samples`` steps per phase.
+    """
+    centre = np.asarray(centre, float)
+    t = np.linspace(0.0, 2 * np.pi, scan, endpoint=False)
+    pts = centre + radius * np.stack([np.cos(t), np.sin(t)], axis=1)
+    N, c = sample_wedges(design, samples or 256).lines()
+    g = np.max(pts @ N.T - c, axis=1)
+    G = violation_function(design, samples)
+    at = lambda a: G(centre + radius * np.array([np.cos(a), np.sin(a)]))  # noqa: E731
+    inside = g <= 0
+    if not np.any(inside):
+        return []
+    if np.all(inside):
+        return [(0.0, 2 * np.pi)]
+    arcs = []
+    k0 = int(np.argmin(inside))  # an outside point to start from
+    n = len(t)
+    k = k0
+    for _ in range(n):
+        k1 = (k + 1) % n
+        if not inside[k] and inside[k1]:
+            a0, a1 = t[k], t[k] + (t[k1] - t[k]) % (2 * np.pi)
+            start = _refine(at, a0, a1)
+            j = k1
+            while inside[(j + 1) % n]:
+                j = (j + 1) % n
+            j1 = (j + 1) % n
+            b0 = t[j] if t[j] >= start else t[j] + 2 * np.pi
+            b1 = b0 + (t[j1] - t[j]) % (2 * np.pi)
+            end = _refine(at, b0, b1)
+            arcs.append((start, end if end > start else end + 2 * np.pi))
+        k = k1
+    return arcs
+
+
+def _refine(at, a, b) -> float:
+    """Root of the continuous violation between a and b (sign change expected)."""
+    fa, fb = at(a), at(b)
+    if fa * fb > 0:
+        # the sampled scan and the continuum disagree at this resolution: keep the inner end
+        return b if fb <= 0 else a
+    return brentq(at, a, b, xtol=1e-14, rtol=4 * np.finfo(float).eps)
+
+
+def best_on_circle(
+    design: CamDesign,
+    centre: np.ndarray,
+    radius: float,
+    objective: Callable[[np.ndarray], float],
+    *,
+    samples: int | None = None,
+) -> np.ndarray | None:
+    """Admissible point of the circle that minimizes ``objective``; None if none.
+
+    The objective is evaluated at the arcs' ends and on a fine grid inside each
+    arc, then refined by bounded scalar minimization.
+    """
+    from scipy.optimize import minimize_scalar
+
+    centre = np.asarray(centre, float)
+    pt = lambda a: centre + radius * np.array([np.cos(a), np.sin(a)])  # noqa: E731
+    best, best_val = None, np.inf
+    for a, b in admissible_arcs(design, centre, radius, samples=samples):
+        grid = np.linspace(a, b, 65)
+        vals = [objective(pt(x)) for x in grid]
+        k = int(np.argmin(vals))
+        cands = [(vals[0], a), (vals[-1], b), (vals[k], grid[k])]
+        lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
+        if hi > lo:
+            r = minimize_scalar(lambda x: objective(pt(x)), bounds=(lo, hi), method="bounded",
+                                options={"xatol": 1e-13})
+            cands.append((float(r.fun), float(r.x)))
+        v, x = min(cands)
+        if v < best_val:
+            best, best_val = pt(x), v
+    return best

@@ -1,0 +1,96 @@
+"""The sampled zone as an intersection of half-planes, solved with cvxpy.
+
+Minimum R0 is the nearest admissible point to the roller's start point A0,
+minimum L the nearest to the rocker pivot, and a weighted mix minimizes
+``w_R0 |O - A0| + w_L |O - O1|``; all are second-order-cone programs. The
+solver's answer is polished by solving exactly on the constraints it found
+active (:func:`optimize.planar.nearest_point`), so that the result agrees with
+the exhaustive method to round-off where the apex is the nearest point.
+cvxpy is imported here only.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from cams.design import CamDesign
+from laws.errors import InfeasibleError
+from optimize.planar import feasible_mask, nearest_point
+from optimize.result import Binding, CentreSolution
+from optimize.zone import sample_wedges
+
+__all__ = ["nearest_convex", "weighted_convex"]
+
+
+def _solve(design, objective, samples, extra):
+    import cvxpy as cp
+
+    W = sample_wedges(design, samples)
+    N, c = W.lines()
+    s = design.scale
+    x = cp.Variable(2)
+    cons = [N @ x <= c / s]
+    if extra is not None and len(extra[0]):
+        cons.append(np.asarray(extra[0]) @ x <= np.asarray(extra[1]) / s)
+    prob = cp.Problem(cp.Minimize(objective(x, s)), cons)
+    try:
+        prob.solve()
+    except cp.error.SolverError as e:  # pragma: no cover - solver failure is reported
+        raise InfeasibleError("solve.method", f"the convex solver failed: {e}") from e
+    if prob.status not in ("optimal", "optimal_inaccurate") or x.value is None:
+        raise InfeasibleError("limits.pressure_angle", f"no cam centre satisfies the limits (solver status: {prob.status})")
+    return W, N, c, np.asarray(x.value) * s
+
+
+def _binding(W, N, O, c, atol):
+    h = N @ O - c
+    act = np.nonzero(h >= -atol)[0]
+    return tuple(Binding(int(W.phase[k // 2]), float(W.phi[k // 2]), int(k % 2)) for k in act), act
+
+
+def nearest_convex(
+    design: CamDesign,
+    target: np.ndarray,
+    *,
+    samples: int,
+    extra: tuple[np.ndarray, np.ndarray] | None = None,
+    tol: float = 1e-9,
+) -> CentreSolution:
+    """Admissible centre nearest to ``target`` over the sampled zone (cvxpy).
+
+    Parameters as :func:`optimize.exhaustive.nearest_exhaustive`.
+    """
+    import cvxpy as cp
+
+    T = np.asarray(target, dtype=float)
+    W, N, c, O = _solve(design, lambda x, s: cp.norm(x - T / s), samples, extra)
+    atol = tol * design.scale
+    # polish: exact nearest point on the (few) near-active constraints
+    near = np.nonzero(N @ O - c >= -1e-5 * design.scale)[0]
+    eN = np.zeros((0, 2)) if extra is None else np.asarray(extra[0], float)
+    ec = np.zeros(0) if extra is None else np.asarray(extra[1], float)
+    if 0 < len(near) <= 40:
+        res = nearest_point(T, np.vstack([N[near], eN]), np.concatenate([c[near], ec]), atol * 1e-3)
+        if res is not None and feasible_mask(res[0][None], np.vstack([N, eN]), np.concatenate([c, ec]), atol)[0]:
+            O = res[0]
+    binding, _ = _binding(W, N, O, c, 1e-7 * design.scale)
+    return CentreSolution(
+        centre=O, objective=float(np.linalg.norm(O - T)), method="convex", samples=samples,
+        binding=binding, error_bound=None, violation=float(np.max(N @ O - c)),
+    )
+
+
+def weighted_convex(
+    design: CamDesign, points: list[np.ndarray], weights: list[float], *, samples: int
+) -> CentreSolution:
+    """Minimize ``sum w_k |O - P_k|`` over the sampled zone (e.g. R0 and L together)."""
+    import cvxpy as cp
+
+    pts = [np.asarray(p, float) for p in points]
+    W, N, c, O = _solve(
+        design, lambda x, s: sum(w * cp.norm(x - p / s) for w, p in zip(weights, pts)), samples, None
+    )
+    binding, _ = _binding(W, N, O, c, 1e-6 * design.scale)
+    obj = float(sum(w * np.linalg.norm(O - p) for w, p in zip(weights, pts)))
+    return CentreSolution(centre=O, objective=obj, method="convex", samples=samples, binding=binding,
+                          violation=float(np.max(N @ O - c)))

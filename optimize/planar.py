@@ -1,0 +1,99 @@
+"""Exact planar primitives: nearest point of a polygon given by half-planes, clipping.
+
+All functions take half-planes as ``N (m, 2)`` unit normals and ``c (m,)``
+offsets meaning ``N @ x <= c``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["nearest_point", "line_crossings", "clip_polygon", "feasible_mask"]
+
+
+def feasible_mask(points: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> np.ndarray:
+    """True for the points (k, 2) that satisfy every half-plane within ``tol``."""
+    if len(N) == 0:
+        return np.ones(len(points), dtype=bool)
+    return np.all(points @ N.T <= c + tol, axis=1)
+
+
+def line_crossings(N1, c1, N2, c2) -> tuple[np.ndarray, np.ndarray]:
+    """Crossings of lines ``N1[i] x = c1[i]`` with ``N2[j] x = c2[j]``, all pairs.
+
+    Returns
+    -------
+    points : ndarray, shape (n1, n2, 2)
+    ok : ndarray of bool, shape (n1, n2)
+        False where the lines are parallel (no unique crossing).
+    """
+    a, b = N1[:, None, 0], N1[:, None, 1]
+    cc, d = N2[None, :, 0], N2[None, :, 1]
+    det = a * d - b * cc
+    ok = np.abs(det) > 1e-12
+    sdet = np.where(ok, det, 1.0)
+    x = (c1[:, None] * d - b * c2[None, :]) / sdet
+    y = (a * c2[None, :] - cc * c1[:, None]) / sdet
+    return np.stack([x, y], axis=-1), ok
+
+
+def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """Exact nearest point to ``P`` of ``{x : N x <= c}`` (planar, small m).
+
+    The nearest point is ``P`` itself, the foot of ``P`` on one line, or the
+    crossing of two lines; the feasible candidate closest to ``P`` is it.
+    Costs O(m^3) and is meant for the few lines of an active-set method.
+
+    Returns
+    -------
+    (x, active) or None
+        The point and the indices of the half-planes active there (within
+        ``tol``); ``None`` when the half-planes have no common point.
+    """
+    P = np.asarray(P, dtype=float)
+    cands = [P[None, :]]
+    if len(N):
+        foot = P[None, :] - (N @ P - c)[:, None] * N
+        cands.append(foot)
+        pts, ok = line_crossings(N, c, N, c)
+        iu, ju = np.triu_indices(len(N), k=1)
+        good = ok[iu, ju]
+        cands.append(pts[iu[good], ju[good]])
+    X = np.concatenate(cands)
+    feas = feasible_mask(X, N, c, tol)
+    if not np.any(feas):
+        return None
+    X = X[feas]
+    k = np.argmin(np.sum((X - P) ** 2, axis=1))
+    x = X[k]
+    active = np.nonzero(np.abs(N @ x - c) <= tol)[0] if len(N) else np.zeros(0, int)
+    return x, active
+
+
+def clip_polygon(N: np.ndarray, c: np.ndarray, box: tuple[float, float, float, float]) -> np.ndarray:
+    """Convex polygon ``{x : N x <= c}`` clipped to ``box = (xmin, ymin, xmax, ymax)``.
+
+    Sutherland-Hodgman against each half-plane in turn. Returns the vertices
+    (k, 2) counter-clockwise, empty (0, 2) when the intersection is empty.
+    """
+    x0, y0, x1, y1 = box
+    poly = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]], dtype=float)
+    for n, cc in zip(N, c):
+        if len(poly) == 0:
+            break
+        s = poly @ n - cc
+        inside = s <= 0
+        if np.all(inside):
+            continue
+        out = []
+        m = len(poly)
+        for j in range(m):
+            p, q = poly[j], poly[(j + 1) % m]
+            sp, sq = s[j], s[(j + 1) % m]
+            if sp <= 0:
+                out.append(p)
+            if (sp <= 0) != (sq <= 0):
+                t = sp / (sp - sq)
+                out.append(p + t * (q - p))
+        poly = np.array(out) if out else np.zeros((0, 2))
+    return poly

@@ -1,0 +1,56 @@
+"""What the solvers return."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["Binding", "CentreSolution"]
+
+
+@dataclass(frozen=True)
+class Binding:
+    """A constraint active at the solution.
+
+    ``phase`` index in the program, ``phi`` cam angle (radians), ``side`` 0 for
+    the seed's t-t line, 1 for t1-t1.
+    """
+
+    phase: int
+    phi: float
+    side: int
+
+
+@dataclass(frozen=True)
+class CentreSolution:
+    """A cam centre found by one solver for one objective.
+
+    Attributes
+    ----------
+    centre : ndarray, shape (2,)
+        Cam centre in the follower's fixed frame (length unit).
+    objective : float
+        Value of the objective at ``centre`` (length).
+    method : str
+    samples : int or None
+        Steps per phase of the sampled methods; None for ``exact``.
+    binding : tuple of Binding
+    error_bound : float or None
+        Bound on |objective - true continuous optimum| (length), None where the
+        method cannot state one.
+    violation : float
+        Largest signed distance of ``centre`` outside the continuous zone
+        (length; <= 0 means inside).
+    iterations : int
+    """
+
+    centre: np.ndarray
+    objective: float
+    method: str
+    samples: int | None
+    binding: tuple[Binding, ...] = ()
+    error_bound: float | None = None
+    violation: float = 0.0
+    iterations: int = 0
+    notes: tuple[str, ...] = field(default_factory=tuple)

@@ -1,0 +1,266 @@
+"""One entry point for sizing a cam: the smallest admissible cam and its report.
+
+``solve(design)`` picks the case from the design:
+
+* no fixed L, no floor: the admissible centre nearest to the roller's start
+  point A0 (minimum R0) or to the pivot (``objective="L"``);
+* a fixed centre distance L (rocker, seed 3.23-3.25): the admissible point of
+  the circle of radius L about the pivot with the least R0; if the circle
+  misses the zone, :class:`InfeasibleError` gives the admissible range of L;
+* a constructive floor on R0 larger than the minimum: the centre on the circle
+  of radius R0_floor about A0 with the largest margin to the zone's edges;
+* a fixed offset (translating): the nearest point on the offset's line.
+
+Every result is verified by :func:`cams.pressure.check_pressure`, which
+recomputes the pressure angle over the whole cycle by kinematic inversion
+without the zone's formulas.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from cams.design import CamDesign, METHODS
+from cams.follower import Rocker, Translating
+from cams.pressure import PressureReport, check_pressure
+from laws.errors import InfeasibleError, InputError, check_option
+from optimize.result import Binding, CentreSolution
+
+__all__ = ["SolveResult", "solve", "nearest", "admissible_L_range"]
+
+OBJECTIVES = ("R0", "L")
+
+
+@dataclass(frozen=True)
+class SolveResult:
+    """A sized cam.
+
+    Attributes
+    ----------
+    centre : ndarray, shape (2,)
+        Cam centre in the follower's fixed frame (see :mod:`cams.follower`).
+    R0 : float
+        Base radius of the pitch curve: cam centre to the roller centre at the
+        near dwell (length).
+    L : float or None
+        Centre distance, cam centre to rocker pivot (rocker only).
+    offset : float or None
+        Offset of the follower axis from the cam centre, positive when the axis
+        lies on the +X side (translating only).
+    mode : str
+        ``"min_R0"``, ``"min_L"``, ``"fixed_L"``, ``"floor_R0"`` or
+        ``"fixed_offset"``.
+    pressure : PressureReport
+        The independent check of the pressure angle.
+    margin : float
+        Smallest distance of the centre from the zone's edges (length, > 0
+        inside; only meaningful for ``floor_R0`` and ``fixed_L``).
+    """
+
+    design: CamDesign
+    centre: np.ndarray
+    R0: float
+    L: float | None
+    offset: float | None
+    method: str
+    samples: int | None
+    mode: str
+    binding: tuple[Binding, ...]
+    error_bound: float | None
+    seconds: float
+    pressure: PressureReport
+    margin: float
+    notes: tuple[str, ...] = field(default_factory=tuple)
+
+    @property
+    def verified(self) -> bool:
+        """True when the independent check finds every limit respected."""
+        return self.pressure.ok
+
+    def to_dict(self) -> dict:
+        """JSON-ready report: lengths in the design's unit, angles in degrees."""
+        deg = lambda x: None if x is None else float(np.degrees(x))  # noqa: E731
+        p = self.pressure
+        return {
+            "name": self.design.name,
+            "follower": self.design.follower.kind,
+            "R0": float(self.R0),
+            "L": None if self.L is None else float(self.L),
+            "offset": None if self.offset is None else float(self.offset),
+            "centre": {"x": float(self.centre[0]), "y": float(self.centre[1])},
+            "max_pressure_angle": {"rise": deg(p.rise), "return": deg(p.ret)},
+            "pressure_angle_at": {"rise": deg(p.rise_at), "return": deg(p.ret_at)},
+            "limits": {"rise": deg(p.rise_limit), "return": deg(p.return_limit)},
+            "verified": bool(self.verified),
+            "binding": [
+                {"phi": float(np.degrees(b.phi)), "phase": b.phase, "line": "t-t" if b.side == 0 else "t1-t1"}
+                for b in self.binding
+            ],
+            "method": self.method,
+            "samples": self.samples,
+            "mode": self.mode,
+            "error_bound": self.error_bound,
+            "margin": float(self.margin),
+            "seconds": float(self.seconds),
+            "notes": list(self.notes),
+        }
+
+
+def _offset_line(design: CamDesign):
+    f = design.follower
+    if isinstance(f, Translating) and f.offset is not None:
+        # offset e: follower axis at x = 0 lies e to the +X side of the centre: x_O = -e
+        return np.array([[1.0, 0.0], [-1.0, 0.0]]), np.array([-f.offset, f.offset])
+    return None
+
+
+def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None, extra=None) -> CentreSolution:
+    """Admissible centre nearest to ``target`` by the design's (or the given) method."""
+    method = check_option("solve.method", method or design.method, METHODS)
+    if method == "exact":
+        from optimize.exact import nearest_exact
+
+        return nearest_exact(design, target, extra=extra)
+    if method == "convex":
+        from optimize.convex import nearest_convex
+
+        return nearest_convex(design, target, samples=design.samples, extra=extra)
+    from optimize.exhaustive import nearest_exhaustive
+
+    return nearest_exhaustive(design, target, samples=design.samples, extra=extra)
+
+
+def _lmax(design: CamDesign) -> float:
+    """Largest centre distance in the zone (inf when the zone is unbounded)."""
+    from optimize.bounds import _recession_direction
+    from optimize.planar import clip_polygon
+    from optimize.zone import sample_wedges
+
+    if _recession_direction(design) is not None:
+        return float("inf")
+    N, c = sample_wedges(design, 512).lines()
+    s = 100 * design.scale
+    poly = clip_polygon(N, c, (-s, -s, s, s))
+    return float(np.max(np.linalg.norm(poly, axis=1))) if len(poly) else 0.0
+
+
+def admissible_L_range(design: CamDesign) -> tuple[float, float]:
+    """Smallest and largest centre distance L of admissible centres (rocker)."""
+    lo = nearest(design, design.follower.pivot, method="exact").objective
+    return lo, _lmax(design)
+
+
+def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0") -> SolveResult:
+    """Size the cam of ``design`` and verify it.
+
+    Parameters
+    ----------
+    design : CamDesign
+    method : {"exact", "convex", "exhaustive"}, optional
+        Overrides ``design.method``.
+    objective : {"R0", "L"}
+        What to minimize when neither L nor a floor on R0 is fixed.
+
+    Raises
+    ------
+    InfeasibleError
+        Empty zone; a fixed L outside the admissible range (the message gives
+        the range); a floor on R0 and a fixed L that cannot both hold.
+    """
+    method = check_option("solve.method", method or design.method, METHODS)
+    check_option("solve.objective", objective, OBJECTIVES)
+    design = design.with_(method=method) if method != design.method else design
+    f = design.follower
+    lim = design.limits
+    A0 = f.position(0.0)
+    samples = None if method == "exact" else design.samples
+    extra = _offset_line(design)
+    notes: list[str] = []
+    t0 = time.perf_counter()
+    if objective == "L" and not isinstance(f, Rocker):
+        raise InputError("solve.objective", "'L' applies to rocker followers; use 'R0'")
+
+    L_fixed = lim.centre_distance
+    floor = lim.min_base_radius
+    from optimize.circle import best_on_circle, violation_function
+
+    G = violation_function(design, samples)
+    sol: CentreSolution | None = None
+    if L_fixed is None:
+        target = A0 if objective == "R0" else f.pivot
+        sol = nearest(design, target, method=method, extra=extra)
+        centre, mode = sol.centre, ("min_R0" if objective == "R0" else "min_L")
+        if extra is not None:
+            mode = "fixed_offset"
+        if floor is not None and np.linalg.norm(centre - A0) < floor:
+            mode = "floor_R0"
+            if extra is not None:
+                cands = [np.array([-f.offset, sg * np.sqrt(max(floor**2 - f.offset**2, 0.0))]) for sg in (1, -1)]
+                cands = [p for p in cands if floor >= abs(f.offset) and G(p) <= 1e-9 * design.scale]
+                if not cands:
+                    raise InfeasibleError("limits.min_base_radius", f"R0 = {floor:g} with offset {f.offset:g} is not admissible")
+                centre = min(cands, key=G)
+            else:
+                centre = best_on_circle(design, A0, floor, G, samples=samples)
+                if centre is None:  # pragma: no cover - the zone is unbounded beyond R0_min
+                    raise InfeasibleError("limits.min_base_radius", f"no admissible centre at R0 = {floor:g}")
+            notes.append(f"R0 raised to the constructive floor {floor:g} (minimum {sol.objective:.6g}); "
+                         "centre placed with the largest margin to the zone's edges")
+        elif floor is not None:
+            notes.append(f"constructive floor {floor:g} below the minimum R0: not binding")
+    else:
+        mode = "fixed_L"
+        if floor is not None:
+            # both circles fixed: their crossings
+            d = np.linalg.norm(A0 - f.pivot)
+            a = (L_fixed**2 - floor**2 + d**2) / (2 * d)
+            hh = L_fixed**2 - a**2
+            cands = []
+            if hh >= 0:
+                base = f.pivot + a * (A0 - f.pivot) / d
+                perp = np.array([-(A0 - f.pivot)[1], (A0 - f.pivot)[0]]) / d
+                cands = [base + sg * np.sqrt(hh) * perp for sg in (1, -1)]
+            cands = [p for p in cands if G(p) <= 1e-9 * design.scale]
+            if not cands:
+                raise InfeasibleError("limits.min_base_radius",
+                                      f"R0 = {floor:g} and L = {L_fixed:g} together give no admissible centre")
+            centre = min(cands, key=G)
+            mode = "fixed_L_and_R0"
+        else:
+            centre = best_on_circle(design, f.pivot, L_fixed, lambda O: float(np.linalg.norm(O - A0)), samples=samples)
+            if centre is None:
+                lo, hi = admissible_L_range(design)
+                rng = f"from {lo:.6g} upward" if not np.isfinite(hi) else f"from {lo:.6g} to {hi:.6g}"
+                raise InfeasibleError("limits.centre_distance",
+                                      f"L = {L_fixed:g} misses the allowable-centre zone; admissible L {rng}")
+    seconds = time.perf_counter() - t0
+    if sol is not None and mode in ("min_R0", "min_L", "fixed_offset"):
+        binding, error_bound = sol.binding, sol.error_bound
+        if samples is not None:
+            notes.append(f"sampled at {samples} steps per phase: the limit may be exceeded slightly between samples")
+    else:
+        binding, error_bound = (), None
+    margin = -G(centre)
+    pressure = check_pressure(design, centre)
+    R0 = float(np.linalg.norm(centre - A0))
+    if R0 <= f.roller_radius:
+        notes.append(f"R0 = {R0:.6g} is not larger than the roller radius {f.roller_radius:g}: choose a floor")
+    return SolveResult(
+        design=design,
+        centre=np.asarray(centre, float),
+        R0=R0,
+        L=float(np.linalg.norm(centre - f.pivot)) if isinstance(f, Rocker) else None,
+        offset=float(-centre[0]) + 0.0 if isinstance(f, Translating) else None,
+        method=method,
+        samples=samples,
+        mode=mode,
+        binding=binding,
+        error_bound=error_bound,
+        seconds=seconds,
+        pressure=pressure,
+        margin=float(margin),
+        notes=tuple(notes),
+    )
