@@ -1,0 +1,7 @@
+"""The subcommands of ``cams``: one module each, with ``register(subparsers)``.
+
+To add a command, write ``cams/commands/NAME.py`` with ``register`` and add
+NAME to :data:`COMMANDS` (the order of ``cams --help``).
+"""
+
+COMMANDS = ("solve", "laws")
