@@ -1,0 +1,65 @@
+"""``cams solve`` as a user runs it: JSON keys, exit codes, one-line errors."""
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from cams.cli import main
+from tests.conftest import EXAMPLES
+
+
+def test_solve_json_has_the_documented_keys(capsys):
+    assert main(["solve", str(EXAMPLES / "rocker_force.toml"), "--json"]) == 0
+    rep = json.loads(capsys.readouterr().out)
+    for k in ("R0", "L", "centre", "max_pressure_angle", "binding", "method", "samples", "error_bound", "seconds"):
+        assert k in rep
+    assert rep["method"] == "exact" and rep["samples"] is None
+    assert set(rep["centre"]) == {"x", "y"} and set(rep["max_pressure_angle"]) == {"rise", "return"}
+    assert rep["max_pressure_angle"]["rise"] <= 45 + 1e-6
+    assert rep["R0"] == pytest.approx(np.hypot(rep["centre"]["x"] - 125.0, rep["centre"]["y"]), rel=1e-12)
+    assert rep["L"] == pytest.approx(np.hypot(rep["centre"]["x"], rep["centre"]["y"]), rel=1e-12)
+
+
+@pytest.mark.parametrize("method", ["convex", "exhaustive"])
+def test_method_override(capsys, method):
+    assert main(["solve", str(EXAMPLES / "rocker_form.toml"), "--json", "--method", method]) in (0, 1)
+    rep = json.loads(capsys.readouterr().out)
+    assert rep["method"] == method and rep["samples"] == 360
+
+
+def test_translating_reports_offset(capsys):
+    assert main(["solve", str(EXAMPLES / "translating_force.toml"), "--json"]) == 0
+    rep = json.loads(capsys.readouterr().out)
+    assert rep["L"] is None and rep["offset"] == pytest.approx(-rep["centre"]["x"])
+
+
+def test_summary_is_readable(capsys):
+    assert main(["solve", str(EXAMPLES / "rocker_form.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "R0" in out and "verified: yes" in out
+
+
+def test_bad_input_is_one_line_exit_2(tmp_path):
+    p = tmp_path / "bad.toml"
+    p.write_text((EXAMPLES / "rocker_force.toml").read_text().replace("pressure_angle = 45", "pressure_angle = 95"))
+    r = subprocess.run([sys.executable, "-m", "cams.cli", "solve", str(p)], capture_output=True, text=True)
+    assert r.returncode == 2
+    assert r.stdout == ""
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and "limits.pressure_angle" in lines[0] and "(0, 90)" in lines[0]
+
+
+def test_infeasible_L_is_one_line_exit_2(tmp_path, capsys):
+    p = tmp_path / "l.toml"
+    p.write_text((EXAMPLES / "rocker_force.toml").read_text().replace("safety_factor = 1.0", "safety_factor = 1.0\ncentre_distance = 10.0"))
+    assert main(["solve", str(p)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "admissible L" in err[0]
+
+
+def test_usage_error_exit_2():
+    r = subprocess.run([sys.executable, "-m", "cams.cli", "solve"], capture_output=True, text=True)
+    assert r.returncode == 2 and "Traceback" not in r.stderr

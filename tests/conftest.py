@@ -1,0 +1,38 @@
+"""Shared fixtures: the example designs and small design builders."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLES = ROOT / "examples"
+
+
+def rocker_dict(**over) -> dict:
+    """A rocker design as a design-file dict (seed 001's sense), with overrides per table."""
+    d = {
+        "name": "test rocker",
+        "follower": {"kind": "rocker", "arm": 125.0, "swing": 15.0, "roller_radius": 10.0, "rise_direction": "cw"},
+        "cam": {"rotation": "ccw"},
+        "motion": [
+            {"phase": "rise", "law": "cycloidal", "angle": 120},
+            {"phase": "dwell", "angle": 30},
+            {"phase": "return", "law": "cycloidal", "angle": 120},
+            {"phase": "dwell"},
+        ],
+        "limits": {"pressure_angle": 45, "closure": "force"},
+        "solve": {"method": "exact", "samples": 360},
+    }
+    for k, v in over.items():
+        if isinstance(v, dict):
+            d[k] = {**d.get(k, {}), **v}
+        else:
+            d[k] = v
+    return d
+
+
+@pytest.fixture
+def examples_dir() -> Path:
+    return EXAMPLES
