@@ -7,6 +7,7 @@ A law is a normalized rise ``S(u)`` on ``u`` in [0, 1] with ``S(0) = 0`` and
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
+from typing import ClassVar
 
 import numpy as np
 
@@ -17,10 +18,14 @@ class Law(ABC):
     """A normalized rise law ``S(u)``, ``u`` in [0, 1].
 
     Subclasses are frozen dataclasses with a ``name`` and implement
-    :meth:`_evaluate` for ``u`` already clipped to [0, 1].
+    :meth:`_evaluate` for ``u`` already clipped to [0, 1]. A piecewise law
+    lists the positions where its pieces meet in :attr:`breakpoints`, so that
+    diagnostics can look for jumps there (one-sided limits).
     """
 
     name: str
+    #: Positions ``u`` in (0, 1) where the pieces of a piecewise law meet.
+    breakpoints: ClassVar[tuple[float, ...]] = ()
 
     def evaluate(self, u: np.ndarray | float) -> np.ndarray:
         """Evaluate the law and its first three derivatives.

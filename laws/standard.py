@@ -7,6 +7,7 @@ is normalized, ``S(0) = 0``, ``S(1) = 1``, ``u`` in [0, 1].
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
@@ -33,6 +34,7 @@ class Parabolic(Law):
     """Constant acceleration (parabolic): ``S = 2u^2`` then ``1 - 2(1-u)^2``."""
 
     name: str = "parabolic"
+    breakpoints: ClassVar[tuple[float, ...]] = (0.5,)
 
     def _evaluate(self, u):
         first = u < 0.5
