@@ -88,6 +88,18 @@ class Rocker:
         th = self.sense * np.asarray(s, dtype=float)
         return self.sense * self.arm * np.stack([-np.sin(th), np.cos(th)], axis=-1)
 
+    def frame(self, s: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``position(s), tangent(s), lever(s)`` at once (one sine and cosine)."""
+        th = self.sense * np.asarray(s, dtype=float)
+        lev = np.empty(th.shape + (2,))
+        lev[..., 0] = np.cos(th)
+        lev[..., 1] = np.sin(th)
+        A = self.arm * lev
+        T = np.empty_like(A)
+        T[..., 0] = -self.sense * A[..., 1]
+        T[..., 1] = self.sense * A[..., 0]
+        return A, T, lev
+
     def lever(self, s: np.ndarray) -> np.ndarray:
         """Unit vector from the pivot to the roller centre (the line D lies on)."""
         th = self.sense * np.asarray(s, dtype=float)
@@ -140,6 +152,10 @@ class Translating:
         """``dA/ds``: the unit vector along the follower's rise."""
         s = np.asarray(s, dtype=float)
         return np.stack([np.zeros_like(s), np.ones_like(s)], axis=-1)
+
+    def frame(self, s: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``position(s), tangent(s), lever(s)`` at once."""
+        return self.position(s), self.tangent(s), self.lever(s)
 
     def lever(self, s: np.ndarray) -> np.ndarray:
         """Unit vector along which the instant point D moves off A (+X)."""

@@ -45,11 +45,14 @@ def interior_point(design: CamDesign, near: np.ndarray) -> tuple[np.ndarray, flo
     the Chebyshev centre of a sampled zone. ``None`` if neither is interior.
     """
     scale = design.scale
-    cands = []
     rd = _recession_direction(design)
     if rd is not None:
         d, _ = rd
-        cands += [near + scale * d, near + 0.1 * scale * d]
+        for c in (near + scale * d, near + 0.1 * scale * d):
+            slack = -max_violation(design, c)[0].value
+            if slack > 0:
+                return c, slack
+    cands = []
     try:
         from scipy.optimize import linprog
 
