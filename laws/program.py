@@ -11,19 +11,37 @@ measured from the near-dwell position; derivatives are taken with respect to
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from laws.base import Law
 from laws.errors import InputError
 
-__all__ = ["Phase", "Program", "Motion", "TWO_PI"]
+__all__ = ["Phase", "Program", "Motion", "TWO_PI", "wrap_angle"]
 
 TWO_PI = 2.0 * np.pi
 _KINDS = ("rise", "dwell", "return")
 #: Tolerance on the sum of phase angles (radians).
 ANGLE_TOL = 1e-9
+
+
+def _is_positive(x) -> bool:
+    """True for a finite real number > 0 (False for anything else, strings included)."""
+    try:
+        return bool(np.isfinite(x) and x > 0)
+    except TypeError:
+        return False
+
+
+def wrap_angle(phi: np.ndarray | float) -> np.ndarray:
+    """Cam angles reduced to [0, 2 pi) (radians).
+
+    ``np.mod`` can return exactly ``2 pi`` for a tiny negative angle; such a
+    value is mapped to 0, the start of the cycle.
+    """
+    x = np.mod(np.asarray(phi, dtype=float), TWO_PI)
+    return np.where(x >= TWO_PI, 0.0, x)
 
 
 @dataclass(frozen=True)
@@ -35,8 +53,10 @@ class Phase:
     kind : {"rise", "dwell", "return"}
     angle : float
         Cam angle the phase lasts, radians, > 0.
-    law : Law or None
-        Normalized law; required for rise and return, ignored for dwell.
+    law : Law, str or None
+        Normalized law; required for rise and return, ignored for dwell. A
+        name of :data:`laws.registry.LAWS` is replaced by the law when the
+        :class:`Program` is built.
     height : float or None
         Displacement change of a rise or return (same unit as the lift);
         ``None`` means the whole lift.
@@ -83,29 +103,46 @@ class Program:
     Raises
     ------
     InputError
-        A phase angle <= 0, angles not summing to 2 pi, a missing law, or
-        heights that leave the follower outside [0, lift] or not back at 0.
+        A phase angle <= 0, angles not summing to 2 pi, a missing or
+        unknown law, or heights that leave the follower outside [0, lift] or
+        not back at 0. The field is named ``"motion[i].angle"`` and so on.
     """
 
     phases: tuple[Phase, ...]
     lift: float
 
     def __post_init__(self):
-        object.__setattr__(self, "phases", tuple(self.phases))
-        if not (np.isfinite(self.lift) and self.lift > 0):
+        from laws.registry import get_law
+
+        try:
+            phases = tuple(self.phases)
+        except TypeError:
+            raise InputError("motion", f"must be a sequence of phases, got {self.phases!r}") from None
+        if not _is_positive(self.lift):
             raise InputError("lift", f"must be a positive number, got {self.lift!r}")
-        if not self.phases:
+        if not phases:
             raise InputError("motion", "needs at least one phase")
-        for i, p in enumerate(self.phases):
+        checked = []
+        for i, p in enumerate(phases):
             f = f"motion[{i}]"
+            if not isinstance(p, Phase):
+                raise InputError(f, f"must be a Phase, got {type(p).__name__}")
             if p.kind not in _KINDS:
                 raise InputError(f"{f}.phase", f"{p.kind!r} is not valid, must be one of rise, dwell, return")
-            if not (np.isfinite(p.angle) and p.angle > 0):
-                raise InputError(f"{f}.angle", f"must be > 0 degrees, got {np.degrees(p.angle)!r}")
-            if p.kind != "dwell" and p.law is None:
-                raise InputError(f"{f}.law", f"a {p.kind} needs a law")
-            if p.height is not None and not (np.isfinite(p.height) and 0 < p.height <= self.lift * (1 + 1e-12)):
+            if not _is_positive(p.angle):
+                shown = f"{np.degrees(p.angle)!r} degrees" if isinstance(p.angle, (int, float)) else repr(p.angle)
+                raise InputError(f"{f}.angle", f"must be > 0 degrees, got {shown}")
+            if p.kind != "dwell":
+                if p.law is None:
+                    raise InputError(f"{f}.law", f"a {p.kind} needs a law")
+                if isinstance(p.law, str):
+                    p = replace(p, law=get_law(p.law, f"{f}.law"))
+                elif not isinstance(p.law, Law):
+                    raise InputError(f"{f}.law", f"must be a law or a law name, got {type(p.law).__name__}")
+            if p.height is not None and not (_is_positive(p.height) and p.height <= self.lift * (1 + 1e-12)):
                 raise InputError(f"{f}.height", f"must be in (0, lift={self.lift}], got {p.height!r}")
+            checked.append(p)
+        object.__setattr__(self, "phases", tuple(checked))
         total = sum(p.angle for p in self.phases)
         if abs(total - TWO_PI) > ANGLE_TOL:
             raise InputError("motion", f"phase angles sum to {np.degrees(total):.6g} degrees, must sum to 360")
@@ -149,7 +186,7 @@ class Program:
 
     def phase_of(self, phi: np.ndarray | float) -> np.ndarray:
         """Index of the phase containing each cam angle (half-open ``[start, end)``)."""
-        x = np.mod(np.asarray(phi, dtype=float), TWO_PI)
+        x = wrap_angle(phi)
         idx = np.searchsorted(self.starts, x, side="right") - 1
         return np.clip(idx, 0, len(self.phases) - 1)
 
@@ -178,8 +215,7 @@ class Program:
 
         At a joint between phases the later phase's values are returned.
         """
-        phi = np.asarray(phi, dtype=float)
-        x = np.mod(phi, TWO_PI)
+        x = wrap_angle(phi)
         idx = self.phase_of(x)
         starts = self.starts
         out = [np.zeros_like(x) for _ in range(4)]
