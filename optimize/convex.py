@@ -74,10 +74,23 @@ def nearest_convex(
         if res is not None and feasible_mask(res[0][None], np.vstack([N, eN]), np.concatenate([c, ec]), atol)[0]:
             O = res[0]
     binding, _ = _binding(W, N, O, c, 1e-7 * design.scale)
+    obj = float(np.linalg.norm(O - T))
     return CentreSolution(
-        centre=O, objective=float(np.linalg.norm(O - T)), method="convex", samples=samples,
-        binding=binding, error_bound=None, violation=float(np.max(N @ O - c)),
+        centre=O, objective=obj, method="convex", samples=samples,
+        binding=binding, error_bound=_sampling_bound(design, O, T, obj), violation=float(np.max(N @ O - c)),
     )
+
+
+def _sampling_bound(design: CamDesign, O: np.ndarray, T: np.ndarray, obj: float) -> float | None:
+    """Gap between the sampled optimum (a lower bound) and a feasible point of the continuum."""
+    from optimize.bounds import push_inside
+    from optimize.zone import max_violation
+
+    v = max_violation(design, O)[0].value
+    f = push_inside(design, O, v)
+    if f is None:
+        return None
+    return float(abs(np.linalg.norm(f - T) - obj) + 1e-9 * design.scale)
 
 
 def weighted_convex(
