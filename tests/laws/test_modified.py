@@ -36,7 +36,8 @@ def test_monotone_rise(law):
 
 
 def test_modified_sine_displacement_published_form():
-    # Rothbart, Cam Design Handbook (2004), sec. 3 "modified sine curve":
+    # Rothbart, Cam Design Handbook (McGraw-Hill, 2004), p. 75, as quoted in a
+    # public forum thread (the book itself not at hand):
     # y/h = (pi x - sin(4 pi x) / 4) / (4 + pi) on [0, 1/8],
     # y/h = (2 + pi x - 9/4 sin(4 pi x / 3 + pi / 3)) / (4 + pi) on [1/8, 7/8],
     # y/h = (4 + pi x - sin(4 pi x) / 4) / (4 + pi) on [7/8, 1].
