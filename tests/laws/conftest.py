@@ -8,7 +8,8 @@ from hypothesis import HealthCheck, settings
 
 # Derandomized: the same examples on every run and machine (no flaky CI).
 settings.register_profile(
-    "laws", derandomize=True, max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+    "laws", derandomize=True, database=None, max_examples=60, deadline=None,
+    suppress_health_check=[HealthCheck.too_slow],
 )
 
 
