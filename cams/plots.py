@@ -1,0 +1,208 @@
+"""Pictures: the allowable-centre zone, motion diagrams, pressure angle.
+
+matplotlib is imported inside the functions only, and figures are built with
+``matplotlib.figure.Figure`` (no pyplot state). Every function returns the
+Figure; :func:`save` writes it as PNG and SVG. Pictures take results and data
+objects and only draw them.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["plot_zone", "plot_motion", "plot_pressure", "save", "A4_WIDTH_IN"]
+
+#: Figure width that reads well on an A4 page (inches).
+A4_WIDTH_IN = 7.5
+
+
+def _figure(w=A4_WIDTH_IN, h=5.5):
+    from matplotlib.figure import Figure
+
+    return Figure(figsize=(w, h), layout="constrained")
+
+
+def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
+    """Write ``fig`` as ``stem.png`` and ``stem.svg``, each whole or not at all."""
+    import os
+    import tempfile
+
+    from laws.errors import InputError
+
+    stem = Path(stem)
+    out = []
+    for ext in formats:
+        target = stem.with_suffix(f".{ext}")
+        try:
+            fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=f".{ext}")
+        except OSError as e:
+            raise InputError("--out", f"cannot write in {str(target.parent)!r}: {e.strerror or e}") from None
+        try:
+            with os.fdopen(fd, "wb") as fh:
+                fig.savefig(fh, format=ext, dpi=150)
+            os.replace(tmp, target)
+        except BaseException:
+            Path(tmp).unlink(missing_ok=True)
+            raise
+        out.append(target)
+    return out
+
+
+def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
+    """The allowable-centre zone of a solved design (seed 001, figure 3.13).
+
+    Draws the follower's path with the analogue-velocity diagram (psi' l on the
+    rocker's arc, or ds/dphi across a translating follower's axis), a subset of
+    the t-t and t1-t1 lines with the binding ones highlighted, the admissible
+    zone shaded (and the zone without K_C when K_C > 1), the chosen centre, the
+    R0 circle, the fixed-L circle when given, and the R0-L trade-off curve.
+
+    Parameters
+    ----------
+    result : optimize.solve.SolveResult
+    tradeoff : optimize.tradeoff.TradeOff, optional
+    n_lines : int
+        Positions per constrained phase whose lines are drawn.
+    """
+    from matplotlib.patches import Circle, Polygon
+
+    from optimize.drawing import zone_drawing
+
+    d = result.design
+    f = d.follower
+    extra = () if tradeoff is None else (tradeoff.centres,)
+    zd = zone_drawing(d, result.centre, binding=tuple((b.phi, b.side) for b in result.binding),
+                      samples=samples, n_lines=n_lines, extra_points=extra)
+    fig = _figure()
+    ax = fig.add_subplot()
+    if zd.polygon_k1 is not None and len(zd.polygon_k1):
+        ax.add_patch(Polygon(zd.polygon_k1, closed=True, fc="#cfe3f7", ec="none", label="zone, K_C = 1"))
+    if len(zd.polygon):
+        lab = f"allowable zone (K_C = {d.limits.safety_factor:g})" if d.limits.safety_factor != 1 else "allowable zone"
+        ax.add_patch(Polygon(zd.polygon, closed=True, fc="#8fc1ee", ec="#2b6cb0", lw=0.8, alpha=0.8, label=lab))
+    for phi, side, p0, p1, binding in zd.lines:
+        style = dict(color="#c53030", lw=1.4) if binding else dict(color="0.55", lw=0.5)
+        ax.plot([p0[0], p1[0]], [p0[1], p1[1]], ls="-" if side == 0 else "--", **style)
+    ax.plot([], [], color="0.55", lw=0.5, label="t-t lines")
+    ax.plot([], [], color="0.55", lw=0.5, ls="--", label="t1-t1 lines")
+    ax.plot([], [], color="#c53030", lw=1.4, label="binding lines")
+    for c in zd.curves:
+        col = "#2f855a" if c.kind == "rise" else "#b7791f"
+        ax.plot(c.A[:, 0], c.A[:, 1], color="k", lw=1.0)
+        ax.plot(c.D[:, 0], c.D[:, 1], color=col, lw=1.2, label=f"analogue diagram, {c.kind} (phase {c.phase})")
+    A0 = f.position(0.0)
+    if f.kind == "rocker":
+        ax.plot([0, A0[0]], [0, A0[1]], color="k", lw=2)
+        ax.plot(0, 0, "ko", ms=4)
+        ax.annotate("O1", (0, 0), textcoords="offset points", xytext=(4, 4))
+    else:
+        ax.axvline(0.0, color="k", lw=0.8, ls="-.")
+    ax.plot(*A0, "ko", ms=4)
+    ax.annotate("A0", A0, textcoords="offset points", xytext=(4, -10))
+    ax.plot(*result.centre, "o", color="#c53030", ms=6, label="cam centre O")
+    ax.add_patch(Circle(result.centre, result.R0, fill=False, ls=":", color="#c53030", label=f"R0 = {result.R0:.3f}"))
+    if d.limits.centre_distance is not None and f.kind == "rocker":
+        ax.add_patch(Circle((0, 0), d.limits.centre_distance, fill=False, ls="-.", color="0.3",
+                            label=f"L = {d.limits.centre_distance:g}"))
+    if tradeoff is not None:
+        ax.plot(tradeoff.centres[:, 0], tradeoff.centres[:, 1], color="#6b46c1", lw=2, label="R0-L trade-off")
+    x0, y0, x1, y1 = zd.box
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x, mm")
+    ax.set_ylabel("y, mm")
+    ax.set_title(f"{d.name}: allowable-centre zone")
+    ax.legend(fontsize=7, loc="best")
+    ax.grid(True, lw=0.3)
+    return fig
+
+
+def plot_motion(design, *, n: int = 721):
+    """Displacement, velocity, acceleration and jerk against the cam angle.
+
+    Analogues (per radian of cam angle) without a cam speed; time derivatives
+    when ``design.rpm`` is set. Phase boundaries are drawn; velocity jumps
+    (hard impacts) and acceleration jumps (soft impacts) are marked when
+    :mod:`laws.diagnostics` reports them.
+    """
+    prog = design.program
+    phi = np.linspace(0.0, 2 * np.pi, n)
+    # evaluate inside each phase, both ends included, so joints show their jumps
+    xs, ys = [], []
+    for i, p in enumerate(prog.phases):
+        u = np.linspace(0.0, 1.0, max(int(n * p.angle / (2 * np.pi)), 8))
+        m = prog.evaluate_phase(i, u)
+        xs.append(prog.starts[i] + u * p.angle)
+        ys.append(np.stack([m.s, m.ds, m.d2s, m.d3s]))
+        xs.append([np.nan])
+        ys.append(np.full((4, 1), np.nan))
+    x = np.degrees(np.concatenate(xs))
+    Y = np.concatenate(ys, axis=1)
+    rocker = design.follower.kind == "rocker"
+    unit = "rad" if rocker else "mm"
+    if design.rpm:
+        w = design.rpm * 2 * np.pi / 60
+        Y = Y * np.array([1, w, w**2, w**3])[:, None]
+        labels = [f"{'swing' if rocker else 'stroke'}, {unit}", f"velocity, {unit}/s",
+                  f"acceleration, {unit}/s²", f"jerk, {unit}/s³"]
+    else:
+        labels = [f"{'swing' if rocker else 'stroke'}, {unit}", f"ds/dφ, {unit}/rad",
+                  f"d²s/dφ², {unit}/rad²", f"d³s/dφ³, {unit}/rad³"]
+    if rocker:
+        Y[0] = np.degrees(Y[0])
+        labels[0] = "swing ψ, deg"
+    fig = _figure(h=8.0)
+    axes = fig.subplots(4, 1, sharex=True)
+    from laws.diagnostics import find_impacts
+
+    impacts = find_impacts(prog)
+    for k, ax in enumerate(axes):
+        ax.plot(x, Y[k], color="#2b6cb0", lw=1.2)
+        ax.set_ylabel(labels[k], fontsize=8)
+        ax.grid(True, lw=0.3)
+        for s in prog.starts:
+            ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
+    for imp in impacts:
+        k = 1 if imp.kind == "hard" else 2
+        axes[k].axvline(np.degrees(imp.phi), color="#c53030", lw=1.0)
+        axes[k].annotate(f"{imp.kind} impact", (np.degrees(imp.phi), 0), fontsize=7, color="#c53030",
+                         textcoords="offset points", xytext=(3, 3))
+    axes[-1].set_xlabel("cam angle φ, deg")
+    axes[-1].set_xlim(0, 360)
+    axes[0].set_title(f"{design.name}: motion diagrams" + (f" at {design.rpm:g} rpm" if design.rpm else " (analogues)"))
+    return fig
+
+
+def plot_pressure(result, *, n: int = 721):
+    """Pressure angle against the cam angle with the limits drawn (from the finished design)."""
+    from cams.pressure import pressure_angle
+
+    d = result.design
+    prog = d.program
+    fig = _figure(h=3.8)
+    ax = fig.add_subplot()
+    for i, p in enumerate(prog.phases):
+        if p.kind == "dwell":
+            continue
+        u = np.linspace(0.0, 1.0, max(int(n * p.angle / (2 * np.pi)), 8))
+        g = pressure_angle(d, result.centre, i, u)
+        ax.plot(np.degrees(prog.starts[i] + u * p.angle), np.degrees(g),
+                color="#2f855a" if p.kind == "rise" else "#b7791f", lw=1.3, label=p.kind)
+    lim = d.limits
+    ax.axhline(np.degrees(lim.pressure_angle), color="#c53030", ls="--", lw=1, label="limit, rise")
+    if lim.closure == "form":
+        ax.axhline(np.degrees(lim.return_limit), color="#c05621", ls="-.", lw=1, label="limit, return")
+    for s in prog.starts:
+        ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
+    ax.set_xlim(0, 360)
+    ax.set_xlabel("cam angle φ, deg")
+    ax.set_ylabel("pressure angle γ, deg")
+    ax.set_title(f"{d.name}: pressure angle")
+    ax.grid(True, lw=0.3)
+    handles, labels = ax.get_legend_handles_labels()
+    uniq = dict(zip(labels, handles))
+    ax.legend(uniq.values(), uniq.keys(), fontsize=8)
+    return fig
