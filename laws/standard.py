@@ -7,6 +7,7 @@ is normalized, ``S(0) = 0``, ``S(1) = 1``, ``u`` in [0, 1].
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import ClassVar
 
 import numpy as np
@@ -67,14 +68,24 @@ class Cycloidal(Law):
         return u - s / (2 * PI), 1 - c, 2 * PI * s, 4 * PI**2 * c
 
 
-def _poly(coeffs: tuple[float, ...], u: np.ndarray):
-    """Evaluate ``sum c_k u^k`` and its first three derivatives."""
+@lru_cache(maxsize=None)
+def _derivative_matrix(coeffs: tuple[float, ...]) -> np.ndarray:
+    """Power-basis coefficients of S and its first three derivatives, as columns (n, 4)."""
     p = np.polynomial.polynomial
+    out = np.zeros((len(coeffs), 4))
     c = np.asarray(coeffs, dtype=float)
-    d1 = p.polyder(c)
-    d2 = p.polyder(d1)
-    d3 = p.polyder(d2)
-    return p.polyval(u, c), p.polyval(u, d1), p.polyval(u, d2), p.polyval(u, d3)
+    for k in range(4):
+        out[: len(c), k] = c
+        c = p.polyder(c) if len(c) > 1 else np.zeros(1)
+    out.setflags(write=False)
+    return out
+
+
+def _poly(coeffs: tuple[float, ...], u: np.ndarray):
+    """Evaluate ``sum c_k u^k`` and its first three derivatives (one matrix product)."""
+    C = _derivative_matrix(tuple(coeffs))
+    Y = (u[..., None] ** np.arange(C.shape[0])) @ C
+    return Y[..., 0], Y[..., 1], Y[..., 2], Y[..., 3]
 
 
 @dataclass(frozen=True)
