@@ -36,6 +36,7 @@ _KEYS = {
     "limits": {"pressure_angle", "return_pressure_angle", "closure", "safety_factor",
                "centre_distance", "min_base_radius"},
     "solve": {"method", "samples", "objective"},
+    "profile": {"tolerance", "min_curvature_radius"},
 }
 
 

@@ -1,0 +1,568 @@
+"""Cam profiles: pitch curve, working profile(s), radius of curvature, sampling.
+
+Frames and signs
+----------------
+* Fixed frame: the follower's frame of :mod:`cams.follower`; the cam centre O
+  is given in it (``SolveResult.centre``).
+* Cam frame: origin at the cam centre, axes parallel to the fixed frame when
+  the cam is at ``phi = 0``, turning with the cam. A point with cam-frame
+  coordinates ``X`` is at ``O + R(eps phi) X`` in the fixed frame, with
+  ``eps = design.cam_sense`` (+1 counter-clockwise).
+* Pitch curve (roller-centre path on the cam), by inversion of the motion::
+
+      P(phi) = R(-eps phi) (A(s(phi)) - O)
+
+  It runs round the cam centre in the sense ``-eps`` as ``phi`` grows.
+  Its derivatives with respect to the cam angle are analytic::
+
+      P'  = R(-eps phi) (r' - eps J r)
+      P'' = R(-eps phi) (r'' - 2 eps J r' - r)
+
+  with ``r = A - O``, ``r' = s' dA/ds``, ``r'' = s'' dA/ds + s'^2 d2A/ds2``
+  and ``J`` the rotation by +90 degrees.
+* Outward normal ``n``: the unit normal of the pitch curve pointing away from
+  the cam's material, ``n = R(eps 90 deg) P' / |P'|``.
+* Signed curvature ``kappa = -eps (P' x P'') / |P'|^3`` and radius of
+  curvature ``rho = 1 / kappa``: **positive where the curve is convex** (centre
+  of curvature on the cam's side), negative where concave. On a dwell the
+  pitch curve is a circle of radius ``|A - O|`` and ``rho = +|A - O|``.
+* Working profile (roller follower): the envelope of the roller circles, the
+  inner offset ``W = P - r_roller n`` with ``rho_w = rho - r_roller``. For a
+  groove (form closure) the outer wall ``P + r_roller n`` has
+  ``rho_o = rho + r_roller`` (same sign convention: positive when its centre
+  of curvature lies on the cam centre's side). A knife edge (roller radius 0)
+  has working profile = pitch curve.
+
+Angles are radians; lengths are the design's unit (mm).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from cams.design import CamDesign
+from cams.follower import Follower, Rocker, Translating
+from laws.errors import InputError
+
+__all__ = [
+    "PitchGeometry",
+    "Profile",
+    "ProfileOptions",
+    "pitch_phase",
+    "pitch_curve",
+    "offset_radius",
+    "build_profile",
+    "profile_options",
+    "default_bore_radius",
+    "DEFAULT_TOLERANCE",
+    "PROFILE_KEYS",
+]
+
+#: Default chord tolerance (sagitta), length unit: 1 micrometre for mm.
+DEFAULT_TOLERANCE = 1e-3
+#: Keys the ``[profile]`` table of a design file may hold.
+PROFILE_KEYS = ("tolerance", "min_curvature_radius")
+#: Largest number of samples of one profile (guards against endless refinement).
+MAX_POINTS = 2_000_000
+
+
+def _J(v: np.ndarray) -> np.ndarray:
+    """Rotate vectors (last axis of size 2) by +90 degrees."""
+    return np.stack([-v[..., 1], v[..., 0]], axis=-1)
+
+
+def _rot(v: np.ndarray, angle: np.ndarray) -> np.ndarray:
+    """Rotate vectors ``v`` (..., 2) counter-clockwise by ``angle`` (radians, broadcast)."""
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]], axis=-1)
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def _second(follower: Follower, s: np.ndarray) -> np.ndarray:
+    """``d2A/ds2`` of the roller centre in the fixed frame.
+
+    Rocker: ``A = arm (cos(sense s), sin(sense s))`` about the pivot at the
+    origin, so ``d2A/ds2 = -(A - pivot)``. Translating: a straight line, zero.
+    """
+    if isinstance(follower, Rocker):
+        return follower.pivot - follower.position(s)
+    if isinstance(follower, Translating):
+        return np.zeros(np.shape(s) + (2,))
+    raise InputError("follower.kind", "profiles are defined for rocker and translating followers")  # pragma: no cover
+
+
+@dataclass(frozen=True)
+class PitchGeometry:
+    """Pitch-curve points and derivatives at given cam angles, cam frame.
+
+    Attributes
+    ----------
+    phi : ndarray, shape (n,)
+        Cam angles, radians.
+    point : ndarray, shape (n, 2)
+        ``P(phi)``, cam frame, length unit.
+    d1, d2 : ndarray, shape (n, 2)
+        ``dP/dphi`` (length per radian) and ``d2P/dphi2`` (per radian^2).
+    normal : ndarray, shape (n, 2)
+        Outward unit normal (away from the cam's material), cam frame.
+    kappa : ndarray, shape (n,)
+        Signed curvature, 1/length, positive where convex.
+    s : ndarray, shape (n,)
+        Follower displacement (radians or length).
+    rise_dir : ndarray, shape (n, 2)
+        Unit direction of the roller centre's rise (``dA/ds`` normalized),
+        fixed frame.
+    """
+
+    phi: np.ndarray
+    point: np.ndarray
+    d1: np.ndarray
+    d2: np.ndarray
+    normal: np.ndarray
+    kappa: np.ndarray
+    s: np.ndarray
+    rise_dir: np.ndarray
+
+    @property
+    def rho(self) -> np.ndarray:
+        """Signed radius of curvature (length, positive convex; ``inf`` where straight)."""
+        with np.errstate(divide="ignore"):
+            return np.where(self.kappa == 0, np.inf, 1.0 / np.where(self.kappa == 0, 1.0, self.kappa))
+
+    def offset(self, distance: float) -> np.ndarray:
+        """Points offset by ``distance`` along the outward normal (negative: toward the cam)."""
+        return self.point + distance * self.normal
+
+
+def _geometry(design: CamDesign, centre: np.ndarray, phi: np.ndarray, m) -> PitchGeometry:
+    f = design.follower
+    eps = design.cam_sense
+    O = np.asarray(centre, dtype=float)
+    A = f.position(m.s)
+    T = f.tangent(m.s)
+    T2 = _second(f, m.s)
+    r = A - O
+    r1 = m.ds[..., None] * T
+    r2 = m.d2s[..., None] * T + (m.ds**2)[..., None] * T2
+    W = r1 - eps * _J(r)
+    W2 = r2 - 2 * eps * _J(r1) - r
+    ang = -eps * phi
+    speed = np.linalg.norm(W, axis=-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        kappa = -eps * _cross(W, W2) / speed**3
+        n = eps * _J(W) / speed[..., None]
+    return PitchGeometry(
+        phi=phi,
+        point=_rot(r, ang),
+        d1=_rot(W, ang),
+        d2=_rot(W2, ang),
+        normal=_rot(n, ang),
+        kappa=kappa,
+        s=np.asarray(m.s, dtype=float),
+        rise_dir=T / np.linalg.norm(T, axis=-1, keepdims=True),
+    )
+
+
+def pitch_phase(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndarray) -> PitchGeometry:
+    """Pitch curve inside one phase at normalized positions ``u`` in [0, 1].
+
+    Values at the phase ends are the one-sided limits from inside the phase
+    (``laws.program.Program.evaluate_phase``), so a corner or a jump of the
+    curvature at a phase joint is seen from both sides.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre O, fixed frame, length unit.
+    phase : int
+        Phase index in ``design.program.phases``.
+    u : array_like, shape (n,)
+
+    Returns
+    -------
+    PitchGeometry
+        In the cam frame, at ``phi = starts[phase] + u * angle``.
+    """
+    prog = design.program
+    u = np.atleast_1d(np.asarray(u, dtype=float))
+    phi = prog.starts[phase] + u * prog.phases[phase].angle
+    return _geometry(design, centre, phi, prog.evaluate_phase(phase, u))
+
+
+def pitch_curve(design: CamDesign, centre: np.ndarray, phi: np.ndarray) -> PitchGeometry:
+    """Pitch curve at cam angles ``phi`` (radians, periodic), cam frame.
+
+    At a phase joint the later phase's values are used.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from cams.designfile import load_design
+    >>> d = load_design("examples/translating_form_centric.toml")
+    >>> g = pitch_curve(d, np.array([0.0, -24.0]), np.array([0.0]))
+    >>> g.point.round(6).tolist(), float(g.rho[0])
+    ([[0.0, 24.0]], 24.0)
+    """
+    phi = np.atleast_1d(np.asarray(phi, dtype=float))
+    return _geometry(design, centre, phi, design.program.evaluate(phi))
+
+
+def offset_radius(rho: np.ndarray, distance: float) -> np.ndarray:
+    """Radius of curvature of an offset curve (length, positive convex).
+
+    ``distance`` is measured along the outward normal: ``-r_roller`` for the
+    working profile (``rho_w = rho - r_roller``), ``+r_roller`` for a
+    groove's outer wall (``rho_o = rho + r_roller``).
+    """
+    return np.asarray(rho, dtype=float) + distance
+
+
+@dataclass(frozen=True)
+class ProfileOptions:
+    """Profile settings of a design file (``[profile]`` and ``[cam]`` tables).
+
+    Attributes
+    ----------
+    tolerance : float
+        Chord tolerance (largest sagitta between samples and curve), length.
+    min_curvature_radius : float or None
+        User minimum of the working profile's radius of curvature (length).
+    bore_radius : float or None
+        Bore radius of the cam (length); ``None``: :func:`default_bore_radius`.
+    """
+
+    tolerance: float = DEFAULT_TOLERANCE
+    min_curvature_radius: float | None = None
+    bore_radius: float | None = None
+
+    def __post_init__(self):
+        _check_tolerance(self.tolerance, "profile.tolerance")
+        for name, field in (("min_curvature_radius", "profile.min_curvature_radius"), ("bore_radius", "cam.bore_radius")):
+            v = getattr(self, name)
+            if v is not None and not (isinstance(v, (int, float)) and not isinstance(v, bool) and np.isfinite(v) and v > 0):
+                raise InputError(field, f"must be a number > 0, got {v!r}")
+
+
+def _check_tolerance(tol, field: str) -> float:
+    if isinstance(tol, bool) or not isinstance(tol, (int, float, np.floating)) or not np.isfinite(tol) or tol <= 0:
+        raise InputError(field, f"chord tolerance must be a number > 0 (length unit), got {tol!r}")
+    return float(tol)
+
+
+def profile_options(design: CamDesign, *, tolerance: float | None = None) -> ProfileOptions:
+    """Read ``[profile]`` (tolerance, min_curvature_radius) and ``[cam]`` bore_radius.
+
+    Parameters
+    ----------
+    design : CamDesign
+        A design loaded from a file (its raw tables are in ``design.extra``).
+    tolerance : float, optional
+        Overrides ``[profile] tolerance`` (the command line's ``--tolerance``).
+
+    Raises
+    ------
+    InputError
+        Unknown ``[profile]`` keys, a tolerance or radius that is not > 0.
+    """
+    raw = design.extra.get("raw", {}) if isinstance(design.extra, dict) else {}
+    pt = raw.get("profile", {})
+    if not isinstance(pt, dict):
+        raise InputError("profile", "must be a table")
+    unknown = set(pt) - set(PROFILE_KEYS)
+    if unknown:
+        raise InputError("profile", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(PROFILE_KEYS)}")
+    cam = raw.get("cam", {}) if isinstance(raw.get("cam", {}), dict) else {}
+    tol = pt.get("tolerance", DEFAULT_TOLERANCE) if tolerance is None else tolerance
+    _check_tolerance(tol, "--tolerance" if tolerance is not None else "profile.tolerance")
+    return ProfileOptions(float(tol), pt.get("min_curvature_radius"), cam.get("bore_radius"))
+
+
+@dataclass(frozen=True)
+class Profile:
+    """A sampled cam profile in the cam frame (origin at the cam centre, cam at phi = 0).
+
+    Rows are in cam-angle order from ``phi = 0``; the curves are closed (the
+    last row joins the first). At a phase joint where the pitch curve has a
+    corner, extra rows with the same ``phi`` carry the roller-circle arc that
+    fills the gap of an offset curve.
+
+    Attributes
+    ----------
+    phi : ndarray, shape (n,)
+        Cam angle of each row, radians in [0, 2 pi).
+    phase : ndarray of int, shape (n,)
+        Phase index of each row.
+    pitch, work : ndarray, shape (n, 2)
+        Pitch curve and working profile, length unit.
+    outer : ndarray, shape (n, 2) or None
+        Outer wall of a groove (form closure), else ``None``.
+    normal : ndarray, shape (n, 2)
+        Outward unit normal of the pitch curve.
+    rho : ndarray, shape (n,)
+        Signed radius of curvature of the pitch curve (positive convex, ``inf``
+        where straight; at arc rows the value of the adjacent phase).
+    roller_radius, tolerance : float
+        Length unit.
+    centre : ndarray, shape (2,)
+        Cam centre in the fixed frame.
+    cam_sense : int
+    R0 : float
+        Base radius of the pitch curve, ``|P(0)|`` at the near dwell.
+    """
+
+    phi: np.ndarray
+    phase: np.ndarray
+    pitch: np.ndarray
+    work: np.ndarray
+    outer: np.ndarray | None
+    normal: np.ndarray
+    rho: np.ndarray
+    roller_radius: float
+    tolerance: float
+    centre: np.ndarray
+    cam_sense: int
+    R0: float
+    name: str = "cam"
+
+    def __post_init__(self):
+        for k in ("phi", "phase", "pitch", "work", "outer", "normal", "rho", "centre"):
+            a = getattr(self, k)
+            if a is not None:
+                a.flags.writeable = False
+
+    def __len__(self) -> int:
+        return len(self.phi)
+
+    @property
+    def groove(self) -> bool:
+        """True when the profile has an outer wall (form closure by a groove)."""
+        return self.outer is not None
+
+    @property
+    def rho_work(self) -> np.ndarray:
+        """Radius of curvature of the working profile, ``rho - r_roller`` (positive convex)."""
+        return offset_radius(self.rho, -self.roller_radius)
+
+    @property
+    def rho_outer(self) -> np.ndarray | None:
+        """Radius of curvature of the outer wall, ``rho + r_roller``, or ``None``."""
+        return None if self.outer is None else offset_radius(self.rho, self.roller_radius)
+
+    @property
+    def min_work_radius(self) -> float:
+        """Smallest distance of the sampled working profile from the cam centre (length)."""
+        return float(_polyline_min_radius(self.work))
+
+
+def _polyline_min_radius(pts: np.ndarray) -> float:
+    """Distance from the origin to a closed polyline (its segments, not only vertices)."""
+    a = pts
+    b = np.roll(pts, -1, axis=0)
+    d = b - a
+    L2 = np.sum(d * d, axis=1)
+    t = np.clip(np.divide(-np.sum(a * d, axis=1), L2, out=np.zeros_like(L2), where=L2 > 0), 0.0, 1.0)
+    q = a + t[:, None] * d
+    return float(np.min(np.linalg.norm(q, axis=1)))
+
+
+def default_bore_radius(profile: Profile) -> float:
+    """Default bore radius: ``0.3 R0``, capped at 0.8 of the working profile's smallest radius.
+
+    Lengths in the design's unit; the cap keeps a wall between bore and profile.
+    """
+    return float(min(0.3 * profile.R0, 0.8 * profile.min_work_radius))
+
+
+def _curves(g: PitchGeometry, r: float, groove: bool) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The curves that are exported, with their absolute curvature: pitch, work, outer."""
+    out = [(g.point, np.abs(g.kappa))]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if r > 0:
+            out.append((g.offset(-r), np.abs(g.kappa / (1.0 - r * g.kappa))))
+        if groove:
+            out.append((g.offset(r), np.abs(g.kappa / (1.0 + r * g.kappa))))
+    return out
+
+
+def _sample_phase(design: CamDesign, centre, i: int, tol: float, r: float, groove: bool) -> np.ndarray:
+    """Adaptive normalized positions ``u`` of phase ``i`` (0 and 1 included).
+
+    Each chord is split at its middle while the sagitta of any exported curve,
+    estimated as ``max(L^2 |kappa|_max / 8, distance of the mid-point from the
+    chord)``, exceeds ``tol``; chords shorter than ``tol`` are accepted (the
+    curve then stays within ``tol`` of them up to a cusp of an undercut
+    profile).
+    """
+    p = design.program.phases[i]
+    n0 = 2 if p.kind == "dwell" else 16
+    bps = tuple(getattr(p.law, "breakpoints", ())) if p.law is not None else ()
+    u = np.unique(np.concatenate([np.linspace(0.0, 1.0, n0 + 1), np.asarray(bps, float)]))
+    du_min = 1e-12
+    fresh = np.ones(len(u) - 1, dtype=bool)
+    for _ in range(64):
+        idx = np.nonzero(fresh)[0]
+        if len(idx) == 0:
+            break
+        ua, ub = u[idx], u[idx + 1]
+        um = 0.5 * (ua + ub)
+        ga = pitch_phase(design, centre, i, ua)
+        gb = pitch_phase(design, centre, i, ub)
+        gm = pitch_phase(design, centre, i, um)
+        split = np.zeros(len(idx), dtype=bool)
+        for (a, ka), (b, kb), (m, km) in zip(_curves(ga, r, groove), _curves(gb, r, groove), _curves(gm, r, groove)):
+            d = b - a
+            L = np.linalg.norm(d, axis=1)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                dev = np.where(L > 0, np.abs(_cross(d, m - a)) / np.where(L > 0, L, 1.0), np.linalg.norm(m - a, axis=1))
+                k = np.nan_to_num(np.fmax(np.fmax(ka, kb), km), nan=np.inf, posinf=np.inf)
+                est = np.where(k > 0, L * L * k / 8.0, 0.0)
+            sag = np.fmax(dev, np.nan_to_num(est, nan=np.inf))
+            split |= (sag > tol) & (L > tol)
+        split &= (ub - ua) > du_min
+        if not np.any(split):
+            break
+        if len(u) + int(split.sum()) > MAX_POINTS:
+            raise InputError("profile.tolerance", f"{tol:g} needs more than {MAX_POINTS} points; choose a larger tolerance")
+        new = um[split]
+        # the two halves of every split chord are the next round's fresh chords
+        u = np.concatenate([u, new])
+        order = np.argsort(u, kind="stable")
+        u = u[order]
+        is_new = np.concatenate([np.zeros(len(u) - len(new), bool), np.ones(len(new), bool)])[order]
+        fresh = is_new[1:] | is_new[:-1]
+    return u
+
+
+def _corner_arc(P: np.ndarray, n1: np.ndarray, n2: np.ndarray, dist: float, tol: float) -> np.ndarray:
+    """Points of the circle of radius ``|dist|`` about ``P`` from ``dist n1`` to ``dist n2`` (short way), ends excluded."""
+    a1, a2 = np.arctan2(n1[1], n1[0]), np.arctan2(n2[1], n2[0])
+    da = (a2 - a1 + np.pi) % (2 * np.pi) - np.pi
+    rr = abs(dist)
+    step = 2 * np.arccos(max(1.0 - tol / rr, -1.0)) if rr > tol else np.pi
+    k = int(np.ceil(abs(da) / step))
+    if k <= 1:
+        return np.empty((0, 2))
+    t = a1 + da * np.arange(1, k) / k
+    return P + dist * np.stack([np.cos(t), np.sin(t)], axis=-1)
+
+
+def build_profile(
+    design: CamDesign,
+    centre: np.ndarray,
+    *,
+    tolerance: float = DEFAULT_TOLERANCE,
+    groove: bool | None = None,
+) -> Profile:
+    """Sample the pitch curve and working profile(s) of a sized cam.
+
+    Every phase start is a sample (and every breakpoint of a piecewise law);
+    between them the chords are halved until their sagitta on every exported
+    curve is within ``tolerance`` (vectorized adaptive subdivision), so the
+    samples are dense where the curvature is high.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre O in the fixed frame (``SolveResult.centre``), length unit.
+    tolerance : float
+        Chord tolerance, length unit (default 1e-3: 1 micrometre in mm).
+    groove : bool, optional
+        Add the outer wall of a groove; default: ``True`` for form closure.
+
+    Returns
+    -------
+    Profile
+
+    Raises
+    ------
+    InputError
+        ``tolerance <= 0``; a groove with a knife edge (roller radius 0).
+    """
+    tol = _check_tolerance(tolerance, "--tolerance")
+    f = design.follower
+    r = float(f.roller_radius)
+    if groove is None:
+        groove = design.limits.closure == "form"
+    if groove and r <= 0:
+        raise InputError("follower.roller_radius", "a groove cam (form closure) needs a roller radius > 0")
+    centre = np.asarray(centre, dtype=float)
+    prog = design.program
+    nph = len(prog.phases)
+    blocks: list[dict] = []
+    closing = None
+    for i in range(nph):
+        u = _sample_phase(design, centre, i, tol, r, groove)
+        g = pitch_phase(design, centre, i, u[:-1])
+        blocks.append(_rows(g, i, g.offset(-r), g.offset(r) if groove else None))
+        if r > 0:
+            joint = _joint_rows(design, centre, i, r, groove, tol)
+            if joint is not None and i == nph - 1:
+                closing = joint  # phi = 2 pi is phi = 0: these rows come first
+            elif joint is not None:
+                blocks.append(joint)
+    if closing is not None:
+        blocks.insert(0, closing)
+    cat = {k: np.concatenate([b[k] for b in blocks]) for k in ("phi", "phase", "pitch", "work", "normal", "rho")}
+    return Profile(
+        **cat,
+        outer=np.concatenate([b["outer"] for b in blocks]) if groove else None,
+        roller_radius=r,
+        tolerance=tol,
+        centre=centre.copy(),
+        cam_sense=design.cam_sense,
+        R0=float(np.linalg.norm(f.position(0.0) - centre)),
+        name=design.name,
+    )
+
+
+def _rows(g: PitchGeometry, i: int, work: np.ndarray, outer: np.ndarray | None, phi=None) -> dict:
+    n = len(g.phi)
+    return {
+        "phi": g.phi if phi is None else np.full(n, phi),
+        "phase": np.full(n, i),
+        "pitch": g.point,
+        "work": work,
+        "outer": outer,
+        "normal": g.normal,
+        "rho": g.rho,
+    }
+
+
+def _joint_rows(design: CamDesign, centre, i: int, r: float, groove: bool, tol: float) -> dict | None:
+    """Roller-circle arc rows filling an offset curve's gap at a pitch-curve corner.
+
+    At the joint of phase ``i`` with the next one the pitch curve has a corner
+    when the follower's velocity jumps (e.g. a constant-velocity law). A
+    concave corner opens a gap in the working profile (filled by the roller
+    circle about the corner), a convex one in a groove's outer wall; the other
+    offset crosses itself there (a sharp point, reported by the checks).
+    """
+    prog = design.program
+    nph = len(prog.phases)
+    j = (i + 1) % nph
+    end = pitch_phase(design, centre, i, np.array([1.0]))
+    start = pitch_phase(design, centre, j, np.array([0.0]))
+    n1, n2 = end.normal[0], start.normal[0]
+    if not np.linalg.norm(n1 - n2) > 1e-12:
+        return None
+    convex = np.sign(_cross(end.d1[0], start.d1[0])) == -design.cam_sense
+    P = start.point[0]
+    arc_w = np.empty((0, 2)) if convex else _corner_arc(P, n1, n2, -r, tol)
+    arc_o = _corner_arc(P, n1, n2, r, tol) if (groove and convex) else np.empty((0, 2))
+    k = max(len(arc_w), len(arc_o))
+    if k == 0:
+        return None
+    # one row per arc point; the curve without an arc repeats its end point
+    wk = arc_w if len(arc_w) == k else np.repeat((P - r * n1)[None], k, 0)
+    ok = arc_o if len(arc_o) == k else np.repeat((P + r * n1)[None], k, 0)
+    rep = lambda a: np.repeat(a, k, 0)  # noqa: E731
+    g = PitchGeometry(phi=rep(end.phi), point=np.repeat(P[None], k, 0), d1=rep(end.d1), d2=rep(end.d2),
+                      normal=rep(end.normal), kappa=rep(end.kappa), s=rep(end.s), rise_dir=rep(end.rise_dir))
+    return _rows(g, j, wk, ok if groove else None, phi=prog.starts[j])
