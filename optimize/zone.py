@@ -91,35 +91,46 @@ def phase_wedges(design: CamDesign, i: int, limit: float, u: np.ndarray) -> Wedg
     u = np.asarray(u, dtype=float)
     m = design.program.evaluate_phase(i, u)
     A, T, lever = f.frame(m.s)
-    e = T / np.sqrt(T[:, 0] ** 2 + T[:, 1] ** 2)[:, None]
+    Tx, Ty = T[:, 0], T[:, 1]
+    inv = 1.0 / np.sqrt(Tx * Tx + Ty * Ty)
     # D = A + eps k x V, V = ds T
     g = design.cam_sense * m.ds
-    Dx = A[:, 0] - g * T[:, 1]
-    Dy = A[:, 1] + g * T[:, 0]
+    Dx = A[:, 0] - g * Ty
+    Dy = A[:, 1] + g * Tx
     # normals: the wedge axis -e turned by +-(90 deg + limit)
     cs, sn = -np.sin(limit), np.cos(limit)
-    ax, ay = -e[:, 0], -e[:, 1]
-    na = np.stack([cs * ax - sn * ay, sn * ax + cs * ay], axis=-1)
-    nb = np.stack([cs * ax + sn * ay, -sn * ax + cs * ay], axis=-1)
+    ax, ay = -Tx * inv, -Ty * inv
+    nax, nay = cs * ax - sn * ay, sn * ax + cs * ay
+    nbx, nby = cs * ax + sn * ay, -sn * ax + cs * ay
+    lx, ly = lever[:, 0], lever[:, 1]
     # side t: the half-plane that shrinks when D moves outward along the lever
-    a_is_t = (na[:, 0] * lever[:, 0] + na[:, 1] * lever[:, 1]) < 0
-    normals = np.where(a_is_t[:, None, None], np.stack([na, nb], axis=1), np.stack([nb, na], axis=1))
+    a_is_t = (nax * lx + nay * ly) < 0
+    n = len(u)
+    normals = np.empty((n, 2, 2))
+    normals[:, 0, 0] = np.where(a_is_t, nax, nbx)
+    normals[:, 0, 1] = np.where(a_is_t, nay, nby)
+    normals[:, 1, 0] = np.where(a_is_t, nbx, nax)
+    normals[:, 1, 1] = np.where(a_is_t, nby, nay)
+    apex = np.empty((n, 2, 2))
     K = design.limits.safety_factor
-    D = np.stack([Dx, Dy], axis=-1)
     if K != 1.0:
         ref = getattr(f, "arm", 0.0)
-        apex = np.stack([D + (K - 1.0) * ref * lever, D - (1.0 - 1.0 / K) * ref * lever], axis=1)
+        kt, kt1 = (K - 1.0) * ref, -(1.0 - 1.0 / K) * ref
+        apex[:, 0, 0], apex[:, 0, 1] = Dx + kt * lx, Dy + kt * ly
+        apex[:, 1, 0], apex[:, 1, 1] = Dx + kt1 * lx, Dy + kt1 * ly
     else:
-        apex = np.stack([D, D], axis=1)
-    offsets = np.sum(normals * apex, axis=-1)
-    phi = design.program.starts[i] + u * design.program.phases[i].angle
+        apex[:, 0, 0] = apex[:, 1, 0] = Dx
+        apex[:, 0, 1] = apex[:, 1, 1] = Dy
+    offsets = normals[:, :, 0] * apex[:, :, 0] + normals[:, :, 1] * apex[:, :, 1]
+    p = design.program.phases[i]
+    phi = float(sum(q.angle for q in design.program.phases[:i])) + u * p.angle
     return Wedges(
-        phase=np.full(len(u), i),
+        phase=np.full(n, i),
         phi=phi,
         normals=normals,
         offsets=offsets,
         apex=apex,
-        limit=np.full(len(u), float(limit)),
+        limit=np.full(n, float(limit)),
     )
 
 

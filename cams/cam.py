@@ -1,0 +1,56 @@
+"""A cam design with its results computed on first use and kept.
+
+``Cam(design)`` does no work when it is made. Asking for ``solution`` solves
+the zone (once); ``tradeoff`` needs the zone but not the profile; the motion
+diagrams need only the program. Every result is computed once and reused.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+from cams.design import CamDesign
+
+__all__ = ["Cam"]
+
+
+class Cam:
+    """Lazy access to everything about one design.
+
+    Parameters
+    ----------
+    design : CamDesign
+    objective : {"R0", "L"}, optional
+        What to minimize; default from the design file's ``[solve] objective``.
+    """
+
+    def __init__(self, design: CamDesign, *, objective: str | None = None):
+        self.design = design
+        self.objective = objective or design.extra.get("objective", "R0")
+
+    @classmethod
+    def from_file(cls, path) -> "Cam":
+        """Load a design file (no computation)."""
+        from cams.designfile import load_design
+
+        return cls(load_design(path))
+
+    @cached_property
+    def solution(self):
+        """The sized cam (:class:`optimize.solve.SolveResult`), solved on first use."""
+        from optimize.solve import solve
+
+        return solve(self.design, objective=self.objective)
+
+    @cached_property
+    def tradeoff(self):
+        """The R0-L trade-off (rocker only; None for a translating follower)."""
+        if self.design.follower.kind != "rocker":
+            return None
+        from optimize.tradeoff import tradeoff
+
+        return tradeoff(self.design, 15)
+
+    def motion(self, phi):
+        """Displacement and derivatives at cam angles ``phi`` (radians); no solve."""
+        return self.design.program.evaluate(phi)

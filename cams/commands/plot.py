@@ -1,0 +1,80 @@
+"""``cams plot``: pictures of a design as PNG and SVG."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from cams.commands.common import EXIT_OK
+from laws.errors import InputError
+
+__all__ = ["register", "run", "PICTURES"]
+
+#: Picture names in the order they are written; each needs only what it draws.
+PICTURES = ("motion", "zone", "pressure", "profile")
+
+
+def _outdir(path: str) -> Path:
+    out = Path(path)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise InputError("--out", f"cannot create {str(out)!r}: {e.strerror or e}") from None
+    return out
+
+
+def draw(cam, which: tuple[str, ...], out: Path) -> list[Path]:
+    """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    from cams import plots
+
+    stem = out / _slug(cam.design.name)
+    written: list[Path] = []
+    for name in PICTURES:
+        if name not in which:
+            continue
+        if name == "motion":
+            fig = plots.plot_motion(cam.design)
+        elif name == "zone":
+            fig = plots.plot_zone(cam.solution, tradeoff=cam.tradeoff)
+        elif name == "pressure":
+            fig = plots.plot_pressure(cam.solution)
+        else:
+            fig = plots.plot_profile(cam)
+        written += plots.save(fig, f"{stem}_{name}")
+    return written
+
+
+def _slug(name: str) -> str:
+    s = "".join(c if c.isalnum() else "_" for c in name.lower()).strip("_")
+    return s or "cam"
+
+
+def run(args) -> int:
+    from cams.cam import Cam
+
+    which = tuple(w.strip() for w in args.only.split(",")) if args.only else PICTURES
+    for w in which:
+        if w not in PICTURES:
+            raise InputError("--only", f"{w!r} is not a picture, must be among {', '.join(PICTURES)}")
+    cam = Cam.from_file(args.file)
+    for p in draw(cam, which, _outdir(args.out)):
+        print(p)
+    return EXIT_OK
+
+
+def register(sub) -> None:
+    """Add the ``plot`` subcommand."""
+    q = sub.add_parser(
+        "plot",
+        help="pictures: zone, motion diagrams, pressure angle, profile (PNG and SVG)",
+        description="Draw the pictures of a design file; only what is asked for is computed.",
+        epilog="example: cams plot examples/rocker_force.toml --out pictures --only zone,motion",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    q.add_argument("file", help="design file (TOML)")
+    q.add_argument("--out", default=".", help="output folder (default: current)")
+    q.add_argument("--only", help=f"comma-separated subset of {','.join(PICTURES)}")
+    q.set_defaults(func=run)
