@@ -1,0 +1,410 @@
+"""Checks of a finished cam profile: jamming, undercut and sharp points, validity, bore.
+
+Every check is recomputed from the profile (the pitch curve of
+:mod:`cams.profile`), independently of the solver's zone formulas:
+
+* ``jamming_rise`` / ``jamming_return``: the pressure angle over the whole of
+  every constrained phase (the rise; the return too under form closure),
+  from the pitch curve's tangent. The contact normal is the pitch curve's
+  outward normal turned into the fixed frame, ``n = R(eps phi) n_cam``; the
+  pressure angle is ``gamma = arccos(n . e)`` with ``e`` the unit direction of
+  the roller centre's rise (degrees in the report). Values above 90 degrees
+  mean the cam would pull instead of push.
+* ``undercut``: the pitch curve's smallest convex radius of curvature
+  ``rho_min`` must exceed the roller radius, else the working profile has
+  cusps (a knife edge: ``rho_min > 0``, no sharp point). A convex corner of
+  the pitch curve at a phase joint (velocity jump) counts as ``rho = 0``.
+  ``rho_min`` is the largest roller radius that avoids undercut; the usual
+  recommendation is ``0.8 rho_min``.
+* ``undercut_outer`` (groove): the same for the outer wall, with the pitch
+  curve's smallest concave radius ``|rho|``.
+* ``min_curvature_radius`` (when ``[profile] min_curvature_radius`` is set):
+  the working profile's smallest convex radius ``rho - r_roller`` (and the
+  outer wall's ``|rho| - r_roller``) against the user minimum.
+* ``profile_polygon`` / ``outer_polygon``: the closed sampled curve is a valid,
+  simple polygon (no self-intersection) around the cam centre (shapely).
+* ``bore``: the working profile's smallest distance from the cam centre
+  exceeds the bore radius.
+
+Extremes are located on a dense grid per phase (``grid + 1`` positions) and
+refined by bounded scalar search, so they do not depend on the profile's
+sampling.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import minimize_scalar
+
+from cams.design import CamDesign
+from cams.profile import (
+    Profile,
+    ProfileOptions,
+    _cross,
+    _rot,
+    build_profile,
+    default_bore_radius,
+    pitch_phase,
+    profile_options,
+)
+
+__all__ = [
+    "Check",
+    "CheckReport",
+    "pressure_from_profile",
+    "curvature_extremes",
+    "CurvatureExtremes",
+    "check_profile",
+    "check_solution",
+    "check_design",
+    "RECOMMENDED_ROLLER_FRACTION",
+]
+
+#: Usual rule: roller radius at most this fraction of the smallest convex rho.
+RECOMMENDED_ROLLER_FRACTION = 0.8
+
+
+@dataclass(frozen=True)
+class Check:
+    """One check's outcome.
+
+    Attributes
+    ----------
+    name : str
+    passed : bool
+    worst : float or None
+        Worst value found (unit ``unit``); ``None`` where it does not apply.
+    at_deg : float or None
+        Cam angle of the worst value, degrees in [0, 360).
+    limit : float or None
+        The value ``worst`` is compared with (unit ``unit``).
+    unit : str
+        ``"deg"``, ``"mm"`` (the design's length unit) or ``""``.
+    message : str
+        One readable line.
+    """
+
+    name: str
+    passed: bool
+    worst: float | None
+    at_deg: float | None
+    limit: float | None
+    unit: str
+    message: str = ""
+
+    def to_dict(self) -> dict:
+        """JSON-ready ``{name, passed, worst, at_deg, limit, unit}`` (non-finite values as ``None``)."""
+        return {
+            "name": self.name,
+            "passed": bool(self.passed),
+            "worst": _finite(self.worst),
+            "at_deg": _finite(self.at_deg),
+            "limit": _finite(self.limit),
+            "unit": self.unit,
+        }
+
+
+def _finite(x):
+    return None if x is None or not np.isfinite(x) else float(x)
+
+
+@dataclass(frozen=True)
+class CheckReport:
+    """The checks of one profile.
+
+    Attributes
+    ----------
+    name : str
+        Design name.
+    checks : tuple of Check
+    profile : Profile
+        The checked profile (its sampling is what the polygon checks used).
+    largest_roller_radius : float
+        Smallest convex radius of curvature of the pitch curve (length): the
+        largest roller that avoids undercut (for a groove also bounded by the
+        smallest concave radius).
+    recommended_roller_radius : float
+        ``0.8 * largest_roller_radius``.
+    bore_radius : float
+        Bore radius used (length).
+    """
+
+    name: str
+    checks: tuple[Check, ...]
+    profile: Profile
+    largest_roller_radius: float
+    recommended_roller_radius: float
+    bore_radius: float
+    extra: dict = field(default_factory=dict, compare=False)
+
+    @property
+    def passed(self) -> bool:
+        """True when every check passed."""
+        return all(c.passed for c in self.checks)
+
+    def __getitem__(self, name: str) -> Check:
+        for c in self.checks:
+            if c.name == name:
+                return c
+        raise KeyError(name)
+
+    def to_dict(self) -> dict:
+        """JSON-ready report: lengths in the design's unit, angles in degrees."""
+        return {
+            "name": self.name,
+            "passed": bool(self.passed),
+            "checks": [c.to_dict() for c in self.checks],
+            "roller_radius": float(self.profile.roller_radius),
+            "largest_roller_radius": _finite(self.largest_roller_radius),
+            "recommended_roller_radius": _finite(self.recommended_roller_radius),
+            "bore_radius": float(self.bore_radius),
+            "R0": float(self.profile.R0),
+            "points": len(self.profile),
+            "tolerance": float(self.profile.tolerance),
+            **self.extra,
+        }
+
+
+# -- pressure angle from the profile ---------------------------------------------------------
+
+
+def pressure_from_profile(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndarray) -> np.ndarray:
+    """Pressure angle (radians, in [0, pi]) from the pitch curve's tangent.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre, fixed frame.
+    phase : int
+    u : array_like
+        Normalized positions in the phase, [0, 1].
+
+    Notes
+    -----
+    The contact normal is the pitch curve's outward normal (cam frame) turned
+    into the fixed frame by ``R(eps phi)``; the follower's velocity is along
+    ``e = dA/ds / |dA/ds|``. ``gamma = arccos(n . e)``, computed as
+    ``atan2(|n x e|, n . e)`` (accurate near 0).
+    """
+    g = pitch_phase(design, centre, phase, u)
+    n = _rot(g.normal, design.cam_sense * g.phi)
+    e = g.rise_dir
+    return np.arctan2(np.abs(_cross(n, e)), np.sum(n * e, axis=-1))
+
+
+def _phase_max(fun, design: CamDesign, i: int, grid: int) -> tuple[float, float]:
+    """Largest ``fun(u)`` over phase ``i`` and the cam angle (radians) where it occurs."""
+    u = np.linspace(0.0, 1.0, grid + 1)
+    v = fun(u)
+    k = int(np.nanargmax(v))
+    best_u, best = float(u[k]), float(v[k])
+    if design.program.phases[i].kind != "dwell":
+        lo, hi = u[max(k - 1, 0)], u[min(k + 1, grid)]
+        res = minimize_scalar(lambda x: -float(fun(np.array([x]))[0]), bounds=(lo, hi), method="bounded",
+                              options={"xatol": 1e-13})
+        if np.isfinite(res.fun) and -res.fun > best:
+            best_u, best = float(res.x), float(-res.fun)
+    prog = design.program
+    return best, float(prog.starts[i] + best_u * prog.phases[i].angle)
+
+
+# -- curvature --------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class CurvatureExtremes:
+    """Smallest convex and concave radii of curvature of the pitch curve.
+
+    ``convex`` and ``concave`` are lengths (``concave`` as ``|rho|``; ``inf``
+    when the curve has no such part); ``*_at`` cam angles in radians. A corner
+    at a phase joint counts as radius 0.
+    """
+
+    convex: float
+    convex_at: float
+    concave: float
+    concave_at: float | None
+
+
+def curvature_extremes(design: CamDesign, centre: np.ndarray, *, grid: int = 2000) -> CurvatureExtremes:
+    """Smallest convex and concave radius of curvature of the pitch curve.
+
+    The largest signed curvature ``kappa`` (and the largest ``-kappa``) is
+    found per phase on ``grid + 1`` positions and refined by bounded search;
+    ``rho = 1 / kappa``. Phase joints where the pitch curve has a corner give
+    radius 0 on their side.
+    """
+    kmax, kat = -np.inf, 0.0
+    cmax, cat = -np.inf, None
+    prog = design.program
+    nph = len(prog.phases)
+    for i in range(nph):
+        k, at = _phase_max(lambda u: pitch_phase(design, centre, i, u).kappa, design, i, grid)
+        if k > kmax:
+            kmax, kat = k, at
+        k, at = _phase_max(lambda u: -pitch_phase(design, centre, i, u).kappa, design, i, grid)
+        if k > cmax:
+            cmax, cat = k, at
+        end = pitch_phase(design, centre, i, np.array([1.0]))
+        start = pitch_phase(design, centre, (i + 1) % nph, np.array([0.0]))
+        t1, t2 = end.d1[0], start.d1[0]
+        cosang = np.dot(t1, t2) / (np.linalg.norm(t1) * np.linalg.norm(t2))
+        if cosang < 1 - 1e-12:
+            at = float(prog.starts[i + 1] % (2 * np.pi))
+            if np.sign(_cross(t1, t2)) == -design.cam_sense:
+                kmax, kat = np.inf, at
+            elif cmax < np.inf:
+                cmax, cat = np.inf, at
+    convex = 1.0 / kmax if kmax > 0 else np.inf
+    concave = 1.0 / cmax if cmax > 0 else np.inf
+    return CurvatureExtremes(float(convex), float(kat), float(concave), None if cmax <= 0 else cat)
+
+
+# -- the checks ------------------------------------------------------------------------------
+
+
+def _deg(phi: float | None) -> float | None:
+    return None if phi is None else float(np.degrees(phi) % 360.0)
+
+
+def _polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:
+    import shapely
+    from shapely.geometry import LinearRing, Point, Polygon
+
+    ring = LinearRing(pts)
+    poly = Polygon(ring)
+    valid = bool(poly.is_valid and ring.is_simple)
+    around = bool(poly.contains(Point(0.0, 0.0)))
+    at = None
+    msg = f"{len(pts)} points, a simple closed curve round the cam centre"
+    if not valid:
+        loc = None
+        reason = shapely.is_valid_reason(poly)
+        if not ring.is_simple:
+            # a self-intersection: noding the ring adds its crossings as new vertices
+            nodes = shapely.get_coordinates(shapely.unary_union(ring))
+            known = {tuple(np.round(p, 12)) for p in pts}
+            extra = [p for p in nodes if tuple(np.round(p, 12)) not in known]
+            loc = extra[0] if extra else None
+        if loc is None and "[" in reason:
+            try:
+                loc = np.array([float(x) for x in reason[reason.index("[") + 1:reason.index("]")].split()[:2]])
+            except ValueError:  # pragma: no cover - shapely's message format
+                loc = None
+        if loc is not None:
+            at = _deg(phi[int(np.argmin(np.linalg.norm(pts - np.asarray(loc), axis=1)))])
+        msg = f"self-intersecting or invalid polygon ({reason})"
+    elif not around:
+        msg = "the closed curve does not surround the cam centre"
+    return Check(name, valid and around, None, at, None, "", msg)
+
+
+def check_profile(
+    design: CamDesign,
+    centre: np.ndarray,
+    *,
+    options: ProfileOptions | None = None,
+    profile: Profile | None = None,
+    grid: int = 2000,
+) -> CheckReport:
+    """Run every check on the cam of ``design`` with its centre at ``centre``.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre in the fixed frame (``SolveResult.centre``), length unit.
+    options : ProfileOptions, optional
+        Tolerance, user minimum radius of curvature, bore radius; default from
+        the design file (:func:`cams.profile.profile_options`).
+    profile : Profile, optional
+        An already built profile of the same design and centre.
+    grid : int
+        Positions per phase of the dense search for extremes.
+
+    Returns
+    -------
+    CheckReport
+    """
+    opts = options if options is not None else profile_options(design)
+    centre = np.asarray(centre, dtype=float)
+    prof = profile if profile is not None else build_profile(design, centre, tolerance=opts.tolerance)
+    r = prof.roller_radius
+    checks: list[Check] = []
+
+    # jamming
+    by_kind: dict[str, tuple[float, float, float]] = {}
+    for i, lim in design.constrained_phases():
+        kind = design.program.phases[i].kind
+        g, at = _phase_max(lambda u: pressure_from_profile(design, centre, i, u), design, i, grid)
+        if kind not in by_kind or g - lim > by_kind[kind][0] - by_kind[kind][2]:
+            by_kind[kind] = (g, at, lim)
+    for kind in ("rise", "return"):
+        if kind in by_kind:
+            g, at, lim = by_kind[kind]
+            ok = g <= lim + 1e-7
+            checks.append(Check(f"jamming_{kind}", bool(ok), float(np.degrees(g)), _deg(at), float(np.degrees(lim)),
+                                "deg", f"largest pressure angle on the {kind} {np.degrees(g):.4f} deg "
+                                f"(limit {np.degrees(lim):.4f} deg)"))
+
+    # undercut and sharp points
+    ext = curvature_extremes(design, centre, grid=grid)
+    checks.append(Check("undercut", bool(ext.convex > r), ext.convex, _deg(ext.convex_at), r, "mm",
+                        f"smallest convex radius of curvature of the pitch curve {ext.convex:.6g} "
+                        f"vs roller radius {r:g}"))
+    largest = ext.convex
+    if prof.groove:
+        checks.append(Check("undercut_outer", bool(ext.concave > r), ext.concave, _deg(ext.concave_at), r, "mm",
+                            f"smallest concave radius of curvature of the pitch curve {ext.concave:.6g} "
+                            f"vs roller radius {r:g} (outer wall of the groove)"))
+        largest = min(largest, ext.concave)
+    if opts.min_curvature_radius is not None:
+        worst, at = ext.convex - r, ext.convex_at
+        if prof.groove and ext.concave - r < worst:
+            worst, at = ext.concave - r, ext.concave_at
+        checks.append(Check("min_curvature_radius", bool(worst >= opts.min_curvature_radius), worst, _deg(at),
+                            float(opts.min_curvature_radius), "mm",
+                            f"smallest convex radius of curvature of the working profile {worst:.6g}"))
+
+    # polygons
+    checks.append(_polygon_check("profile_polygon", prof.work, prof.phi))
+    if prof.groove:
+        checks.append(_polygon_check("outer_polygon", prof.outer, prof.phi))
+
+    # bore
+    bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
+    rad = np.linalg.norm(prof.work, axis=1)
+    k = int(np.argmin(rad))
+    rmin = prof.min_work_radius
+    checks.append(Check("bore", bool(rmin > bore), rmin, _deg(prof.phi[k]), float(bore), "mm",
+                        f"working profile's smallest radius {rmin:.6g} vs bore radius {bore:.6g}"))
+    return CheckReport(
+        name=design.name,
+        checks=tuple(checks),
+        profile=prof,
+        largest_roller_radius=float(largest),
+        recommended_roller_radius=float(RECOMMENDED_ROLLER_FRACTION * largest),
+        bore_radius=float(bore),
+    )
+
+
+def check_solution(result, *, tolerance: float | None = None, options: ProfileOptions | None = None) -> CheckReport:
+    """Check the profile of a solved design (an ``optimize.solve.SolveResult``).
+
+    ``tolerance`` overrides the design file's ``[profile] tolerance``.
+    """
+    opts = options if options is not None else profile_options(result.design, tolerance=tolerance)
+    return check_profile(result.design, result.centre, options=opts)
+
+
+def check_design(design: CamDesign, *, tolerance: float | None = None, method: str | None = None) -> CheckReport:
+    """Solve ``design`` (:func:`optimize.solve.solve`) and check the profile of the solved centre."""
+    from optimize.solve import solve
+
+    opts = profile_options(design, tolerance=tolerance)  # bad options fail before solving
+    result = solve(design, method=method, objective=design.extra.get("objective", "R0"))
+    return check_profile(result.design, result.centre, options=opts)
+
