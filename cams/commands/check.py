@@ -1,0 +1,62 @@
+"""``cams check``: solve a design, then check its profile (jamming, undercut, validity, bore)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+
+__all__ = ["register", "print_checks"]
+
+
+def _fmt(x, unit: str) -> str:
+    if x is None:
+        return "-"
+    return f"{x:.4f} {unit}".rstrip()
+
+
+def print_checks(rep: dict) -> None:
+    """Readable table of a check report (as from ``CheckReport.to_dict``)."""
+    print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, R0 = {rep['R0']:.6f} mm")
+    for c in rep["checks"]:
+        at = "" if c["at_deg"] is None else f" at {c['at_deg']:.4f} deg"
+        lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'])})"
+        print(f"  {'pass' if c['passed'] else 'FAIL'}  {c['name']:<22} {_fmt(c['worst'], c['unit'])}{at}{lim}")
+    lr = rep["largest_roller_radius"]
+    if lr is not None:
+        print(f"  roller radius {rep['roller_radius']:g} mm; largest without undercut {lr:.4f} mm, "
+              f"recommended <= {rep['recommended_roller_radius']:.4f} mm")
+    print(f"  bore radius {rep['bore_radius']:.4f} mm; {'all checks pass' if rep['passed'] else 'a check FAILS'}")
+
+
+def run(args) -> int:
+    from cams.checks import check_design
+    from cams.designfile import load_design
+
+    design = load_design(args.file)
+    report = check_design(design, tolerance=args.tolerance, method=args.method)
+    rep = report.to_dict()
+    if args.json:
+        print(json.dumps(rep, indent=2))
+    else:
+        print_checks(rep)
+    return EXIT_OK if report.passed else EXIT_CHECK_FAILED
+
+
+def register(sub) -> None:
+    """Add the ``check`` subcommand."""
+    q = sub.add_parser(
+        "check",
+        help="solve, then check the profile: jamming, undercut, polygon, bore",
+        description="Solve a design file and check the finished profile: pressure angle recomputed from the "
+                    "pitch curve, undercut and sharp points, a valid closed working profile, the bore. "
+                    "Exit code 0: all pass, 1: a check fails, 2: bad input.",
+        epilog="example: cams check examples/rocker_force.toml --json",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    q.add_argument("file", help="design file (TOML)")
+    q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
+    q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override [solve] method")
+    q.add_argument("--json", action="store_true", help="print the checks as JSON")
+    q.set_defaults(func=run)

@@ -1,0 +1,81 @@
+"""``cams profile``: solve a design and export its profile (CSV, DXF, SVG)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from cams.commands.common import EXIT_OK
+
+__all__ = ["register"]
+
+
+def run(args) -> int:
+    from cams.checks import curvature_extremes
+    from cams.designfile import load_design
+    from cams.export import check_output_path, write_csv, write_dxf, write_svg
+    from cams.profile import build_profile, default_bore_radius, profile_options
+    from optimize.solve import solve
+
+    design = load_design(args.file)
+    opts = profile_options(design, tolerance=args.tolerance)
+    for opt in ("csv", "dxf", "svg"):  # fail before solving, and before writing any file
+        out = getattr(args, opt)
+        if out:
+            check_output_path(out, f"--{opt}")
+    result = solve(design, method=args.method, objective=design.extra.get("objective", "R0"))
+    prof = build_profile(result.design, result.centre, tolerance=opts.tolerance)
+    bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
+    written = []
+    if args.csv:
+        written.append(str(write_csv(prof, args.csv)))
+    if args.dxf:
+        written.append(str(write_dxf(prof, args.dxf, bore_radius=bore)))
+    if args.svg:
+        written.append(str(write_svg(prof, args.svg, bore_radius=bore)))
+    ext = curvature_extremes(result.design, result.centre)
+    rep = {
+        "name": design.name,
+        "points": len(prof),
+        "tolerance": prof.tolerance,
+        "R0": prof.R0,
+        "centre": {"x": float(result.centre[0]), "y": float(result.centre[1])},
+        "roller_radius": prof.roller_radius,
+        "min_work_radius": prof.min_work_radius,
+        "bore_radius": bore,
+        "largest_roller_radius": ext.convex if prof.outer is None else min(ext.convex, ext.concave),
+        "groove": prof.groove,
+        "written": written,
+    }
+    if args.json:
+        print(json.dumps(rep, indent=2))
+    else:
+        print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
+              f"R0 = {rep['R0']:.6f} mm, working profile radius >= {rep['min_work_radius']:.6f} mm, "
+              f"bore {bore:.4f} mm")
+        if rep["largest_roller_radius"] <= prof.roller_radius:
+            print(f"  warning: undercut: roller radius {prof.roller_radius:g} mm >= largest allowed "
+                  f"{rep['largest_roller_radius']:.4f} mm (run cams check)")
+        for w in written:
+            print(f"  wrote {w}")
+    return EXIT_OK
+
+
+def register(sub) -> None:
+    """Add the ``profile`` subcommand."""
+    q = sub.add_parser(
+        "profile",
+        help="solve, then export the cam profile as CSV, DXF or SVG",
+        description="Solve a design file and write its profile in the cam frame (mm): pitch curve, working "
+                    "profile (and outer groove wall), sampled within a chord tolerance.",
+        epilog="example: cams profile examples/rocker_force.toml --csv cam.csv --dxf cam.dxf --svg cam.svg",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    q.add_argument("file", help="design file (TOML)")
+    q.add_argument("--csv", metavar="OUT", help="write phi_deg,pitch_x,pitch_y,work_x,work_y[,outer_x,outer_y]")
+    q.add_argument("--dxf", metavar="OUT", help="write a DXF drawing (layers PROFILE, PITCH, BASE, BORE)")
+    q.add_argument("--svg", metavar="OUT", help="write an SVG drawing to scale")
+    q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
+    q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override [solve] method")
+    q.add_argument("--json", action="store_true", help="print the summary as JSON")
+    q.set_defaults(func=run)

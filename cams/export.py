@@ -1,0 +1,247 @@
+"""Exports of a sampled cam profile for manufacturing: CSV, DXF, SVG.
+
+Everything is written in the cam frame of :mod:`cams.profile` (origin at the
+cam centre, cam at ``phi = 0``), in the design's length unit (mm). Each file
+is written to a temporary file in the target's folder and moved into place
+with :func:`os.replace`, so a failed export leaves no partial file behind.
+
+Layers (DXF) and groups (SVG):
+
+* ``PROFILE``: the working profile, a closed polyline within the chord
+  tolerance of the true envelope;
+* ``OUTER``: the outer wall of a groove (form closure only);
+* ``PITCH``: the pitch curve (roller-centre path);
+* ``BASE``: the base circle of radius R0 (the pitch curve's, the project's R0);
+* ``BORE``: the bore circle.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from cams.profile import Profile, default_bore_radius
+from laws.errors import InputError
+
+__all__ = ["write_csv", "write_dxf", "write_svg", "csv_header", "check_output_path", "LAYERS"]
+
+#: Layer names of the drawings, in drawing order.
+LAYERS = ("PROFILE", "OUTER", "PITCH", "BASE", "BORE")
+_COLOURS = {"PROFILE": 7, "OUTER": 7, "PITCH": 1, "BASE": 3, "BORE": 5}  # AutoCAD colour index
+_SVG_STYLE = {
+    "PROFILE": 'stroke="#000000"',
+    "OUTER": 'stroke="#000000"',
+    "PITCH": 'stroke="#c00000" stroke-dasharray="{d} {d}"',
+    "BASE": 'stroke="#008000" stroke-dasharray="{d} {d}"',
+    "BORE": 'stroke="#0000c0"',
+}
+
+
+def check_output_path(path: str | os.PathLike, field: str) -> Path:
+    """Raise :class:`InputError` unless ``path`` can be created (its folder exists, it is no folder).
+
+    Parameters
+    ----------
+    path : path-like
+    field : str
+        Name of the option for the message (e.g. ``"--csv"``).
+    """
+    p = Path(path)
+    folder = p.parent if str(p.parent) else Path(".")
+    if not folder.is_dir():
+        raise InputError(field, f"cannot write {str(p)!r}: folder {str(folder)!r} does not exist")
+    if p.is_dir():
+        raise InputError(field, f"cannot write {str(p)!r}: it is a folder")
+    if not os.access(folder, os.W_OK):
+        raise InputError(field, f"cannot write {str(p)!r}: folder {str(folder)!r} is not writable")
+    return p
+
+
+def _atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None]) -> Path:
+    """Call ``write(tmp)`` for a temporary file next to ``path``, then move it to ``path``.
+
+    Raises
+    ------
+    InputError
+        The folder does not exist or the file cannot be written; no file is
+        left behind.
+    """
+    p = Path(path)
+    folder = p.parent if str(p.parent) else Path(".")
+    try:
+        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{p.name}.", suffix=".tmp")
+    except OSError as e:
+        raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
+    os.close(fd)
+    try:
+        write(tmp)
+        os.replace(tmp, p)
+    except OSError as e:
+        raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+    return p
+
+
+def csv_header(profile: Profile) -> str:
+    """The CSV header line (without newline)."""
+    cols = ["phi_deg", "pitch_x", "pitch_y", "work_x", "work_y"]
+    if profile.outer is not None:
+        cols += ["outer_x", "outer_y"]
+    return ",".join(cols)
+
+
+def write_csv(profile: Profile, path: str | os.PathLike, *, field: str = "--csv") -> Path:
+    """Write the profile as CSV: one header line, then one row per sample.
+
+    Columns ``phi_deg,pitch_x,pitch_y,work_x,work_y`` (plus ``outer_x,outer_y``
+    for a groove): cam angle in degrees, coordinates in the cam frame, length
+    unit; rows in cam-angle order, the first at ``phi = 0``. The curves are
+    closed: the last row joins the first.
+
+    Parameters
+    ----------
+    profile : Profile
+    path : path-like
+    field : str
+        Name of the option for error messages.
+
+    Raises
+    ------
+    InputError
+        The file cannot be written (no partial file is left).
+    """
+    cols = [np.degrees(profile.phi), profile.pitch[:, 0], profile.pitch[:, 1], profile.work[:, 0], profile.work[:, 1]]
+    if profile.outer is not None:
+        cols += [profile.outer[:, 0], profile.outer[:, 1]]
+    data = np.column_stack(cols)
+
+    def write(tmp: str) -> None:
+        with open(tmp, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(csv_header(profile) + "\n")
+            np.savetxt(fh, data, fmt="%.9f", delimiter=",")
+
+    return _atomic_write(path, field, write)
+
+
+def _bore(profile: Profile, bore_radius: float | None) -> float:
+    if bore_radius is None:
+        return default_bore_radius(profile)
+    if not (np.isfinite(bore_radius) and bore_radius > 0):
+        raise InputError("cam.bore_radius", f"must be > 0, got {bore_radius!r}")
+    return float(bore_radius)
+
+
+def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float | None = None,
+              field: str = "--dxf") -> Path:
+    """Write the profile as a DXF drawing (R2010, millimetres).
+
+    The working profile (layer ``PROFILE``), the groove's outer wall
+    (``OUTER``) and the pitch curve (``PITCH``) are closed LWPOLYLINEs through
+    the profile's samples (within its chord tolerance); the base circle of
+    radius R0 (``BASE``) and the bore (``BORE``) are circles about the origin,
+    the cam centre.
+
+    Parameters
+    ----------
+    profile : Profile
+    path : path-like
+    bore_radius : float, optional
+        Length unit; default :func:`cams.profile.default_bore_radius`.
+    field : str
+        Name of the option for error messages.
+    """
+    import ezdxf
+    from ezdxf import units
+
+    bore = _bore(profile, bore_radius)
+    doc = ezdxf.new("R2010")
+    doc.units = units.MM
+    doc.header["$MEASUREMENT"] = 1
+    for name in LAYERS:
+        if name == "OUTER" and profile.outer is None:
+            continue
+        doc.layers.add(name, color=_COLOURS[name])
+    msp = doc.modelspace()
+    msp.add_lwpolyline(profile.work.tolist(), format="xy", close=True, dxfattribs={"layer": "PROFILE"})
+    if profile.outer is not None:
+        msp.add_lwpolyline(profile.outer.tolist(), format="xy", close=True, dxfattribs={"layer": "OUTER"})
+    msp.add_lwpolyline(profile.pitch.tolist(), format="xy", close=True, dxfattribs={"layer": "PITCH"})
+    msp.add_circle((0.0, 0.0), profile.R0, dxfattribs={"layer": "BASE"})
+    msp.add_circle((0.0, 0.0), bore, dxfattribs={"layer": "BORE"})
+
+    def write(tmp: str) -> None:
+        doc.saveas(tmp)
+
+    return _atomic_write(path, field, write)
+
+
+def _path_d(pts: np.ndarray) -> str:
+    """SVG path data of a closed polyline, y turned downwards (SVG's convention)."""
+    xy = [f"{x:.6f},{-y:.6f}" for x, y in pts]
+    return "M" + " L".join(xy) + " Z"
+
+
+def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float | None = None,
+              field: str = "--svg") -> Path:
+    """Write the profile as an SVG drawing to scale (1 user unit = 1 mm).
+
+    The ``viewBox`` is in millimetres and the ``width``/``height`` carry the
+    ``mm`` unit, so the drawing prints at 1:1. SVG's y axis points down: the
+    cam frame's y is negated. Groups with ``id`` ``PROFILE``, ``OUTER``,
+    ``PITCH``, ``BASE``, ``BORE`` as in the DXF.
+
+    Parameters
+    ----------
+    profile : Profile
+    path : path-like
+    bore_radius : float, optional
+        Length unit; default :func:`cams.profile.default_bore_radius`.
+    field : str
+        Name of the option for error messages.
+    """
+    from xml.sax.saxutils import escape
+
+    bore = _bore(profile, bore_radius)
+    pts = [profile.work, profile.pitch] + ([profile.outer] if profile.outer is not None else [])
+    allp = np.concatenate(pts)
+    ext = max(float(np.max(np.abs(allp))), profile.R0)
+    margin = 0.05 * ext
+    lo = -ext - margin
+    size = 2 * (ext + margin)
+    sw = max(size / 1000.0, 0.05)
+    dash = f"{2 * sw:.4f}"
+    body = {
+        "PROFILE": f'<path d="{_path_d(profile.work)}"/>',
+        "OUTER": f'<path d="{_path_d(profile.outer)}"/>' if profile.outer is not None else None,
+        "PITCH": f'<path d="{_path_d(profile.pitch)}"/>',
+        "BASE": f'<circle cx="0" cy="0" r="{profile.R0:.6f}"/>',
+        "BORE": f'<circle cx="0" cy="0" r="{bore:.6f}"/>',
+    }
+    lines = [
+        '<?xml version="1.0" encoding="UTF-8"?>',
+        f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="{size:.4f}mm" height="{size:.4f}mm" '
+        f'viewBox="{lo:.4f} {lo:.4f} {size:.4f} {size:.4f}">',
+        f"<title>{escape(profile.name)}: cam profile, cam frame, mm</title>",
+    ]
+    for name in LAYERS:
+        if body[name] is None:
+            continue
+        style = _SVG_STYLE[name].format(d=dash)
+        lines.append(f'<g id="{name}" fill="none" {style} stroke-width="{sw:.4f}">{body[name]}</g>')
+    c = 0.03 * ext
+    lines.append(f'<g id="CENTRE" stroke="#000000" stroke-width="{sw / 2:.4f}">'
+                 f'<line x1="{-c:.4f}" y1="0" x2="{c:.4f}" y2="0"/><line x1="0" y1="{-c:.4f}" x2="0" y2="{c:.4f}"/></g>')
+    lines.append("</svg>")
+    text = "\n".join(lines) + "\n"
+
+    def write(tmp: str) -> None:
+        with open(tmp, "w", encoding="utf-8") as fh:
+            fh.write(text)
+
+    return _atomic_write(path, field, write)
