@@ -1,0 +1,759 @@
+"""The seeds' linkages as ready-made machines, built group by group from :mod:`cams.linkage`.
+
+* :class:`SlottingMachine` -- seed 003 (插床): crank O2A, block A on the guide
+  bar O3B (RPR dyad), link BC and the tool slider C on the guide y-y (RRP).
+* :class:`CrankSlider` -- seed 002: crank OA, rod AB, slider B (RRP).
+* :class:`OpposedTwin` -- seed 000: a two-cylinder mechanism, cranks OA and
+  OC at 90 degrees on one shaft, rods AB and CD, pistons B and D on one axis
+  on opposite sides of O (two RRP dyads).
+* :class:`SlottedLeverPump` -- seed 004: crank O1A, block A on the swinging
+  lever O2C (RPR), the piston driven from C through a block in its slot (RPP,
+  a Scotch yoke).
+
+Frames and signs
+----------------
+Every machine has its crank centre at the origin; angles are radians,
+counter-clockwise from +x; ``crank_sense`` is +1 when the crank turns
+counter-clockwise, -1 clockwise. For the slotted-lever machines the +x axis
+points from the bar's pivot (O3, resp. O2 in the pump) to the crank centre,
+so the pivot sits at ``(-L, 0)`` and the bar's mid-position lies along x;
+the output moves along y. Lengths are in the caller's unit (mm in machine
+files); velocities and accelerations are time derivatives for the crank's
+``omega`` (rad/s), by default the machine's own (from ``rpm`` and the sense),
+or ``crank_sense * 1 rad/s`` (analogues per radian of crank rotation) when
+no rpm is given.
+
+Each machine exposes ``kinematics(phi)`` (every point and link),
+``output(phi)`` (the working member's coordinate, the protocol of
+:func:`cams.linkage.analyse`), ``transmission(phi)`` and ``lengths()``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from cams.linkage.primitives import (
+    Angle,
+    AssemblyError,
+    Point,
+    Slide,
+    acute_angle,
+    crank,
+    ground,
+    on_link,
+    rpp,
+    rpr,
+    rrp,
+)
+from cams.linkage.synthesis import SlottedLeverSynthesis, crank_slider_crank, slotted_lever_synthesis
+from laws.errors import InputError
+
+__all__ = [
+    "SlottingMachine",
+    "SlottingKinematics",
+    "CrankSlider",
+    "CrankSliderKinematics",
+    "OpposedTwin",
+    "OpposedTwinKinematics",
+    "SlottedLeverPump",
+    "PumpKinematics",
+    "MACHINES",
+    "describe_angles",
+]
+
+TWO_PI = 2 * np.pi
+_CHECK_GRID = np.linspace(0.0, TWO_PI, 1440, endpoint=False)
+
+
+def describe_angles(phi: np.ndarray, mask: np.ndarray, *, periodic: bool = False) -> str:
+    """Contiguous runs of ``phi[mask]`` as text in degrees, e.g. ``"10.0-35.5 deg"``.
+
+    Parameters
+    ----------
+    phi : ndarray
+        Crank angles, radians, increasing.
+    mask : ndarray of bool
+        Selected entries.
+    periodic : bool, optional
+        ``phi`` covers one turn: a run touching both ends is one run across 0.
+
+    Examples
+    --------
+    >>> describe_angles(np.radians([0, 10, 20, 30, 40]), np.array([0, 1, 1, 0, 1], bool))
+    '10.0-20.0, 40.0 deg'
+    >>> describe_angles(np.radians([0, 90, 180, 270]), np.array([1, 0, 0, 1], bool), periodic=True)
+    '270.0-0.0 deg'
+    """
+    deg = np.degrees(np.ravel(phi))
+    mask = np.ravel(np.broadcast_to(mask, np.shape(deg))).astype(bool)
+    runs, start = [], None
+    for k, m in enumerate(mask):
+        if m and start is None:
+            start = k
+        if (not m or k == len(mask) - 1) and start is not None:
+            runs.append([start, k if m else k - 1])
+            start = None
+    if periodic and len(runs) > 1 and runs[0][0] == 0 and runs[-1][1] == len(mask) - 1:
+        runs[0][0] = runs.pop()[0]
+    text = [f"{deg[a]:.1f}" if a == b else f"{deg[a]:.1f}-{deg[b]:.1f}" for a, b in runs]
+    return ", ".join(text) + " deg"
+
+
+def _num(field_: str, v) -> float:
+    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v):
+        raise InputError(field_, f"must be a number, got {v!r}")
+    return float(v)
+
+
+def _pos(field_: str, v) -> float:
+    v = _num(field_, v)
+    if v <= 0:
+        raise InputError(field_, f"must be > 0, got {v!r}")
+    return v
+
+
+def _sign(field_: str, v, words=("+1", "-1")) -> None:
+    if v not in (1, -1):
+        raise InputError(field_, f"must be +1 or -1 ({words[0]} or {words[1]}), got {v!r}")
+
+
+class _Base:
+    """Shared plumbing: crank speed, error context, checks."""
+
+    crank_sense: int
+    rpm: float | None
+
+    def _check_common(self) -> None:
+        _sign("linkage.crank_rotation", self.crank_sense, ("ccw", "cw"))
+        if self.rpm is not None:
+            _pos("linkage.rpm", self.rpm)
+
+    @property
+    def omega(self) -> float:
+        """Crank angular velocity, rad/s, signed; ``crank_sense`` when no rpm is set."""
+        if self.rpm is None:
+            return float(self.crank_sense)
+        return float(self.crank_sense * self.rpm * TWO_PI / 60.0)
+
+    def _w(self, omega: float | None) -> float:
+        return self.omega if omega is None else float(omega)
+
+    def _assembled(self, fn, phi):
+        """Run ``fn(phi)``; re-raise an :class:`AssemblyError` with the crank angles where it fails."""
+        try:
+            return fn(phi)
+        except AssemblyError as e:
+            periodic = phi is _CHECK_GRID
+            where = describe_angles(phi, e.mask, periodic=periodic) if e.mask is not None else "some positions"
+            raise AssemblyError(e.field, f"{e.message}; fails at crank angles {where}", e.mask) from None
+
+    def _check_assembly(self) -> None:
+        self._assembled(lambda p: self.kinematics(p, omega=1.0), _CHECK_GRID)
+
+
+def _swing_bar_checks(crank_: float, L: float, bar: float, side: int, name: str, field_: str) -> None:
+    if crank_ >= L:
+        raise InputError(
+            "linkage.crank",
+            f"l = {crank_:.6g} must be shorter than the centre distance {L:.6g} for a swinging {name} "
+            "(a longer crank makes the bar rotate fully)",
+        )
+    if side == 1 and (L - crank_) <= bar <= (L + crank_):
+        raise InputError(
+            field_,
+            f"with the pin on the crank's side of the pivot, {bar:.6g} lies inside the block's travel "
+            f"[{L - crank_:.6g}, {L + crank_:.6g}] along the {name}; use the opposite side or a length "
+            f"< {L - crank_:.6g} or > {L + crank_:.6g}",
+        )
+
+
+# --------------------------------------------------------------------------- slotting machine
+@dataclass(frozen=True, eq=False)
+class SlottingKinematics:
+    """Every point and link of :class:`SlottingMachine` at crank angles ``phi``.
+
+    Attributes
+    ----------
+    phi : ndarray
+        Crank angles, radians (frame).
+    A : Point
+        Crank pin (block 3 on the bar).
+    crank, bar, rod : Angle
+        Crank O2A, guide bar (direction O3 -> A), link BC (direction B -> C).
+    slide : Slide
+        The block's distance from O3 along the bar, the relative sliding
+        velocity v_A3A2 (here: of the block relative to the bar) and
+        acceleration a^r.
+    B, C : Point
+        Bar pin B and tool point C.
+    tool : Slide
+        The tool's coordinate y_C along y-y and its derivatives.
+    transmission : ndarray
+        Transmission angle at C: 90 deg minus the angle between BC and y-y, radians.
+    """
+
+    phi: np.ndarray
+    A: Point
+    crank: Angle
+    bar: Angle
+    slide: Slide
+    B: Point
+    rod: Angle
+    C: Point
+    tool: Slide
+    transmission: np.ndarray
+
+    @property
+    def coriolis(self) -> np.ndarray:
+        """Magnitude of the block's Coriolis acceleration on the turning bar, 2 |omega_3 v_rel|."""
+        return 2 * np.abs(self.bar.omega * self.slide.ds)
+
+
+@dataclass(frozen=True, eq=False)
+class SlottingMachine(_Base):
+    """The slotting machine's six-bar linkage (seed 003, 六杆插床机构).
+
+    Frame: origin at the crank centre O2 (the feed cam's shaft), +x from the
+    bar pivot O3 to O2, so ``O3 = (-L, 0)``; the tool's guide y-y is the line
+    ``x = guide_x``, the tool moves along y.
+
+    Parameters
+    ----------
+    crank : float
+        l_O2A, > 0 and < ``centre_distance``.
+    centre_distance : float
+        L_O2O3.
+    bar : float
+        l_O3B.
+    rod : float
+        l_BC.
+    guide_x : float
+        x of the tool's guide y-y.
+    bar_side : {-1, +1}
+        -1: B on the far side of O3 from the crank (the usual 插床 layout, and
+        the only one possible when l_O3B falls in the block's travel); +1: B
+        on the crank's side.
+    tool_side : {+1, -1}
+        Branch of the RRP dyad: C on the +y side of B (+1) or the -y side.
+    crank_sense : {+1, -1}
+        Crank turns counter-clockwise (+1) or clockwise.
+    rpm : float or None
+        Crank speed, rev/min.
+    synthesis : SlottedLeverSynthesis or None
+        Course data the lengths came from (informational).
+
+    Raises
+    ------
+    InputError
+        Non-positive lengths, a crank not shorter than L, B inside the block's
+        travel.
+    AssemblyError
+        BC cannot reach y-y at some crank angle; the message gives those
+        angles and the shortest l_BC that fits.
+    """
+
+    crank: float
+    centre_distance: float
+    bar: float
+    rod: float
+    guide_x: float
+    bar_side: int = -1
+    tool_side: int = 1
+    crank_sense: int = 1
+    rpm: float | None = None
+    synthesis: SlottedLeverSynthesis | None = field(default=None, compare=False)
+
+    kind = "slotting"
+
+    def __post_init__(self):
+        for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("bar", self.bar), ("rod", self.rod)):
+            _pos(f"linkage.{f}", v)
+        _num("linkage.guide_x", self.guide_x)
+        _sign("linkage.bar_side", self.bar_side, ("same", "opposite"))
+        _sign("linkage.tool_side", self.tool_side, ("above", "below"))
+        self._check_common()
+        _swing_bar_checks(self.crank, self.centre_distance, self.bar, self.bar_side, "guide bar", "linkage.bar")
+        # BC must reach y-y at every swing: x_B = -L + side*bar*cos(beta), |beta| <= theta/2
+        half = self.half_swing
+        xb = -self.centre_distance + self.bar_side * self.bar * np.array([1.0, np.cos(half)])
+        need = float(np.max(np.abs(self.guide_x - xb)))
+        if self.rod < need:
+            try:
+                self._check_assembly()
+            except AssemblyError as e:
+                where = e.message.rsplit("fails at crank angles ", 1)[-1]
+                raise AssemblyError(
+                    "linkage.rod",
+                    f"link BC of {self.rod:.6g} cannot reach the guide y-y at crank angles {where}; "
+                    f"it needs l_BC >= {need:.6g} (or y-y moved toward B's arc)",
+                    e.mask,
+                ) from None
+
+    @classmethod
+    def from_course(
+        cls,
+        time_ratio: float,
+        stroke: float,
+        centre_distance: float,
+        rod_ratio: float,
+        *,
+        bar_side: int = -1,
+        tool_side: int = 1,
+        crank_sense: int = 1,
+        rpm: float | None = None,
+    ) -> "SlottingMachine":
+        """Synthesis from the course data (seed 003, table 1-1): K, H, L_O2O3, l_BC/l_O3B.
+
+        The guide y-y goes through the middle of the sagitta of B's arc (the
+        seed's "most favourable" position for BC driving the tool).
+
+        Examples
+        --------
+        >>> m = SlottingMachine.from_course(2.0, 100.0, 150.0, 1.0)
+        >>> round(m.crank, 9), round(m.bar, 9), round(m.rod, 9)
+        (75.0, 100.0, 100.0)
+        """
+        _sign("linkage.bar_side", bar_side, ("same", "opposite"))
+        syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance, rod_ratio)
+        return cls(
+            crank=syn.crank,
+            centre_distance=syn.centre_distance,
+            bar=syn.bar,
+            rod=syn.rod,
+            guide_x=-syn.centre_distance + bar_side * syn.guide_distance,
+            bar_side=bar_side,
+            tool_side=tool_side,
+            crank_sense=crank_sense,
+            rpm=rpm,
+            synthesis=syn,
+        )
+
+    @property
+    def half_swing(self) -> float:
+        """Half the bar's swing, theta/2 = asin(l_O2A / L), radians."""
+        return float(np.arcsin(self.crank / self.centre_distance))
+
+    def kinematics(self, phi, *, omega: float | None = None) -> SlottingKinematics:
+        """Positions, velocities and accelerations at crank angles ``phi`` (radians)."""
+        w = self._w(omega)
+        phi = np.asarray(phi, dtype=float)
+
+        def run(p):
+            A, cr = crank(ground(0j), self.crank, p, omega=w)
+            bar, slide = rpr(A, ground(-self.centre_distance + 0j), field="linkage.bar")
+            B = on_link(ground(-self.centre_distance + 0j), bar, self.bar_side * self.bar)
+            up = Angle(np.pi / 2, 0.0, 0.0)
+            C, rod, tool = rrp(B, self.rod, ground(self.guide_x + 0j), up, branch=self.tool_side, field="linkage.rod")
+            mu = np.pi / 2 - acute_angle(rod.angle, np.pi / 2)
+            return SlottingKinematics(p, A, cr, bar, slide, B, rod, C, tool, mu)
+
+        return self._assembled(run, phi)
+
+    def output(self, phi, omega: float = 1.0) -> Slide:
+        """The tool's coordinate y_C and its derivatives."""
+        return self.kinematics(phi, omega=omega).tool
+
+    def transmission(self, phi) -> np.ndarray:
+        """Transmission angle at the tool slider C, radians (the bar's is 90 deg throughout)."""
+        return self.kinematics(phi, omega=1.0).transmission
+
+    def lengths(self) -> dict:
+        """The linkage's dimensions under the seed's names (length unit of the machine)."""
+        return {
+            "type": self.kind,
+            "l_O2A": self.crank,
+            "L_O2O3": self.centre_distance,
+            "l_O3B": self.bar,
+            "l_BC": self.rod,
+            "x_yy": self.guide_x,
+            "swing_deg": float(np.degrees(2 * self.half_swing)),
+            "bar_side": "same" if self.bar_side == 1 else "opposite",
+            "tool_side": "above" if self.tool_side == 1 else "below",
+            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
+            "rpm": self.rpm,
+        }
+
+
+# --------------------------------------------------------------------------- crank-slider
+@dataclass(frozen=True, eq=False)
+class CrankSliderKinematics:
+    """Points and links of :class:`CrankSlider`.
+
+    Attributes
+    ----------
+    phi : ndarray
+    A : Point
+        Crank pin.
+    crank, rod : Angle
+        Crank OA and rod (direction A -> B); ``rod.omega`` is the seed's omega_2.
+    B : Point
+        Slider (piston) pin.
+    slider : Slide
+        x_B along the slider's line and its derivatives.
+    S : Point or None
+        The rod's centre of mass S2 (when ``rod_cg`` is given).
+    transmission : ndarray
+        90 deg minus the angle between the rod and the slider's line, radians.
+    """
+
+    phi: np.ndarray
+    A: Point
+    crank: Angle
+    rod: Angle
+    B: Point
+    slider: Slide
+    S: Point | None
+    transmission: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class CrankSlider(_Base):
+    """Crank-slider mechanism (seed 002), central or offset.
+
+    Frame: origin at the crank centre O, the slider's line is ``y = offset``
+    directed along +x.
+
+    Parameters
+    ----------
+    crank : float
+        l_OA.
+    rod : float
+        l_AB, > l_OA + |offset|.
+    offset : float, optional
+        e, the slider line's y.
+    slider_side : {+1, -1}
+        Slider on the +x side of the crank (+1; the seed's F = -1) or -x.
+    rod_cg : float or None
+        l_AS2, distance of the rod's centre of mass from A.
+    crank_sense : {+1, -1}
+    rpm : float or None
+    """
+
+    crank: float
+    rod: float
+    offset: float = 0.0
+    slider_side: int = 1
+    rod_cg: float | None = None
+    crank_sense: int = 1
+    rpm: float | None = None
+
+    kind = "crank_slider"
+
+    def __post_init__(self):
+        _pos("linkage.crank", self.crank)
+        _pos("linkage.rod", self.rod)
+        _num("linkage.offset", self.offset)
+        _sign("linkage.slider_side", self.slider_side, ("right", "left"))
+        if self.rod_cg is not None:
+            _num("linkage.rod_cg", self.rod_cg)
+        self._check_common()
+        need = self.crank + abs(self.offset)
+        if not self.rod > need:
+            raise AssemblyError(
+                "linkage.rod",
+                f"a rod of {self.rod:.6g} cannot follow the crank all the way round; it needs l_AB > l_OA + |e| = {need:.6g}",
+            )
+
+    @classmethod
+    def from_stroke(cls, stroke: float, rod: float, *, offset: float = 0.0, **kw) -> "CrankSlider":
+        """Synthesis from the stroke H and the rod (seed 002, formula 1.1: l_OA = H/2 when central).
+
+        Examples
+        --------
+        >>> CrankSlider.from_stroke(0.35, 1.4).crank
+        0.175
+        """
+        return cls(crank=crank_slider_crank(stroke, rod, offset), rod=rod, offset=offset, **kw)
+
+    @property
+    def extreme_positions(self) -> tuple[float, float]:
+        """x_B at the dead positions, (far, near) from O along the slider side (seed 1.2, 1.3)."""
+        e = self.offset
+        far = np.sqrt((self.rod + self.crank) ** 2 - e**2)
+        near = np.sqrt((self.rod - self.crank) ** 2 - e**2)
+        return float(self.slider_side * far), float(self.slider_side * near)
+
+    def kinematics(self, phi, *, omega: float | None = None) -> CrankSliderKinematics:
+        """Positions, velocities and accelerations at crank angles ``phi`` (radians)."""
+        w = self._w(omega)
+        phi = np.asarray(phi, dtype=float)
+
+        def run(p):
+            A, cr = crank(ground(0j), self.crank, p, omega=w)
+            B, rod, sl = rrp(A, self.rod, ground(1j * self.offset), Angle(0.0, 0.0, 0.0), branch=self.slider_side, field="linkage.rod")
+            S = None if self.rod_cg is None else on_link(A, rod, self.rod_cg)
+            mu = np.pi / 2 - acute_angle(rod.angle, 0.0)
+            return CrankSliderKinematics(p, A, cr, rod, B, sl, S, mu)
+
+        return self._assembled(run, phi)
+
+    def output(self, phi, omega: float = 1.0) -> Slide:
+        """The slider's x_B and its derivatives."""
+        return self.kinematics(phi, omega=omega).slider
+
+    def transmission(self, phi) -> np.ndarray:
+        """Transmission angle at the slider, radians."""
+        return self.kinematics(phi, omega=1.0).transmission
+
+    def lengths(self) -> dict:
+        """Dimensions under the seed's names."""
+        return {
+            "type": self.kind,
+            "l_OA": self.crank,
+            "l_AB": self.rod,
+            "e": self.offset,
+            "l_AS2": self.rod_cg,
+            "slider_side": "right" if self.slider_side == 1 else "left",
+            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
+            "rpm": self.rpm,
+        }
+
+
+# --------------------------------------------------------------------------- two-cylinder mechanism
+@dataclass(frozen=True, eq=False)
+class OpposedTwinKinematics:
+    """Points and links of :class:`OpposedTwin` (seed 000's names: 1 crank, 2/4 rods, 3/5 pistons)."""
+
+    phi: np.ndarray
+    A: Point
+    C: Point
+    B: Point
+    D: Point
+    rod2: Angle
+    rod4: Angle
+    S2: Point
+    S4: Point
+    piston3: Slide
+    piston5: Slide
+    transmission: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class OpposedTwin(_Base):
+    """Two-cylinder mechanism of seed 000: one crank with pins A and C, two rods, two pistons.
+
+    Frame: origin at the crank centre O; both pistons move on the x axis, B on
+    the +x side (right cylinder), D on the -x side (left). The crank pin C
+    leads A by ``phase`` (counter-clockwise): seed 000 draws OC perpendicular
+    to OA; with C at +90 deg its graphical velocities are reproduced (with
+    -90 deg they are not, see tests).
+
+    Parameters
+    ----------
+    crank : float
+        l_OA = l_OC.
+    rod : float
+        l_AB = l_CD.
+    rod_cg : float
+        l_AS2 = l_CS4.
+    phase : float, optional
+        Angle from OA to OC, radians (default pi/2).
+    crank_sense : {+1, -1}
+    rpm : float or None
+    """
+
+    crank: float
+    rod: float
+    rod_cg: float
+    phase: float = np.pi / 2
+    crank_sense: int = 1
+    rpm: float | None = None
+
+    kind = "opposed_twin"
+
+    def __post_init__(self):
+        _pos("linkage.crank", self.crank)
+        _pos("linkage.rod", self.rod)
+        _num("linkage.rod_cg", self.rod_cg)
+        _num("linkage.phase", self.phase)
+        self._check_common()
+        if not self.rod > self.crank:
+            raise AssemblyError("linkage.rod", f"the rods must be longer than the crank ({self.crank:.6g}), got {self.rod:.6g}")
+
+    def kinematics(self, phi, *, omega: float | None = None) -> OpposedTwinKinematics:
+        """Positions, velocities and accelerations at crank angles ``phi`` (angle of OA, radians)."""
+        w = self._w(omega)
+        phi = np.asarray(phi, dtype=float)
+        x_axis = Angle(0.0, 0.0, 0.0)
+        A, _ = crank(ground(0j), self.crank, phi, omega=w)
+        C, _ = crank(ground(0j), self.crank, phi + self.phase, omega=w)
+        B, rod2, p3 = rrp(A, self.rod, ground(0j), x_axis, branch=1, field="linkage.rod")
+        D, rod4, p5 = rrp(C, self.rod, ground(0j), x_axis, branch=-1, field="linkage.rod")
+        S2, S4 = on_link(A, rod2, self.rod_cg), on_link(C, rod4, self.rod_cg)
+        mu = np.minimum(np.pi / 2 - acute_angle(rod2.angle, 0.0), np.pi / 2 - acute_angle(rod4.angle, 0.0))
+        return OpposedTwinKinematics(phi, A, C, B, D, rod2, rod4, S2, S4, p3, p5, mu)
+
+    def output(self, phi, omega: float = 1.0) -> Slide:
+        """Piston 3 (B, right cylinder): x_B and its derivatives."""
+        return self.kinematics(phi, omega=omega).piston3
+
+    def transmission(self, phi) -> np.ndarray:
+        """Smaller of the two pistons' transmission angles, radians."""
+        return self.kinematics(phi, omega=1.0).transmission
+
+    def lengths(self) -> dict:
+        """Dimensions under the seed's names."""
+        return {
+            "type": self.kind,
+            "l_OA": self.crank,
+            "l_AB": self.rod,
+            "l_AS2": self.rod_cg,
+            "phase_deg": float(np.degrees(self.phase)),
+            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
+            "rpm": self.rpm,
+        }
+
+
+# --------------------------------------------------------------------------- pump
+@dataclass(frozen=True, eq=False)
+class PumpKinematics:
+    """Points and links of :class:`SlottedLeverPump`.
+
+    Attributes
+    ----------
+    phi : ndarray
+    A : Point
+        Crank pin (block on the lever).
+    crank, lever : Angle
+        Crank O1A and lever (direction O2 -> A).
+    slide : Slide
+        The block's distance from O2 along the lever and its relative motion.
+    C : Point
+        The lever's pin C.
+    piston : Slide
+        Piston coordinate along its (y) guide and its derivatives.
+    block : Slide
+        The pin's block in the piston's slot (x).
+    transmission : ndarray
+        90 deg minus the angle between the lever and the slot, radians.
+    """
+
+    phi: np.ndarray
+    A: Point
+    crank: Angle
+    lever: Angle
+    slide: Slide
+    C: Point
+    piston: Slide
+    block: Slide
+    transmission: np.ndarray
+
+    @property
+    def coriolis(self) -> np.ndarray:
+        """Magnitude of the block's Coriolis acceleration, 2 |omega_3 v_rel|."""
+        return 2 * np.abs(self.lever.omega * self.slide.ds)
+
+
+@dataclass(frozen=True, eq=False)
+class SlottedLeverPump(_Base):
+    """Pump with a swinging slotted lever (seed 004): O1A, lever O2C, piston by a Scotch yoke.
+
+    Frame: origin at the crank centre O1, +x from the lever's pivot O2 to O1
+    (``O2 = (-L, 0)``); the piston moves along y on the line ``x = guide_x``
+    and carries a slot along x in which the lever's pin C slides (seed 004's
+    pairs: A3 and C5 sliding, E the piston's guide).
+
+    Parameters
+    ----------
+    crank : float
+        l_O1A < L.
+    centre_distance : float
+        L = O1O2.
+    lever : float
+        l_O2C.
+    lever_side : {-1, +1}
+        C on the far side of O2 from the crank (-1) or the crank's side (+1).
+    guide_x : float, optional
+        x of the piston's guide (does not affect the piston's motion).
+    crank_sense : {+1, -1}
+    rpm : float or None
+    synthesis : SlottedLeverSynthesis or None
+    """
+
+    crank: float
+    centre_distance: float
+    lever: float
+    lever_side: int = -1
+    guide_x: float = 0.0
+    crank_sense: int = 1
+    rpm: float | None = None
+    synthesis: SlottedLeverSynthesis | None = field(default=None, compare=False)
+
+    kind = "slotted_lever_pump"
+
+    def __post_init__(self):
+        for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("lever", self.lever)):
+            _pos(f"linkage.{f}", v)
+        _num("linkage.guide_x", self.guide_x)
+        _sign("linkage.lever_side", self.lever_side, ("same", "opposite"))
+        self._check_common()
+        _swing_bar_checks(self.crank, self.centre_distance, self.lever, self.lever_side, "slotted lever", "linkage.lever")
+
+    @classmethod
+    def from_course(
+        cls, time_ratio: float, stroke: float, centre_distance: float, *, lever_side: int = -1, **kw
+    ) -> "SlottedLeverPump":
+        """Synthesis from K, H and O1O2 (seed 004, section 1.4): theta, l_O1A = L sin(theta/2), l_O2C = H / (2 sin(theta/2)).
+
+        Examples
+        --------
+        >>> m = SlottedLeverPump.from_course(2.0, 250.0, 525.0)
+        >>> round(m.crank, 9), round(m.lever, 9)
+        (262.5, 250.0)
+        """
+        syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance)
+        return cls(crank=syn.crank, centre_distance=syn.centre_distance, lever=syn.bar, lever_side=lever_side, synthesis=syn, **kw)
+
+    @property
+    def half_swing(self) -> float:
+        """Half the lever's swing, asin(l_O1A / L), radians."""
+        return float(np.arcsin(self.crank / self.centre_distance))
+
+    def kinematics(self, phi, *, omega: float | None = None) -> PumpKinematics:
+        """Positions, velocities and accelerations at crank angles ``phi`` (radians)."""
+        w = self._w(omega)
+        phi = np.asarray(phi, dtype=float)
+
+        def run(p):
+            O2 = ground(-self.centre_distance + 0j)
+            A, cr = crank(ground(0j), self.crank, p, omega=w)
+            lev, slide = rpr(A, O2, field="linkage.lever")
+            C = on_link(O2, lev, self.lever_side * self.lever)
+            piston, block = rpp(C, self.guide_x + 0j, np.pi / 2, 0.0)
+            mu = np.pi / 2 - acute_angle(lev.angle, 0.0)
+            return PumpKinematics(p, A, cr, lev, slide, C, piston, block, mu)
+
+        return self._assembled(run, phi)
+
+    def output(self, phi, omega: float = 1.0) -> Slide:
+        """The piston's coordinate along y and its derivatives."""
+        return self.kinematics(phi, omega=omega).piston
+
+    def transmission(self, phi) -> np.ndarray:
+        """Transmission angle between the lever and the piston's slot, radians."""
+        return self.kinematics(phi, omega=1.0).transmission
+
+    def lengths(self) -> dict:
+        """Dimensions under the seed's names."""
+        return {
+            "type": self.kind,
+            "l_O1A": self.crank,
+            "L_O1O2": self.centre_distance,
+            "l_O2C": self.lever,
+            "x_E": self.guide_x,
+            "swing_deg": float(np.degrees(2 * self.half_swing)),
+            "lever_side": "same" if self.lever_side == 1 else "opposite",
+            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
+            "rpm": self.rpm,
+        }
+
+
+MACHINES = {
+    SlottingMachine.kind: SlottingMachine,
+    CrankSlider.kind: CrankSlider,
+    OpposedTwin.kind: OpposedTwin,
+    SlottedLeverPump.kind: SlottedLeverPump,
+}
+"""Machine classes by their ``kind`` (the machine file's ``linkage.type``)."""
