@@ -51,6 +51,27 @@ class Cam:
 
         return tradeoff(self.design, 15)
 
+    @cached_property
+    def options(self):
+        """Profile settings from the design file (:class:`cams.profile.ProfileOptions`)."""
+        from cams.profile import profile_options
+
+        return profile_options(self.design)
+
+    @cached_property
+    def profile(self):
+        """The sampled pitch curve and working profile(s) at the design's chord tolerance."""
+        from cams.profile import build_profile
+
+        return build_profile(self.design, self.solution.centre, tolerance=self.options.tolerance)
+
+    @cached_property
+    def checks(self):
+        """Jamming, undercut, validity and bore checks of the finished profile."""
+        from cams.checks import check_profile
+
+        return check_profile(self.design, self.solution.centre, options=self.options, profile=self.profile)
+
     def motion(self, phi):
         """Displacement and derivatives at cam angles ``phi`` (radians); no solve."""
         return self.design.program.evaluate(phi)

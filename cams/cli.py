@@ -36,6 +36,9 @@ def build_parser() -> argparse.ArgumentParser:
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for name in COMMANDS:
         importlib.import_module(f"cams.commands.{name}").register(sub)
+    for sp in sub.choices.values():
+        # one formatter for all: descriptions wrapped to the terminal
+        sp.formatter_class = argparse.HelpFormatter
     return p
 
 

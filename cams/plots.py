@@ -206,3 +206,94 @@ def plot_pressure(result, *, n: int = 721):
     uniq = dict(zip(labels, handles))
     ax.legend(uniq.values(), uniq.keys(), fontsize=8)
     return fig
+
+
+def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
+    """Cam-frame points turned to cam angle ``phi`` and placed at the cam centre (fixed frame)."""
+    a = profile.cam_sense * phi
+    c, s = np.cos(a), np.sin(a)
+    R = np.array([[c, -s], [s, c]])
+    return profile.centre + pts @ R.T
+
+
+def _draw_mechanism(ax, cam, profile, phi: float):
+    """Cam (turned to ``phi``), follower and roller in the follower's fixed frame."""
+    from matplotlib.patches import Circle
+
+    d = cam.design
+    f = d.follower
+    work = _cam_in_fixed_frame(profile, profile.work, phi)
+    pitch = _cam_in_fixed_frame(profile, profile.pitch, phi)
+    ax.fill(work[:, 0], work[:, 1], fc="#e2e8f0", ec="#1a202c", lw=1.2, label="working profile")
+    if profile.outer is not None:
+        outer = _cam_in_fixed_frame(profile, profile.outer, phi)
+        ax.plot(outer[:, 0], outer[:, 1], color="#1a202c", lw=1.2, label="groove, outer wall")
+    ax.plot(pitch[:, 0], pitch[:, 1], color="#2b6cb0", lw=0.8, ls="--", label="pitch curve")
+    ax.add_patch(Circle(profile.centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
+                        label=f"base circle R0 = {profile.R0:.3f}"))
+    m = d.program.evaluate(np.array([phi]))
+    A = f.position(m.s)[0]
+    if profile.roller_radius > 0:
+        ax.add_patch(Circle(A, profile.roller_radius, fill=False, color="#c53030", lw=1.4))
+    ax.plot(*A, "o", color="#c53030", ms=3)
+    if f.kind == "rocker":
+        ax.plot([0, A[0]], [0, A[1]], color="#c53030", lw=2.5, solid_capstyle="round", label="rocker")
+        ax.plot(0, 0, "ko", ms=5)
+    else:
+        top = A + np.array([0.0, 0.6 * d.scale + 2 * profile.roller_radius])
+        ax.plot([A[0], top[0]], [A[1], top[1]], color="#c53030", lw=3, label="follower")
+    ax.plot(*profile.centre, "k+", ms=10)
+    ax.set_aspect("equal")
+    ax.grid(True, lw=0.3)
+    ax.set_xlabel("x, mm")
+    ax.set_ylabel("y, mm")
+
+
+def plot_profile(cam, *, phi: float | None = None):
+    """The cam: working profile, pitch curve, base circle, and the follower at cam angle ``phi``.
+
+    Parameters
+    ----------
+    cam : cams.cam.Cam
+        Uses ``cam.profile`` (built on first use); nothing else is computed.
+    phi : float, optional
+        Cam angle (radians) at which the mechanism is drawn; default the middle
+        of the first rise.
+    """
+    profile = cam.profile
+    d = cam.design
+    if phi is None:
+        i = next(k for k, p in enumerate(d.program.phases) if p.kind == "rise")
+        phi = d.program.starts[i] + 0.5 * d.program.phases[i].angle
+    fig = _figure(w=A4_WIDTH_IN, h=6.0)
+    ax = fig.add_subplot()
+    _draw_mechanism(ax, cam, profile, phi)
+    ax.set_title(f"{d.name}: cam at φ = {np.degrees(phi):.1f}°")
+    ax.legend(fontsize=7, loc="best")
+    return fig
+
+
+def animate_profile(cam, path, *, frames: int = 72, fps: int = 12) -> Path:
+    """One turn of the cam with its follower as an animated GIF (Pillow writer)."""
+    from matplotlib.animation import FuncAnimation, PillowWriter
+
+    profile = cam.profile
+    fig = _figure(w=5.0, h=5.0)
+    ax = fig.add_subplot()
+    span = np.max(np.abs(profile.work)) + profile.roller_radius
+    pts = np.concatenate([profile.centre[None] + span * np.array([[-1.1, -1.1], [1.1, 1.1]]),
+                          cam.design.follower.position(np.array([0.0, cam.design.program.lift])),
+                          cam.design.follower.pivot[None]])
+    lo, hi = pts.min(axis=0) - 0.05 * span, pts.max(axis=0) + 0.05 * span
+
+    def frame(k):
+        ax.clear()
+        _draw_mechanism(ax, cam, profile, 2 * np.pi * k / frames)
+        ax.set_xlim(lo[0], hi[0])
+        ax.set_ylim(lo[1], hi[1])
+        ax.set_title(f"φ = {360 * k / frames:.0f}°")
+
+    anim = FuncAnimation(fig, frame, frames=frames)
+    path = Path(path)
+    anim.save(str(path), writer=PillowWriter(fps=fps))
+    return path

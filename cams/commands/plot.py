@@ -48,7 +48,8 @@ def draw(cam, which: tuple[str, ...], out: Path) -> list[Path]:
 
 
 def _slug(name: str) -> str:
-    s = "".join(c if c.isalnum() else "_" for c in name.lower()).strip("_")
+    s = "".join(c if c.isalnum() else "_" for c in name.lower())
+    s = "_".join(w for w in s.split("_") if w)
     return s or "cam"
 
 
@@ -60,8 +61,13 @@ def run(args) -> int:
         if w not in PICTURES:
             raise InputError("--only", f"{w!r} is not a picture, must be among {', '.join(PICTURES)}")
     cam = Cam.from_file(args.file)
-    for p in draw(cam, which, _outdir(args.out)):
+    out = _outdir(args.out)
+    for p in draw(cam, which, out):
         print(p)
+    if args.animate:
+        from cams.plots import animate_profile
+
+        print(animate_profile(cam, out / f"{_slug(cam.design.name)}_turn.gif"))
     return EXIT_OK
 
 
@@ -77,4 +83,5 @@ def register(sub) -> None:
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--out", default=".", help="output folder (default: current)")
     q.add_argument("--only", help=f"comma-separated subset of {','.join(PICTURES)}")
+    q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
     q.set_defaults(func=run)

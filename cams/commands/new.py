@@ -1,0 +1,47 @@
+"""``cams new``: a commented design file to start from."""
+
+from __future__ import annotations
+
+import argparse
+
+from cams.commands.common import EXIT_OK
+
+__all__ = ["register", "run"]
+
+
+def run(args) -> int:
+    from cams.templates import TEMPLATES
+
+    text = TEMPLATES[args.kind]
+    if args.out is None:
+        print(text, end="")
+        return EXIT_OK
+    from cams.export import _atomic_write, check_output_path
+
+    path = check_output_path(args.out, "--out")
+    if path.exists() and not args.force:
+        from laws.errors import InputError
+
+        raise InputError("--out", f"{str(path)!r} exists; use --force to overwrite")
+
+    def write(tmp: str) -> None:
+        with open(tmp, "w", encoding="utf-8") as fh:
+            fh.write(text)
+
+    print(_atomic_write(path, "--out", write))
+    return EXIT_OK
+
+
+def register(sub) -> None:
+    """Add the ``new`` subcommand."""
+    q = sub.add_parser(
+        "new",
+        help="write a commented design file to start from",
+        description="Print (or write) a commented design file for a follower kind.",
+        epilog="example: cams new rocker --out my_cam.toml",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    q.add_argument("kind", choices=("rocker", "translating"), help="follower kind")
+    q.add_argument("--out", help="file to write (default: print)")
+    q.add_argument("--force", action="store_true", help="overwrite an existing file")
+    q.set_defaults(func=run)

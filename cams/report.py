@@ -1,0 +1,165 @@
+"""One report per design: inputs, results, checks and pictures, as HTML and PDF.
+
+The HTML file is self-contained (pictures embedded as PNG data); the PDF is
+written with matplotlib's PdfPages, one page per topic. Both are written to a
+temporary file first and renamed, so a failed run leaves no partial report.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import io
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["report_sections", "write_report"]
+
+
+def _deg(x):
+    return "—" if x is None else f"{np.degrees(x):.4f}°"
+
+
+def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
+    """The report's tables as ``[(title, [(label, value), ...]), ...]`` (strings)."""
+    d = cam.design
+    f = d.follower
+    inputs = [("name", d.name), ("follower", f.kind), ("roller radius", f"{f.roller_radius:g} mm")]
+    if f.kind == "rocker":
+        inputs += [("arm l", f"{f.arm:g} mm"), ("swing ψmax", _deg(d.program.lift)),
+                   ("rocker on the rise", "ccw" if f.sense > 0 else "cw")]
+    else:
+        inputs += [("stroke h", f"{d.program.lift:g} mm"),
+                   ("offset", "free (solved)" if f.offset is None else f"{f.offset:g} mm")]
+    inputs += [("cam rotation", "ccw" if d.cam_sense > 0 else "cw")]
+    if d.rpm:
+        inputs.append(("cam speed", f"{d.rpm:g} rpm"))
+    for i, p in enumerate(d.program.phases):
+        law = "" if p.law is None else f", {p.law.name}"
+        inputs.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.4g}°"))
+    lim = d.limits
+    inputs += [("closure", lim.closure), ("allowable pressure angle, rise", _deg(lim.pressure_angle))]
+    if lim.closure == "form":
+        inputs.append(("allowable pressure angle, return", _deg(lim.return_limit)))
+    inputs.append(("safety factor K_C", f"{lim.safety_factor:g}"))
+    if lim.centre_distance is not None:
+        inputs.append(("fixed centre distance L", f"{lim.centre_distance:g} mm"))
+    if lim.min_base_radius is not None:
+        inputs.append(("constructive floor on R0", f"{lim.min_base_radius:g} mm"))
+    r = cam.solution.to_dict()
+    results = [("method", f"{r['method']} ({r['mode']})"), ("base radius R0", f"{r['R0']:.6f} mm")]
+    if r["L"] is not None:
+        results.append(("centre distance L", f"{r['L']:.6f} mm"))
+    if r["offset"] is not None:
+        results.append(("offset e", f"{r['offset']:.6f} mm"))
+    results += [
+        ("cam centre (x, y)", f"({r['centre']['x']:.6f}, {r['centre']['y']:.6f}) mm"),
+        ("max pressure angle, rise", "—" if r["max_pressure_angle"]["rise"] is None else f"{r['max_pressure_angle']['rise']:.4f}°"),
+        ("max pressure angle, return", "—" if r["max_pressure_angle"]["return"] is None else f"{r['max_pressure_angle']['return']:.4f}°"),
+        ("binding positions", ", ".join(f"{b['line']} at {b['phi']:.3f}°" for b in r["binding"]) or "—"),
+        ("error bound", "not stated by this method" if r["error_bound"] is None else f"{r['error_bound']:.3g} mm"),
+        ("verified (independent pressure-angle check)", "yes" if r["verified"] else "NO"),
+    ]
+    results += [("note", n) for n in r["notes"]]
+    checks = []
+    for c in cam.checks.checks:
+        cd = c.to_dict()
+        worst = cd.get("worst")
+        at = cd.get("at_deg")
+        val = "—" if worst is None else f"{worst:.6g} {cd.get('unit', '')}".strip()
+        where = "" if at is None else f" at {at:.3f}°"
+        lim_s = "" if cd.get("limit") is None else f" (limit {cd['limit']:.6g})"
+        checks.append((cd["name"], f"{'pass' if cd['passed'] else 'FAIL'}: {val}{where}{lim_s}"))
+    return [("Inputs", inputs), ("Results", results), ("Checks", checks)]
+
+
+def _figures(cam):
+    from cams import plots
+
+    figs = [("Allowable-centre zone", plots.plot_zone(cam.solution, tradeoff=cam.tradeoff)),
+            ("Motion diagrams", plots.plot_motion(cam.design)),
+            ("Pressure angle", plots.plot_pressure(cam.solution)),
+            ("Cam profile", plots.plot_profile(cam))]
+    return figs
+
+
+def _atomic(path: Path, write) -> Path:
+    from laws.errors import InputError
+
+    try:
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
+    except OSError as e:
+        raise InputError("--out", f"cannot write in {str(path.parent)!r}: {e.strerror or e}") from None
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            write(fh)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def write_report(cam, out: str | Path) -> tuple[Path, Path]:
+    """Write ``report.html`` and ``report.pdf`` for ``cam`` into folder ``out``.
+
+    Returns the two paths. Pictures are drawn once and used by both files.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    from matplotlib.backends.backend_pdf import PdfPages
+    from matplotlib.figure import Figure
+
+    from laws.errors import InputError
+
+    out = Path(out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise InputError("--out", f"cannot create {str(out)!r}: {e.strerror or e}") from None
+    sections = report_sections(cam)
+    figs = _figures(cam)
+
+    def write_pdf(fh):
+        with PdfPages(fh) as pdf:
+            for title, rows in sections:
+                page = Figure(figsize=(8.27, 11.69))
+                page.text(0.08, 0.95, f"{cam.design.name}: {title}", fontsize=15, weight="bold")
+                y = 0.91
+                for label, value in rows:
+                    page.text(0.08, y, label, fontsize=9, color="0.25")
+                    page.text(0.45, y, value, fontsize=9, wrap=True)
+                    y -= 0.024
+                pdf.savefig(page)
+            for _, fig in figs:
+                pdf.savefig(fig)
+
+    def write_html(fh):
+        parts = [
+            "<!DOCTYPE html><html><head><meta charset='utf-8'>",
+            f"<title>{html.escape(cam.design.name)}</title>",
+            "<style>body{font-family:sans-serif;max-width:60em;margin:2em auto}"
+            "table{border-collapse:collapse}td{border-bottom:1px solid #ddd;padding:.25em .8em}"
+            "section{page-break-after:always}img{max-width:100%}</style></head><body>",
+            f"<h1>{html.escape(cam.design.name)}</h1>",
+        ]
+        for title, rows in sections:
+            parts.append(f"<section><h2>{html.escape(title)}</h2><table>")
+            parts += [f"<tr><td>{html.escape(a)}</td><td>{html.escape(b)}</td></tr>" for a, b in rows]
+            parts.append("</table></section>")
+        for title, fig in figs:
+            buf = io.BytesIO()
+            fig.savefig(buf, format="png", dpi=120)
+            data = base64.b64encode(buf.getvalue()).decode("ascii")
+            parts.append(f"<section><h2>{html.escape(title)}</h2>"
+                         f"<img alt='{html.escape(title)}' src='data:image/png;base64,{data}'></section>")
+        parts.append("</body></html>")
+        fh.write("\n".join(parts).encode("utf-8"))
+
+    pdf = _atomic(out / "report.pdf", write_pdf)
+    page = _atomic(out / "report.html", write_html)
+    return page, pdf

@@ -1,0 +1,64 @@
+"""``cams plot``, ``report`` and ``new`` as a user runs them."""
+
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from cams.cli import build_parser, main
+from cams.designfile import load_design
+from tests.conftest import EXAMPLES
+
+
+def test_plot_only_what_is_asked(tmp_path, capsys):
+    assert main(["plot", str(EXAMPLES / "rocker_force.toml"), "--out", str(tmp_path), "--only", "motion"]) == 0
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert names == ["rocker_cam_force_closure_motion.png", "rocker_cam_force_closure_motion.svg"]
+
+
+def test_plot_bad_picture_name(tmp_path, capsys):
+    assert main(["plot", str(EXAMPLES / "rocker_force.toml"), "--out", str(tmp_path), "--only", "cake"]) == 2
+    assert "--only" in capsys.readouterr().err
+
+
+def test_report_html_and_pdf(tmp_path, capsys):
+    rc = main(["report", str(EXAMPLES / "rocker_form.toml"), "--out", str(tmp_path)])
+    assert rc == 0
+    html = (tmp_path / "report.html").read_text()
+    for word in ("Inputs", "Results", "Checks", "base radius R0", "data:image/png;base64,"):
+        assert word in html
+    pdf = (tmp_path / "report.pdf").read_bytes()
+    assert pdf[:5] == b"%PDF-"
+    assert pdf.count(b"/Type /Page\n") + pdf.count(b"/Type /Page ") + pdf.count(b"/Type /Page>") >= 7 or b"/Count 7" in pdf
+    if shutil.which("pdftoppm"):
+        r = subprocess.run(["pdftoppm", "-png", "-r", "30", str(tmp_path / "report.pdf"), str(tmp_path / "pg")],
+                           capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        assert len(list(tmp_path.glob("pg-*.png"))) == 7
+
+
+def test_new_writes_a_design_that_solves(tmp_path, capsys):
+    for kind in ("rocker", "translating"):
+        out = tmp_path / f"{kind}.toml"
+        assert main(["new", kind, "--out", str(out)]) == 0
+        d = load_design(out)
+        assert d.follower.kind == kind
+    assert main(["new", "rocker", "--out", str(tmp_path / "rocker.toml")]) == 2
+    assert "exists" in capsys.readouterr().err
+
+
+def test_every_help_fits_a_terminal_and_shows_an_example():
+    p = build_parser()
+    text = p.format_help()
+    assert "example:" in text
+    sub = next(a for a in p._actions if a.__class__.__name__ == "_SubParsersAction")
+    for name, sp in sub.choices.items():
+        h = sp.format_help()
+        assert "example: cams " + name in h, name
+        assert len(h.splitlines()) <= 40 and max(len(line) for line in h.splitlines()) <= 100
+
+
+def test_no_command_prints_help_and_exits_2():
+    r = subprocess.run([sys.executable, "-m", "cams.cli"], capture_output=True, text=True)
+    assert r.returncode == 2 and "COMMAND" in r.stdout
