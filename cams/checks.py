@@ -110,7 +110,7 @@ def _finite(x):
     return None if x is None or not np.isfinite(x) else float(x)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class CheckReport:
     """The checks of one profile.
 
@@ -271,6 +271,12 @@ def _deg(phi: float | None) -> float | None:
 
 
 def _polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:
+    """The closed polyline ``pts`` is a valid simple polygon round the origin.
+
+    ``worst`` is the number of self-crossings (limit 0); ``at_deg`` the cam
+    angle of the sample nearest the first crossing (or shapely's reported
+    location of another defect).
+    """
     import shapely
     from shapely.geometry import LinearRing, Point, Polygon
 
@@ -279,16 +285,18 @@ def _polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:
     valid = bool(poly.is_valid and ring.is_simple)
     around = bool(poly.contains(Point(0.0, 0.0)))
     at = None
+    crossings = 0
     msg = f"{len(pts)} points, a simple closed curve round the cam centre"
     if not valid:
         loc = None
         reason = shapely.is_valid_reason(poly)
         if not ring.is_simple:
-            # a self-intersection: noding the ring adds its crossings as new vertices
+            # noding the ring adds its crossings as new vertices
             nodes = shapely.get_coordinates(shapely.unary_union(ring))
-            known = {tuple(np.round(p, 12)) for p in pts}
-            extra = [p for p in nodes if tuple(np.round(p, 12)) not in known]
-            loc = extra[0] if extra else None
+            known = {tuple(p) for p in np.round(pts, 9)}
+            extra = {tuple(p) for p in np.round(nodes, 9)} - known
+            crossings = len(extra)
+            loc = np.array(sorted(extra)[0]) if extra else None
         if loc is None and "[" in reason:
             try:
                 loc = np.array([float(x) for x in reason[reason.index("[") + 1:reason.index("]")].split()[:2]])
@@ -296,10 +304,10 @@ def _polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:
                 loc = None
         if loc is not None:
             at = _deg(phi[int(np.argmin(np.linalg.norm(pts - np.asarray(loc), axis=1)))])
-        msg = f"self-intersecting or invalid polygon ({reason})"
+        msg = f"self-intersecting or invalid polygon, {crossings} crossing(s) ({reason})"
     elif not around:
         msg = "the closed curve does not surround the cam centre"
-    return Check(name, valid and around, None, at, None, "", msg)
+    return Check(name, valid and around, float(crossings), at, 0.0, "", msg)
 
 
 def check_profile(

@@ -58,7 +58,7 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class FlatFaceProfile:
     """A flat-faced follower's cam, sampled.
 

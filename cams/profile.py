@@ -96,7 +96,7 @@ def _second(follower: Follower, s: np.ndarray) -> np.ndarray:
     raise InputError("follower.kind", "profiles are defined for rocker and translating followers")  # pragma: no cover
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class PitchGeometry:
     """Pitch-curve points and derivatives at given cam angles, cam frame.
 
@@ -202,12 +202,21 @@ def pitch_curve(design: CamDesign, centre: np.ndarray, phi: np.ndarray) -> Pitch
 
     Examples
     --------
+    A centric translating follower, cam centre 30 below the roller's start,
+    the cam turning counter-clockwise: at half a turn the roller, risen by 10,
+    sits 40 from the centre on the far side of the cam.
+
     >>> import numpy as np
-    >>> from cams.designfile import load_design
-    >>> d = load_design("examples/translating_form_centric.toml")
-    >>> g = pitch_curve(d, np.array([0.0, -24.0]), np.array([0.0]))
-    >>> g.point.round(6).tolist(), float(g.rho[0])
-    ([[0.0, 24.0]], 24.0)
+    >>> from cams.design import CamDesign, Limits
+    >>> from cams.follower import Translating
+    >>> from laws.program import Phase, Program
+    >>> from laws.registry import get_law
+    >>> cyc = get_law("cycloidal")
+    >>> prog = Program((Phase("rise", np.pi, cyc), Phase("return", np.pi, cyc)), 10.0)
+    >>> d = CamDesign(Translating(roller_radius=5.0), prog, Limits(np.radians(30)))
+    >>> g = pitch_curve(d, np.array([0.0, -30.0]), np.array([0.0, np.pi]))
+    >>> g.point.round(9).tolist(), g.rho.round(9).tolist()
+    ([[0.0, 30.0], [0.0, -40.0]], [30.0, 40.0])
     """
     phi = np.atleast_1d(np.asarray(phi, dtype=float))
     return _geometry(design, centre, phi, design.program.evaluate(phi))
@@ -283,7 +292,7 @@ def profile_options(design: CamDesign, *, tolerance: float | None = None) -> Pro
     return ProfileOptions(float(tol), pt.get("min_curvature_radius"), cam.get("bore_radius"))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Profile:
     """A sampled cam profile in the cam frame (origin at the cam centre, cam at phi = 0).
 

@@ -13,6 +13,8 @@ __all__ = ["register", "print_checks"]
 def _fmt(x, unit: str) -> str:
     if x is None:
         return "-"
+    if not unit and float(x).is_integer():
+        return str(int(x))
     return f"{x:.4f} {unit}".rstrip()
 
 

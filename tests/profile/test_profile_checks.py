@@ -37,6 +37,7 @@ def test_examples_pass_every_check(reports, name):
     expected = ["jamming_rise"] + (["jamming_return"] if form else []) + ["undercut"] + \
         (["undercut_outer"] if form else []) + ["profile_polygon"] + (["outer_polygon"] if form else []) + ["bore"]
     assert names == expected
+    assert all(c.worst == 0 for c in rep.checks if c.name.endswith("polygon"))
 
 
 @pytest.mark.parametrize("name", ALL)
@@ -94,7 +95,8 @@ def test_roller_too_large_is_undercut_at_the_right_angle(solved, design_with):
     assert rep.recommended_roller_radius == pytest.approx(RECOMMENDED_ROLLER_FRACTION * rho_min, rel=1e-6)
     # the working profile crosses itself there (a swallowtail spanning some degrees round it)
     poly = rep["profile_polygon"]
-    assert not poly.passed and poly.at_deg == pytest.approx(at, abs=15.0)
+    assert not poly.passed and poly.worst >= 1 and poly.limit == 0
+    assert poly.at_deg == pytest.approx(at, abs=15.0)
     # just below the limit: no undercut
     ok = check_profile(design_with("rocker_form", follower={"roller_radius": 0.99 * rho_min}), O)
     assert ok["undercut"].passed and ok["profile_polygon"].passed

@@ -144,7 +144,10 @@ def test_samples_within_chord_tolerance_and_at_phase_starts(solved, name):
         for i in range(len(prog.phases)):
             m = ph == i
             g = pitch_phase(design, O, i, u0[m] + t * (u1[m] - u0[m]))
-            for curve, pts in ((g.point, prof.pitch), (g.offset(-r), prof.work)):
+            curves = [(g.point, prof.pitch), (g.offset(-r), prof.work)]
+            if prof.groove:
+                curves.append((g.offset(r), prof.outer))
+            for curve, pts in curves:
                 a, b = pts[m], pts[nxt][m]
                 d = b - a
                 dev = np.abs(d[:, 0] * (curve - a)[:, 1] - d[:, 1] * (curve - a)[:, 0]) / np.linalg.norm(d, axis=1)
