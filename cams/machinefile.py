@@ -1,0 +1,217 @@
+"""Machine files (TOML): a linkage, its cutting zone, the cam's drive and timing, and the cam.
+
+Lengths in the file's unit (``units``, mm by default), angles in degrees.
+
+Schema (see ``examples/machines/``)::
+
+    name = "slotting machine"
+    units = "mm"
+    [linkage]   type = "slotting" | "crank_slider" | "slotted_lever_pump"
+                crank_rotation ("ccw" | "cw"), rpm (optional)
+                course data (synthesis) or lengths, by type:
+                  slotting:           time_ratio, stroke, centre_distance, rod_ratio
+                                      | crank, centre_distance, bar, rod, guide_x
+                                      bar_side ("opposite" | "same"), tool_side ("above" | "below")
+                  crank_slider:       stroke, rod | crank, rod; offset, slider_side ("right" | "left"), rod_cg
+                  slotted_lever_pump: time_ratio, stroke, centre_distance | crank, centre_distance, lever
+                                      lever_side ("opposite" | "same"), guide_x
+    [cutting]   approach, overrun (fractions of the stroke), working ("slow" | "fast" | "forward" | "backward")
+    [drive]     kind ("shaft" | "gears"), z_crank, z_cam, mesh ("external" | "internal")
+    [timing]    margin (degrees of crank angle), placement ("centre" | "early" | "late"),
+                follower_direction (degrees, frame; optional)
+    [follower], [[motion]], [limits], [solve]   as in a design file (cams/designfile.py)
+    [cam]       bore_radius only: rotation and rpm follow from the crank and the drive
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from cams.designfile import design_from_dict
+from cams.machine import CuttingZone, Drive, MachineSpec, Timing
+from cams.machines import CrankSlider, SlottedLeverPump, SlottingMachine
+from laws.errors import InputError, check_option
+
+__all__ = ["load_machine", "machine_from_dict", "LINKAGE_TYPES"]
+
+_COMMON = {"type", "crank_rotation", "rpm"}
+_LINKAGE = {
+    "slotting": (
+        {"time_ratio", "stroke", "centre_distance", "rod_ratio"},
+        {"crank", "centre_distance", "bar", "rod", "guide_x"},
+        {"bar_side", "tool_side"},
+    ),
+    "crank_slider": ({"stroke", "rod"}, {"crank", "rod"}, {"offset", "slider_side", "rod_cg"}),
+    "slotted_lever_pump": (
+        {"time_ratio", "stroke", "centre_distance"},
+        {"crank", "centre_distance", "lever"},
+        {"lever_side", "guide_x"},
+    ),
+}
+LINKAGE_TYPES = tuple(_LINKAGE)
+_KEYS = {
+    "": {"name", "units", "linkage", "cutting", "drive", "timing", "follower", "cam", "motion", "limits", "solve"},
+    "cutting": {"approach", "overrun", "working"},
+    "drive": {"kind", "z_crank", "z_cam", "mesh"},
+    "timing": {"margin", "placement", "follower_direction"},
+    "cam": {"bore_radius"},
+}
+_SIDES = {
+    "bar_side": {"opposite": -1, "same": 1},
+    "lever_side": {"opposite": -1, "same": 1},
+    "tool_side": {"above": 1, "below": -1},
+    "slider_side": {"right": 1, "left": -1},
+    "crank_rotation": {"ccw": 1, "cw": -1},
+}
+
+
+def _table(d: dict, key: str) -> dict:
+    t = d.get(key, {})
+    if not isinstance(t, dict):
+        raise InputError(key, "must be a table")
+    return t
+
+
+def _check_keys(table: dict, allowed: set, field: str) -> None:
+    unknown = set(table) - allowed
+    if unknown:
+        raise InputError(field or "machine", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(sorted(allowed))}")
+
+
+def _num(table: dict, key: str, field: str, *, default=None, required: bool = True):
+    if key not in table:
+        if required and default is None:
+            raise InputError(field, "is required")
+        return default
+    v = table[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
+        raise InputError(field, f"must be a number, got {v!r}")
+    return float(v)
+
+
+def _side(table: dict, key: str, default: str) -> int:
+    words = _SIDES[key]
+    return words[check_option(f"linkage.{key}", table.get(key, default), tuple(words))]
+
+
+def _linkage(lk: dict):
+    kind = check_option("linkage.type", lk.get("type"), LINKAGE_TYPES)
+    course, lengths, options = _LINKAGE[kind]
+    _check_keys(lk, _COMMON | course | lengths | options, "linkage")
+    given_course = sorted((set(lk) & course) - lengths)
+    given_lengths = sorted((set(lk) & lengths) - course)
+    if given_course and given_lengths:
+        raise InputError(
+            "linkage",
+            f"give either the course data ({', '.join(sorted(course))}) or the lengths ({', '.join(sorted(lengths))}), "
+            f"not both: got {', '.join(given_course)} and {', '.join(given_lengths)}",
+        )
+    use_course = bool(given_course)
+    need = course if use_course else lengths
+    for k in sorted(need):
+        if k not in lk:
+            raise InputError(f"linkage.{k}", f"is required with the {'course data' if use_course else 'lengths'} of a {kind} linkage")
+    f = {k: _num(lk, k, f"linkage.{k}") for k in need}
+    common = {
+        "crank_sense": _side(lk, "crank_rotation", "ccw"),
+        "rpm": _num(lk, "rpm", "linkage.rpm", required=False),
+    }
+    if kind == "slotting":
+        sides = {"bar_side": _side(lk, "bar_side", "opposite"), "tool_side": _side(lk, "tool_side", "above")}
+        if use_course:
+            return SlottingMachine.from_course(f["time_ratio"], f["stroke"], f["centre_distance"], f["rod_ratio"], **sides, **common)
+        return SlottingMachine(**f, **sides, **common)
+    if kind == "crank_slider":
+        opts = {
+            "offset": _num(lk, "offset", "linkage.offset", default=0.0),
+            "slider_side": _side(lk, "slider_side", "right"),
+            "rod_cg": _num(lk, "rod_cg", "linkage.rod_cg", required=False),
+        }
+        if use_course:
+            return CrankSlider.from_stroke(f["stroke"], f["rod"], **opts, **common)
+        return CrankSlider(**f, **opts, **common)
+    opts = {"lever_side": _side(lk, "lever_side", "opposite"), "guide_x": _num(lk, "guide_x", "linkage.guide_x", default=0.0)}
+    if use_course:
+        return SlottedLeverPump.from_course(f["time_ratio"], f["stroke"], f["centre_distance"], **opts, **common)
+    return SlottedLeverPump(**f, **opts, **common)
+
+
+def _drive(dr: dict) -> Drive:
+    _check_keys(dr, _KEYS["drive"], "drive")
+    kind = check_option("drive.kind", dr.get("kind", "shaft"), ("shaft", "gears"))
+    if kind == "shaft":
+        extra = sorted(set(dr) - {"kind"})
+        if extra:
+            raise InputError("drive", f"{', '.join(extra)} apply to kind = 'gears'")
+        return Drive.shaft()
+    for k in ("z_crank", "z_cam"):
+        if k not in dr:
+            raise InputError(f"drive.{k}", "is required for a gear drive (teeth on the crank's and the cam's shaft)")
+    return Drive.gears(dr["z_crank"], dr["z_cam"], mesh=dr.get("mesh", "external"))
+
+
+def machine_from_dict(d: dict) -> MachineSpec:
+    """Build a :class:`MachineSpec` from a parsed machine file (degrees, lengths).
+
+    Raises
+    ------
+    InputError
+        Unknown keys, missing or invalid values; the field is named.
+    AssemblyError
+        The linkage cannot be assembled at some crank angle.
+    """
+    _check_keys(d, _KEYS[""], "")
+    name = d.get("name", "machine")
+    if not isinstance(name, str):
+        raise InputError("name", "must be a string")
+    units = d.get("units", "mm")
+    if not isinstance(units, str):
+        raise InputError("units", "must be a string")
+    linkage = _linkage(_table(d, "linkage"))
+    cu = _table(d, "cutting")
+    _check_keys(cu, _KEYS["cutting"], "cutting")
+    cutting = CuttingZone(
+        approach=_num(cu, "approach", "cutting.approach", default=0.0),
+        overrun=_num(cu, "overrun", "cutting.overrun", default=0.0),
+        working=cu.get("working", "slow"),
+    )
+    drive = _drive(_table(d, "drive"))
+    ti = _table(d, "timing")
+    _check_keys(ti, _KEYS["timing"], "timing")
+    fd = _num(ti, "follower_direction", "timing.follower_direction", required=False)
+    timing = Timing(
+        margin=float(np.radians(_num(ti, "margin", "timing.margin", default=0.0))),
+        placement=ti.get("placement", "centre"),
+        follower_direction=None if fd is None else float(np.radians(fd)),
+    )
+    cam = _table(d, "cam")
+    for k in ("rotation", "rpm"):
+        if k in cam:
+            raise InputError(f"cam.{k}", "is set by the machine (linkage.crank_rotation, linkage.rpm and [drive]); remove it")
+    _check_keys(cam, _KEYS["cam"], "cam")
+    cam_sense = linkage.crank_sense * drive.sense
+    cam_table = {**cam, "rotation": "ccw" if cam_sense == 1 else "cw"}
+    if linkage.rpm is not None:
+        cam_table["rpm"] = linkage.rpm * drive.ratio
+    dd = {k: d[k] for k in ("follower", "motion", "limits", "solve", "units") if k in d}
+    dd["cam"] = cam_table
+    dd["name"] = f"{name}: cam"
+    design = design_from_dict(dd)
+    return MachineSpec(name=name, linkage=linkage, cutting=cutting, drive=drive, timing=timing, cam=design, units=units, extra={"raw": d})
+
+
+def load_machine(path: str | Path) -> MachineSpec:
+    """Read a machine file; raise :class:`InputError` for unreadable or invalid files."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as e:
+        raise InputError("FILE", f"cannot read {str(p)!r}: {e.strerror or e}") from None
+    try:
+        d = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise InputError("FILE", f"{p}: not valid TOML: {e}") from None
+    return machine_from_dict(d)
