@@ -27,7 +27,7 @@ import numpy as np
 from cams.profile import Profile, default_bore_radius
 from laws.errors import InputError
 
-__all__ = ["write_csv", "write_dxf", "write_svg", "csv_header", "check_output_path", "LAYERS"]
+__all__ = ["write_csv", "write_dxf", "write_svg", "csv_header", "check_output_path", "atomic_write", "LAYERS"]
 
 #: Layer names of the drawings, in drawing order.
 LAYERS = ("PROFILE", "OUTER", "PITCH", "BASE", "BORE")
@@ -61,8 +61,22 @@ def check_output_path(path: str | os.PathLike, field: str) -> Path:
     return p
 
 
-def _atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None]) -> Path:
+def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None]) -> Path:
     """Call ``write(tmp)`` for a temporary file next to ``path``, then move it to ``path``.
+
+    Parameters
+    ----------
+    path : path-like
+        The file to create or replace.
+    field : str
+        Name of the option for error messages (e.g. ``"--csv"``).
+    write : callable
+        Writes the whole content to the temporary file name it is given.
+
+    Returns
+    -------
+    Path
+        ``path``.
 
     Raises
     ------
@@ -126,7 +140,7 @@ def write_csv(profile: Profile, path: str | os.PathLike, *, field: str = "--csv"
             fh.write(csv_header(profile) + "\n")
             np.savetxt(fh, data, fmt="%.9f", delimiter=",")
 
-    return _atomic_write(path, field, write)
+    return atomic_write(path, field, write)
 
 
 def _bore(profile: Profile, bore_radius: float | None) -> float:
@@ -178,7 +192,7 @@ def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     def write(tmp: str) -> None:
         doc.saveas(tmp)
 
-    return _atomic_write(path, field, write)
+    return atomic_write(path, field, write)
 
 
 def _path_d(pts: np.ndarray) -> str:
@@ -244,4 +258,7 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
         with open(tmp, "w", encoding="utf-8") as fh:
             fh.write(text)
 
-    return _atomic_write(path, field, write)
+    return atomic_write(path, field, write)
+
+
+_atomic_write = atomic_write  # the former private name, still used by cams.commands.new
