@@ -275,21 +275,24 @@ class SlottingMachine(_Base):
         _sign("linkage.tool_side", self.tool_side, ("above", "below"))
         self._check_common()
         _swing_bar_checks(self.crank, self.centre_distance, self.bar, self.bar_side, "guide bar", "linkage.bar")
-        # BC must reach y-y at every swing: x_B = -L + side*bar*cos(beta), |beta| <= theta/2
+        # BC must reach y-y at every swing: x_B = -L + side*bar*cos(beta), |beta| <= theta/2;
+        # the farthest B is at the bar's mid-position (crank at 0 or 180 deg) or at its ends (dead positions)
         half = self.half_swing
         xb = -self.centre_distance + self.bar_side * self.bar * np.array([1.0, np.cos(half)])
-        need = float(np.max(np.abs(self.guide_x - xb)))
+        dev = np.abs(self.guide_x - xb)
+        need = float(np.max(dev))
         if self.rod < need:
             try:
                 self._check_assembly()
+                where = "0, 180" if dev[0] >= dev[1] else f"{90 + np.degrees(half):.1f}, {270 - np.degrees(half):.1f}"
+                where = f"near {where} deg"
             except AssemblyError as e:
                 where = e.message.rsplit("fails at crank angles ", 1)[-1]
-                raise AssemblyError(
-                    "linkage.rod",
-                    f"link BC of {self.rod:.6g} cannot reach the guide y-y at crank angles {where}; "
-                    f"it needs l_BC >= {need:.6g} (or y-y moved toward B's arc)",
-                    e.mask,
-                ) from None
+            raise AssemblyError(
+                "linkage.rod",
+                f"link BC of {self.rod:.6g} cannot reach the guide y-y at crank angles {where}; "
+                f"it needs l_BC >= {need:.6g} (or y-y moved toward B's arc)",
+            )
 
     @classmethod
     def from_course(

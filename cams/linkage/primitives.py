@@ -201,8 +201,8 @@ def ground(z: complex | np.ndarray) -> Point:
 
     Examples
     --------
-    >>> ground(3 + 4j).speed
-    array(0.)
+    >>> float(ground(3 + 4j).speed)
+    0.0
     """
     z = _c(z)
     zero = np.zeros_like(z)

@@ -154,7 +154,7 @@ def slotted_lever_synthesis(
     Seed 004 (pump): K = 2, H = 250 mm, O1O2 = 525 mm.
 
     >>> s = slotted_lever_synthesis(2.0, 250.0, 525.0)
-    >>> round(np.degrees(s.swing), 6), round(s.crank, 6), round(s.bar, 6)
+    >>> round(float(np.degrees(s.swing)), 6), round(s.crank, 6), round(s.bar, 6)
     (60.0, 262.5, 250.0)
     """
     theta = swing_from_time_ratio(time_ratio)

@@ -206,3 +206,25 @@ def test_unassemblable_linkage_from_file():
     d["linkage"] = {"type": "slotting", "crank": 75.0, "centre_distance": 150.0, "bar": 100.0, "rod": 5.0, "guide_x": -240.0}
     with pytest.raises(InfeasibleError, match=r"linkage.rod: .*crank angles .*needs l_BC >= 10"):
         machine_from_dict(d)
+
+
+def test_key_angle_on_the_crank_shaft():
+    """With the roller's direction given, the cam's start radius is keyed at (direction - crank angle at mount)."""
+    d = raw(SLOTTING)
+    d["timing"]["follower_direction"] = 30.0
+    spec = machine_from_dict(d)
+    w = windows(spec.linkage, spec.cutting)
+    t = place_cam(w, spec.cam.program, spec.drive, spec.timing)
+    assert np.degrees(t.key_angle) == pytest.approx(30.0 - np.degrees(t.mount_frame))
+    assert np.mod(t.mount_frame - w.frame_angle(t.mount), 2 * np.pi) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_offset_crank_slider_machine_file():
+    """An offset crank-slider has a quick return; the cam's rise goes in its return stroke."""
+    d = raw(SLOTTING)
+    d["linkage"] = {"type": "crank_slider", "stroke": 100.0, "rod": 220.0, "offset": 40.0, "rpm": 60}
+    d["cutting"] = {"approach": 0.05, "overrun": 0.05}
+    res = design_machine(machine_from_dict(d))
+    assert res.stroke.stroke == pytest.approx(100.0, rel=1e-10)
+    assert res.stroke.time_ratio > 1.05
+    assert not res.overlap and res.ok
