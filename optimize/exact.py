@@ -22,7 +22,10 @@ from optimize.planar import nearest_point
 from optimize.result import Binding, CentreSolution
 from optimize.zone import max_violation, wedges
 
-__all__ = ["nearest_exact"]
+__all__ = ["nearest_exact", "COARSE_GRID", "FINE_GRID"]
+
+#: Positions per phase of the violation scan while iterating, and of the final verification.
+COARSE_GRID, FINE_GRID = 48, 384
 
 
 def nearest_exact(
@@ -44,7 +47,8 @@ def nearest_exact(
     extra : (N, c), optional
         Additional half-planes ``N O <= c`` (e.g. a fixed offset as two).
     tol : float
-        Allowed violation relative to the design's scale.
+        Allowed violation relative to the design's scale; values below 1e-13
+        are raised to it (round-off of the planar solves).
 
     Raises
     ------
@@ -55,7 +59,8 @@ def nearest_exact(
     T = np.asarray(target, dtype=float)
     N = np.zeros((0, 2)) if extra is None else np.asarray(extra[0], float)
     c = np.zeros(0) if extra is None else np.asarray(extra[1], float)
-    atol = tol * scale
+    atol = max(tol, 1e-13) * scale
+    feas_tol = max(1e-3 * atol, 1e-14 * scale)  # above the round-off of line crossings
     O = T
     if len(N):
         first = nearest_point(T, N, c, atol)
@@ -63,11 +68,19 @@ def nearest_exact(
             raise InfeasibleError("follower.offset", "the fixed constraints have no common point")
         O = first[0]
     peaks = []
+    grid = COARSE_GRID
     for it in range(1, max_iter + 1):
-        peaks = max_violation(design, O)
+        peaks = max_violation(design, O, grid=grid)
         v = peaks[0].value
         if v <= atol:
-            break
+            if grid == FINE_GRID:
+                break
+            # converged on the coarse scan: verify on a fine one (narrow peaks)
+            grid = FINE_GRID
+            peaks = max_violation(design, O, grid=grid)
+            v = peaks[0].value
+            if v <= atol:
+                break
         new = [p for p in peaks if p.value > atol]
         pos: dict[int, list[tuple[float, int]]] = {}
         for p in new:
@@ -76,7 +89,7 @@ def nearest_exact(
         sides = np.array([k for us in pos.values() for _, k in us])
         N = np.vstack([N, w.normals[np.arange(len(w)), sides]])
         c = np.concatenate([c, w.offsets[np.arange(len(w)), sides]])
-        res = nearest_point(T, N, c, atol * 1e-3)
+        res = nearest_point(T, N, c, feas_tol)
         if res is None:
             raise InfeasibleError("limits.pressure_angle", "no cam centre satisfies the pressure-angle limits")
         O = res[0]
