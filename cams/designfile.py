@@ -156,6 +156,7 @@ def design_from_dict(d: dict) -> CamDesign:
         centre_distance=_num(li, "centre_distance", "limits.centre_distance", required=False),
         min_base_radius=_num(li, "min_base_radius", "limits.min_base_radius", required=False),
     )
+    _check_keys(_table(d, "profile"), "profile", "profile")
     so = _table(d, "solve")
     _check_keys(so, "solve", "solve")
     samples = so.get("samples", 360)

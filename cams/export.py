@@ -18,16 +18,15 @@ Layers (DXF) and groups (SVG):
 from __future__ import annotations
 
 import os
-import tempfile
-from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
+from cams.files import atomic_write, check_output_path
 from cams.profile import Profile, default_bore_radius
 from laws.errors import InputError
 
-__all__ = ["write_csv", "write_dxf", "write_svg", "csv_header", "check_output_path", "atomic_write", "LAYERS"]
+__all__ = ["write_csv", "write_dxf", "write_svg", "csv_header", "LAYERS"]
 
 #: Layer names of the drawings, in drawing order.
 LAYERS = ("PROFILE", "OUTER", "PITCH", "BASE", "BORE")
@@ -39,67 +38,6 @@ _SVG_STYLE = {
     "BASE": 'stroke="#008000" stroke-dasharray="{d} {d}"',
     "BORE": 'stroke="#0000c0"',
 }
-
-
-def check_output_path(path: str | os.PathLike, field: str) -> Path:
-    """Raise :class:`InputError` unless ``path`` can be created (its folder exists, it is no folder).
-
-    Parameters
-    ----------
-    path : path-like
-    field : str
-        Name of the option for the message (e.g. ``"--csv"``).
-    """
-    p = Path(path)
-    folder = p.parent if str(p.parent) else Path(".")
-    if not folder.is_dir():
-        raise InputError(field, f"cannot write {str(p)!r}: folder {str(folder)!r} does not exist")
-    if p.is_dir():
-        raise InputError(field, f"cannot write {str(p)!r}: it is a folder")
-    if not os.access(folder, os.W_OK):
-        raise InputError(field, f"cannot write {str(p)!r}: folder {str(folder)!r} is not writable")
-    return p
-
-
-def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None]) -> Path:
-    """Call ``write(tmp)`` for a temporary file next to ``path``, then move it to ``path``.
-
-    Parameters
-    ----------
-    path : path-like
-        The file to create or replace.
-    field : str
-        Name of the option for error messages (e.g. ``"--csv"``).
-    write : callable
-        Writes the whole content to the temporary file name it is given.
-
-    Returns
-    -------
-    Path
-        ``path``.
-
-    Raises
-    ------
-    InputError
-        The folder does not exist or the file cannot be written; no file is
-        left behind.
-    """
-    p = Path(path)
-    folder = p.parent if str(p.parent) else Path(".")
-    try:
-        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{p.name}.", suffix=".tmp")
-    except OSError as e:
-        raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
-    os.close(fd)
-    try:
-        write(tmp)
-        os.replace(tmp, p)
-    except OSError as e:
-        raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-    return p
 
 
 def csv_header(profile: Profile) -> str:
@@ -261,4 +199,3 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     return atomic_write(path, field, write)
 
 
-_atomic_write = atomic_write  # the former private name, still used by cams.commands.new

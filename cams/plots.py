@@ -26,27 +26,13 @@ def _figure(w=A4_WIDTH_IN, h=5.5):
 
 def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
     """Write ``fig`` as ``stem.png`` and ``stem.svg``, each whole or not at all."""
-    import os
-    import tempfile
-
-    from laws.errors import InputError
+    from cams.files import atomic_write
 
     stem = Path(stem)
     out = []
     for ext in formats:
         target = stem.with_suffix(f".{ext}")
-        try:
-            fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=f".{ext}")
-        except OSError as e:
-            raise InputError("--out", f"cannot write in {str(target.parent)!r}: {e.strerror or e}") from None
-        try:
-            with os.fdopen(fd, "wb") as fh:
-                fig.savefig(fh, format=ext, dpi=150)
-            os.replace(tmp, target)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
-        out.append(target)
+        out.append(atomic_write(target, "--out", lambda tmp, ext=ext: fig.savefig(tmp, format=ext, dpi=150)))
     return out
 
 

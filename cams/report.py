@@ -10,8 +10,6 @@ from __future__ import annotations
 import base64
 import html
 import io
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -86,23 +84,6 @@ def _figures(cam):
     return figs
 
 
-def _atomic(path: Path, write) -> Path:
-    from laws.errors import InputError
-
-    try:
-        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
-    except OSError as e:
-        raise InputError("--out", f"cannot write in {str(path.parent)!r}: {e.strerror or e}") from None
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            write(fh)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return path
-
-
 def write_report(cam, out: str | Path) -> tuple[Path, Path]:
     """Write ``report.html`` and ``report.pdf`` for ``cam`` into folder ``out``.
 
@@ -114,18 +95,14 @@ def write_report(cam, out: str | Path) -> tuple[Path, Path]:
     from matplotlib.backends.backend_pdf import PdfPages
     from matplotlib.figure import Figure
 
-    from laws.errors import InputError
+    from cams.files import atomic_write, ensure_folder
 
-    out = Path(out)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise InputError("--out", f"cannot create {str(out)!r}: {e.strerror or e}") from None
+    out = ensure_folder(out, "--out")
     sections = report_sections(cam)
     figs = _figures(cam)
 
-    def write_pdf(fh):
-        with PdfPages(fh) as pdf:
+    def write_pdf(tmp):
+        with PdfPages(tmp) as pdf:
             for title, rows in sections:
                 page = Figure(figsize=(8.27, 11.69))
                 page.text(0.08, 0.95, f"{cam.design.name}: {title}", fontsize=15, weight="bold")
@@ -138,7 +115,7 @@ def write_report(cam, out: str | Path) -> tuple[Path, Path]:
             for _, fig in figs:
                 pdf.savefig(fig)
 
-    def write_html(fh):
+    def write_html(tmp):
         parts = [
             "<!DOCTYPE html><html><head><meta charset='utf-8'>",
             f"<title>{html.escape(cam.design.name)}</title>",
@@ -158,8 +135,8 @@ def write_report(cam, out: str | Path) -> tuple[Path, Path]:
             parts.append(f"<section><h2>{html.escape(title)}</h2>"
                          f"<img alt='{html.escape(title)}' src='data:image/png;base64,{data}'></section>")
         parts.append("</body></html>")
-        fh.write("\n".join(parts).encode("utf-8"))
+        Path(tmp).write_text("\n".join(parts), encoding="utf-8")
 
-    pdf = _atomic(out / "report.pdf", write_pdf)
-    page = _atomic(out / "report.html", write_html)
+    pdf = atomic_write(out / "report.pdf", "--out", write_pdf)
+    page = atomic_write(out / "report.html", "--out", write_html)
     return page, pdf

@@ -16,7 +16,7 @@ def run(args) -> int:
     if args.out is None:
         print(text, end="")
         return EXIT_OK
-    from cams.export import _atomic_write, check_output_path
+    from cams.files import atomic_write, check_output_path
 
     path = check_output_path(args.out, "--out")
     if path.exists() and not args.force:
@@ -28,7 +28,7 @@ def run(args) -> int:
         with open(tmp, "w", encoding="utf-8") as fh:
             fh.write(text)
 
-    print(_atomic_write(path, "--out", write))
+    print(atomic_write(path, "--out", write))
     return EXIT_OK
 
 

@@ -14,15 +14,6 @@ __all__ = ["register", "run", "PICTURES"]
 PICTURES = ("motion", "zone", "pressure", "profile")
 
 
-def _outdir(path: str) -> Path:
-    out = Path(path)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise InputError("--out", f"cannot create {str(out)!r}: {e.strerror or e}") from None
-    return out
-
-
 def draw(cam, which: tuple[str, ...], out: Path) -> list[Path]:
     """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``."""
     import matplotlib
@@ -61,7 +52,9 @@ def run(args) -> int:
         if w not in PICTURES:
             raise InputError("--only", f"{w!r} is not a picture, must be among {', '.join(PICTURES)}")
     cam = Cam.from_file(args.file)
-    out = _outdir(args.out)
+    from cams.files import ensure_folder
+
+    out = ensure_folder(args.out, "--out")
     for p in draw(cam, which, out):
         print(p)
     if args.animate:

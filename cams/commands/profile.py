@@ -13,7 +13,8 @@ __all__ = ["register"]
 def run(args) -> int:
     from cams.checks import curvature_extremes
     from cams.designfile import load_design
-    from cams.export import check_output_path, write_csv, write_dxf, write_svg
+    from cams.export import write_csv, write_dxf, write_svg
+    from cams.files import check_output_path
     from cams.profile import build_profile, default_bore_radius, profile_options
     from optimize.solve import solve
 

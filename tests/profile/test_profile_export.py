@@ -10,7 +10,8 @@ import pytest
 import shapely
 from shapely.geometry import LineString
 
-from cams.export import check_output_path, csv_header, write_csv, write_dxf, write_svg
+from cams.export import csv_header, write_csv, write_dxf, write_svg
+from cams.files import check_output_path
 from cams.profile import build_profile, default_bore_radius
 from laws.errors import InputError
 
