@@ -48,9 +48,14 @@ def pressure_angle(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndar
     W = V - eps * np.stack([-r[..., 1], r[..., 0]], axis=-1)
     # outward normal: W turned by eps * 90 degrees
     n = eps * np.stack([-W[..., 1], W[..., 0]], axis=-1)
-    n = n / np.linalg.norm(n, axis=-1, keepdims=True)
+    norm = np.linalg.norm(n, axis=-1, keepdims=True)
+    # where the roller centre sits on the cam centre with no relative motion the
+    # normal is undefined: NaN, which the maxima below skip
+    defined = norm > 1e-12 * design.scale
+    n = n / np.where(defined, norm, 1.0)
     e = T / np.linalg.norm(T, axis=-1, keepdims=True)
-    return np.arccos(np.clip(np.sum(n * e, axis=-1), -1.0, 1.0))
+    g = np.arccos(np.clip(np.sum(n * e, axis=-1), -1.0, 1.0))
+    return np.where(defined[..., 0], g, np.nan)
 
 
 @dataclass(frozen=True)
@@ -73,12 +78,14 @@ class PressureReport:
 def _phase_max(design: CamDesign, centre, i: int, grid: int) -> tuple[float, float]:
     u = np.linspace(0.0, 1.0, grid + 1)
     g = pressure_angle(design, centre, i, u)
-    k = int(np.argmax(g))
+    if np.all(np.isnan(g)):
+        return float("nan"), float(design.program.starts[i])
+    k = int(np.nanargmax(g))
     best_u, best = u[k], g[k]
     lo, hi = u[max(k - 1, 0)], u[min(k + 1, grid)]
     if hi > lo:
         res = minimize_scalar(
-            lambda x: -float(pressure_angle(design, centre, i, np.array([x]))[0]),
+            lambda x: -float(np.nan_to_num(pressure_angle(design, centre, i, np.array([x]))[0], nan=-1.0)),
             bounds=(lo, hi),
             method="bounded",
             options={"xatol": 1e-12},
@@ -102,6 +109,8 @@ def check_pressure(design: CamDesign, centre: np.ndarray, *, grid: int = 2000, t
         if p.kind == "dwell":
             continue
         g, at = _phase_max(design, centre, i, grid)
+        if np.isnan(g):
+            continue
         if p.kind == "rise" and (rise is None or g > rise):
             rise, rise_at = g, at
         if p.kind == "return" and (ret is None or g > ret):

@@ -243,9 +243,15 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
             notes.append(f"sampled at {samples} steps per phase: the limit may be exceeded slightly between samples")
     else:
         binding, error_bound = (), None
+    R0 = float(np.linalg.norm(centre - A0))
+    if R0 < 1e-10 * design.scale:
+        raise InfeasibleError(
+            "limits.pressure_angle",
+            f"the minimum base radius vanishes (R0 = {R0:.3g}): the limit admits the cam centre at the "
+            "roller's start point; set limits.min_base_radius to size a buildable cam",
+        )
     margin = -G(centre)
     pressure = check_pressure(design, centre)
-    R0 = float(np.linalg.norm(centre - A0))
     if R0 <= f.roller_radius:
         notes.append(f"R0 = {R0:.6g} is not larger than the roller radius {f.roller_radius:g}: choose a floor")
     return SolveResult(

@@ -193,11 +193,15 @@ def max_violation(
     phases = design.constrained_phases()
     if not phases:
         return [ViolationPeak(-1, 0.0, 0, -np.inf)]
-    u = np.linspace(0.0, 1.0, grid + 1)
-    du = 1.0 / grid
+    # an even grid plus geometric steps into both ends, where laws start from rest
+    # and a peak can sit much closer to the end than one cell
+    ends = np.geomspace(1e-7, 0.5 / grid, 8)
+    u = np.unique(np.concatenate([np.linspace(0.0, 1.0, grid + 1), ends, 1.0 - ends]))
+    m_u = len(u)
+    gaps = np.diff(u)
     P = len(phases)
-    which_g = np.repeat(np.arange(P), grid + 1)
-    h = _violation_mixed(design, phases, which_g, np.tile(u, P), O).reshape(P, grid + 1, 2)
+    which_g = np.repeat(np.arange(P), m_u)
+    h = _violation_mixed(design, phases, which_g, np.tile(u, P), O).reshape(P, m_u, 2)
     y = np.moveaxis(h, 2, 1)  # (P, 2, grid+1)
     pad = np.full(y.shape[:2] + (1,), -np.inf)
     left = np.concatenate([pad, y[..., :-1]], axis=2)
@@ -208,7 +212,11 @@ def max_violation(
     best_u = u[idx]
     best_v = y[pj, side, idx]
     c = best_u.copy()
-    step = np.full(n, du)
+    # first stencil: the smaller neighbouring gap of each grid peak
+    left_gap = np.where(idx > 0, gaps[np.maximum(idx - 1, 0)], np.inf)
+    right_gap = np.where(idx < m_u - 1, gaps[np.minimum(idx, m_u - 2)], np.inf)
+    step0 = np.minimum(left_gap, right_gap)
+    step = step0.copy()
     for _ in range(iters):
         lo = np.clip(c - step, 0.0, 1.0)
         hi = np.clip(c + step, 0.0, 1.0)
@@ -230,7 +238,7 @@ def max_violation(
         shift = np.where(concave, -B / (2 * np.where(concave, A, -1.0)), 0.0)
         shift = np.clip(shift, -step, step)
         c = np.where(concave, np.clip(best_u + (c + shift - best_u), 0.0, 1.0), best_u)
-        step = np.clip(np.abs(shift) * 4.0, step * 1e-4, du)
+        step = np.clip(np.abs(shift) * 4.0, step * 1e-4, step0)
     vv = _violation_mixed(design, phases, pj, c, O)[rows, side]
     better = vv > best_v
     best_u = np.where(better, c, best_u)
