@@ -17,6 +17,12 @@ from laws.errors import InputError
 __all__ = ["atomic_write", "check_output_path", "ensure_folder"]
 
 
+def _umask() -> int:
+    m = os.umask(0)
+    os.umask(m)
+    return m
+
+
 def ensure_folder(path: str | os.PathLike, field: str) -> Path:
     """Create folder ``path`` (and parents) or raise :class:`InputError` naming ``field``."""
     p = Path(path)
@@ -79,6 +85,7 @@ def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], Non
     os.close(fd)
     try:
         write(tmp)
+        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual permissions
         os.replace(tmp, p)
     except OSError as e:
         raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None

@@ -62,3 +62,14 @@ def test_every_help_fits_a_terminal_and_shows_an_example():
 def test_no_command_prints_help_and_exits_2():
     r = subprocess.run([sys.executable, "-m", "cams.cli"], capture_output=True, text=True)
     assert r.returncode == 2 and "COMMAND" in r.stdout
+
+
+def test_written_files_have_the_usual_permissions(tmp_path):
+    import os
+    import stat
+
+    assert main(["new", "rocker", "--out", str(tmp_path / "a.toml")]) == 0
+    mode = stat.S_IMODE(os.stat(tmp_path / "a.toml").st_mode)
+    m = os.umask(0)
+    os.umask(m)
+    assert mode == 0o666 & ~m
