@@ -15,7 +15,6 @@ Schema (see ``examples/``)::
 
 from __future__ import annotations
 
-import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -174,13 +173,6 @@ def design_from_dict(d: dict) -> CamDesign:
 
 def load_design(path: str | Path) -> CamDesign:
     """Read a design file; raise :class:`InputError` for unreadable or invalid files."""
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as e:
-        raise InputError("FILE", f"cannot read {str(p)!r}: {e.strerror or e}") from None
-    try:
-        d = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
-        raise InputError("FILE", f"{p}: not valid TOML: {e}") from None
-    return design_from_dict(d)
+    from cams.files import read_toml
+
+    return design_from_dict(read_toml(path))

@@ -14,7 +14,24 @@ from typing import Callable
 
 from laws.errors import InputError
 
-__all__ = ["atomic_write", "check_output_path", "ensure_folder"]
+__all__ = ["atomic_write", "check_output_path", "ensure_folder", "read_toml"]
+
+
+def read_toml(path: str | os.PathLike) -> dict:
+    """Parse a TOML file; raise :class:`InputError` (field ``FILE``) if unreadable or invalid."""
+    import tomllib
+
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as e:
+        raise InputError("FILE", f"cannot read {str(p)!r}: {e.strerror or e}") from None
+    except UnicodeDecodeError:
+        raise InputError("FILE", f"{str(p)!r} is not UTF-8 text") from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise InputError("FILE", f"{p}: not valid TOML: {e}") from None
 
 
 def _umask() -> int:

@@ -12,20 +12,11 @@ __all__ = ["register", "run"]
 
 
 def run(args) -> int:
-    import tomllib
-
-    from cams.files import atomic_write, check_output_path
+    from cams.files import atomic_write, check_output_path, read_toml
     from cams.sweep import COLUMNS, parse_vary, sweep
-    from laws.errors import InputError
 
     out = check_output_path(args.out, "--out")
-    try:
-        with open(args.file, "rb") as fh:
-            base = tomllib.load(fh)
-    except OSError as e:
-        raise InputError("FILE", f"cannot read {args.file!r}: {e.strerror or e}") from None
-    except tomllib.TOMLDecodeError as e:
-        raise InputError("FILE", f"{args.file}: not valid TOML: {e}") from None
+    base = read_toml(args.file)
     vary = [parse_vary(v) for v in args.vary]
     res = sweep(base, vary, method=args.method, workers=args.jobs, progress=not args.quiet)
 
