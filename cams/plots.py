@@ -84,7 +84,12 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
         ax.plot(0, 0, "ko", ms=4)
         ax.annotate("O1", (0, 0), textcoords="offset points", xytext=(4, 4))
     else:
-        ax.axvline(0.0, color="k", lw=0.8, ls="-.")
+        ax.axvline(0.0, color="k", lw=0.8, ls="-.", label="follower axis")
+        if result.offset is not None:
+            # the offset e: from the cam centre across to the follower's axis
+            ax.annotate("", xy=(0.0, result.centre[1]), xytext=tuple(result.centre),
+                        arrowprops=dict(arrowstyle="<->", color="#6b46c1", lw=1.2))
+            ax.plot([], [], color="#6b46c1", lw=1.2, label=f"offset e = {result.offset:.3f}")
     ax.plot(*A0, "ko", ms=4)
     ax.annotate("A0", A0, textcoords="offset points", xytext=(4, -10))
     ax.plot(*result.centre, "o", color="#c53030", ms=6, label="cam centre O")

@@ -22,8 +22,9 @@ def test_plot_bad_picture_name(tmp_path, capsys):
     assert "--only" in capsys.readouterr().err
 
 
-def test_report_html_and_pdf(tmp_path, capsys):
-    rc = main(["report", str(EXAMPLES / "rocker_form.toml"), "--out", str(tmp_path)])
+@pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
+def test_report_html_and_pdf(tmp_path, capsys, example):
+    rc = main(["report", str(EXAMPLES / example), "--out", str(tmp_path)])
     assert rc == 0
     html = (tmp_path / "report.html").read_text()
     for word in ("Inputs", "Results", "Checks", "base radius R0", "data:image/png;base64,"):
@@ -73,3 +74,16 @@ def test_written_files_have_the_usual_permissions(tmp_path):
     m = os.umask(0)
     os.umask(m)
     assert mode == 0o666 & ~m
+
+
+def test_animation_gif(tmp_path):
+    from cams.cam import Cam
+    from cams.plots import animate_profile
+
+    p = animate_profile(Cam.from_file(EXAMPLES / "translating_force.toml"), tmp_path / "a.gif", frames=4)
+    data = p.read_bytes()
+    assert data[:6] in (b"GIF89a", b"GIF87a")
+    from PIL import Image
+
+    with Image.open(p) as im:
+        assert im.n_frames == 4

@@ -73,3 +73,10 @@ def test_save_writes_png_and_svg(tmp_path, cams_by_name):
     assert paths[0].read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert b"<svg" in paths[1].read_bytes()[:2000]
     assert sorted(f.name for f in tmp_path.iterdir()) == ["m.png", "m.svg"]
+
+
+def test_translating_zone_shows_the_offset(cams_by_name):
+    cam = cams_by_name["translating_force"]
+    fig = plot_zone(cam.solution)
+    labels = [h.get_label() for h in fig.axes[0].get_lines()]
+    assert f"offset e = {cam.solution.offset:.3f}" in labels
