@@ -11,6 +11,9 @@ Schema (see ``examples/``)::
     [limits]     pressure_angle, return_pressure_angle, closure ("force" | "form"),
                  safety_factor, centre_distance, min_base_radius
     [solve]      method ("exact" | "convex" | "exhaustive"), samples, objective ("R0" | "L")
+    [dynamics]   optional, force closure: mass, load, spring_rate, preload, friction,
+                 journal_radius, margin, max_spring_force (see cams.camforces.dynamics_from_dict);
+                 parsed into ``design.extra["dynamics"]`` as (FollowerDynamics, margin)
 """
 
 from __future__ import annotations
@@ -28,7 +31,7 @@ from laws.registry import get_law
 __all__ = ["load_design", "design_from_dict"]
 
 _KEYS = {
-    "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile"},
+    "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics"},
     "follower": {"kind", "arm", "swing", "stroke", "offset", "roller_radius", "rise_direction"},
     "cam": {"rotation", "rpm", "bore_radius"},
     "motion": {"phase", "law", "angle", "height"},
@@ -167,8 +170,19 @@ def design_from_dict(d: dict) -> CamDesign:
     return CamDesign(
         follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=name,
         method=so.get("method", "exact"), samples=samples,
-        extra={"objective": check_option("solve.objective", so.get("objective", "R0"), ("R0", "L")), "raw": d},
+        extra={"objective": check_option("solve.objective", so.get("objective", "R0"), ("R0", "L")), "raw": d,
+               **_dynamics(d)},
     )
+
+
+def _dynamics(d: dict) -> dict:
+    """The optional [dynamics] table, as ``{"dynamics": (FollowerDynamics, margin)}`` or ``{}``."""
+    if "dynamics" not in d:
+        return {}
+    from cams.camforces import dynamics_from_dict
+
+    units = d.get("units", "mm")
+    return {"dynamics": dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm")}
 
 
 def load_design(path: str | Path) -> CamDesign:

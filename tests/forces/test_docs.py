@@ -7,7 +7,7 @@ import importlib
 
 import pytest
 
-MODULES = ["cams.flywheel"]
+MODULES = ["cams.flywheel", "cams.camforces"]
 
 
 @pytest.mark.parametrize("name", MODULES)

@@ -1,0 +1,613 @@
+"""Forces at a force-closed cam: contact force, camshaft torque, the closing spring and the jump speed.
+
+Model
+-----
+The follower is one rigid body with one coordinate ``q``: the swing ``psi``
+(rad) of a rocker or the lift ``s`` (m) of a translating follower, from the
+near dwell (:mod:`cams.follower`). The cam turns at a constant speed
+``omega`` (rad/s), so ``q' = omega dq/dphi`` and ``q'' = omega^2 d2q/dphi^2``
+(``phi``: cam angle of :mod:`laws.program`). Acting on the follower, in the
+sense of ``q`` (the rise):
+
+* the contact force ``N >= 0`` of the cam on the roller, along the pitch
+  curve's outward normal ``n`` (the roller turns freely: no tangential force),
+  whose generalized force is ``N |dA/dq| cos(gamma)``; ``gamma`` is the pressure
+  angle (angle between ``n`` and the roller centre's direction of motion
+  during the rise, as in :mod:`cams.pressure`), ``|dA/dq|`` the arm (m) of a
+  rocker or 1 for a translating follower;
+* the closing spring ``-(F0 + k q)``: preload ``F0`` at the near dwell and rate
+  ``k`` (N and N/m, or N m and N m/rad for a rocker's torsional spring);
+* a constant external load ``-P`` (N or N m) opposing the rise (a weight, a
+  working resistance); a negative ``P`` pulls the follower away from the cam;
+* friction proportional to the contact force, opposing the motion:
+  ``-sign(q') c N`` with ``c = mu sin(gamma)`` for a translating follower (the
+  guide takes the lateral force ``N sin(gamma)``; coefficient ``mu``) and
+  ``c = mu r_j`` for a rocker (pivot journal of radius ``r_j`` carrying about
+  ``N``); none in dwells;
+* the inertia force ``-m q''`` (``m``: reduced mass, kg, or the rocker's moment
+  of inertia about its pivot, kg m^2; include a third of the spring's mass).
+
+Hence the contact force::
+
+    N = (m q'' + F0 + k q + P) / (|dA/dq| cos(gamma) - sign(q') c)
+
+Contact holds while the numerator is positive (the denominator stays positive
+outside jamming). During the rise the denominator falls to 0 at the
+friction-dependent limit ``gamma_lim`` (``tan gamma_lim = 1 / mu`` for a
+translating follower, ``cos gamma_lim = mu r_j / l`` for a rocker): ``N``
+grows without bound as ``gamma`` approaches it and beyond it the cam cannot
+drive at all -- jamming (заклинивание) in force terms
+(:func:`jamming_limit`, :attr:`CamForces.amplification`).
+
+The camshaft torque (N m, positive: the shaft drives the cam in its sense of
+rotation) is the moment of the roller's force on the cam about the cam's
+centre, ``T = eps N (r x n)`` (``r`` from the cam centre to the roller
+centre); by the power balance it equals ``N |dA/dq| cos(gamma) dq/dphi``.
+
+Units: the design's lengths are in its file's unit (``length_unit`` metres
+each, 1e-3 for mm); forces in N, masses in kg, time in s.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from cams.design import CamDesign
+from cams.follower import Rocker
+from laws.errors import InfeasibleError, InputError
+
+__all__ = [
+    "FollowerDynamics",
+    "Spring",
+    "CamForces",
+    "JumpSpeed",
+    "cam_forces",
+    "spring_for_contact",
+    "jump_speed",
+    "jamming_limit",
+    "dynamics_from_dict",
+    "DYNAMICS_KEYS",
+    "LENGTH_UNITS",
+]
+
+TWO_PI = 2.0 * np.pi
+LENGTH_UNITS = {"mm": 1e-3, "cm": 1e-2, "m": 1.0, "in": 0.0254}
+"""Metres per length unit of a design file."""
+DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "journal_radius", "margin", "max_spring_force")
+"""Keys of a design file's optional ``[dynamics]`` table."""
+
+
+def _num(field: str, v, *, lo: float | None = None, strict: bool = False, allow_none: bool = False):
+    if v is None and allow_none:
+        return None
+    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v):
+        raise InputError(field, f"must be a finite number, got {v!r}")
+    v = float(v)
+    if lo is not None and (v <= lo if strict else v < lo):
+        raise InputError(field, f"must be {'>' if strict else '>='} {lo:g}, got {v!r}")
+    return v
+
+
+@dataclass(frozen=True)
+class Spring:
+    """A closing spring acting on the follower's coordinate.
+
+    Parameters
+    ----------
+    rate : float
+        k >= 0: N/m (translating) or N m/rad (rocker, torsional).
+    preload : float
+        F0 >= 0: spring force at the near dwell, N or N m.
+
+    Examples
+    --------
+    >>> Spring(2000.0, 15.0).force(np.array([0.0, 0.01]))
+    array([15., 35.])
+    """
+
+    rate: float
+    preload: float
+
+    def __post_init__(self):
+        _num("dynamics.spring_rate", self.rate, lo=0.0)
+        _num("dynamics.preload", self.preload, lo=0.0)
+
+    def force(self, q: np.ndarray) -> np.ndarray:
+        """Spring force F0 + k q at the follower coordinate ``q`` (m or rad)."""
+        return self.preload + self.rate * np.asarray(q, dtype=float)
+
+
+@dataclass(frozen=True)
+class FollowerDynamics:
+    """Masses, loads, spring and friction of a force-closed follower.
+
+    Parameters
+    ----------
+    mass : float
+        Reduced mass of a translating follower (kg) or moment of inertia of a
+        rocker about its pivot (kg m^2), > 0.
+    load : float, optional
+        Constant external load opposing the rise, N (N m for a rocker).
+    spring : Spring or None
+        The closing spring; ``None`` when it is to be designed
+        (:func:`spring_for_contact`).
+    friction : float, optional
+        mu >= 0: in the translating follower's guide, or in the rocker's pivot.
+    journal_radius : float, optional
+        Radius of the rocker's pivot journal, design length unit (friction
+        moment ``mu r_j N``); ignored for a translating follower.
+    length_unit : float, optional
+        Metres per design length unit (1e-3: mm).
+    max_spring_force : float or None
+        Largest force (N or N m) the spring may exert (solid or allowable
+        stress); a spring that would need more is rejected.
+    """
+
+    mass: float
+    load: float = 0.0
+    spring: Spring | None = None
+    friction: float = 0.0
+    journal_radius: float = 0.0
+    length_unit: float = 1e-3
+    max_spring_force: float | None = None
+
+    def __post_init__(self):
+        _num("dynamics.mass", self.mass, lo=0.0, strict=True)
+        _num("dynamics.load", self.load)
+        _num("dynamics.friction", self.friction, lo=0.0)
+        _num("dynamics.journal_radius", self.journal_radius, lo=0.0)
+        _num("dynamics.length_unit", self.length_unit, lo=0.0, strict=True)
+        _num("dynamics.max_spring_force", self.max_spring_force, lo=0.0, strict=True, allow_none=True)
+        if self.spring is not None and not isinstance(self.spring, Spring):
+            raise InputError("dynamics.spring", f"must be a Spring, got {type(self.spring).__name__}")
+
+    def with_spring(self, spring: Spring) -> "FollowerDynamics":
+        """A copy with ``spring``."""
+        from dataclasses import replace
+
+        return replace(self, spring=spring)
+
+
+def _omega(design: CamDesign, rpm: float | None) -> float:
+    n = design.rpm if rpm is None else rpm
+    if n is None:
+        raise InputError("cam.rpm", "the cam's speed is needed for its forces; give cam.rpm")
+    _num("cam.rpm", n, lo=0.0, strict=True)
+    return float(n) * TWO_PI / 60.0
+
+
+def _grid(samples: int) -> np.ndarray:
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 8:
+        raise InputError("dynamics.samples", f"must be an integer >= 8, got {samples!r}")
+    return np.linspace(0.0, TWO_PI, int(samples), endpoint=False)
+
+
+def _kinematics(design: CamDesign, phi: np.ndarray, dyn: FollowerDynamics):
+    """q, dq/dphi, d2q/dphi2 in SI and the arm |dA/dq| (m)."""
+    mo = design.program.evaluate(phi)
+    if isinstance(design.follower, Rocker):
+        return mo.s, mo.ds, mo.d2s, design.follower.arm * dyn.length_unit
+    u = dyn.length_unit
+    return mo.s * u, mo.ds * u, mo.d2s * u, 1.0
+
+
+def jamming_limit(design: CamDesign, dyn: FollowerDynamics) -> float:
+    """Pressure angle (radians) at which the rise jams: the contact force needed grows without bound.
+
+    ``arctan(1 / mu)`` for a translating follower, ``arccos(mu r_j / l)`` for
+    a rocker; pi/2 without friction.
+
+    Examples
+    --------
+    >>> from cams.design import CamDesign, Limits
+    >>> from cams.follower import Translating
+    >>> from laws.program import Phase, Program
+    >>> prog = Program((Phase("rise", np.pi, "cycloidal"), Phase("return", np.pi, "cycloidal")), 20.0)
+    >>> d = CamDesign(Translating(5.0, offset=0.0), prog, Limits(np.radians(30)))
+    >>> round(float(np.degrees(jamming_limit(d, FollowerDynamics(0.5, friction=0.2)))), 4)
+    78.6901
+    """
+    mu = dyn.friction
+    if isinstance(design.follower, Rocker):
+        ratio = mu * dyn.journal_radius / design.follower.arm
+        if ratio >= 1:
+            return 0.0
+        return float(np.arccos(ratio))
+    return float(np.arctan2(1.0, mu))
+
+
+@dataclass(frozen=True, eq=False)
+class CamForces:
+    """Forces over one cam turn.
+
+    Attributes
+    ----------
+    phi : ndarray
+        Cam angle, radians from the program's start, in the cam's sense.
+    omega : float
+        Cam speed, rad/s.
+    q, dq, d2q : ndarray
+        Follower coordinate (m or rad) and its derivatives in time (per s, s^2).
+    gamma : ndarray
+        Pressure angle, radians in [0, pi).
+    contact : ndarray
+        Contact force N, N (negative where contact would be lost; inf where jammed).
+    along, lateral : ndarray
+        Its components along the roller centre's direction of motion during the
+        rise (``N cos gamma``) and across it (``N sin gamma``), N.
+    force : ndarray of complex
+        The cam's force on the roller in the follower's fixed frame
+        (:mod:`cams.follower`), ``Fx + i Fy``, N.
+    torque : ndarray
+        Camshaft torque, N m (positive: the shaft drives).
+    spring, inertia : ndarray
+        Spring force F0 + k q and the inertia term m q'' (N or N m).
+    friction : ndarray
+        Friction force or moment on the follower, opposing its motion (N or N m).
+    amplification : ndarray
+        ``1 / (|dA/dq| cos(gamma) - sign(q') c)``: contact force per unit of
+        the force the follower needs (1/m for a rocker); inf where jammed.
+    jammed : ndarray of bool
+        The cam cannot drive: the denominator is <= 0 during a rise.
+    gamma_limit : float
+        :func:`jamming_limit`, radians.
+    """
+
+    phi: np.ndarray
+    omega: float
+    q: np.ndarray
+    dq: np.ndarray
+    d2q: np.ndarray
+    gamma: np.ndarray
+    contact: np.ndarray
+    along: np.ndarray
+    lateral: np.ndarray
+    force: np.ndarray
+    torque: np.ndarray
+    spring: np.ndarray
+    inertia: np.ndarray
+    friction: np.ndarray
+    amplification: np.ndarray
+    jammed: np.ndarray
+    gamma_limit: float
+
+    @property
+    def lost(self) -> np.ndarray:
+        """True where the contact force would be negative (the follower leaves the cam)."""
+        return self.contact < 0
+
+    @property
+    def ok(self) -> bool:
+        """Contact everywhere and no jamming."""
+        return not (np.any(self.lost) or np.any(self.jammed))
+
+    @property
+    def rpm(self) -> float:
+        """Cam speed, rev/min."""
+        return float(self.omega * 60.0 / TWO_PI)
+
+    def to_dict(self) -> dict:
+        """JSON-ready extremes (N, N m, degrees)."""
+        finite = np.isfinite(self.contact)
+        k = int(np.argmax(np.where(finite, self.contact, -np.inf)))
+        kt = int(np.argmax(np.abs(self.torque)))
+        return {
+            "rpm": self.rpm,
+            "max_contact_force": float(self.contact[k]),
+            "max_contact_at_deg": float(np.degrees(self.phi[k])),
+            "min_contact_force": float(np.min(self.contact[finite])) if np.any(finite) else None,
+            "max_lateral_force": float(np.max(np.abs(self.lateral[finite]))) if np.any(finite) else None,
+            "max_torque": float(self.torque[kt]),
+            "max_torque_at_deg": float(np.degrees(self.phi[kt])),
+            "mean_torque": float(np.mean(self.torque[finite])) if np.any(finite) else None,
+            "contact_lost": bool(np.any(self.lost)),
+            "jammed": bool(np.any(self.jammed)),
+            "jamming_limit_deg": float(np.degrees(self.gamma_limit)),
+        }
+
+
+def cam_forces(
+    design: CamDesign,
+    centre,
+    dyn: FollowerDynamics,
+    *,
+    rpm: float | None = None,
+    samples: int = 720,
+    phi=None,
+) -> CamForces:
+    """Contact force, its components and the camshaft torque over one cam turn.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre in the follower's fixed frame (``SolveResult.centre``),
+        design length unit.
+    dyn : FollowerDynamics
+        With its ``spring`` set.
+    rpm : float, optional
+        Cam speed, rev/min; default ``design.rpm``.
+    samples : int
+        Cam angles per turn (ignored with ``phi``).
+    phi : array_like, optional
+        Cam angles (radians) at which to evaluate instead.
+
+    Returns
+    -------
+    CamForces
+        ``ok`` is False where the contact would be lost or the cam would jam;
+        the caller decides (see :func:`spring_for_contact`).
+    """
+    if dyn.spring is None:
+        raise InputError("dynamics.spring_rate", "the forces need a spring; design one with spring_for_contact")
+    w = _omega(design, rpm)
+    phi = _grid(samples) if phi is None else np.asarray(phi, dtype=float)
+    f = design.follower
+    mo = design.program.evaluate(phi)
+    q, dq, d2q, arm = _kinematics(design, phi, dyn)
+    # geometry in design units (as cams.pressure)
+    O = np.asarray(centre, dtype=float)
+    A = f.position(mo.s)
+    T = f.tangent(mo.s)
+    r = A - O
+    eps = design.cam_sense
+    V = mo.ds[..., None] * T
+    W = V - eps * np.stack([-r[..., 1], r[..., 0]], axis=-1)
+    n = eps * np.stack([-W[..., 1], W[..., 0]], axis=-1)
+    n = n / np.linalg.norm(n, axis=-1, keepdims=True)
+    e = T / np.linalg.norm(T, axis=-1, keepdims=True)
+    cosg = np.clip(np.sum(n * e, axis=-1), -1.0, 1.0)
+    gamma = np.arccos(cosg)
+    sing = np.sqrt(np.maximum(1.0 - cosg**2, 0.0))
+
+    mu = dyn.friction
+    c = mu * dyn.journal_radius * dyn.length_unit if isinstance(f, Rocker) else mu * sing
+    sgn = np.sign(np.where(np.abs(mo.ds) > 1e-12 * max(design.program.lift, 1.0), mo.ds, 0.0))
+    denom = arm * cosg - sgn * c
+    need = dyn.mass * w**2 * d2q + dyn.spring.force(q) + dyn.load
+    rising = sgn > 0
+    jammed = rising & (denom <= 1e-12 * arm) & (need > 0)
+    tiny = 1e-12 * arm
+    with np.errstate(divide="ignore"):
+        amp = np.where(denom > tiny, 1.0 / np.maximum(denom, tiny), np.inf)
+    N = np.where(jammed, np.inf, need / np.maximum(denom, tiny))
+    fric = -sgn * c * np.where(np.isfinite(N), N, 0.0)
+    cross = r[..., 0] * n[..., 1] - r[..., 1] * n[..., 0]
+    torque = eps * N * cross * dyn.length_unit
+    force = N * (n[..., 0] + 1j * n[..., 1])
+    return CamForces(
+        phi=phi,
+        omega=w,
+        q=q,
+        dq=w * dq,
+        d2q=w**2 * d2q,
+        gamma=gamma,
+        contact=N,
+        along=N * cosg,
+        lateral=N * sing,
+        force=force,
+        torque=torque,
+        spring=dyn.spring.force(q),
+        inertia=dyn.mass * w**2 * d2q,
+        friction=fric,
+        amplification=amp,
+        jammed=jammed,
+        gamma_limit=jamming_limit(design, dyn),
+    )
+
+
+def spring_for_contact(
+    design: CamDesign,
+    dyn: FollowerDynamics,
+    *,
+    rpm: float | None = None,
+    margin: float = 1.2,
+    rate: float | None = None,
+    samples: int = 3600,
+) -> Spring:
+    """The closing spring that keeps the roller on the cam with a margin at a speed.
+
+    Contact needs ``F0 + k q >= margin * (-m q'' - P)`` at every cam angle:
+    the spring exceeds, by the factor ``margin``, the force that would pull
+    the follower off the cam (its inertia in deceleration, less the load
+    that presses it on). Friction does not enter: it changes the contact
+    force's size, not its sign (see the module).
+
+    Parameters
+    ----------
+    design : CamDesign
+    dyn : FollowerDynamics
+        Its ``spring`` is ignored.
+    rpm : float, optional
+        Speed at which contact must hold, rev/min; default ``design.rpm``.
+    margin : float
+        >= 1.
+    rate : float, optional
+        A given spring rate (N/m or N m/rad): only the preload is chosen, the
+        smallest that holds. Without it the rate and preload minimize the
+        spring's largest force ``F0 + k q_max`` (a linear programme), and
+        among those springs the stiffest is taken (the least preload).
+    samples : int
+        Cam angles per turn checked.
+
+    Returns
+    -------
+    Spring
+
+    Raises
+    ------
+    InputError
+        ``margin < 1``, a negative rate, or a spring whose largest force
+        would exceed ``dyn.max_spring_force`` at any preload.
+    """
+    m = _num("dynamics.margin", margin, lo=1.0)
+    w = _omega(design, rpm)
+    phi = _grid(samples)
+    q, _, d2q, _ = _kinematics(design, phi, dyn)
+    need = m * (-dyn.mass * w**2 * d2q - dyn.load)
+    qmax = float(np.max(q))
+    if rate is not None:
+        k = _num("dynamics.spring_rate", rate, lo=0.0)
+        F0 = max(0.0, float(np.max(need - k * q)))
+    else:
+        from scipy.optimize import linprog
+
+        # minimize F0 + k qmax  s.t.  F0 + k q_i >= need_i, F0 >= 0, k >= 0
+        res = linprog([1.0, qmax], A_ub=-np.stack([np.ones_like(q), q], axis=1), b_ub=-need, bounds=[(0, None), (0, None)], method="highs")
+        if not res.success:  # pragma: no cover - the programme is always feasible
+            raise InfeasibleError("dynamics", f"no spring found: {res.message}")
+        top = float(res.fun)
+        # among the springs with that largest force, the stiffest: the least preload (less force elsewhere)
+        A = np.vstack([-np.stack([np.ones_like(q), q], axis=1), [[1.0, qmax]]])
+        b = np.append(-need, top + 1e-9 * max(abs(top), 1.0))
+        res2 = linprog([1.0, 0.0], A_ub=A, b_ub=b, bounds=[(0, None), (0, None)], method="highs")
+        F0, k = (float(res2.x[0]), float(res2.x[1])) if res2.success else (float(res.x[0]), float(res.x[1]))
+        # round-off: make the constraint hold exactly
+        F0 = max(F0, float(np.max(need - k * q)), 0.0)
+    top = F0 + k * qmax
+    if dyn.max_spring_force is not None and top > dyn.max_spring_force * (1 + 1e-12):
+        hint = ""
+        if rate is not None:
+            free = spring_for_contact(design, FollowerDynamics(dyn.mass, dyn.load, None, dyn.friction, dyn.journal_radius, dyn.length_unit),
+                                      rpm=rpm, margin=margin, samples=samples)
+            hint = f"; a free rate ({free.rate:.6g}) would need {free.preload + free.rate * qmax:.6g}"
+        raise InputError(
+            "dynamics.spring_rate" if rate is not None else "dynamics.max_spring_force",
+            f"a spring of rate {k:.6g} cannot keep contact at {w * 60 / TWO_PI:.6g} rpm with margin {m:g} at any preload "
+            f"within the spring's largest force {dyn.max_spring_force:.6g}: it needs {top:.6g}{hint}",
+        )
+    return Spring(rate=k, preload=F0)
+
+
+@dataclass(frozen=True)
+class JumpSpeed:
+    """The speed at which the follower leaves the cam (jump, отрыв).
+
+    Attributes
+    ----------
+    omega : float
+        Cam speed, rad/s, above which contact is lost.
+    rpm : float
+        The same in rev/min.
+    phi : float
+        Cam angle (radians) where contact is lost first.
+    """
+
+    omega: float
+    rpm: float
+    phi: float
+
+
+def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200) -> JumpSpeed:
+    """The cam speed above which the follower jumps, for the given spring.
+
+    Contact is lost where ``m omega^2 d2q/dphi^2 + F0 + k q + P`` turns
+    negative; only decelerations (``d2q < 0``) can pull the follower off, so
+    ``omega_jump^2 = min over d2q < 0 of (F0 + k q + P) / (m |d2q|)``, refined
+    between grid points by a bounded scalar search.
+
+    Parameters
+    ----------
+    design : CamDesign
+    dyn : FollowerDynamics
+        With its ``spring``.
+    samples : int
+        Cam angles per turn scanned before refining.
+
+    Returns
+    -------
+    JumpSpeed
+
+    Raises
+    ------
+    InputError
+        No spring, or a spring (and load) that cannot hold the follower on
+        the cam even at rest.
+    """
+    from scipy.optimize import minimize_scalar
+
+    if dyn.spring is None:
+        raise InputError("dynamics.spring_rate", "the jump speed needs a spring")
+    phi = _grid(samples)
+
+    def ratio(p):
+        q, _, d2q, _ = _kinematics(design, np.atleast_1d(p), dyn)
+        hold = dyn.spring.force(q) + dyn.load
+        with np.errstate(divide="ignore"):
+            return np.where(d2q < 0, hold / (dyn.mass * np.abs(np.where(d2q < 0, d2q, 1.0))), np.inf), hold
+
+    r, hold = ratio(phi)
+    if np.any(hold < 0):
+        k = int(np.argmin(hold))
+        raise InputError(
+            "dynamics.preload",
+            f"the spring and the load cannot hold the follower on the cam even at rest: "
+            f"{hold[k]:.6g} at cam angle {np.degrees(phi[k]):.6g} deg; raise the preload",
+        )
+    k = int(np.argmin(r))
+    best, at = float(r[k]), float(phi[k])
+    h = phi[1] - phi[0]
+    res = minimize_scalar(lambda p: float(ratio(p)[0][0]), bounds=(at - h, at + h), method="bounded", options={"xatol": 1e-12})
+    if res.fun < best:
+        best, at = float(res.fun), float(res.x)
+    w = float(np.sqrt(best))
+    return JumpSpeed(omega=w, rpm=w * 60.0 / TWO_PI, phi=float(np.mod(at, TWO_PI)))
+
+
+def dynamics_from_dict(table: dict, units: str = "mm") -> tuple[FollowerDynamics, float]:
+    """A design file's ``[dynamics]`` table: the follower's dynamics and the contact margin.
+
+    Keys (SI units except ``journal_radius``, in the file's length unit):
+    ``mass`` (kg; kg m^2 for a rocker), ``load`` (N; N m), ``spring_rate``
+    (N/m; N m/rad), ``preload`` (N; N m), ``friction``, ``journal_radius``,
+    ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N; N m). A spring
+    is set when ``spring_rate`` and ``preload`` are both given; with only the
+    rate, the preload is left to :func:`spring_for_contact`.
+
+    Returns
+    -------
+    (FollowerDynamics, float)
+        The dynamics (``spring`` None unless both rate and preload are given)
+        and the margin.
+
+    Raises
+    ------
+    InputError
+        Unknown keys, a missing mass, invalid values, or an unknown length unit.
+
+    Examples
+    --------
+    >>> dyn, margin = dynamics_from_dict({"mass": 0.4, "spring_rate": 3000, "preload": 20})
+    >>> dyn.spring, margin
+    (Spring(rate=3000.0, preload=20.0), 1.2)
+    """
+    if not isinstance(table, dict):
+        raise InputError("dynamics", "must be a table")
+    unknown = set(table) - set(DYNAMICS_KEYS)
+    if unknown:
+        raise InputError("dynamics", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(DYNAMICS_KEYS)}")
+    if units not in LENGTH_UNITS:
+        raise InputError("units", f"{units!r} is not a length unit the forces know, must be one of {', '.join(map(repr, LENGTH_UNITS))}")
+    if "mass" not in table:
+        raise InputError("dynamics.mass", "is required (kg, or kg m^2 about the pivot for a rocker)")
+    v = {k: _num(f"dynamics.{k}", table[k]) for k in table}
+    spring = None
+    if "preload" in v and "spring_rate" not in v:
+        raise InputError("dynamics.spring_rate", "a preload needs its spring rate")
+    if "spring_rate" in v and "preload" in v:
+        spring = Spring(v["spring_rate"], v["preload"])
+    elif "spring_rate" in v:
+        _num("dynamics.spring_rate", v["spring_rate"], lo=0.0)
+    margin = _num("dynamics.margin", v.get("margin", 1.2), lo=1.0)
+    dyn = FollowerDynamics(
+        mass=v["mass"],
+        load=v.get("load", 0.0),
+        spring=spring,
+        friction=v.get("friction", 0.0),
+        journal_radius=v.get("journal_radius", 0.0),
+        length_unit=LENGTH_UNITS[units],
+        max_spring_force=v.get("max_spring_force"),
+    )
+    return dyn, margin
