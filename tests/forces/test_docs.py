@@ -7,7 +7,7 @@ import importlib
 
 import pytest
 
-MODULES = ["cams.flywheel", "cams.camforces"]
+MODULES = ["cams.flywheel", "cams.camforces", "cams.kinetostatics"]
 
 
 @pytest.mark.parametrize("name", MODULES)

@@ -1,0 +1,937 @@
+"""Kinetostatics of the seeds' linkages: reactions in every pair and the balancing moment over the cycle.
+
+Method (seeds 000, 002, 004: "кинетостатика", d'Alembert)
+---------------------------------------------------------
+Every moving link is in equilibrium under its external loads, its weight,
+its inertia force ``-m a_S`` at the centre of mass S and inertia moment
+``-J_S epsilon``, and the reactions of the pairs it belongs to; the input
+crank also carries the balancing moment ``M_b`` (уравновешивающий момент), the
+moment the drive must apply for the crank to turn at its constant speed. For
+a one-input linkage without redundant constraints the ``3 n`` equations
+(n moving links) determine the ``2 p`` reaction components (p lower pairs)
+and ``M_b``: one linear system per crank angle, solved for all angles at once
+(``numpy.linalg.solve`` on a stack), instead of group by group as in the seeds'
+force plans -- the unknowns are the same.
+
+Pairs
+-----
+* revolute: the force ``R`` (complex ``Rx + i Ry``) on the pair's first link
+  from its second, at the pair's centre;
+* prismatic: the normal force ``N`` along ``n = i u`` (``u``: the guide's
+  direction, fixed in the second link) at a reference point of the guide and
+  a couple ``M`` (together: the normal force acting at ``M / N`` along ``u``
+  from the reference point).
+
+The second link gets the opposite force and couple. Ground is link 0.
+
+Friction
+--------
+* constant loads, e.g. seal friction on a piston (seed 002's 60 N):
+  :class:`ConstantFriction`;
+* proportional to the reactions (seed 002's "two-stage method", seed 004's
+  2.6): in a revolute pair a moment ``mu r |R|`` (journal radius ``r``)
+  opposing the relative rotation, in a prismatic pair a force ``mu |N|``
+  along the guide opposing the relative sliding. The first pass solves
+  without them; each following pass applies the friction of the previous
+  pass's reactions (``passes=2`` is the seeds' method; more passes iterate to
+  the fixed point). The power lost in each pair is ``|M_f omega_rel|`` or
+  ``|F_f v_rel|`` (seed 004, 2.6).
+
+Virtual work (Zhukovsky's lever)
+--------------------------------
+The balancing moment also follows from the power of all loads, inertia and
+friction included, without any reaction:
+``M_b omega_1 = -sum(F . v + M omega)`` -- Zhukovsky's lever is the graphical
+form of this sum (moments about the pole of the velocity plan turned by 90
+degrees). :attr:`ForceResult.virtual_moment` computes it independently.
+
+Reduced quantities (for :mod:`cams.flywheel`)
+---------------------------------------------
+``J_red = sum(m |v_S|^2 + J_S omega^2) / omega_1^2`` and the reduced moment
+of the external loads and weights ``Mr = -sum(F . v + M omega) / |omega_1|``
+(positive resists), of friction ``Mf = (losses) / |omega_1|``.
+
+Frames and units
+----------------
+The machine's frame (:mod:`cams.machines`): origin at the crank centre,
+angles counter-clockwise from +x; gravity acts along -y. Lengths are given in
+the machine's unit and converted with ``length_unit`` (m per unit, 1e-3 for
+mm); forces in N, moments in N m (counter-clockwise positive), masses in kg,
+moments of inertia in kg m^2, the crank's speed from the machine's rpm.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from cams.linkage.primitives import Angle, Point, on_link
+from cams.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
+from laws.errors import InputError, check_option
+
+__all__ = [
+    "LinkMass",
+    "Friction",
+    "GasPressure",
+    "Resistance",
+    "ConstantFriction",
+    "ForceSpec",
+    "Body",
+    "Joint",
+    "AppliedLoad",
+    "Model",
+    "ForceResult",
+    "build_model",
+    "solve_model",
+    "analyse_forces",
+    "LINKS",
+    "JOINTS",
+    "WINDOWS",
+]
+
+TWO_PI = 2.0 * np.pi
+G = 9.80665
+
+LINKS = {
+    "slotting": ("crank", "block", "bar", "rod", "tool"),
+    "crank_slider": ("crank", "rod", "slider"),
+    "opposed_twin": ("crank", "rod2", "piston3", "rod4", "piston5"),
+    "slotted_lever_pump": ("crank", "block", "lever", "pin_block", "piston"),
+}
+"""Moving links of each machine kind (seed 003: 1..5; seed 002: 1..3; seed 000: 1..5; seed 004: 1..5)."""
+
+JOINTS = {
+    "slotting": ("O2", "A", "A_slot", "O3", "B", "C", "C_guide"),
+    "crank_slider": ("O", "A", "B", "B_guide"),
+    "opposed_twin": ("O", "A", "B", "B_guide", "C", "D", "D_guide"),
+    "slotted_lever_pump": ("O1", "A", "A_slot", "O2", "C", "C_slot", "E"),
+}
+"""Pairs of each machine kind; a name ending in ``_slot`` or ``_guide`` (and the pump's E) is prismatic."""
+
+WINDOWS = ("cut", "working", "always")
+
+
+# --------------------------------------------------------------------------- inputs
+def _num(field_: str, v, *, lo: float | None = None, strict: bool = False, allow_none: bool = False):
+    if v is None and allow_none:
+        return None
+    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v):
+        raise InputError(field_, f"must be a finite number, got {v!r}")
+    v = float(v)
+    if lo is not None and (v <= lo if strict else v < lo):
+        raise InputError(field_, f"must be {'>' if strict else '>='} {lo:g}, got {v!r}")
+    return v
+
+
+@dataclass(frozen=True)
+class LinkMass:
+    """Mass properties of one link.
+
+    Parameters
+    ----------
+    mass : float
+        kg, >= 0.
+    inertia : float
+        Moment of inertia about the centre of mass, kg m^2, >= 0.
+    cg : float or None
+        Centre of mass: distance from the link's first joint along the link,
+        machine length unit (crank: from its centre; bar/lever: from its pivot
+        toward B/C; rod: from its first pin). ``None``: the centre of rotation
+        for the crank, the middle for bars, levers and rods (or the machine's
+        ``rod_cg``), the pin for blocks, sliders and pistons.
+    """
+
+    mass: float = 0.0
+    inertia: float = 0.0
+    cg: float | None = None
+
+    def __post_init__(self):
+        _num("forces.links.mass", self.mass, lo=0.0)
+        _num("forces.links.inertia", self.inertia, lo=0.0)
+        _num("forces.links.cg", self.cg, allow_none=True)
+
+
+@dataclass(frozen=True)
+class Friction:
+    """Friction in one pair, proportional to its reaction.
+
+    Parameters
+    ----------
+    coefficient : float
+        mu >= 0 (seed 004 takes 1.3 f for a revolute pair with clearance).
+    radius : float
+        Journal radius of a revolute pair, machine length unit (ignored for a
+        prismatic pair).
+    """
+
+    coefficient: float
+    radius: float = 0.0
+
+    def __post_init__(self):
+        _num("forces.friction.coefficient", self.coefficient, lo=0.0)
+        _num("forces.friction.radius", self.radius, lo=0.0)
+
+
+def _check_table(field_: str, angles, values, period: float) -> tuple[np.ndarray, np.ndarray]:
+    try:
+        a = np.asarray(angles, dtype=float)
+        v = np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(field_, "angles and values must be numbers") from None
+    if a.ndim != 1 or a.shape != v.shape or a.size < 2:
+        raise InputError(field_, f"needs matching lists of >= 2 angles and values, got {a.size} and {v.size}")
+    if not (np.all(np.isfinite(a)) and np.all(np.isfinite(v))):
+        raise InputError(field_, "angles and values must be finite")
+    if np.any(np.diff(a) <= 0):
+        raise InputError(field_, "angles must increase strictly")
+    if abs(a[0]) > 1e-9 or abs(a[-1] - period) > 1e-9:
+        raise InputError(
+            field_,
+            f"the table covers {a[0]:g}..{a[-1]:g} deg; it must cover the whole cycle, from 0 to {period:g} deg",
+        )
+    if abs(v[0] - v[-1]) > 1e-9 * max(1.0, float(np.max(np.abs(v)))):
+        raise InputError(field_, f"the values at 0 and {period:g} deg differ ({v[0]:g} and {v[-1]:g}); the cycle must close")
+    return a, v
+
+
+@dataclass(frozen=True)
+class GasPressure:
+    """Gas pressure on a piston from an indicator diagram given over the crank angle (seed 000).
+
+    The force ``p A`` (``A = pi d^2 / 4``) pushes the piston toward the
+    crank centre along its axis.
+
+    Parameters
+    ----------
+    body : str
+        The piston (``"slider"``, ``"piston3"``, ``"piston5"``).
+    angles : sequence of float
+        Crank rotation (degrees, in the crank's sense) from the frame angle
+        ``start``, from 0 to ``period`` inclusive.
+    pressure : sequence of float
+        Gauge pressure at those angles, Pa (negative: below the outside).
+    bore : float
+        Piston diameter d, machine length unit.
+    start : float
+        Frame crank angle (degrees) where the table's angle 0 is.
+    period : float
+        360 (one turn per cycle); 720 for a four-stroke cycle only with crank
+        angles over two turns.
+    """
+
+    body: str
+    angles: tuple
+    pressure: tuple
+    bore: float
+    start: float = 0.0
+    period: float = 360.0
+
+    def __post_init__(self):
+        _num("forces.loads.bore", self.bore, lo=0.0, strict=True)
+        _num("forces.loads.start", self.start)
+        if self.period not in (360.0, 720.0, 360, 720):
+            raise InputError("forces.loads.period", f"must be 360 or 720 degrees, got {self.period!r}")
+        _check_table("forces.loads.angles", self.angles, self.pressure, float(self.period))
+
+
+@dataclass(frozen=True)
+class Resistance:
+    """A constant force opposing a slider's motion inside a window of the cycle (seeds 003, 004).
+
+    Parameters
+    ----------
+    body : str
+        The working slider (the tool, the piston).
+    force : float
+        Magnitude, N, >= 0.
+    window : {"cut", "working", "always"}
+        "cut": while the tool is in the work (the working stroke less
+        ``approach`` and ``overrun``, as :class:`cams.machine.CuttingZone`);
+        "working": the whole working stroke; "always": the whole cycle.
+    approach, overrun : float
+        Fractions of the stroke before and after the cut (window "cut").
+    working : {"slow", "fast", "forward", "backward"}
+        Which stroke works (:func:`cams.linkage.analyse`).
+    """
+
+    body: str
+    force: float
+    window: str = "cut"
+    approach: float = 0.0
+    overrun: float = 0.0
+    working: str = "slow"
+
+    def __post_init__(self):
+        _num("forces.loads.force", self.force, lo=0.0)
+        check_option("forces.loads.window", self.window, WINDOWS)
+
+
+@dataclass(frozen=True)
+class ConstantFriction:
+    """A friction force of constant magnitude opposing a slider's motion (seed 002: seals, 60 N)."""
+
+    body: str
+    force: float
+
+    def __post_init__(self):
+        _num("forces.loads.force", self.force, lo=0.0)
+
+
+Load = GasPressure | Resistance | ConstantFriction
+
+
+@dataclass(frozen=True)
+class ForceSpec:
+    """Mass properties, loads and friction of a machine.
+
+    Parameters
+    ----------
+    links : dict of str to LinkMass
+        By link name (:data:`LINKS`); missing links are massless.
+    loads : tuple of loads
+        :class:`GasPressure`, :class:`Resistance`, :class:`ConstantFriction`.
+    friction : dict of str to Friction
+        By pair name (:data:`JOINTS`); missing pairs have none.
+    gravity : float
+        m/s^2 along -y (0: weights neglected).
+    length_unit : float
+        Metres per machine length unit.
+    """
+
+    links: dict = field(default_factory=dict)
+    loads: tuple = ()
+    friction: dict = field(default_factory=dict)
+    gravity: float = G
+    length_unit: float = 1e-3
+
+    def __post_init__(self):
+        _num("forces.gravity", self.gravity)
+        _num("forces.length_unit", self.length_unit, lo=0.0, strict=True)
+        for k, v in self.links.items():
+            if not isinstance(v, LinkMass):
+                raise InputError(f"forces.links.{k}", f"must be a LinkMass, got {type(v).__name__}")
+        for k, v in self.friction.items():
+            if not isinstance(v, Friction):
+                raise InputError(f"forces.friction.{k}", f"must be a Friction, got {type(v).__name__}")
+        for i, ld in enumerate(self.loads):
+            if not isinstance(ld, (GasPressure, Resistance, ConstantFriction)):
+                raise InputError(f"forces.loads[{i}]", f"must be a load, got {type(ld).__name__}")
+
+
+# --------------------------------------------------------------------------- model
+@dataclass(frozen=True, eq=False)
+class Body:
+    """A moving link: mass properties and the motion of its centre of mass (SI)."""
+
+    name: str
+    mass: float
+    inertia: float
+    cg: Point
+    link: Angle
+
+
+@dataclass(frozen=True, eq=False)
+class Joint:
+    """A lower pair between body ``a`` and body ``b`` (index, -1 for ground).
+
+    ``point``: the revolute's centre or the prismatic guide's reference point
+    (m); ``axis``: the guide's unit direction (prismatic), fixed in ``b``.
+    """
+
+    name: str
+    kind: str
+    a: int
+    b: int
+    point: np.ndarray
+    axis: np.ndarray | None = None
+    friction: Friction | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class AppliedLoad:
+    """A known load on a body: force (complex, N) at a point (complex, m) and a moment (N m)."""
+
+    name: str
+    body: int
+    force: np.ndarray
+    point: np.ndarray
+    moment: np.ndarray
+    kind: str = "external"  # "external" or "friction"
+
+
+@dataclass(frozen=True, eq=False)
+class Model:
+    """Bodies, joints and loads of a linkage at crank angles ``phi`` (SI)."""
+
+    kind: str
+    phi: np.ndarray
+    omega: float
+    bodies: tuple
+    joints: tuple
+    loads: tuple
+    driver: int
+    gravity: float
+    output: str
+    sense: int
+    machine: object = None
+
+    def index(self, name: str) -> int:
+        """Index of a body by name."""
+        for i, b in enumerate(self.bodies):
+            if b.name == name:
+                return i
+        raise InputError("forces.loads.body", f"{name!r} is not a link of a {self.kind} linkage, must be one of "
+                         + ", ".join(repr(b.name) for b in self.bodies))
+
+    def velocity(self, k: int, P: np.ndarray) -> np.ndarray:
+        """Velocity (m/s, complex) of the point P fixed to body ``k`` (0 for ground, k = -1)."""
+        if k < 0:
+            return np.zeros_like(P)
+        b = self.bodies[k]
+        return b.cg.vel + 1j * b.link.omega * (P - b.cg.pos)
+
+
+def _scale(p: Point, u: float) -> Point:
+    return Point(p.pos * u, p.vel * u, p.acc * u)
+
+
+def _fixed(phi: np.ndarray) -> Angle:
+    z = np.zeros_like(phi)
+    return Angle(z, z.copy(), z.copy())
+
+
+def _mass(spec: ForceSpec, name: str) -> LinkMass:
+    return spec.links.get(name, LinkMass())
+
+
+def _cg(spec: ForceSpec, name: str, default: float) -> float:
+    c = _mass(spec, name).cg
+    return default if c is None else c
+
+
+def _bodies_joints(machine, spec: ForceSpec, phi: np.ndarray, omega: float):
+    """Kinematic states (machine units) of every link's centre of mass and the pairs."""
+    k = machine.kinematics(phi, omega=omega)
+    zero = np.zeros_like(phi)
+    if isinstance(machine, SlottingMachine):
+        O2, O3 = Point(zero + 0j, zero + 0j, zero + 0j), Point(zero - machine.centre_distance + 0j, zero + 0j, zero + 0j)
+        cgs = {
+            "crank": on_link(O2, k.crank, _cg(spec, "crank", 0.0)),
+            "block": k.A,
+            "bar": on_link(O3, k.bar, machine.bar_side * _cg(spec, "bar", machine.bar / 2)),
+            "rod": on_link(k.B, k.rod, _cg(spec, "rod", machine.rod / 2)),
+            "tool": k.C,
+        }
+        links = {"crank": k.crank, "block": k.bar, "bar": k.bar, "rod": k.rod, "tool": _fixed(phi)}
+        up = np.full_like(phi, 1j, dtype=complex)
+        joints = [
+            ("O2", "revolute", "crank", None, O2.pos, None),
+            ("A", "revolute", "block", "crank", k.A.pos, None),
+            ("A_slot", "prismatic", "block", "bar", k.A.pos, k.bar.unit),
+            ("O3", "revolute", "bar", None, O3.pos, None),
+            ("B", "revolute", "rod", "bar", k.B.pos, None),
+            ("C", "revolute", "tool", "rod", k.C.pos, None),
+            ("C_guide", "prismatic", "tool", None, k.C.pos, up),
+        ]
+        return cgs, links, joints, "tool", up
+    if isinstance(machine, CrankSlider):
+        O = Point(zero + 0j, zero + 0j, zero + 0j)
+        rod_cg = machine.rod_cg if machine.rod_cg is not None else machine.rod / 2
+        cgs = {
+            "crank": on_link(O, k.crank, _cg(spec, "crank", 0.0)),
+            "rod": on_link(k.A, k.rod, _cg(spec, "rod", rod_cg)),
+            "slider": k.B,
+        }
+        links = {"crank": k.crank, "rod": k.rod, "slider": _fixed(phi)}
+        x = np.ones_like(phi, dtype=complex)
+        joints = [
+            ("O", "revolute", "crank", None, O.pos, None),
+            ("A", "revolute", "rod", "crank", k.A.pos, None),
+            ("B", "revolute", "slider", "rod", k.B.pos, None),
+            ("B_guide", "prismatic", "slider", None, k.B.pos, x),
+        ]
+        return cgs, links, joints, "slider", x
+    if isinstance(machine, OpposedTwin):
+        O = Point(zero + 0j, zero + 0j, zero + 0j)
+        crank = Angle(k.phi + zero, np.full_like(phi, omega), zero.copy())
+        cgs = {
+            "crank": on_link(O, crank, _cg(spec, "crank", 0.0)),
+            "rod2": on_link(k.A, k.rod2, _cg(spec, "rod2", machine.rod_cg)),
+            "piston3": k.B,
+            "rod4": on_link(k.C, k.rod4, _cg(spec, "rod4", machine.rod_cg)),
+            "piston5": k.D,
+        }
+        links = {"crank": crank, "rod2": k.rod2, "piston3": _fixed(phi), "rod4": k.rod4, "piston5": _fixed(phi)}
+        x = np.ones_like(phi, dtype=complex)
+        joints = [
+            ("O", "revolute", "crank", None, O.pos, None),
+            ("A", "revolute", "rod2", "crank", k.A.pos, None),
+            ("B", "revolute", "piston3", "rod2", k.B.pos, None),
+            ("B_guide", "prismatic", "piston3", None, k.B.pos, x),
+            ("C", "revolute", "rod4", "crank", k.C.pos, None),
+            ("D", "revolute", "piston5", "rod4", k.D.pos, None),
+            ("D_guide", "prismatic", "piston5", None, k.D.pos, x),
+        ]
+        return cgs, links, joints, "piston3", x
+    if isinstance(machine, SlottedLeverPump):
+        O1, O2 = Point(zero + 0j, zero + 0j, zero + 0j), Point(zero - machine.centre_distance + 0j, zero + 0j, zero + 0j)
+        up = np.full_like(phi, 1j, dtype=complex)
+        x = np.ones_like(phi, dtype=complex)
+        E = Point(machine.guide_x + 1j * k.piston.s, 1j * k.piston.ds, 1j * k.piston.d2s)
+        cgs = {
+            "crank": on_link(O1, k.crank, _cg(spec, "crank", 0.0)),
+            "block": k.A,
+            "lever": on_link(O2, k.lever, machine.lever_side * _cg(spec, "lever", machine.lever / 2)),
+            "pin_block": k.C,
+            "piston": E,
+        }
+        links = {"crank": k.crank, "block": k.lever, "lever": k.lever, "pin_block": _fixed(phi), "piston": _fixed(phi)}
+        joints = [
+            ("O1", "revolute", "crank", None, O1.pos, None),
+            ("A", "revolute", "block", "crank", k.A.pos, None),
+            ("A_slot", "prismatic", "block", "lever", k.A.pos, k.lever.unit),
+            ("O2", "revolute", "lever", None, O2.pos, None),
+            ("C", "revolute", "pin_block", "lever", k.C.pos, None),
+            ("C_slot", "prismatic", "pin_block", "piston", k.C.pos, x),
+            ("E", "prismatic", "piston", None, E.pos, up),
+        ]
+        return cgs, links, joints, "piston", up
+    raise InputError("linkage.type", f"forces are not available for {type(machine).__name__}")
+
+
+def _guide(model: Model, name: str) -> np.ndarray:
+    """The guide direction of a slider body (from its prismatic pair with ground)."""
+    k = model.index(name)
+    for j in model.joints:
+        if j.kind == "prismatic" and j.a == k and j.b < 0:
+            return j.axis
+    for j in model.joints:
+        if j.kind == "prismatic" and j.a == k:
+            return j.axis
+    raise InputError("forces.loads.body", f"{name!r} does not slide on a guide; loads along a guide need a slider or piston")
+
+
+def _load_window(model: Model, ld: Resistance) -> np.ndarray:
+    if ld.window == "always":
+        return np.ones_like(model.phi, dtype=bool)
+    from cams.machine import CuttingZone, windows
+
+    m = model.machine
+    zone = CuttingZone(approach=ld.approach, overrun=ld.overrun, working=ld.working) if ld.window == "cut" else CuttingZone(working=ld.working)
+    win = windows(m, zone)
+    c = win.cycle_angle(model.phi)
+    a, b = win.cut_start, win.cut_end
+    return ((c >= a - 1e-12) & (c <= b + 1e-12)) | ((c + TWO_PI >= a - 1e-12) & (c + TWO_PI <= b + 1e-12))
+
+
+def _external_loads(model: Model, spec: ForceSpec) -> list[AppliedLoad]:
+    out = []
+    u = spec.length_unit
+    for i, ld in enumerate(spec.loads):
+        k = model.index(ld.body)
+        b = model.bodies[k]
+        axis = _guide(model, ld.body)
+        if isinstance(ld, GasPressure):
+            a, p = _check_table(f"forces.loads[{i}].angles", ld.angles, ld.pressure, float(ld.period))
+            rot = np.degrees(model.sense * (model.phi - np.radians(ld.start)))
+            pp = np.interp(np.mod(rot, ld.period), a, p)
+            area = np.pi * (ld.bore * u) ** 2 / 4
+            toward = -np.sign(np.real(np.conj(axis) * b.cg.pos))  # along the axis toward the crank centre
+            out.append(AppliedLoad(f"gas on {ld.body}", k, pp * area * toward * axis, b.cg.pos, np.zeros_like(model.phi)))
+        else:
+            v = np.real(np.conj(axis) * b.cg.vel)
+            on = np.ones_like(model.phi, dtype=bool) if isinstance(ld, ConstantFriction) else _load_window(model, ld)
+            F = np.where(on, -np.sign(v) * ld.force, 0.0) * axis
+            what = "resistance" if isinstance(ld, Resistance) else "constant friction"
+            out.append(AppliedLoad(f"{what} on {ld.body}", k, F, b.cg.pos, np.zeros_like(model.phi)))
+    return out
+
+
+def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: float | None = None) -> Model:
+    """The rigid-body model of a machine of :mod:`cams.machines` at crank angles ``phi``.
+
+    Parameters
+    ----------
+    machine : SlottingMachine, CrankSlider, OpposedTwin or SlottedLeverPump
+    spec : ForceSpec
+    phi : array_like, optional
+        Frame crank angles, radians; default ``samples`` angles over one turn.
+    samples : int
+    rpm : float, optional
+        Crank speed, rev/min; default the machine's.
+
+    Returns
+    -------
+    Model
+
+    Raises
+    ------
+    InputError
+        No crank speed, unknown link or pair names, a load on a link that does
+        not slide, a load table that does not cover the cycle.
+    """
+    n = machine.rpm if rpm is None else rpm
+    if n is None:
+        raise InputError("linkage.rpm", "the forces need the crank's speed; give linkage.rpm")
+    n = _num("linkage.rpm", n, lo=0.0, strict=True)
+    omega = machine.crank_sense * n * TWO_PI / 60.0
+    if phi is None:
+        if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 4:
+            raise InputError("forces.samples", f"must be an integer >= 4, got {samples!r}")
+        phi = np.linspace(0.0, TWO_PI, int(samples), endpoint=False)
+    phi = np.atleast_1d(np.asarray(phi, dtype=float))
+    kind = machine.kind
+    names = LINKS[kind]
+    for k in spec.links:
+        if k not in names:
+            raise InputError(f"forces.links.{k}", f"is not a link of a {kind} linkage, must be one of {', '.join(map(repr, names))}")
+    for k in spec.friction:
+        if k not in JOINTS[kind]:
+            raise InputError(f"forces.friction.{k}", f"is not a pair of a {kind} linkage, must be one of {', '.join(map(repr, JOINTS[kind]))}")
+    cgs, links, joints, output, _ = _bodies_joints(machine, spec, phi, omega)
+    u = spec.length_unit
+    bodies = tuple(
+        Body(nm, _mass(spec, nm).mass, _mass(spec, nm).inertia, _scale(cgs[nm], u), links[nm]) for nm in names
+    )
+    idx = {nm: i for i, nm in enumerate(names)}
+    js = []
+    for nm, kind_, a, b, P, axis in joints:
+        fr = spec.friction.get(nm)
+        if fr is not None and kind_ == "revolute":
+            fr = Friction(fr.coefficient, fr.radius * u)
+        js.append(Joint(nm, kind_, idx[a], -1 if b is None else idx[b], np.asarray(P) * u,
+                        None if axis is None else np.asarray(axis, dtype=complex), fr))
+    model = Model(kind, phi, float(omega), bodies, tuple(js), (), 0, float(spec.gravity), output, machine.crank_sense, machine)
+    loads = tuple(_external_loads(model, spec))
+    return Model(kind, phi, float(omega), bodies, tuple(js), loads, 0, float(spec.gravity), output, machine.crank_sense, machine)
+
+
+# --------------------------------------------------------------------------- solution
+def _cross(a, b):
+    return np.imag(np.conj(a) * b)
+
+
+def _relative(model: Model, j: Joint) -> np.ndarray:
+    """Relative angular velocity omega_a - omega_b (revolute, rad/s) or sliding velocity of a on b along the guide (m/s)."""
+    wa = model.bodies[j.a].link.omega
+    wb = 0.0 if j.b < 0 else model.bodies[j.b].link.omega
+    if j.kind == "revolute":
+        return np.broadcast_to(wa - wb, model.phi.shape).astype(float)
+    dv = model.velocity(j.a, j.point) - model.velocity(j.b, j.point)
+    return np.real(np.conj(j.axis) * dv)
+
+
+def _friction_loads(model: Model, reactions: dict) -> list[AppliedLoad]:
+    out = []
+    zero = np.zeros_like(model.phi)
+    for j in model.joints:
+        if j.friction is None or j.friction.coefficient == 0:
+            continue
+        rel = _relative(model, j)
+        s = np.sign(rel)
+        if j.kind == "revolute":
+            M = -s * j.friction.coefficient * j.friction.radius * np.abs(reactions[j.name])
+            out.append(AppliedLoad(f"friction in {j.name}", j.a, zero + 0j, j.point, M, "friction"))
+            if j.b >= 0:
+                out.append(AppliedLoad(f"friction in {j.name}", j.b, zero + 0j, j.point, -M, "friction"))
+        else:
+            F = -s * j.friction.coefficient * np.abs(reactions[j.name + ":N"]) * j.axis
+            out.append(AppliedLoad(f"friction in {j.name}", j.a, F, j.point, zero.copy(), "friction"))
+            if j.b >= 0:
+                out.append(AppliedLoad(f"friction in {j.name}", j.b, -F, j.point, zero.copy(), "friction"))
+    return out
+
+
+def _solve(model: Model, loads) -> tuple[dict, np.ndarray]:
+    K, B, J = model.phi.size, len(model.bodies), len(model.joints)
+    nu = 2 * J + 1
+    if 3 * B != nu:  # pragma: no cover - the machines are statically determinate
+        raise InputError("linkage", f"{B} links and {J} pairs are not statically determinate")
+    A = np.zeros((K, 3 * B, nu))
+    rhs = np.zeros((K, 3 * B))
+    S = [b.cg.pos for b in model.bodies]
+    for c, j in enumerate(model.joints):
+        for k, s in ((j.a, 1.0), (j.b, -1.0)):
+            if k < 0:
+                continue
+            r = j.point - S[k]
+            if j.kind == "revolute":
+                A[:, 3 * k, 2 * c] = s
+                A[:, 3 * k + 1, 2 * c + 1] = s
+                A[:, 3 * k + 2, 2 * c] = -s * np.imag(r)
+                A[:, 3 * k + 2, 2 * c + 1] = s * np.real(r)
+            else:
+                n = 1j * j.axis
+                A[:, 3 * k, 2 * c] = s * np.real(n)
+                A[:, 3 * k + 1, 2 * c] = s * np.imag(n)
+                A[:, 3 * k + 2, 2 * c] = s * _cross(r, n)
+                A[:, 3 * k + 2, 2 * c + 1] = s
+    A[:, 3 * model.driver + 2, -1] = 1.0
+    for k, b in enumerate(model.bodies):
+        F = b.mass * (-1j * model.gravity) - b.mass * b.cg.acc
+        rhs[:, 3 * k] -= np.real(F)
+        rhs[:, 3 * k + 1] -= np.imag(F)
+        rhs[:, 3 * k + 2] -= -b.inertia * b.link.alpha
+    for ld in loads:
+        k = ld.body
+        rhs[:, 3 * k] -= np.real(ld.force)
+        rhs[:, 3 * k + 1] -= np.imag(ld.force)
+        rhs[:, 3 * k + 2] -= _cross(ld.point - S[k], ld.force) + ld.moment
+    x = np.linalg.solve(A, rhs[..., None])[..., 0]
+    out = {}
+    for c, j in enumerate(model.joints):
+        if j.kind == "revolute":
+            out[j.name] = x[:, 2 * c] + 1j * x[:, 2 * c + 1]
+        else:
+            out[j.name + ":N"] = x[:, 2 * c]
+            out[j.name + ":M"] = x[:, 2 * c + 1]
+            out[j.name] = x[:, 2 * c] * 1j * j.axis
+    return out, x[:, -1]
+
+
+@dataclass(frozen=True, eq=False)
+class ForceResult:
+    """Reactions, balancing moment, friction and reduced quantities over the crank angles.
+
+    Attributes
+    ----------
+    model : Model
+        Bodies, joints and external loads (SI).
+    reactions : dict of str to ndarray (complex)
+        Force on each pair's first link from its second, N (``Rx + i Ry``);
+        for a prismatic pair also ``name + ":N"`` (normal force along ``i u``)
+        and ``name + ":M"`` (couple, N m).
+    balancing_moment : ndarray
+        M_b on the crank from the drive, N m, counter-clockwise positive.
+    friction_loads : tuple of AppliedLoad
+        The reaction-dependent friction of the last pass.
+    passes : int
+        Passes made (1: no reaction-dependent friction).
+    change : float
+        Largest change of |M_b| in the last pass, N m (0 for one pass).
+    """
+
+    model: Model
+    reactions: dict
+    balancing_moment: np.ndarray
+    friction_loads: tuple
+    passes: int
+    change: float
+
+    @property
+    def phi(self) -> np.ndarray:
+        """Frame crank angles, radians."""
+        return self.model.phi
+
+    @property
+    def omega(self) -> float:
+        """Crank angular velocity, rad/s (signed)."""
+        return self.model.omega
+
+    def magnitude(self, pair: str) -> np.ndarray:
+        """|R| of a pair, N."""
+        return np.abs(self.reactions[pair])
+
+    def _powers(self, loads) -> np.ndarray:
+        m = self.model
+        P = np.zeros_like(m.phi)
+        for ld in loads:
+            v = m.velocity(ld.body, ld.point)
+            P += np.real(np.conj(ld.force) * v) + ld.moment * m.bodies[ld.body].link.omega
+        return P
+
+    def _inertia_gravity_power(self) -> tuple[np.ndarray, np.ndarray]:
+        m = self.model
+        Pi = np.zeros_like(m.phi)
+        Pg = np.zeros_like(m.phi)
+        for b in m.bodies:
+            Pi += np.real(np.conj(-b.mass * b.cg.acc) * b.cg.vel) - b.inertia * b.link.alpha * b.link.omega
+            Pg += np.real(np.conj(b.mass * (-1j * m.gravity)) * b.cg.vel)
+        return Pi, Pg
+
+    @property
+    def virtual_moment(self) -> np.ndarray:
+        """M_b from the power of every load (Zhukovsky's lever), without the reactions, N m."""
+        Pi, Pg = self._inertia_gravity_power()
+        P = self._powers(self.model.loads) + self._powers(self.friction_loads) + Pi + Pg
+        return -P / self.omega
+
+    @property
+    def friction_power(self) -> dict:
+        """Power lost to reaction-dependent friction in each pair, W (>= 0).
+
+        The power of the friction actually applied (for ``passes=2``: from the
+        first pass's reactions, as in the seeds' two-stage method):
+        ``|M_f omega_rel|`` in a revolute pair, ``|F_f v_rel|`` in a prismatic one.
+        """
+        m = self.model
+        out: dict = {}
+        for ld in self.friction_loads:
+            v = m.velocity(ld.body, ld.point)
+            P = np.real(np.conj(ld.force) * v) + ld.moment * m.bodies[ld.body].link.omega
+            name = ld.name.removeprefix("friction in ")
+            out[name] = out.get(name, 0.0) - P
+        return out
+
+    @property
+    def reduced_inertia(self) -> np.ndarray:
+        """J_red = sum(m |v_S|^2 + J omega^2) / omega_1^2, kg m^2."""
+        m = self.model
+        T2 = sum(b.mass * np.abs(b.cg.vel) ** 2 + b.inertia * b.link.omega**2 for b in m.bodies)
+        return np.asarray(T2, dtype=float) / self.omega**2 + np.zeros_like(m.phi)
+
+    @property
+    def reduced_resisting(self) -> np.ndarray:
+        """Reduced moment of the external loads and weights, N m (positive resists)."""
+        _, Pg = self._inertia_gravity_power()
+        return -(self._powers(self.model.loads) + Pg) / abs(self.omega)
+
+    @property
+    def reduced_friction(self) -> np.ndarray:
+        """Reduced moment of the friction in the pairs (reaction-dependent), N m (>= 0)."""
+        return -self._powers(self.friction_loads) / abs(self.omega)
+
+    def residuals(self) -> np.ndarray:
+        """Sum of forces (x, y) and of moments about the frame's origin on every body, shape (K, bodies, 3).
+
+        Computed from the stored reactions and loads (not from the solver's
+        matrix); zero to round-off when every link is in equilibrium.
+        """
+        m = self.model
+        K = m.phi.size
+        out = np.zeros((K, len(m.bodies), 3))
+
+        def add(k, F, P, M):
+            out[:, k, 0] += np.real(F)
+            out[:, k, 1] += np.imag(F)
+            out[:, k, 2] += _cross(P, F) + M
+
+        zero = np.zeros(K)
+        for k, b in enumerate(m.bodies):
+            add(k, b.mass * (-1j * m.gravity) - b.mass * b.cg.acc, b.cg.pos, -b.inertia * b.link.alpha)
+        for ld in (*m.loads, *self.friction_loads):
+            add(ld.body, ld.force, ld.point, ld.moment)
+        for j in m.joints:
+            R = self.reactions[j.name]
+            M = self.reactions.get(j.name + ":M", zero)
+            add(j.a, R, j.point, M)
+            if j.b >= 0:
+                add(j.b, -R, j.point, -M)
+        out[:, m.driver, 2] += self.balancing_moment
+        return out
+
+    def flywheel(self, *, delta: float, interpolation: str = "linear", friction: bool = True):
+        """The flywheel for this machine (:func:`cams.flywheel.flywheel`) from its reduced moments and inertia.
+
+        The crank angles become the cycle's angles in the crank's sense from
+        the first one. ``friction`` adds the pairs' friction to the resisting moment.
+        """
+        from cams.flywheel import flywheel
+
+        c = np.mod(self.model.sense * (self.phi - self.phi[0]), TWO_PI)
+        order = np.argsort(c)
+        Mr = self.reduced_resisting + (self.reduced_friction if friction else 0.0)
+        rpm = abs(self.omega) * 60.0 / TWO_PI
+        return flywheel(c[order], Mr[order], self.reduced_inertia[order], rpm=rpm, delta=delta, interpolation=interpolation)
+
+    def to_dict(self) -> dict:
+        """JSON-ready summary: extremes of the reactions and the balancing moment, friction losses."""
+        deg = np.degrees(self.phi)
+        pairs = {}
+        for j in self.model.joints:
+            R = self.magnitude(j.name)
+            k = int(np.argmax(R))
+            pairs[j.name] = {"kind": j.kind, "max": float(R[k]), "at_deg": float(deg[k]), "mean": float(np.mean(R))}
+        Mb = self.balancing_moment
+        k = int(np.argmax(np.abs(Mb)))
+        fp = {k_: float(np.mean(v)) for k_, v in self.friction_power.items()}
+        return {
+            "rpm": abs(self.omega) * 60.0 / TWO_PI,
+            "passes": self.passes,
+            "balancing_moment": {"max_abs": float(abs(Mb[k])), "at_deg": float(deg[k]), "mean": float(np.mean(Mb)),
+                                 "virtual_work_max_difference": float(np.max(np.abs(Mb - self.virtual_moment)))},
+            "pairs": pairs,
+            "friction_power_mean_W": fp,
+            "friction_power_total_mean_W": float(sum(fp.values())),
+            "drive_power_mean_W": float(np.mean(Mb * self.omega)),
+        }
+
+    def plot(self, path, *, title: str = "forces"):
+        """Reactions and the balancing moment over the crank angle to ``path``; returns the path."""
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        c = np.degrees(np.mod(self.model.sense * (self.phi - self.phi[0]), TWO_PI))
+        o = np.argsort(c)
+        fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 6.5))
+        for j in self.model.joints:
+            ax1.plot(c[o], self.magnitude(j.name)[o], label=j.name)
+        ax1.set_ylabel("|reaction|, N")
+        ax1.legend(loc="upper right", ncol=2, fontsize="small")
+        ax2.plot(c[o], self.balancing_moment[o], label="M_b (force analysis)")
+        ax2.plot(c[o], self.virtual_moment[o], "--", label="M_b (Zhukovsky)")
+        ax2.set_ylabel("balancing moment, N m")
+        ax2.set_xlabel(f"crank rotation from {np.degrees(self.phi[0]):.1f} deg (frame), deg")
+        ax2.legend(loc="upper right")
+        for ax in (ax1, ax2):
+            ax.grid(True, alpha=0.3)
+        ax1.set_title(title)
+        fig.tight_layout()
+        fig.savefig(path)
+        plt.close(fig)
+        return path
+
+
+def solve_model(model: Model, *, passes: int = 2, tol: float = 1e-9, max_passes: int = 50) -> ForceResult:
+    """Reactions and the balancing moment of a model, with friction by successive passes.
+
+    Parameters
+    ----------
+    model : Model
+    passes : int or None
+        1: no reaction-dependent friction; 2: the seeds' two-stage method
+        (friction from the first pass's reactions); None: iterate until
+        |M_b| changes by less than ``tol`` x its largest value.
+    tol : float
+    max_passes : int
+
+    Returns
+    -------
+    ForceResult
+    """
+    if passes is not None and (isinstance(passes, bool) or not isinstance(passes, (int, np.integer)) or passes < 1):
+        raise InputError("forces.passes", f"must be an integer >= 1 or None, got {passes!r}")
+    has_friction = any(j.friction is not None and j.friction.coefficient > 0 for j in model.joints)
+    R, Mb = _solve(model, model.loads)
+    fl: list = []
+    n, change = 1, 0.0
+    limit = 1 if not has_friction else (max_passes if passes is None else passes)
+    while n < limit:
+        fl = _friction_loads(model, R)
+        R, Mb2 = _solve(model, (*model.loads, *fl))
+        change = float(np.max(np.abs(Mb2 - Mb)))
+        Mb = Mb2
+        n += 1
+        if passes is None and change <= tol * max(float(np.max(np.abs(Mb))), 1e-300):
+            break
+    return ForceResult(model, R, Mb, tuple(fl), n, change)
+
+
+def analyse_forces(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: float | None = None, passes: int = 2) -> ForceResult:
+    """Kinetostatics of a machine over its cycle: :func:`build_model` then :func:`solve_model`.
+
+    Examples
+    --------
+    A crank-slider with a 10 kg piston at 120 rpm, no friction: the balancing
+    moment equals the one from Zhukovsky's lever.
+
+    >>> from cams.machines import CrankSlider
+    >>> m = CrankSlider(crank=100.0, rod=400.0, rpm=120)
+    >>> r = analyse_forces(m, ForceSpec(links={"slider": LinkMass(10.0)}), samples=36)
+    >>> bool(np.allclose(r.balancing_moment, r.virtual_moment, atol=1e-9))
+    True
+    """
+    return solve_model(build_model(machine, spec, phi=phi, samples=samples, rpm=rpm), passes=passes)
