@@ -17,7 +17,7 @@ from scipy.optimize import brentq
 from cams.design import CamDesign
 from optimize.zone import max_violation, sample_wedges
 
-__all__ = ["admissible_arcs", "best_on_circle", "violation_function"]
+__all__ = ["admissible_arcs", "best_on_circle", "violation_function", "crossing_seed"]
 
 
 def violation_function(design: CamDesign, samples: int | None) -> Callable[[np.ndarray], float]:
@@ -29,7 +29,13 @@ def violation_function(design: CamDesign, samples: int | None) -> Callable[[np.n
 
 
 def admissible_arcs(
-    design: CamDesign, centre: np.ndarray, radius: float, *, samples: int | None = None, scan: int = 1440
+    design: CamDesign,
+    centre: np.ndarray,
+    radius: float,
+    *,
+    samples: int | None = None,
+    scan: int = 1440,
+    seeds: tuple[float, ...] = (),
 ) -> list[tuple[float, float]]:
     """Angular intervals ``(a, b)`` (radians, a < b) of the circle inside the zone.
 
@@ -37,8 +43,53 @@ def admissible_arcs(
     whole circle is ``(0, 2 pi)``. Ends are refined on the continuous zone to
     ``~1e-13`` radians, on the continuous zone (``samples=None``) or on the
     zone sampled with ``samples`` steps per phase.
+
+    ``seeds`` are angles known to be admissible (e.g. from convexity: where a
+    segment between two admissible centres crosses the circle); an arc too
+    narrow for the scan is found around them.
     """
     centre = np.asarray(centre, float)
+    arcs = _scanned_arcs(design, centre, radius, samples, scan)
+    G = violation_function(design, samples)
+    at = lambda a: G(centre + radius * np.array([np.cos(a), np.sin(a)]))  # noqa: E731
+    tol = 1e-9 * design.scale
+    for s in seeds:
+        covered = any((s - a) % (2 * np.pi) <= (b - a) + 1e-15 for a, b in arcs)
+        if covered or at(s) > tol:
+            continue
+        ends = []
+        for sign in (-1.0, 1.0):
+            d = 1e-12
+            inner = s
+            while d < np.pi and at(s + sign * d) <= 0:
+                inner = s + sign * d
+                d *= 4.0
+            if d >= np.pi:
+                return [(0.0, 2 * np.pi)]
+            lo, hi = sorted((inner, s + sign * d))
+            ends.append(_refine(at, lo, hi) if at(lo) * at(hi) <= 0 else inner)
+        arcs.append((ends[0], ends[1]))
+    return arcs
+
+
+def crossing_seed(centre: np.ndarray, radius: float, inner: np.ndarray, outer: np.ndarray) -> float | None:
+    """Angle where the segment from ``inner`` to ``outer`` crosses the circle.
+
+    With both ends admissible, ``inner`` inside the circle and ``outer``
+    outside, the crossing is admissible too (the zone is convex): a seed for
+    :func:`admissible_arcs`. None when the ends do not straddle the circle.
+    """
+    centre = np.asarray(centre, float)
+    f = lambda s: float(np.linalg.norm(inner + s * (outer - inner) - centre) - radius)  # noqa: E731
+    if f(0.0) > 0 or f(1.0) < 0:
+        return None
+    s = brentq(f, 0.0, 1.0, xtol=1e-15) if f(0.0) < 0 < f(1.0) else (0.0 if f(0.0) == 0 else 1.0)
+    p = inner + s * (outer - inner) - centre
+    return float(np.arctan2(p[1], p[0]) % (2 * np.pi))
+
+
+def _scanned_arcs(design, centre, radius, samples, scan) -> list[tuple[float, float]]:
+    """Arcs found by scanning ``scan`` points against the sampled zone, ends refined."""
     t = np.linspace(0.0, 2 * np.pi, scan, endpoint=False)
     pts = centre + radius * np.stack([np.cos(t), np.sin(t)], axis=1)
     N, c = sample_wedges(design, samples or 256).lines()
@@ -87,6 +138,7 @@ def best_on_circle(
     objective: Callable[[np.ndarray], float],
     *,
     samples: int | None = None,
+    seeds: tuple[float, ...] = (),
 ) -> np.ndarray | None:
     """Admissible point of the circle that minimizes ``objective``; None if none.
 
@@ -98,7 +150,7 @@ def best_on_circle(
     centre = np.asarray(centre, float)
     pt = lambda a: centre + radius * np.array([np.cos(a), np.sin(a)])  # noqa: E731
     best, best_val = None, np.inf
-    for a, b in admissible_arcs(design, centre, radius, samples=samples):
+    for a, b in admissible_arcs(design, centre, radius, samples=samples, seeds=seeds):
         grid = np.linspace(a, b, 65)
         vals = [objective(pt(x)) for x in grid]
         k = int(np.argmin(vals))

@@ -147,6 +147,24 @@ def _lmax(design: CamDesign) -> float:
     return float(np.max(np.linalg.norm(poly, axis=1))) if len(poly) else 0.0
 
 
+def _seeds(design: CamDesign, ref: np.ndarray, radius: float, inner: np.ndarray) -> tuple[float, ...]:
+    """Admissible angles on the circle (``ref``, ``radius``) from an admissible ``inner`` point.
+
+    ``inner`` lies inside the circle; a far admissible point along the zone's
+    recession direction lies outside; by convexity their segment crosses the
+    circle inside the zone.
+    """
+    from optimize.bounds import _recession_direction
+    from optimize.circle import crossing_seed
+
+    rd = _recession_direction(design)
+    if rd is None:
+        return ()
+    far = inner + (2 * radius + np.linalg.norm(inner - ref) + design.scale) * rd[0]
+    s = crossing_seed(ref, radius, inner, far)
+    return () if s is None else (s,)
+
+
 def admissible_L_range(design: CamDesign) -> tuple[float, float]:
     """Smallest and largest centre distance L of admissible centres (rocker)."""
     lo = nearest(design, design.follower.pivot, method="exact").objective
@@ -204,7 +222,8 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
                     raise InfeasibleError("limits.min_base_radius", f"R0 = {floor:g} with offset {f.offset:g} is not admissible")
                 centre = min(cands, key=G)
             else:
-                centre = best_on_circle(design, A0, floor, G, samples=samples)
+                seeds = _seeds(design, A0, floor, sol.centre)
+                centre = best_on_circle(design, A0, floor, G, samples=samples, seeds=seeds)
                 if centre is None:  # pragma: no cover - the zone is unbounded beyond R0_min
                     raise InfeasibleError("limits.min_base_radius", f"no admissible centre at R0 = {floor:g}")
             notes.append(f"R0 raised to the constructive floor {floor:g} (minimum {sol.objective:.6g}); "
@@ -230,7 +249,13 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
             centre = min(cands, key=G)
             mode = "fixed_L_and_R0"
         else:
-            centre = best_on_circle(design, f.pivot, L_fixed, lambda O: float(np.linalg.norm(O - A0)), samples=samples)
+            dist = lambda O: float(np.linalg.norm(O - A0))  # noqa: E731
+            centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples)
+            if centre is None:
+                # a narrow arc near the least L: seed it from the min-L centre (convexity)
+                near = nearest(design, f.pivot, method=method).centre
+                centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples,
+                                        seeds=_seeds(design, f.pivot, L_fixed, near))
             if centre is None:
                 lo, hi = admissible_L_range(design)
                 rng = f"from {lo:.6g} upward" if not np.isfinite(hi) else f"from {lo:.6g} to {hi:.6g}"
@@ -244,14 +269,19 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
     else:
         binding, error_bound = (), None
     R0 = float(np.linalg.norm(centre - A0))
-    if R0 < 1e-10 * design.scale:
-        raise InfeasibleError(
-            "limits.pressure_angle",
-            f"the minimum base radius vanishes (R0 = {R0:.3g}): the limit admits the cam centre at the "
-            "roller's start point; set limits.min_base_radius to size a buildable cam",
-        )
+    # the roller centre's travel: arc l*psi_max of a rocker, the stroke of a translating follower
+    travel = design.program.lift * (f.arm if isinstance(f, Rocker) else 1.0)
+    vanishing = InfeasibleError(
+        "limits.pressure_angle",
+        f"the minimum base radius vanishes (R0 = {R0:.3g}, {R0 / travel:.2g} of the roller's travel; the "
+        "pressure angle cannot be verified at this size): set limits.min_base_radius to size a buildable cam",
+    )
+    if R0 < 1e-12 * travel:
+        raise vanishing
     margin = -G(centre)
     pressure = check_pressure(design, centre)
+    if not pressure.ok and R0 < 1e-6 * travel and method == "exact":
+        raise vanishing
     if R0 <= f.roller_radius:
         notes.append(f"R0 = {R0:.6g} is not larger than the roller radius {f.roller_radius:g}: choose a floor")
     return SolveResult(

@@ -21,13 +21,6 @@ from .helpers import check_outcome, design_dict, guarded, zone_witness
 KINDS = ["rocker", "translating"]
 CLOSURES = ["force", "form"]
 
-BUG_NEAR_90 = (
-    "BUG: exact method, limit 89.95 deg (cycloidal rise 120 deg after a dwell; rocker arm 125 or "
-    "translating stroke 30): R0 = 5.8e-8 mm (above the 1e-10 x scale 'vanishing R0' cut-off) but the "
-    "centre lies outside the zone by 4.5e-9 mm = 3.6e-11 x scale (36x the solver's 1e-12) at u = 8.3e-4 "
-    "of the rise, a peak optimize.zone.max_violation misses: verified rise 89.95123 deg, pressure.ok "
-    "False, stated error bound 1.1e-13"
-)
 
 
 def _judge_infeasible(err, d):
@@ -59,7 +52,7 @@ def test_limit_near_zero(kind, closure, limit):
     89.5,
     89.85,   # before f69e9ce: pressure.ok False (peak inside the first scan cell)
     89.9,    # before f69e9ce: R0 = 0 and NaN pressure angles
-    pytest.param(89.95, marks=pytest.mark.xfail(strict=True, reason=BUG_NEAR_90)),
+    89.95,   # was a bug (R0 5.8e-8 mm failed its check): now an honest 'base radius vanishes' refusal (unverifiable size)
     89.99,   # R0 below 1e-10 x scale: an honest InfeasibleError naming limits.min_base_radius as the fix
 ])
 def test_limit_near_ninety(kind, closure, limit):
@@ -125,25 +118,22 @@ def test_stroke_extremes(stroke, closure):
     assert r.R0 / stroke == pytest.approx(ref.R0, rel=1e-9)
 
 
-BUG_PARALLEL = (
-    "BUG: exact method, rocker swing 0.5 deg, limit 89.9 deg: R0 = 1.66e-8 mm = 1.3e-10 x arm, just "
-    "above the 1e-10 x scale 'vanishing R0' cut-off; the centre is within the solver's tolerance "
-    "(violation 1.4e-11 mm = 1.2e-13 x scale) but at such a small R0 that tolerance is an angle of "
-    "~5e-7 rad: verified rise 89.900029 deg, pressure.ok False. The cut-off (or the tolerance) should "
-    "be relative to R0 so that an accepted result always verifies"
-)
 
 
 @pytest.mark.parametrize("closure", CLOSURES)
 @pytest.mark.parametrize("swing,limit", [
     (0.01, 80.0), (0.01, 89.0), (0.5, 89.0),
-    pytest.param(0.5, 89.9, marks=pytest.mark.xfail(strict=True, reason=BUG_PARALLEL)),
+    (0.5, 89.9),  # was a bug: R0 = 1.7e-8 mm failed its check; now refused as vanishing
 ])
 def test_nearly_parallel_lines(swing, limit, closure):
-    """Tiny swing, large limit: the t-t lines are nearly parallel; the apex is still found and verified."""
+    """Tiny swing, large limit: the t-t lines are nearly parallel; the apex is still found and verified,
+    or, where R0 is too small to verify, refused with the 'base radius vanishes' message."""
     d = design_dict("rocker", follower={"swing": swing}, limits={"pressure_angle": limit, "closure": closure})
     r = check_outcome(d)
-    assert not isinstance(r, CamsError), r
+    if isinstance(r, CamsError):
+        assert "base radius vanishes" in str(r) and r.field == "limits.pressure_angle"
+        return
+    assert r.pressure.ok
     assert r.R0 > 0 and r.L == pytest.approx(125.0, rel=1e-3)
 
 
