@@ -67,6 +67,7 @@ __all__ = [
     "spring_for_contact",
     "jump_speed",
     "jamming_limit",
+    "DynamicsSpec",
     "dynamics_from_dict",
     "DYNAMICS_KEYS",
     "LENGTH_UNITS",
@@ -506,7 +507,7 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
     Contact is lost where ``m omega^2 d2q/dphi^2 + F0 + k q + P`` turns
     negative; only decelerations (``d2q < 0``) can pull the follower off, so
     ``omega_jump^2 = min over d2q < 0 of (F0 + k q + P) / (m |d2q|)``, refined
-    between grid points by a bounded scalar search.
+    around the grid's minimum by three 100-fold zooms.
 
     Parameters
     ----------
@@ -526,8 +527,6 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
         No spring, or a spring (and load) that cannot hold the follower on
         the cam even at rest.
     """
-    from scipy.optimize import minimize_scalar
-
     if dyn.spring is None:
         raise InputError("dynamics.spring_rate", "the jump speed needs a spring")
     phi = _grid(samples)
@@ -549,15 +548,44 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
     k = int(np.argmin(r))
     best, at = float(r[k]), float(phi[k])
     h = phi[1] - phi[0]
-    res = minimize_scalar(lambda p: float(ratio(p)[0][0]), bounds=(at - h, at + h), method="bounded", options={"xatol": 1e-12})
-    if res.fun < best:
-        best, at = float(res.fun), float(res.x)
+    for _ in range(3):  # zoom in: the minimum may sit on an acceleration jump, where a smooth search fails
+        x = np.linspace(at - h, at + h, 201)
+        rx = ratio(x)[0]
+        j = int(np.argmin(rx))
+        if rx[j] < best:
+            best, at = float(rx[j]), float(x[j])
+        h = x[1] - x[0]
     w = float(np.sqrt(best))
     return JumpSpeed(omega=w, rpm=w * 60.0 / TWO_PI, phi=float(np.mod(at, TWO_PI)))
 
 
-def dynamics_from_dict(table: dict, units: str = "mm") -> tuple[FollowerDynamics, float]:
-    """A design file's ``[dynamics]`` table: the follower's dynamics and the contact margin.
+@dataclass(frozen=True)
+class DynamicsSpec:
+    """A design file's ``[dynamics]``: the follower's dynamics and how to choose its spring.
+
+    Attributes
+    ----------
+    dynamics : FollowerDynamics
+        With its ``spring`` when both rate and preload were given.
+    margin : float
+        Contact margin for :func:`spring_for_contact` (>= 1).
+    rate : float or None
+        A given spring rate whose preload is to be chosen.
+    """
+
+    dynamics: FollowerDynamics
+    margin: float = 1.2
+    rate: float | None = None
+
+    def spring(self, design: CamDesign, *, rpm: float | None = None) -> Spring:
+        """The given spring, or the one :func:`spring_for_contact` chooses at ``rpm`` (default the design's)."""
+        if self.dynamics.spring is not None:
+            return self.dynamics.spring
+        return spring_for_contact(design, self.dynamics, rpm=rpm, margin=self.margin, rate=self.rate)
+
+
+def dynamics_from_dict(table: dict, units: str = "mm") -> DynamicsSpec:
+    """A design file's ``[dynamics]`` table.
 
     Keys (SI units except ``journal_radius``, in the file's length unit):
     ``mass`` (kg; kg m^2 for a rocker), ``load`` (N; N m), ``spring_rate``
@@ -568,9 +596,7 @@ def dynamics_from_dict(table: dict, units: str = "mm") -> tuple[FollowerDynamics
 
     Returns
     -------
-    (FollowerDynamics, float)
-        The dynamics (``spring`` None unless both rate and preload are given)
-        and the margin.
+    DynamicsSpec
 
     Raises
     ------
@@ -579,8 +605,8 @@ def dynamics_from_dict(table: dict, units: str = "mm") -> tuple[FollowerDynamics
 
     Examples
     --------
-    >>> dyn, margin = dynamics_from_dict({"mass": 0.4, "spring_rate": 3000, "preload": 20})
-    >>> dyn.spring, margin
+    >>> d = dynamics_from_dict({"mass": 0.4, "spring_rate": 3000, "preload": 20})
+    >>> d.dynamics.spring, d.margin
     (Spring(rate=3000.0, preload=20.0), 1.2)
     """
     if not isinstance(table, dict):
@@ -596,10 +622,11 @@ def dynamics_from_dict(table: dict, units: str = "mm") -> tuple[FollowerDynamics
     spring = None
     if "preload" in v and "spring_rate" not in v:
         raise InputError("dynamics.spring_rate", "a preload needs its spring rate")
+    rate = None
     if "spring_rate" in v and "preload" in v:
         spring = Spring(v["spring_rate"], v["preload"])
     elif "spring_rate" in v:
-        _num("dynamics.spring_rate", v["spring_rate"], lo=0.0)
+        rate = _num("dynamics.spring_rate", v["spring_rate"], lo=0.0)
     margin = _num("dynamics.margin", v.get("margin", 1.2), lo=1.0)
     dyn = FollowerDynamics(
         mass=v["mass"],
@@ -610,4 +637,4 @@ def dynamics_from_dict(table: dict, units: str = "mm") -> tuple[FollowerDynamics
         length_unit=LENGTH_UNITS[units],
         max_spring_force=v.get("max_spring_force"),
     )
-    return dyn, margin
+    return DynamicsSpec(dyn, margin, rate)

@@ -13,7 +13,7 @@ Schema (see ``examples/``)::
     [solve]      method ("exact" | "convex" | "exhaustive"), samples, objective ("R0" | "L")
     [dynamics]   optional, force closure: mass, load, spring_rate, preload, friction,
                  journal_radius, margin, max_spring_force (see cams.camforces.dynamics_from_dict);
-                 parsed into ``design.extra["dynamics"]`` as (FollowerDynamics, margin)
+                 parsed into ``design.extra["dynamics"]`` (a cams.camforces.DynamicsSpec)
 """
 
 from __future__ import annotations
@@ -176,7 +176,7 @@ def design_from_dict(d: dict) -> CamDesign:
 
 
 def _dynamics(d: dict) -> dict:
-    """The optional [dynamics] table, as ``{"dynamics": (FollowerDynamics, margin)}`` or ``{}``."""
+    """The optional [dynamics] table, as ``{"dynamics": DynamicsSpec}`` or ``{}``."""
     if "dynamics" not in d:
         return {}
     from cams.camforces import dynamics_from_dict

@@ -85,6 +85,11 @@ __all__ = [
     "build_model",
     "solve_model",
     "analyse_forces",
+    "ForceOptions",
+    "MachineForces",
+    "force_spec_from_dict",
+    "machine_forces",
+    "FORCES_KEYS",
     "LINKS",
     "JOINTS",
     "WINDOWS",
@@ -935,3 +940,303 @@ def analyse_forces(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rp
     True
     """
     return solve_model(build_model(machine, spec, phi=phi, samples=samples, rpm=rpm), passes=passes)
+
+
+# --------------------------------------------------------------------------- machine files
+FORCES_KEYS = ("gravity", "samples", "passes", "delta", "interpolation", "links", "friction", "loads")
+"""Keys of a machine file's ``[forces]`` table."""
+_LOAD_KEYS = {
+    "resistance": {"kind", "body", "force", "window", "approach", "overrun", "working"},
+    "gas": {"kind", "body", "angles", "pressure", "bore", "start", "period"},
+    "constant_friction": {"kind", "body", "force"},
+}
+
+
+def _keys(table, allowed, field_: str) -> dict:
+    if not isinstance(table, dict):
+        raise InputError(field_, "must be a table")
+    unknown = set(table) - set(allowed)
+    if unknown:
+        raise InputError(field_, f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(sorted(allowed))}")
+    return table
+
+
+@dataclass(frozen=True)
+class ForceOptions:
+    """How a machine file asks for its forces: sampling, friction passes and the flywheel.
+
+    Attributes
+    ----------
+    samples : int
+        Crank angles per turn.
+    passes : int or None
+        Friction passes (:func:`solve_model`); None iterates.
+    delta : float or None
+        Coefficient of speed fluctuation for the flywheel; None: no flywheel.
+    interpolation : str
+        For :func:`cams.flywheel.flywheel`.
+    """
+
+    samples: int = 360
+    passes: int | None = 2
+    delta: float | None = None
+    interpolation: str = "linear"
+
+
+def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=None) -> tuple[ForceSpec, ForceOptions]:
+    """A machine file's ``[forces]`` table.
+
+    Schema (masses kg, moments of inertia kg m^2, forces N, pressures Pa,
+    lengths in the file's unit, angles in degrees)::
+
+        [forces]            gravity (m/s^2, default 9.80665), samples (360), passes (2 | "iterate"),
+                            delta (flywheel), interpolation ("linear" | "spline")
+        [forces.links.NAME] mass, inertia, cg           NAME: see cams.kinetostatics.LINKS
+        [forces.friction]   revolute = {coefficient, radius}, prismatic = {coefficient},
+                            PAIR = {coefficient, radius} (overrides; PAIR: see JOINTS)
+        [[forces.loads]]    kind = "resistance": body, force, window ("cut" | "working" | "always"),
+                                                 approach, overrun, working (default: [cutting])
+                            kind = "gas": body, angles, pressure, bore, start, period
+                            kind = "constant_friction": body, force
+
+    Parameters
+    ----------
+    table : dict
+    kind : str
+        The linkage's kind (:data:`LINKS`).
+    units : str
+        The file's length unit (see :data:`cams.camforces.LENGTH_UNITS`).
+    cutting : cams.machine.CuttingZone or None
+        Defaults of a "resistance" load's window.
+
+    Returns
+    -------
+    (ForceSpec, ForceOptions)
+
+    Examples
+    --------
+    >>> spec, opt = force_spec_from_dict({"links": {"tool": {"mass": 80}}, "delta": 0.05,
+    ...     "loads": [{"kind": "resistance", "body": "tool", "force": 1000}]}, "slotting")
+    >>> spec.links["tool"].mass, spec.loads[0].window, opt.delta
+    (80.0, 'cut', 0.05)
+    """
+    from cams.camforces import LENGTH_UNITS
+
+    t = _keys(table, FORCES_KEYS, "forces")
+    if units not in LENGTH_UNITS:
+        raise InputError("units", f"{units!r} is not a length unit the forces know, must be one of {', '.join(map(repr, LENGTH_UNITS))}")
+    names, pairs = LINKS[kind], JOINTS[kind]
+    links = {}
+    for nm, lt in _keys(t.get("links", {}), names, "forces.links").items():
+        lt = _keys(lt, {"mass", "inertia", "cg"}, f"forces.links.{nm}")
+        vals = {k: _num(f"forces.links.{nm}.{k}", v) for k, v in lt.items()}
+        for k in ("mass", "inertia"):
+            if vals.get(k, 0.0) < 0:
+                raise InputError(f"forces.links.{nm}.{k}", f"cannot be negative, got {vals[k]!r}")
+        links[nm] = LinkMass(vals.get("mass", 0.0), vals.get("inertia", 0.0), vals.get("cg"))
+    fr = _keys(t.get("friction", {}), {"revolute", "prismatic", *pairs}, "forces.friction")
+
+    def fric(v, f):
+        v = _keys(v, {"coefficient", "radius"}, f)
+        if "coefficient" not in v:
+            raise InputError(f"{f}.coefficient", "is required")
+        c = _num(f"{f}.coefficient", v["coefficient"], lo=0.0)
+        return Friction(c, _num(f"{f}.radius", v.get("radius", 0.0), lo=0.0))
+
+    friction = {}
+    for p in pairs:
+        prismatic = p.endswith(("_slot", "_guide")) or p == "E"
+        if p in fr:
+            friction[p] = fric(fr[p], f"forces.friction.{p}")
+        elif prismatic and "prismatic" in fr:
+            friction[p] = fric(fr["prismatic"], "forces.friction.prismatic")
+        elif not prismatic and "revolute" in fr:
+            friction[p] = fric(fr["revolute"], "forces.friction.revolute")
+    loads = []
+    raw = t.get("loads", [])
+    if not isinstance(raw, list):
+        raise InputError("forces.loads", "must be a list of tables ([[forces.loads]])")
+    for i, ld in enumerate(raw):
+        f = f"forces.loads[{i}]"
+        if not isinstance(ld, dict):
+            raise InputError(f, "must be a table")
+        k = check_option(f"{f}.kind", ld.get("kind"), tuple(_LOAD_KEYS))
+        _keys(ld, _LOAD_KEYS[k], f)
+        if "body" not in ld:
+            raise InputError(f"{f}.body", "is required")
+        body = ld["body"]
+        if body not in names:
+            raise InputError(f"{f}.body", f"{body!r} is not a link of a {kind} linkage, must be one of {', '.join(map(repr, names))}")
+        try:
+            if k == "gas":
+                for key in ("angles", "pressure", "bore"):
+                    if key not in ld:
+                        raise InputError(f"{f}.{key}", "is required")
+                for key in ("angles", "pressure"):
+                    if not isinstance(ld[key], list):
+                        raise InputError(f"{f}.{key}", f"must be a list of numbers, got {ld[key]!r}")
+                loads.append(GasPressure(body, tuple(ld["angles"]), tuple(ld["pressure"]), _num(f"{f}.bore", ld["bore"]),
+                                         start=_num(f"{f}.start", ld.get("start", 0.0)), period=ld.get("period", 360.0)))
+            else:
+                if "force" not in ld:
+                    raise InputError(f"{f}.force", "is required")
+                F = _num(f"{f}.force", ld["force"])
+                if k == "constant_friction":
+                    loads.append(ConstantFriction(body, F))
+                else:
+                    cz = cutting
+                    loads.append(Resistance(
+                        body, F, window=ld.get("window", "cut"),
+                        approach=ld.get("approach", 0.0 if cz is None else cz.approach),
+                        overrun=ld.get("overrun", 0.0 if cz is None else cz.overrun),
+                        working=ld.get("working", "slow" if cz is None else cz.working)))
+        except InputError as e:
+            # name the load in the field: forces.loads.angles -> forces.loads[i].angles
+            fld = e.field.replace("forces.loads.", f"{f}.") if e.field.startswith("forces.loads.") else e.field
+            msg = str(e).split(": ", 1)[1] if ": " in str(e) else str(e)
+            raise InputError(fld, msg) from None
+    samples = t.get("samples", 360)
+    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 12:
+        raise InputError("forces.samples", f"must be an integer >= 12, got {samples!r}")
+    passes = t.get("passes", 2)
+    if passes == "iterate":
+        passes = None
+    elif isinstance(passes, bool) or not isinstance(passes, int) or passes < 1:
+        raise InputError("forces.passes", f"must be an integer >= 1 or 'iterate', got {passes!r}")
+    delta = t.get("delta")
+    if delta is not None:
+        delta = _num("forces.delta", delta)
+        if not 0 < delta < 1:
+            raise InputError("forces.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {delta!r}")
+    from cams.flywheel import INTERPOLATIONS
+
+    interp = check_option("forces.interpolation", t.get("interpolation", "linear"), INTERPOLATIONS)
+    spec = ForceSpec(links=links, loads=tuple(loads), friction=friction, gravity=_num("forces.gravity", t.get("gravity", G)),
+                     length_unit=LENGTH_UNITS[units])
+    return spec, ForceOptions(samples=samples, passes=passes, delta=delta, interpolation=interp)
+
+
+@dataclass(frozen=True, eq=False)
+class MachineForces:
+    """Forces of a machine with its cam: the linkage, its flywheel, the cam.
+
+    Attributes
+    ----------
+    linkage : ForceResult or None
+        Without a ``[forces]`` table: None.
+    flywheel : cams.flywheel.FlywheelResult or None
+        With ``[forces] delta``.
+    cam : cams.camforces.CamForces or None
+        With a ``[dynamics]`` table and force closure.
+    spring : cams.camforces.Spring or None
+    jump : cams.camforces.JumpSpeed or None
+    notes : tuple of str
+    """
+
+    linkage: ForceResult | None = None
+    flywheel: object = None
+    cam: object = None
+    spring: object = None
+    jump: object = None
+    notes: tuple = ()
+
+    @property
+    def ok(self) -> bool:
+        """The cam keeps contact and does not jam (True without cam forces)."""
+        return self.cam is None or bool(self.cam.ok)
+
+    def to_dict(self) -> dict:
+        """JSON-ready report."""
+        out: dict = {"notes": list(self.notes)}
+        if self.linkage is not None:
+            out["linkage"] = self.linkage.to_dict()
+        if self.flywheel is not None:
+            fw = self.flywheel.to_dict()
+            fw.pop("curves")
+            out["flywheel"] = fw
+        if self.cam is not None:
+            out["cam"] = {**self.cam.to_dict(), "spring": {"rate": self.spring.rate, "preload": self.spring.preload},
+                          "jump_rpm": None if self.jump is None else self.jump.rpm,
+                          "jump_at_deg": None if self.jump is None else float(np.degrees(self.jump.phi)), "ok": bool(self.cam.ok)}
+        return out
+
+    def plot(self, directory, stem: str, *, title: str = "") -> list:
+        """Reactions and balancing moment, energy curves, cam forces as PNGs in ``directory``; the paths."""
+        from pathlib import Path
+
+        d = Path(directory)
+        paths = []
+        if self.linkage is not None:
+            paths.append(self.linkage.plot(d / f"{stem}_forces.png", title=f"{title}: reactions and balancing moment"))
+        if self.flywheel is not None:
+            paths.append(self.flywheel.plot(d / f"{stem}_flywheel.png", title=f"{title}: energy"))
+        if self.cam is not None:
+            paths.append(_plot_cam(self.cam, d / f"{stem}_cam_forces.png", title=f"{title}: cam forces"))
+        return paths
+
+
+def _plot_cam(cf, path, *, title: str):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    deg = np.degrees(cf.phi)
+    N = np.where(np.isfinite(cf.contact), cf.contact, np.nan)
+    fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 5.5))
+    ax1.plot(deg, N, label="contact force N")
+    ax1.plot(deg, np.where(np.isfinite(cf.contact), cf.lateral, np.nan), label="lateral N sin(gamma)")
+    ax1.plot(deg, cf.spring, "--", label="spring")
+    ax1.set_ylabel("force, N (N m rocker)")
+    ax1.legend(loc="upper right")
+    ax2.plot(deg, np.where(np.isfinite(cf.torque), cf.torque, np.nan), color="C3", label="camshaft torque")
+    ax2.set_ylabel("torque, N m")
+    ax2.set_xlabel("cam angle, deg")
+    for ax in (ax1, ax2):
+        ax.grid(True, alpha=0.3)
+    ax1.set_title(f"{title} at {cf.rpm:.4g} rpm")
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def machine_forces(spec, centre=None) -> MachineForces:
+    """Forces of a machine file's machine (:class:`cams.machine.MachineSpec`).
+
+    Parameters
+    ----------
+    spec : MachineSpec
+        ``spec.extra["forces"]`` (from ``[forces]``) gives the linkage's data;
+        ``spec.cam.extra["dynamics"]`` (from ``[dynamics]``) the follower's.
+    centre : array_like or None
+        The cam's centre (``SolveResult.centre``); needed for the cam's forces.
+
+    Returns
+    -------
+    MachineForces
+    """
+    from cams.camforces import cam_forces, jump_speed
+
+    notes = []
+    lk = fw = cf = spring = jump = None
+    forces = spec.extra.get("forces")
+    if forces is not None:
+        fs, opt = forces
+        lk = analyse_forces(spec.linkage, fs, samples=opt.samples, passes=opt.passes)
+        if opt.delta is not None:
+            fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation)
+    else:
+        notes.append("no [forces] table: no linkage forces")
+    dyn = spec.cam.extra.get("dynamics")
+    if dyn is not None:
+        if spec.cam.limits.closure != "force":
+            notes.append("form-closed cam: no closing spring to size")
+        elif centre is None:
+            notes.append("no cam centre: no cam forces")
+        else:
+            spring = dyn.spring(spec.cam)
+            d = dyn.dynamics.with_spring(spring)
+            cf = cam_forces(spec.cam, centre, d)
+            jump = jump_speed(spec.cam, d)
+    return MachineForces(lk, fw, cf, spring, jump, tuple(notes))

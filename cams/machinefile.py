@@ -19,8 +19,10 @@ Schema (see ``examples/machines/``)::
     [drive]     kind ("shaft" | "gears"), z_crank, z_cam, mesh ("external" | "internal")
     [timing]    margin (degrees of crank angle), placement ("centre" | "early" | "late"),
                 follower_direction (degrees, frame; optional)
-    [follower], [[motion]], [limits], [solve]   as in a design file (cams/designfile.py)
+    [follower], [[motion]], [limits], [solve], [dynamics]   as in a design file (cams/designfile.py)
     [cam]       bore_radius only: rotation and rpm follow from the crank and the drive
+    [forces]    optional: masses, loads, friction and the flywheel's delta of the linkage
+                (cams.kinetostatics.force_spec_from_dict); parsed into ``spec.extra["forces"]``
 """
 
 from __future__ import annotations
@@ -53,7 +55,8 @@ _LINKAGE = {
 }
 LINKAGE_TYPES = tuple(_LINKAGE)
 _KEYS = {
-    "": {"name", "units", "linkage", "cutting", "drive", "timing", "follower", "cam", "motion", "limits", "solve"},
+    "": {"name", "units", "linkage", "cutting", "drive", "timing", "follower", "cam", "motion", "limits", "solve",
+         "dynamics", "forces"},
     "cutting": {"approach", "overrun", "working"},
     "drive": {"kind", "z_crank", "z_cam", "mesh"},
     "timing": {"margin", "placement", "follower_direction"},
@@ -196,11 +199,16 @@ def machine_from_dict(d: dict) -> MachineSpec:
     cam_table = {**cam, "rotation": "ccw" if cam_sense == 1 else "cw"}
     if linkage.rpm is not None:
         cam_table["rpm"] = linkage.rpm * drive.ratio
-    dd = {k: d[k] for k in ("follower", "motion", "limits", "solve", "units") if k in d}
+    dd = {k: d[k] for k in ("follower", "motion", "limits", "solve", "units", "dynamics") if k in d}
     dd["cam"] = cam_table
     dd["name"] = f"{name}: cam"
     design = design_from_dict(dd)
-    return MachineSpec(name=name, linkage=linkage, cutting=cutting, drive=drive, timing=timing, cam=design, units=units, extra={"raw": d})
+    extra = {"raw": d}
+    if "forces" in d:
+        from cams.kinetostatics import force_spec_from_dict
+
+        extra["forces"] = force_spec_from_dict(d["forces"], linkage.kind, units=units, cutting=cutting)
+    return MachineSpec(name=name, linkage=linkage, cutting=cutting, drive=drive, timing=timing, cam=design, units=units, extra=extra)
 
 
 def load_machine(path: str | Path) -> MachineSpec:

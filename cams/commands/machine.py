@@ -8,7 +8,7 @@ from pathlib import Path
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
 
-__all__ = ["register", "print_machine"]
+__all__ = ["register", "print_machine", "print_forces"]
 
 
 def _iv(iv) -> str:
@@ -59,6 +59,41 @@ def print_machine(rep: dict) -> None:
     print_summary(rep["cam"])
 
 
+def print_forces(rep: dict) -> None:
+    """Readable summary of a forces report (as from ``MachineForces.to_dict``)."""
+    lk = rep.get("linkage")
+    if lk is not None:
+        mb = lk["balancing_moment"]
+        passes = {1: "no friction from the reactions", 2: "two-stage friction"}.get(lk["passes"], f"{lk['passes']} friction passes")
+        print(f"  forces at {lk['rpm']:.4g} rpm ({passes}):")
+        print(f"    balancing moment: max |M_b| = {mb['max_abs']:.4g} N m at {mb['at_deg']:.1f} deg, mean {mb['mean']:.4g} N m; "
+              f"Zhukovsky's lever agrees within {mb['virtual_work_max_difference']:.2g} N m")
+        for name, p in lk["pairs"].items():
+            print(f"    pair {name:8s} ({p['kind']:9s}): max {p['max']:.5g} N at {p['at_deg']:.1f} deg, mean {p['mean']:.5g} N")
+        if lk["friction_power_mean_W"]:
+            parts = ", ".join(f"{k} {v:.3g}" for k, v in lk["friction_power_mean_W"].items())
+            print(f"    friction losses: mean {lk['friction_power_total_mean_W']:.4g} W ({parts}); "
+                  f"drive power mean {lk['drive_power_mean_W']:.4g} W")
+        else:
+            print(f"    drive power mean {lk['drive_power_mean_W']:.4g} W")
+    fw = rep.get("flywheel")
+    if fw is not None:
+        print(f"  flywheel for delta = {fw['delta']:g}: driving moment {fw['driving_moment']:.4g} N m, excess work "
+              f"{fw['excess_work']:.4g} J, J_F = {fw['flywheel_inertia']:.4g} kg m^2; omega {fw['omega_min']:.4g} .. "
+              f"{fw['omega_max']:.4g} rad/s")
+    cam = rep.get("cam")
+    if cam is not None:
+        sp = cam["spring"]
+        print(f"  cam forces at {cam['rpm']:.4g} rpm: spring rate {sp['rate']:.4g}, preload {sp['preload']:.4g}; "
+              f"max contact force {cam['max_contact_force']:.4g} N at {cam['max_contact_at_deg']:.1f} deg; "
+              f"max camshaft torque {cam['max_torque']:.4g} N m at {cam['max_torque_at_deg']:.1f} deg")
+        jump = "none" if cam["jump_rpm"] is None else f"{cam['jump_rpm']:.4g} rpm (at {cam['jump_at_deg']:.1f} deg)"
+        print(f"    jump speed {jump}; jamming limit {cam['jamming_limit_deg']:.2f} deg; contact lost: "
+              f"{'YES' if cam['contact_lost'] else 'no'}; jammed: {'YES' if cam['jammed'] else 'no'}")
+    for n in rep.get("notes", []):
+        print(f"  note: {n}")
+
+
 def run(args) -> int:
     from cams.machine import design_machine
     from cams.machinefile import load_machine
@@ -66,19 +101,30 @@ def run(args) -> int:
     spec = load_machine(args.file)
     res = design_machine(spec, method=args.method)
     rep = res.to_dict()
+    forces = None
+    if args.forces:
+        from cams.kinetostatics import machine_forces
+
+        forces = machine_forces(spec, res.solve.centre)
+        rep["forces"] = forces.to_dict()
     if args.plot:
         out = Path(args.plot)
         out.mkdir(parents=True, exist_ok=True)
         path = out / f"{Path(args.file).stem}_cycle.png"
         res.diagram.plot(path, title=spec.name)
         rep["plots"] = [str(path)]
+        if forces is not None:
+            rep["plots"] += [str(p) for p in forces.plot(out, Path(args.file).stem, title=spec.name)]
     if args.json:
         print(json.dumps(rep, indent=2, ensure_ascii=False))
     else:
         print_machine(rep)
+        if forces is not None:
+            print_forces(rep["forces"])
         for p in rep.get("plots", []):
             print(f"  plot: {p}")
-    return EXIT_OK if res.ok else EXIT_CHECK_FAILED
+    ok = res.ok and (forces is None or forces.ok)
+    return EXIT_OK if ok else EXIT_CHECK_FAILED
 
 
 def register(sub) -> None:
@@ -96,5 +142,8 @@ def register(sub) -> None:
     q.add_argument("file", help="machine file (TOML)")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override the cam's [solve] method")
     q.add_argument("--json", action="store_true", help="print the report as JSON")
-    q.add_argument("--plot", metavar="DIR", help="write the cycle diagram as a PNG into DIR")
+    q.add_argument("--plot", metavar="DIR", help="write the cycle diagram (with --forces also the reactions, balancing "
+                   "moment, energy curves and cam forces) as PNGs into DIR")
+    q.add_argument("--forces", action="store_true",
+                   help="kinetostatics of the linkage ([forces]), its flywheel ([forces] delta) and the cam's forces ([dynamics])")
     q.set_defaults(func=run)

@@ -11,7 +11,7 @@ import pytest
 
 from cams.camforces import FollowerDynamics, Spring, cam_forces, jamming_limit, jump_speed, spring_for_contact
 from cams.designfile import design_from_dict, load_design
-from conftest import EXAMPLES, rocker_dict
+from tests.conftest import EXAMPLES, rocker_dict
 from laws.errors import InputError
 from optimize.solve import solve
 
@@ -196,9 +196,11 @@ def test_spring_that_cannot_keep_contact_message():
 def test_design_file_dynamics_table():
     d = design_from_dict(rocker_dict(cam={"rpm": 300}, dynamics={"mass": 0.004, "load": 0.5, "spring_rate": 2.0, "friction": 0.1,
                                                                   "journal_radius": 6.0, "margin": 1.3}))
-    dyn, margin = d.extra["dynamics"]
-    assert margin == 1.3 and dyn.spring is None and dyn.length_unit == 1e-3 and dyn.journal_radius == 6.0
-    sp = spring_for_contact(d, dyn, margin=margin, rate=2.0)
+    ds = d.extra["dynamics"]
+    dyn = ds.dynamics
+    assert ds.margin == 1.3 and ds.rate == 2.0 and dyn.spring is None and dyn.length_unit == 1e-3 and dyn.journal_radius == 6.0
+    sp = ds.spring(d)
+    assert sp == spring_for_contact(d, dyn, margin=1.3, rate=2.0)
     assert sp.rate == 2.0 and sp.preload > 0
     assert "dynamics" not in design_from_dict(rocker_dict()).extra
 

@@ -1,0 +1,170 @@
+"""Machine files with [forces] and [dynamics]; ``cams machine FILE --forces`` (text, JSON, plots, one-line errors)."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from cams.cli import main
+from cams.kinetostatics import GasPressure, Resistance, force_spec_from_dict, machine_forces
+from cams.machinefile import load_machine, machine_from_dict
+from laws.errors import InputError
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parents[1]
+DATA = HERE / "data" / "slotting_forces.toml"
+PUMP = ROOT / "examples" / "machines" / "pump.toml"
+SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"
+
+PUMP_FORCES = """
+[forces]
+passes = "iterate"
+delta = 0.1
+[forces.links.crank]
+mass = 10.0
+inertia = 0.3
+[forces.links.lever]
+mass = 25.0
+inertia = 0.6
+[forces.links.piston]
+mass = 40.0
+[forces.friction]
+revolute = { coefficient = 0.195, radius = 24.0 }   # seed 004: 1.3 f, f = 0.15, r = 0.024 m
+prismatic = { coefficient = 0.15 }
+[[forces.loads]]
+kind = "resistance"
+body = "piston"
+force = 2500.0
+window = "working"
+"""
+
+
+def test_machine_file_forces_table():
+    spec = load_machine(DATA)
+    fs, opt = spec.extra["forces"]
+    assert fs.links["tool"].mass == pytest.approx(71.4) and fs.length_unit == 1e-3
+    assert set(fs.friction) == {"O2", "A", "A_slot", "O3", "B", "C", "C_guide"}
+    assert fs.friction["A_slot"].coefficient == 0.15 and fs.friction["O3"].radius == 15.0
+    (load,) = fs.loads
+    assert isinstance(load, Resistance) and (load.approach, load.overrun) == (0.05, 0.05)  # from [cutting]
+    assert opt.delta == 0.05 and opt.passes == 2 and opt.samples == 360
+    assert spec.cam.extra["dynamics"].rate == 3.0
+
+
+def test_machine_forces_api():
+    spec = load_machine(DATA)
+    from cams.machine import design_machine
+
+    res = design_machine(spec)
+    mf = machine_forces(spec, res.solve.centre)
+    assert mf.ok and mf.linkage is not None and mf.flywheel is not None and mf.cam is not None
+    assert np.max(np.abs(mf.linkage.balancing_moment - mf.linkage.virtual_moment)) < 1e-9
+    assert mf.flywheel.achieved_delta == pytest.approx(0.05, rel=1e-9)
+    assert mf.jump.rpm > spec.cam.rpm  # the margin keeps the jump speed above the running speed
+    # the flywheel's driving moment is the mean balancing moment (the linkage's work over a cycle)
+    assert mf.flywheel.driving_moment == pytest.approx(np.mean(mf.linkage.balancing_moment), rel=1e-3)
+
+
+def test_pump_with_forces(tmp_path, capsys):
+    f = tmp_path / "pump_forces.toml"
+    f.write_text(PUMP.read_text(encoding="utf-8") + PUMP_FORCES, encoding="utf-8")
+    assert main(["machine", str(f), "--forces", "--json"]) == 0
+    rep = json.loads(capsys.readouterr().out)["forces"]
+    lk = rep["linkage"]
+    assert lk["passes"] > 2 and set(lk["pairs"]) == {"O1", "A", "A_slot", "O2", "C", "C_slot", "E"}
+    assert lk["balancing_moment"]["virtual_work_max_difference"] < 1e-9
+    # energy: the piston's work per cycle is 2500 N x 0.25 m, at 77/60 cycles per second, plus friction
+    useful = 2500 * 0.25 * 77 / 60
+    assert lk["drive_power_mean_W"] == pytest.approx(useful + lk["friction_power_total_mean_W"], rel=1e-3)
+    assert rep["flywheel"]["delta"] == 0.1 and rep["flywheel"]["flywheel_inertia"] > 0
+    assert "cam" not in rep  # no [dynamics]
+
+
+def test_text_report(capsys):
+    assert main(["machine", str(DATA), "--forces"]) == 0
+    out = capsys.readouterr().out
+    assert "forces at 60 rpm (two-stage friction)" in out
+    assert "Zhukovsky's lever agrees" in out and "pair O3" in out and "friction losses" in out
+    assert "flywheel for delta = 0.05" in out and "J_F =" in out
+    assert "jump speed" in out and "contact lost: no" in out
+
+
+def test_plots(tmp_path, capsys):
+    assert main(["machine", str(DATA), "--forces", "--plot", str(tmp_path)]) == 0
+    for name in ("cycle", "forces", "flywheel", "cam_forces"):
+        png = tmp_path / f"slotting_forces_{name}.png"
+        assert png.exists() and png.stat().st_size > 1000, name
+
+
+def test_without_forces_table(capsys):
+    assert main(["machine", str(SLOTTING), "--forces", "--json"]) == 0
+    rep = json.loads(capsys.readouterr().out)["forces"]
+    assert "linkage" not in rep and any("no [forces] table" in n for n in rep["notes"])
+
+
+def test_without_forces_flag_no_forces(capsys):
+    assert main(["machine", str(DATA), "--json"]) == 0
+    assert "forces" not in json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize(
+    "old, new, field, words",
+    [
+        ("mass = 71.4", "mass = -71.4", "forces.links.tool.mass", "negative"),
+        ("inertia = 1.1", "inertia = -1.1", "forces.links.bar.inertia", "negative"),
+        ("delta = 0.05", "delta = 0.0", "forces.delta", "(0, 1)"),
+        ("delta = 0.05", "delta = -0.05", "forces.delta", "(0, 1)"),
+        ("[forces.links.tool]", "[forces.links.wheel]", "forces.links", "unknown key"),
+        ("body = \"tool\"", "body = \"bar\"", "forces.loads.body", "does not slide"),
+        ("force = 1000.0", "force = -1000.0", "forces.loads[0].force", ">= 0"),
+        ("passes = 2", "passes = 0", "forces.passes", ">= 1"),
+        ("spring_rate = 3.0", "spring_rate = -3.0", "dynamics.spring_rate", ">= 0"),
+        ("mass = 0.003", "mass = -0.003", "dynamics.mass", "> 0"),
+    ],
+)
+def test_bad_forces_input_is_one_line(tmp_path, capsys, old, new, field, words):
+    text = DATA.read_text(encoding="utf-8")
+    assert old in text
+    f = tmp_path / "bad.toml"
+    f.write_text(text.replace(old, new, 1), encoding="utf-8")
+    assert main(["machine", str(f), "--forces"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and field in err and words in err, err
+
+
+def test_gas_table_must_cover_the_cycle():
+    table = {"loads": [{"kind": "gas", "body": "slider", "angles": [0, 90, 180], "pressure": [1e6, 2e5, 1e5], "bore": 80}]}
+    with pytest.raises(InputError) as e:
+        force_spec_from_dict(table, "crank_slider")
+    assert e.value.field == "forces.loads[0].angles" and "from 0 to 360 deg" in str(e.value)
+    table["loads"][0].update(angles=[0, 90, 180, 360], pressure=[1e6, 2e5, 1e5, 1e6])
+    spec, _ = force_spec_from_dict(table, "crank_slider")
+    assert isinstance(spec.loads[0], GasPressure)
+
+
+def test_spring_that_cannot_keep_contact(tmp_path, capsys):
+    text = DATA.read_text(encoding="utf-8").replace("margin = 1.5", "margin = 1.5\nmax_spring_force = 0.01", 1)
+    f = tmp_path / "weak.toml"
+    f.write_text(text, encoding="utf-8")
+    assert main(["machine", str(f), "--forces"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "dynamics.spring_rate" in err and "cannot keep contact" in err and "at any preload" in err
+
+
+def test_machine_from_dict_keeps_the_cam_dynamics():
+    d = tomllib.loads(DATA.read_text(encoding="utf-8"))
+    spec = machine_from_dict(d)
+    assert spec.cam.rpm == pytest.approx(60.0) and spec.cam.extra["dynamics"].margin == 1.5
+
+
+def test_plotting_imports_matplotlib_lazily():
+    code = ("import sys, cams.kinetostatics, cams.flywheel, cams.camforces, cams.commands.machine; "
+            "print('matplotlib' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True).stdout
+    assert out.strip() == "False"
