@@ -99,16 +99,16 @@ def _positive(field: str, v) -> float:
     return float(v)
 
 
-def _check_cycle(phi: np.ndarray) -> None:
+def _check_cycle(phi: np.ndarray, cycle: float) -> None:
     if phi.ndim != 1 or phi.size < 3:
         raise InputError("flywheel.phi", "needs at least 3 crank angles over one cycle")
     if np.any(np.diff(phi) <= 0):
         raise InputError("flywheel.phi", "crank angles must increase strictly")
-    if phi[-1] - phi[0] >= TWO_PI - 1e-12:
+    if phi[-1] - phi[0] >= cycle - 1e-12:
         raise InputError(
             "flywheel.phi",
             f"the samples span {np.degrees(phi[-1] - phi[0]):.6g} deg; give one cycle without its end "
-            "(angles in [phi0, phi0 + 360) deg: the cycle closes on the first sample)",
+            f"(angles in [phi0, phi0 + {np.degrees(cycle):g}) deg: the cycle closes on the first sample)",
         )
 
 
@@ -192,7 +192,7 @@ class FlywheelResult:
 
     def at(self, phi) -> dict:
         """Values at crank angles ``phi`` (radians from the cycle's start) by linear interpolation."""
-        x = np.mod(np.asarray(phi, dtype=float) - self.phi[0], TWO_PI) + self.phi[0]
+        x = np.mod(np.asarray(phi, dtype=float) - self.phi[0], self.phi[-1] - self.phi[0]) + self.phi[0]
         names = ("resisting", "driving", "inertia", "work_resisting", "work_driving", "energy", "omega", "epsilon")
         return {n: np.interp(x, self.phi, getattr(self, n)) for n in names}
 
@@ -251,9 +251,9 @@ class FlywheelResult:
         return path
 
 
-def _resample(phi: np.ndarray, y: np.ndarray, x: np.ndarray, how: str):
+def _resample(phi: np.ndarray, y: np.ndarray, x: np.ndarray, how: str, cycle: float):
     """Values and exact cumulative integral (from phi[0]) of the periodic samples on the grid x."""
-    p = np.append(phi, phi[0] + TWO_PI)
+    p = np.append(phi, phi[0] + cycle)
     v = np.append(y, y[0])
     if how == "spline":
         cs = CubicSpline(p, v, bc_type="periodic")
@@ -276,6 +276,7 @@ def flywheel(
     driving=None,
     interpolation: str = "linear",
     dense: int = 7200,
+    cycle_deg: float = 360.0,
 ) -> FlywheelResult:
     """The flywheel for a coefficient of speed fluctuation, and the crank's speed with it.
 
@@ -283,8 +284,8 @@ def flywheel(
     ----------
     phi : array_like
         Crank angles of the samples, radians, in the crank's sense, strictly
-        increasing over one cycle without its end (``[phi0, phi0 + 2 pi)``;
-        the cycle closes on the first sample).
+        increasing over one cycle without its end (``[phi0, phi0 + 2 pi)``,
+        or ``4 pi`` with ``cycle_deg=720``; the cycle closes on the first sample).
     resisting : array_like or float
         Reduced moment of the resisting forces Mr at ``phi``, N m (positive
         takes work from the machine).
@@ -303,6 +304,8 @@ def flywheel(
     dense : int
         Grid points per cycle for the curves (the samples are added to it
         for linear interpolation, so its integrals are exact).
+    cycle_deg : {360, 720}
+        Crank rotation of one cycle, degrees (720: a four-stroke engine).
 
     Returns
     -------
@@ -331,12 +334,15 @@ def flywheel(
     0.05
     """
     how = check_option("flywheel.interpolation", interpolation, INTERPOLATIONS)
+    if cycle_deg not in (360, 720):
+        raise InputError("flywheel.cycle_deg", f"must be 360 or 720 degrees, got {cycle_deg!r}")
+    cycle = float(np.radians(cycle_deg))
     rpm = _positive("flywheel.rpm", rpm)
     if isinstance(delta, bool) or not isinstance(delta, (int, float, np.floating)) or not np.isfinite(delta) or not 0 < delta < 1:
         raise InputError("flywheel.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {delta!r}")
     delta = float(delta)
     phi = _array("flywheel.phi", phi)
-    _check_cycle(phi)
+    _check_cycle(phi, cycle)
     n = phi.size
     Mr = _array("flywheel.resisting", resisting, n)
     J = _array("flywheel.inertia", inertia, n)
@@ -346,25 +352,25 @@ def flywheel(
     if isinstance(dense, bool) or not isinstance(dense, (int, np.integer)) or dense < 12:
         raise InputError("flywheel.dense", f"must be an integer >= 12, got {dense!r}")
 
-    x = np.linspace(phi[0], phi[0] + TWO_PI, dense + 1)
+    x = np.linspace(phi[0], phi[0] + cycle, dense + 1)
     if how == "linear":
-        x = np.union1d(x, np.append(phi, phi[0] + TWO_PI))
-    Mr_x, Ar, _ = _resample(phi, Mr, x, how)
-    J_x, _, dJ = _resample(phi, J, x, how)
+        x = np.union1d(x, np.append(phi, phi[0] + cycle))
+    Mr_x, Ar, _ = _resample(phi, Mr, x, how, cycle)
+    J_x, _, dJ = _resample(phi, J, x, how, cycle)
     if np.any(J_x < 0):
         raise InputError("flywheel.inertia", "the spline through the inertias dips below 0; use interpolation = 'linear'")
     if driving is None:
-        Md_x = np.full_like(x, Ar[-1] / TWO_PI)
+        Md_x = np.full_like(x, Ar[-1] / cycle)
         Ad = Md_x * (x - x[0])
     else:
         Md = _array("flywheel.driving", driving, n)
-        Md_x, Ad, _ = _resample(phi, Md, x, how)
+        Md_x, Ad, _ = _resample(phi, Md, x, how, cycle)
         imbalance = Ad[-1] - Ar[-1]
         if abs(imbalance) > 1e-9 * max(abs(Ar[-1]), abs(Ad[-1]), 1.0):
             raise InputError(
                 "flywheel.driving",
                 f"the driving work over the cycle ({Ad[-1]:.6g} J) differs from the resisting work ({Ar[-1]:.6g} J); "
-                f"a steady cycle needs them equal (a constant Md = {Ar[-1] / TWO_PI:.6g} N m would balance it)",
+                f"a steady cycle needs them equal (a constant Md = {Ar[-1] / cycle:.6g} N m would balance it)",
             )
     dE = Ad - Ar
     wm = rpm_to_omega(rpm)

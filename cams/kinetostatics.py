@@ -221,8 +221,8 @@ class GasPressure:
     start : float
         Frame crank angle (degrees) where the table's angle 0 is.
     period : float
-        360 (one turn per cycle); 720 for a four-stroke cycle only with crank
-        angles over two turns.
+        360 (one turn per cycle) or 720 (a four-stroke cycle: give crank
+        angles over two turns, and ``cycle_deg=720`` to the flywheel).
     """
 
     body: str
@@ -258,6 +258,9 @@ class Resistance:
         Fractions of the stroke before and after the cut (window "cut").
     working : {"slow", "fast", "forward", "backward"}
         Which stroke works (:func:`cams.linkage.analyse`).
+
+    The windows "cut" and "working" follow the machine's working member
+    (its ``output``: the tool, the slider, piston 3, the pump's piston).
     """
 
     body: str
@@ -826,19 +829,23 @@ class ForceResult:
         out[:, m.driver, 2] += self.balancing_moment
         return out
 
-    def flywheel(self, *, delta: float, interpolation: str = "linear", friction: bool = True):
+    def flywheel(self, *, delta: float, interpolation: str = "linear", friction: bool = True, cycle_deg: float = 360.0):
         """The flywheel for this machine (:func:`cams.flywheel.flywheel`) from its reduced moments and inertia.
 
         The crank angles become the cycle's angles in the crank's sense from
-        the first one. ``friction`` adds the pairs' friction to the resisting moment.
+        the first one. ``friction`` adds the pairs' friction to the resisting
+        moment. A four-stroke cycle (gas tables of period 720) needs
+        ``cycle_deg=720`` and crank angles over two turns.
         """
         from cams.flywheel import flywheel
 
-        c = np.mod(self.model.sense * (self.phi - self.phi[0]), TWO_PI)
+        cycle = np.radians(cycle_deg)
+        c = np.mod(self.model.sense * (self.phi - self.phi[0]), cycle)
         order = np.argsort(c)
         Mr = self.reduced_resisting + (self.reduced_friction if friction else 0.0)
         rpm = abs(self.omega) * 60.0 / TWO_PI
-        return flywheel(c[order], Mr[order], self.reduced_inertia[order], rpm=rpm, delta=delta, interpolation=interpolation)
+        return flywheel(c[order], Mr[order], self.reduced_inertia[order], rpm=rpm, delta=delta, interpolation=interpolation,
+                        cycle_deg=cycle_deg)
 
     def to_dict(self) -> dict:
         """JSON-ready summary: extremes of the reactions and the balancing moment, friction losses."""

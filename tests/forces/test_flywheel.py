@@ -183,6 +183,7 @@ def test_given_driving_moment():
         ({"phi": np.radians([0, 30, 20, 90, 120, 150, 180, 210, 240, 270, 300, 330])}, "flywheel.phi"),
         ({"resisting": np.ones(5)}, "flywheel.resisting"),
         ({"interpolation": "cubic"}, "flywheel.interpolation"),
+        ({"cycle_deg": 540}, "flywheel.cycle_deg"),
     ],
 )
 def test_bad_input_is_one_line(kw, field):

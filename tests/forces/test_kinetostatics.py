@@ -262,3 +262,22 @@ def test_bad_input_is_one_line(make, field):
     with pytest.raises(InputError) as e:
         make()
     assert e.value.field == field and "\n" not in str(e.value)
+
+
+def test_four_stroke_cycle():
+    """A gas table of period 720 over two crank turns: the flywheel of a 720-degree cycle."""
+    m = CrankSlider(crank=48.0, rod=192.0, rod_cg=64.0, rpm=3000)
+    angles = (0, 20, 60, 180, 360, 540, 720)
+    p = (5.0e6, 4.0e6, 1.5e6, 0.2e6, 0.0, 0.1e6, 5.0e6)
+    spec = ForceSpec(links={"crank": LinkMass(2.0, 0.01), "rod": LinkMass(1.0, 0.005), "slider": LinkMass(0.8)},
+                     loads=(GasPressure("slider", angles, p, 80.0, period=720),), gravity=0.0)
+    phi = np.linspace(0, 4 * np.pi, 1440, endpoint=False)
+    r = analyse_forces(m, spec, phi=phi)
+    gas = r.model.loads[0].force
+    assert np.real(gas[0]) == pytest.approx(-5.0e6 * np.pi * 0.08**2 / 4) and np.real(gas[720]) == pytest.approx(0.0)
+    fw = r.flywheel(delta=0.02, cycle_deg=720)
+    assert fw.phi[-1] - fw.phi[0] == pytest.approx(4 * np.pi)
+    assert fw.achieved_delta == pytest.approx(0.02, rel=1e-9)
+    assert fw.driving_moment == pytest.approx(np.mean(r.balancing_moment), rel=1e-3)
+    with pytest.raises(InputError, match="flywheel.phi"):
+        r.flywheel(delta=0.02)  # two turns are not one 360-degree cycle
