@@ -91,12 +91,10 @@ class ModifiedTrapezoid(Law):
         s2_end = _S1 + _V1 * 0.25 + 0.25**2 / 2
         t3 = x - 0.375
         c3, n3 = np.cos(_W * t3), np.sin(_W * t3)
-        pieces = [
-            (x <= 0.125, p),
-            ((x > 0.125) & (x <= 0.375), (_S1 + _V1 * t2 + t2**2 / 2, _V1 + t2, np.ones_like(x), np.zeros_like(x))),
-            (x > 0.375, (s2_end + v2 * t3 + (1 - c3) / _W**2, v2 + n3 / _W, c3, -_W * n3)),
-        ]
-        return tuple(A * np.select([m for m, _ in pieces], [f[k] for _, f in pieces]) for k in range(4))
+        middle = (_S1 + _V1 * t2 + t2**2 / 2, _V1 + t2, 1.0, 0.0)
+        last = (s2_end + v2 * t3 + (1 - c3) / _W**2, v2 + n3 / _W, c3, -_W * n3)
+        first, second = x <= 0.125, x <= 0.375
+        return tuple(A * np.where(first, p[k], np.where(second, middle[k], last[k])) for k in range(4))
 
 
 @dataclass(frozen=True)

@@ -12,6 +12,7 @@ measured from the near-dwell position; derivatives are taken with respect to
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -170,19 +171,23 @@ class Program:
             return 0.0
         return self.lift if p.height is None else float(p.height)
 
-    @property
+    @cached_property
     def starts(self) -> np.ndarray:
-        """Cam angle at the start of each phase (radians), plus ``2 pi`` at the end."""
-        return np.concatenate([[0.0], np.cumsum([p.angle for p in self.phases])])
+        """Cam angle at the start of each phase (radians), plus ``2 pi`` at the end (read-only)."""
+        st = np.concatenate([[0.0], np.cumsum([p.angle for p in self.phases])])
+        st.setflags(write=False)
+        return st
 
-    @property
+    @cached_property
     def levels(self) -> np.ndarray:
-        """Displacement at the start of each phase."""
+        """Displacement at the start of each phase (read-only)."""
         lv = [0.0]
         for i, p in enumerate(self.phases[:-1]):
             sign = {"rise": 1.0, "return": -1.0, "dwell": 0.0}[p.kind]
             lv.append(lv[-1] + sign * self.height_of(i))
-        return np.asarray(lv)
+        out = np.asarray(lv)
+        out.setflags(write=False)
+        return out
 
     def phase_of(self, phi: np.ndarray | float) -> np.ndarray:
         """Index of the phase containing each cam angle (half-open ``[start, end)``)."""

@@ -84,7 +84,12 @@ def _derivative_matrix(coeffs: tuple[float, ...]) -> np.ndarray:
 def _poly(coeffs: tuple[float, ...], u: np.ndarray):
     """Evaluate ``sum c_k u^k`` and its first three derivatives (one matrix product)."""
     C = _derivative_matrix(tuple(coeffs))
-    Y = (u[..., None] ** np.arange(C.shape[0])) @ C
+    # the powers u^0 .. u^(n-1) by repeated products (a power function per element is slower)
+    U = np.empty(u.shape + (C.shape[0],))
+    U[..., 0] = 1.0
+    for k in range(1, C.shape[0]):
+        U[..., k] = U[..., k - 1] * u if k > 1 else u
+    Y = U @ C
     return Y[..., 0], Y[..., 1], Y[..., 2], Y[..., 3]
 
 

@@ -1,11 +1,17 @@
 """Certified bounds for sampled or iterated solutions of the continuous problem.
 
 A centre found from finitely many positions may sit slightly outside the true
-(continuous) zone by the largest violation ``v`` over the continuum. Moving it
-towards a strictly interior point ``c`` (slack ``r > 0`` everywhere) by the
-fraction ``v / (v + r)`` makes it feasible, because each constraint is affine in
-the centre. The objective at that feasible point is an upper bound on the true
-optimum; the sampled optimum itself is a lower bound (fewer constraints).
+(continuous) zone by the largest violation ``v`` over the continuum. Each
+constraint is affine in the centre, so it becomes feasible when moved
+
+* along a direction ``d`` inside every wedge's cone with angular margin ``mu``
+  (a recession direction of the zone): every signed distance falls by at least
+  ``sin(mu)`` per unit length, so a step of ``v / sin(mu)`` is enough; or
+* towards a strictly interior point ``c`` (slack ``r > 0`` everywhere) by the
+  fraction ``v / (v + r)``, where the zone has no recession direction.
+
+The objective at that feasible point is an upper bound on the true optimum;
+the sampled optimum itself is a lower bound (fewer constraints).
 """
 
 from __future__ import annotations
@@ -13,25 +19,32 @@ from __future__ import annotations
 import numpy as np
 
 from cams.design import CamDesign
-from optimize.zone import max_violation, phase_wedges
+from optimize.zone import GRID, max_violation, scan_peaks, zone_table
 
 __all__ = ["interior_point", "push_inside"]
 
 
-def _recession_direction(design: CamDesign, grid: int = 64) -> tuple[np.ndarray, float] | None:
-    """A direction inside every wedge's cone, and its angular margin (radians)."""
-    axes, lims = [], []
-    u = np.linspace(0.0, 1.0, grid + 1)
-    for i, lim in design.constrained_phases():
-        w = phase_wedges(design, i, lim, u)
-        # axis of the wedge = bisector of the two inward directions: -(n_t + n_t1)
-        a = -(w.normals[:, 0] + w.normals[:, 1])
-        axes.append(np.arctan2(a[:, 1], a[:, 0]))
-        lims.append(w.limit)
-    ang = np.concatenate(axes)
-    lim = np.concatenate(lims)
-    ang = ang[0] + np.angle(np.exp(1j * (ang - ang[0])))
-    lo, hi = np.max(ang - lim), np.min(ang + lim)
+def _recession_direction(design: CamDesign, grid: int = GRID) -> tuple[np.ndarray, float] | None:
+    """A direction inside every wedge's cone, and its angular margin (radians).
+
+    From the wedges at the scan positions of :func:`optimize.zone.zone_table`;
+    the margin is reduced by how far a wedge's axis can turn between two scan
+    positions (it turns with the follower: ``omega s``), so it holds for every
+    cam angle.
+    """
+    t = zone_table(design, grid)
+    if not t.phases:
+        return None
+    # axis of the wedge = bisector of the two inward directions: -(n_t + n_t1)
+    ang = np.arctan2(-(t.ny[:, 0] + t.ny[:, 1]), -(t.nx[:, 0] + t.nx[:, 1])).ravel()
+    lim = np.repeat(t.limit, t.nx.shape[-1])
+    ang = ang[0] + np.mod(ang - ang[0] + np.pi, 2 * np.pi) - np.pi
+    # between scan positions the axis turns by at most |omega s'| dphi, s' within |s''| dphi of the scan's
+    dphi = np.max(np.diff(t.u)) * t.angle[:, None]
+    w1 = np.max(np.abs(t.ds[:, 0]), axis=1, keepdims=True)
+    w2 = np.max(np.abs(t.d2s[:, 0]), axis=1, keepdims=True)
+    drift = abs(t.omega) * float(np.max((w1 + w2 * dphi) * dphi))
+    lo, hi = np.max(ang - lim) + drift, np.min(ang + lim) - drift
     if hi <= lo:
         return None
     mid = 0.5 * (lo + hi)
@@ -48,8 +61,9 @@ def interior_point(design: CamDesign, near: np.ndarray) -> tuple[np.ndarray, flo
     rd = _recession_direction(design)
     if rd is not None:
         d, _ = rd
+        t = zone_table(design)
         for c in (near + scale * d, near + 0.1 * scale * d):
-            slack = -max_violation(design, c)[0].value
+            slack = -float(np.max(scan_peaks(t, c).value))
             if slack > 0:
                 return c, slack
     cands = []
@@ -89,6 +103,10 @@ def push_inside(design: CamDesign, centre: np.ndarray, violation: float) -> np.n
     centre = np.asarray(centre, dtype=float)
     if violation <= 0:
         return centre
+    rd = _recession_direction(design)
+    if rd is not None:
+        d, margin = rd
+        return centre + (violation / np.sin(margin)) * d
     ip = interior_point(design, centre)
     if ip is None:
         return None

@@ -1,14 +1,21 @@
 """The exact solver: every cam angle of a constrained phase, not samples.
 
 An exchange (cutting-plane) method for the semi-infinite convex problem
-``min |O - T|`` over the continuous zone: starting from the target point T,
-the local maxima of every constraint's signed distance over the continuum
-(:func:`optimize.zone.max_violation`, root finding on the envelope's stationary
-points by golden-section search) are added as half-planes, the finite problem
-is solved exactly (:func:`optimize.planar.nearest_point`), and the loop stops
-when no position is violated by more than ``tol * scale``. The finite optimum
-is a lower bound of the true optimum; :func:`optimize.bounds.push_inside` gives
-a feasible point and so an upper bound, their gap is the stated error bound.
+``min |O - T|`` over the continuous zone, in two stages on the design's
+:class:`optimize.zone.ZoneTable`:
+
+1. the zone sampled at the table's scan positions: starting from the target
+   point T, each side's most violated scan position is added as a half-plane
+   and the finite problem is solved exactly (:func:`optimize.planar.nearest_point`)
+   until no scan position is violated; each step costs a matrix product;
+2. the continuum: the local maxima of every constraint's signed distance over
+   every cam angle (:func:`optimize.zone.scan_peaks`: the scan, then Newton
+   steps on the continuous laws) that are violated are added, until none is
+   violated by more than ``tol * scale``. The last scan is the verification.
+
+The finite optimum is a lower bound of the true optimum;
+:func:`optimize.bounds.push_inside` gives a feasible point and so an upper
+bound, their gap is the stated error bound.
 """
 
 from __future__ import annotations
@@ -20,12 +27,9 @@ from laws.errors import InfeasibleError
 from optimize.bounds import push_inside
 from optimize.planar import nearest_point
 from optimize.result import Binding, CentreSolution
-from optimize.zone import max_violation, wedges
+from optimize.zone import scan_peaks, zone_table
 
-__all__ = ["nearest_exact", "COARSE_GRID", "FINE_GRID"]
-
-#: Positions per phase of the violation scan while iterating, and of the final verification.
-COARSE_GRID, FINE_GRID = 48, 384
+__all__ = ["nearest_exact"]
 
 
 def nearest_exact(
@@ -67,35 +71,43 @@ def nearest_exact(
         if first is None:
             raise InfeasibleError("follower.offset", "the fixed constraints have no common point")
         O = first[0]
-    peaks = []
-    grid = COARSE_GRID
-    for it in range(1, max_iter + 1):
-        peaks = max_violation(design, O, grid=grid)
-        v = peaks[0].value
-        if v <= atol:
-            if grid == FINE_GRID:
-                break
-            # converged on the coarse scan: verify on a fine one (narrow peaks)
-            grid = FINE_GRID
-            peaks = max_violation(design, O, grid=grid)
-            v = peaks[0].value
-            if v <= atol:
-                break
-        new = [p for p in peaks if p.value > atol]
-        pos: dict[int, list[tuple[float, int]]] = {}
-        for p in new:
-            pos.setdefault(p.phase, []).append((p.u, p.side))
-        w = wedges(design, {i: np.array([u for u, _ in us]) for i, us in pos.items()})
-        sides = np.array([k for us in pos.values() for _, k in us])
-        N = np.vstack([N, w.normals[np.arange(len(w)), sides]])
-        c = np.concatenate([c, w.offsets[np.arange(len(w)), sides]])
+    t = zone_table(design)
+    it = 0
+
+    def add(normals, offsets):
+        nonlocal N, c, O, it
+        it += 1
+        if it > max_iter:
+            raise InfeasibleError("solve", f"the exact method did not converge in {max_iter} iterations")
+        N = np.vstack([N, normals])
+        c = np.concatenate([c, offsets])
         res = nearest_point(T, N, c, feas_tol)
         if res is None:
             raise InfeasibleError("limits.pressure_angle", "no cam centre satisfies the pressure-angle limits")
         O = res[0]
-    else:
-        raise InfeasibleError("solve", f"the exact method did not converge in {max_iter} iterations")
-    v = peaks[0].value
+
+    if not t.phases:
+        return CentreSolution(centre=O, objective=float(np.linalg.norm(O - T)), method="exact", samples=None,
+                              error_bound=0.0, violation=-np.inf, iterations=0)
+    # 1. the zone sampled at the scan positions: each side's worst position
+    rows = np.arange(2 * len(t.phases))
+    nx, ny, off = (a.reshape(len(rows), -1) for a in (t.nx, t.ny, t.off))
+    while True:
+        g = t.grid_violation(O).reshape(len(rows), -1)
+        worst = np.argmax(g, axis=1)
+        bad = g[rows, worst] > atol
+        if not np.any(bad):
+            break
+        r, q = rows[bad], worst[bad]
+        add(np.stack([nx[r, q], ny[r, q]], axis=1), off[r, q])
+    # 2. the continuum: the violated local maxima of every side
+    while True:
+        pk = scan_peaks(t, O)
+        v = float(np.max(pk.value))
+        if v <= atol:
+            break
+        bad = pk.value > atol
+        add(np.stack([pk.nx[bad], pk.ny[bad]], axis=1), pk.offset[bad])
     feasible = push_inside(design, O, v)
     obj = float(np.linalg.norm(O - T))
     if feasible is None:
@@ -103,12 +115,14 @@ def nearest_exact(
     else:
         bound = float(abs(np.linalg.norm(feasible - T) - obj) + 4 * np.finfo(float).eps * (obj + scale))
     prog = design.program
+    near = np.nonzero(pk.value >= -1e-9 * scale)[0]
+    near = near[np.argsort(-pk.value[near], kind="stable")]
     binding = tuple(
-        Binding(p.phase, float(prog.starts[p.phase] + p.u * prog.phases[p.phase].angle), p.side)
-        for p in peaks
-        if p.value >= -1e-9 * scale
+        Binding(t.phases[pk.j[q]], float(prog.starts[t.phases[pk.j[q]]] + pk.u[q] * t.angle[pk.j[q]]),
+                int(pk.side[q]))
+        for q in near
     )
     return CentreSolution(
         centre=O, objective=obj, method="exact", samples=None, binding=binding,
-        error_bound=bound, violation=float(v), iterations=it,
+        error_bound=bound, violation=v, iterations=it,
     )

@@ -6,6 +6,8 @@ offsets meaning ``N @ x <= c``.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
 __all__ = ["nearest_point", "line_crossings", "clip_polygon", "feasible_mask"]
@@ -37,6 +39,12 @@ def line_crossings(N1, c1, N2, c2) -> tuple[np.ndarray, np.ndarray]:
     return np.stack([x, y], axis=-1), ok
 
 
+@lru_cache(maxsize=128)
+def _pairs(m: int) -> tuple[np.ndarray, np.ndarray]:
+    """Index pairs ``i < j`` of ``m`` lines, in :func:`numpy.triu_indices` order."""
+    return np.triu_indices(m, k=1)
+
+
 def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray] | None:
     """Exact nearest point to ``P`` of ``{x : N x <= c}`` (planar, small m).
 
@@ -51,23 +59,28 @@ def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> tu
         ``tol``); ``None`` when the half-planes have no common point.
     """
     P = np.asarray(P, dtype=float)
-    cands = [P[None, :]]
-    if len(N):
-        foot = P[None, :] - (N @ P - c)[:, None] * N
-        cands.append(foot)
-        pts, ok = line_crossings(N, c, N, c)
-        iu, ju = np.triu_indices(len(N), k=1)
-        good = ok[iu, ju]
-        cands.append(pts[iu[good], ju[good]])
-    X = np.concatenate(cands)
-    feas = feasible_mask(X, N, c, tol)
+    if len(N) == 0:
+        return P.copy(), np.zeros(0, int)
+    r = N @ P - c
+    if np.all(r <= tol):
+        return P.copy(), np.nonzero(np.abs(r) <= tol)[0]
+    # candidates: the feet of P on the lines, then the crossings of two lines (as line_crossings)
+    iu, ju = _pairs(len(N))
+    a, b = N[:, 0], N[:, 1]
+    det = a[iu] * b[ju] - b[iu] * a[ju]
+    ok = np.abs(det) > 1e-12
+    iu, ju, det = iu[ok], ju[ok], det[ok]
+    X = np.empty((len(N) + len(iu), 2))
+    X[: len(N)] = P - r[:, None] * N
+    X[len(N):, 0] = (c[iu] * b[ju] - b[iu] * c[ju]) / det
+    X[len(N):, 1] = (a[iu] * c[ju] - a[ju] * c[iu]) / det
+    feas = np.all(X @ N.T <= c + tol, axis=1)
     if not np.any(feas):
         return None
     X = X[feas]
-    k = np.argmin(np.sum((X - P) ** 2, axis=1))
-    x = X[k]
-    active = np.nonzero(np.abs(N @ x - c) <= tol)[0] if len(N) else np.zeros(0, int)
-    return x, active
+    d = X - P
+    x = X[np.argmin(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1])]
+    return x, np.nonzero(np.abs(N @ x - c) <= tol)[0]
 
 
 def clip_polygon(N: np.ndarray, c: np.ndarray, box: tuple[float, float, float, float]) -> np.ndarray:

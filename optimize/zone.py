@@ -21,28 +21,55 @@ whose half-plane shrinks when D moves outward along the lever (the seed's t-t
 line of the rise), side "t1" the other (seed's t1-t1). The safety factor K_C
 (seed 3.26) moves D along the lever by ``(K_C - 1) l`` for side t and by
 ``-(1 - 1/K_C) l`` for side t1, shifting both lines into the zone.
+
+The follower as a rigid body
+----------------------------
+Both followers carry their geometry rigidly: at displacement ``s`` the roller
+centre A, the tangent ``T = dA/ds`` and the lever are those at ``s = 0`` turned
+by ``omega s`` about the origin and moved by ``tau s`` (rocker: ``omega`` = its
+sense, ``tau = 0``, the origin is the pivot; translating: ``omega = 0``,
+``tau`` = the unit vector of the rise). With ``V = s' T`` the wedge of a
+position is therefore the wedge at ``s = 0`` with the apex term ``s'`` put in,
+moved rigidly:
+
+    n(s) = R(omega s) n0,
+    D(s) = R(omega s) (P0 + s' Q0) + tau s,   P0 = A0 + k lever0,  Q0 = eps k x T0,
+
+(``k`` the K_C shift of the side), and the signed distance of a centre O
+outside a side is
+
+    h = n . O - (b0 + b1 s' + bt s),   b0 = n0 . P0,  b1 = n0 . Q0,  bt = n0 . tau.
+
+With ``p = n . O`` and ``m = (k x n) . O`` its derivatives along the cam angle
+are (``s', s'', s'''`` from the laws)
+
+    h'  = omega s' m - b1 s'' - bt s',
+    h'' = omega (s'' m - omega s'^2 p) - b1 s''' - bt s'',
+
+which :func:`max_violation` uses to locate the largest violation by safeguarded
+Newton steps. :func:`_side_constants` is the one place of the wedge geometry;
+everything else here is built on these three formulas.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
 from cams.design import CamDesign
+from cams.follower import Rocker
 
-__all__ = ["Wedges", "wedges", "phase_wedges", "sample_wedges", "max_violation", "ViolationPeak"]
+__all__ = ["Wedges", "wedges", "phase_wedges", "sample_wedges", "max_violation", "ViolationPeak", "ZoneTable",
+           "zone_table", "Peaks", "scan_peaks", "GRID"]
 
-
-def cross_k(v: np.ndarray) -> np.ndarray:
-    """``k x v`` for planar vectors (last axis of size 2): (x, y) -> (-y, x)."""
-    return np.stack([-v[..., 1], v[..., 0]], axis=-1)
-
-
-def rotate(v: np.ndarray, angle: np.ndarray) -> np.ndarray:
-    """Rotate planar vectors ``v`` by ``angle`` (radians, counter-clockwise)."""
-    c, s = np.cos(angle), np.sin(angle)
-    return np.stack([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]], axis=-1)
+#: Even steps per phase of the violation scan (:class:`ZoneTable`).
+GRID = 384
+#: Half-width (in u) of the pair of scan positions put on each side of a law's breakpoint.
+_BREAK_GAP = 1e-12
+#: Scan steps narrower than this (in u) are not refined.
+_NARROW = 1e-10
 
 
 @dataclass(frozen=True)
@@ -85,53 +112,80 @@ class Wedges:
         return self.normals @ np.asarray(centre, dtype=float) - self.offsets
 
 
+# -- the wedge geometry ------------------------------------------------------------------------
+
+def _rigid_motion(design: CamDesign) -> tuple[float, np.ndarray]:
+    """``(omega, tau)``: the follower's geometry at ``s`` is that at 0 turned by ``omega s``, moved by ``tau s``."""
+    f = design.follower
+    if isinstance(f, Rocker):
+        return float(f.sense), np.zeros(2)
+    return 0.0, np.array([0.0, 1.0])
+
+
+def _side_constants(design: CamDesign, limit: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Wedge of the follower at ``s = 0``: ``n0 (2, 2)``, ``P0 (2, 2)``, ``Q0 (2,)`` (sides t, t1).
+
+    ``n0[k]`` is the unit outward normal of side k, ``P0[k] + s' Q0`` its apex
+    D (with the K_C shift) at analogue velocity ``s'``; see the module notes.
+    """
+    f = design.follower
+    A, T, lever = f.frame(np.float64(0.0))
+    # normals: the wedge axis -e turned by +-(90 deg + limit)
+    ax, ay = -T / np.hypot(T[0], T[1])
+    cs, sn = -np.sin(limit), np.cos(limit)
+    na = np.array([cs * ax - sn * ay, sn * ax + cs * ay])
+    nb = np.array([cs * ax + sn * ay, -sn * ax + cs * ay])
+    # side t: the half-plane that shrinks when D moves outward along the lever
+    n0 = np.array([na, nb]) if na @ lever < 0 else np.array([nb, na])
+    K = design.limits.safety_factor
+    ref = getattr(f, "arm", 0.0)
+    shift = np.array([(K - 1.0) * ref, -(1.0 - 1.0 / K) * ref])
+    P0 = A + shift[:, None] * lever
+    Q0 = design.cam_sense * np.array([-T[1], T[0]])
+    return n0, P0, Q0
+
+
+def _turn(c: np.ndarray, s: np.ndarray, x, y) -> tuple[np.ndarray, np.ndarray]:
+    """Components of the vector ``(x, y)`` turned by the angle whose cosine and sine are ``c``, ``s``."""
+    return c * x - s * y, s * x + c * y
+
+
 def phase_wedges(design: CamDesign, i: int, limit: float, u: np.ndarray) -> Wedges:
     """Wedges of phase ``i`` at normalized positions ``u`` (one-sided at its ends)."""
-    f = design.follower
     u = np.asarray(u, dtype=float)
     m = design.program.evaluate_phase(i, u)
-    A, T, lever = f.frame(m.s)
-    Tx, Ty = T[:, 0], T[:, 1]
-    inv = 1.0 / np.sqrt(Tx * Tx + Ty * Ty)
-    # D = A + eps k x V, V = ds T
-    g = design.cam_sense * m.ds
-    Dx = A[:, 0] - g * Ty
-    Dy = A[:, 1] + g * Tx
-    # normals: the wedge axis -e turned by +-(90 deg + limit)
-    cs, sn = -np.sin(limit), np.cos(limit)
-    ax, ay = -Tx * inv, -Ty * inv
-    nax, nay = cs * ax - sn * ay, sn * ax + cs * ay
-    nbx, nby = cs * ax + sn * ay, -sn * ax + cs * ay
-    lx, ly = lever[:, 0], lever[:, 1]
-    # side t: the half-plane that shrinks when D moves outward along the lever
-    a_is_t = (nax * lx + nay * ly) < 0
+    omega, tau = _rigid_motion(design)
+    n0, P0, Q0 = _side_constants(design, limit)
+    c, sn = np.cos(omega * m.s)[:, None], np.sin(omega * m.s)[:, None]
     n = len(u)
     normals = np.empty((n, 2, 2))
-    normals[:, 0, 0] = np.where(a_is_t, nax, nbx)
-    normals[:, 0, 1] = np.where(a_is_t, nay, nby)
-    normals[:, 1, 0] = np.where(a_is_t, nbx, nax)
-    normals[:, 1, 1] = np.where(a_is_t, nby, nay)
+    normals[..., 0], normals[..., 1] = _turn(c, sn, n0[:, 0], n0[:, 1])
     apex = np.empty((n, 2, 2))
-    K = design.limits.safety_factor
-    if K != 1.0:
-        ref = getattr(f, "arm", 0.0)
-        kt, kt1 = (K - 1.0) * ref, -(1.0 - 1.0 / K) * ref
-        apex[:, 0, 0], apex[:, 0, 1] = Dx + kt * lx, Dy + kt * ly
-        apex[:, 1, 0], apex[:, 1, 1] = Dx + kt1 * lx, Dy + kt1 * ly
-    else:
-        apex[:, 0, 0] = apex[:, 1, 0] = Dx
-        apex[:, 0, 1] = apex[:, 1, 1] = Dy
-    offsets = normals[:, :, 0] * apex[:, :, 0] + normals[:, :, 1] * apex[:, :, 1]
-    p = design.program.phases[i]
-    phi = float(sum(q.angle for q in design.program.phases[:i])) + u * p.angle
-    return Wedges(
-        phase=np.full(n, i),
-        phi=phi,
-        normals=normals,
-        offsets=offsets,
-        apex=apex,
-        limit=np.full(n, float(limit)),
-    )
+    dx = P0[:, 0] + m.ds[:, None] * Q0[0]
+    dy = P0[:, 1] + m.ds[:, None] * Q0[1]
+    ex, ey = _turn(c, sn, dx, dy)
+    apex[..., 0] = ex + tau[0] * m.s[:, None]
+    apex[..., 1] = ey + tau[1] * m.s[:, None]
+    b0 = np.einsum("ki,ki->k", n0, P0)
+    offsets = _offset(b0, n0 @ Q0, n0 @ tau, m.s[:, None], m.ds[:, None])
+    p = design.program
+    phi = p.starts[i] + u * p.phases[i].angle
+    return Wedges(phase=np.full(n, i), phi=phi, normals=normals, offsets=offsets, apex=apex,
+                  limit=np.full(n, float(limit)))
+
+
+def _offset(b0, b1, bt, s, ds):
+    """``n . D``: the offset of a side's half-plane at displacement ``s`` and analogue velocity ``ds``."""
+    return b0 + b1 * ds + bt * s
+
+
+def _slopes(omega, O, nx, ny, p, b1, bt, ds, d2s, d3s=None):
+    """``h'`` and, given ``s'''``, also ``h''`` along the cam angle (module notes); ``p = n . O``."""
+    m = nx * O[1] - ny * O[0]
+    d1 = omega * ds * m - b1 * d2s - bt * ds
+    if d3s is None:
+        return d1
+    return d1, omega * (d2s * m - omega * ds * ds * p) - b1 * d3s - bt * d2s
 
 
 def _concat(parts: list[Wedges]) -> Wedges:
@@ -150,6 +204,226 @@ def sample_wedges(design: CamDesign, samples: int) -> Wedges:
     return wedges(design, {i: u for i, _ in design.constrained_phases()})
 
 
+# -- the continuous violation ------------------------------------------------------------------
+
+@dataclass(frozen=True, eq=False)
+class ZoneTable:
+    """What the violation scan needs of one design, computed once.
+
+    Per constrained phase ``j`` (program phase ``phases[j]``) and side ``k``:
+    the constants of the module notes, and the motion and the half-planes on
+    the scan positions ``u``.
+
+    Attributes
+    ----------
+    phases : tuple of int
+        Program indices of the constrained phases.
+    limit : ndarray, shape (P,)
+        Their allowable pressure angles, radians.
+    omega : float
+        Turn of the follower per unit displacement (rocker: its sense; 0).
+    n0 : ndarray, shape (P, 2, 2)
+        Unit normals at ``s = 0``.
+    b0, b1, bt : ndarray, shape (P, 2)
+        Offset ``b0 + b1 s' + bt s`` of each side's half-plane.
+    angle : ndarray, shape (P,)
+        Cam angle of each phase (radians).
+    u : ndarray, shape (M,)
+        Scan positions: ``grid`` even steps, geometric steps into both ends
+        (laws start from rest, so a peak can sit well inside the first step)
+        and a pair at each side of every law breakpoint.
+    nx, ny, off : ndarray, shape (P, 2, M)
+        Half-planes ``nx x + ny y <= off`` at the scan positions.
+    ds, d2s : ndarray, shape (P, 1, M)
+        ``s'`` and ``s''`` there (per radian of cam angle).
+    scale : float
+        The design's length scale.
+    """
+
+    design: CamDesign
+    phases: tuple[int, ...]
+    limit: np.ndarray
+    omega: float
+    n0: np.ndarray
+    b0: np.ndarray
+    b1: np.ndarray
+    bt: np.ndarray
+    angle: np.ndarray
+    u: np.ndarray
+    nx: np.ndarray
+    ny: np.ndarray
+    off: np.ndarray
+    ds: np.ndarray
+    d2s: np.ndarray
+    scale: float
+
+    def motion(self, j: int, u: np.ndarray) -> tuple[np.ndarray, ...]:
+        """``s, s', s'', s'''`` of constrained phase ``j`` at ``u``."""
+        m = self.design.program.evaluate_phase(self.phases[j], u)
+        return m.s, m.ds, m.d2s, m.d3s
+
+    def grid_violation(self, centre: np.ndarray) -> np.ndarray:
+        """Signed distances (P, 2, M) of ``centre`` outside the half-planes at the scan positions."""
+        return self.nx * centre[0] + self.ny * centre[1] - self.off
+
+
+@lru_cache(maxsize=8)
+def _even_and_ends(grid: int) -> np.ndarray:
+    """``grid`` even steps and 8 geometric steps into each end (from 1e-7 to half a step)."""
+    ends = np.geomspace(1e-7, 0.5 / grid, 8)
+    u = np.unique(np.concatenate([np.linspace(0.0, 1.0, grid + 1), ends, 1.0 - ends]))
+    u.setflags(write=False)
+    return u
+
+
+def _scan_positions(design: CamDesign, grid: int) -> np.ndarray:
+    u = _even_and_ends(grid)
+    bps = {b for i, _ in design.constrained_phases() for b in design.program.phases[i].law.breakpoints}
+    if not bps:
+        return u
+    bps = np.array(sorted(bps))
+    return np.unique(np.concatenate([u, bps, bps - _BREAK_GAP, bps + _BREAK_GAP]))
+
+
+def zone_table(design: CamDesign, grid: int = GRID) -> ZoneTable:
+    """The :class:`ZoneTable` of ``design`` with ``grid`` even steps per phase (cached per design)."""
+    return _zone_table(design, int(grid))
+
+
+@lru_cache(maxsize=32)
+def _zone_table(design: CamDesign, grid: int) -> ZoneTable:
+    phases = design.constrained_phases()
+    P = len(phases)
+    omega, tau = _rigid_motion(design)
+    n0 = np.zeros((P, 2, 2))
+    b0, b1, bt = np.zeros((P, 2)), np.zeros((P, 2)), np.zeros((P, 2))
+    for j, (_, lim) in enumerate(phases):
+        n0[j], P0, Q0 = _side_constants(design, lim)
+        b0[j] = np.einsum("ki,ki->k", n0[j], P0)
+        b1[j], bt[j] = n0[j] @ Q0, n0[j] @ tau
+    u = _scan_positions(design, grid)
+    M = len(u)
+    mo = np.zeros((4, P, 1, M))
+    for j, (i, _) in enumerate(phases):
+        m = design.program.evaluate_phase(i, u)
+        mo[:, j, 0] = m.s, m.ds, m.d2s, m.d3s
+    s, ds, d2s, d3s = mo
+    c, sn = np.cos(omega * s), np.sin(omega * s)
+    B0, B1, BT = b0[..., None], b1[..., None], bt[..., None]
+    nx, ny = _turn(c, sn, n0[..., 0, None], n0[..., 1, None])
+    return ZoneTable(
+        design=design, phases=tuple(i for i, _ in phases), limit=np.array([lim for _, lim in phases], float),
+        omega=omega, n0=n0, b0=b0, b1=b1, bt=bt,
+        angle=np.array([design.program.phases[i].angle for i, _ in phases]), u=u,
+        nx=nx, ny=ny, off=_offset(B0, B1, BT, s, ds), ds=ds, d2s=d2s, scale=float(design.scale),
+    )
+
+
+@dataclass(frozen=True)
+class Peaks:
+    """Local maxima of every side's signed distance over the continuum, as arrays.
+
+    ``j`` constrained-phase index (into :attr:`ZoneTable.phases`), ``side`` 0
+    (t) or 1 (t1), ``u`` position, ``value`` signed distance, and the
+    half-plane ``nx x + ny y <= offset`` there.
+    """
+
+    j: np.ndarray
+    side: np.ndarray
+    u: np.ndarray
+    value: np.ndarray
+    nx: np.ndarray
+    ny: np.ndarray
+    offset: np.ndarray
+
+
+def _refine(t: ZoneTable, O: np.ndarray, j, k, i, i1, h, h1, iters: int) -> Peaks:
+    """Largest value of each side ``(j, k)`` between the scan positions ``i`` and ``i1``.
+
+    Where ``i1 > i`` the slope turns from + to - in between: Newton steps on
+    ``h' = 0`` with the analytic ``h''``, safeguarded: the bracket shrinks by
+    the sign of ``h'`` at every new point, and a step that leaves it, or one
+    where ``h`` is not concave, is replaced by bisection. All brackets are
+    stepped together (one law evaluation per phase a step); a bracket stops
+    when the value still to gain, ``h'^2 / (2 |h''|)``, is below round-off.
+    The largest value seen, the scan's included, is kept, so the result can
+    only rise. Where ``i1 == i`` the scan position is the maximum.
+    """
+    omega = t.omega
+    u = t.u
+    a, b = u[i], u[i1]
+    ha, hb = h[j, k, i], h[j, k, i1]
+    ib = np.where(ha >= hb, i, i1)
+    best_u, best_v = u[ib], np.maximum(ha, hb)
+    best_x, best_y, best_c = t.nx[j, k, ib], t.ny[j, k, ib], t.off[j, k, ib]
+    # a step narrower than this (the pairs around breakpoints) keeps its ends' values: a smooth
+    # maximum inside would add |h''| w^2 / 8, below round-off; a corner sits at an end
+    active = b - a > _NARROW
+    if active.any():
+        n0x, n0y = t.n0[j, k, 0], t.n0[j, k, 1]
+        b0, b1, bt = t.b0[j, k], t.b1[j, k], t.bt[j, k]
+        ang = t.angle[j]
+        # start where the slope, interpolated linearly between the ends (da > 0 > db), vanishes
+        da, db = h1[j, k, i], h1[j, k, i1]
+        x = a + (b - a) * (da / np.where(active, da - db, 1.0))
+        cuts = np.searchsorted(j, np.arange(len(t.phases) + 1)).tolist()  # candidates come sorted by phase
+        tol_v = 1e-15 * t.scale
+        mo = np.empty((4, len(a)))
+        for _ in range(iters):
+            for jj in range(len(t.phases)):
+                lo, hi = cuts[jj], cuts[jj + 1]
+                if hi > lo:
+                    mo[:, lo:hi] = t.motion(jj, x[lo:hi])
+            s, ds, d2s, d3s = mo
+            if omega:
+                nx, ny = _turn(np.cos(omega * s), np.sin(omega * s), n0x, n0y)
+            else:
+                nx, ny = n0x, n0y
+            p = nx * O[0] + ny * O[1]
+            off = _offset(b0, b1, bt, s, ds)
+            hx = p - off
+            d1, d2 = _slopes(omega, O, nx, ny, p, b1, bt, ds, d2s, d3s)
+            better = active & (hx > best_v)
+            for dst, src in ((best_u, x), (best_v, hx), (best_x, nx), (best_y, ny), (best_c, off)):
+                np.copyto(dst, src, where=better)
+            up = d1 > 0
+            np.copyto(a, x, where=up)
+            np.copyto(b, x, where=~up)
+            concave = d2 < 0
+            dphi = -d1 / np.where(concave, d2, -1.0)
+            active &= ~(concave & (0.5 * d1 * dphi <= tol_v))
+            if not active.any():
+                break
+            xn = x + dphi / ang
+            x = np.where(concave & (xn > a) & (xn < b), xn, 0.5 * (a + b))
+    return Peaks(j=j, side=k, u=best_u, value=best_v, nx=best_x, ny=best_y, offset=best_c)
+
+
+def scan_peaks(t: ZoneTable, centre: np.ndarray, *, iters: int = 8) -> Peaks:
+    """Local maxima of every side's signed distance over the continuum, for the centre ``centre``.
+
+    The signed distance and its slope are evaluated on the table's scan
+    positions; a local maximum is a step where the slope turns from positive
+    to negative (refined by :func:`_refine`), or a scan position that is a
+    local maximum of the values where the slope is zero or, at an end, points
+    outwards (exact values there).
+    """
+    O = np.asarray(centre, dtype=float)
+    p = t.nx * O[0] + t.ny * O[1]
+    h = p - t.off
+    h1 = _slopes(t.omega, O, t.nx, t.ny, p, t.b1[..., None], t.bt[..., None], t.ds, t.d2s)
+    up, down = h1 > 0, h1 < 0
+    point = ~up & ~down
+    point[..., 0] |= down[..., 0]
+    point[..., -1] |= up[..., -1]
+    point[..., 1:] &= h[..., 1:] >= h[..., :-1]
+    point[..., :-1] &= h[..., :-1] >= h[..., 1:]
+    cell = np.zeros_like(up)
+    cell[..., :-1] = up[..., :-1] & down[..., 1:]
+    j, k, i = np.nonzero(point | cell)
+    return _refine(t, O, j, k, i, np.where(cell[j, k, i], i + 1, i), h, h1, iters)
+
+
 @dataclass(frozen=True)
 class ViolationPeak:
     """A local maximum of a side's signed distance over a phase."""
@@ -160,28 +434,15 @@ class ViolationPeak:
     value: float
 
 
-def _violation_mixed(design: CamDesign, phases: list[tuple[int, float]], which: np.ndarray, u: np.ndarray,
-                     O: np.ndarray) -> np.ndarray:
-    """Signed distances (n, 2) at positions ``u`` of constrained phases ``phases[which]``."""
-    out = np.empty((len(u), 2))
-    for j, (i, lim) in enumerate(phases):
-        m = which == j
-        if np.any(m):
-            out[m] = phase_wedges(design, i, lim, u[m]).violation(O)
-    return out
-
-
-def max_violation(
-    design: CamDesign, centre: np.ndarray, *, grid: int = 128, iters: int = 5
-) -> list[ViolationPeak]:
+def max_violation(design: CamDesign, centre: np.ndarray, *, grid: int = GRID, iters: int = 8) -> list[ViolationPeak]:
     """Local maxima over the continuum of every constraint's signed distance.
 
     For every constrained phase and both sides, the signed distance
-    ``n(phi) . O - n(phi) . D(phi)`` is sampled on ``grid + 1`` positions; each
-    local maximum (ends included) is refined by successive parabolic
-    interpolation on a shrinking three-point stencil, vectorized over all peaks
-    of all phases; it converges superlinearly on the smooth laws. The best value
-    seen is kept, so refinement can only raise a peak.
+    ``n(phi) . O - n(phi) . D(phi)`` and its slope are scanned on ``grid``
+    even steps (plus steps into the ends and around law breakpoints); each
+    local maximum is refined by safeguarded Newton steps with the analytic
+    second derivative (:func:`scan_peaks`), vectorized over all peaks of all
+    phases; it converges quadratically on the smooth laws.
 
     Returns
     -------
@@ -189,59 +450,9 @@ def max_violation(
         Sorted by decreasing value; the first one is the largest violation
         (positive) or the smallest slack (negative).
     """
-    O = np.asarray(centre, dtype=float)
-    phases = design.constrained_phases()
-    if not phases:
+    t = zone_table(design, grid)
+    if not t.phases:
         return [ViolationPeak(-1, 0.0, 0, -np.inf)]
-    # an even grid plus geometric steps into both ends, where laws start from rest
-    # and a peak can sit much closer to the end than one cell
-    ends = np.geomspace(1e-7, 0.5 / grid, 8)
-    u = np.unique(np.concatenate([np.linspace(0.0, 1.0, grid + 1), ends, 1.0 - ends]))
-    m_u = len(u)
-    gaps = np.diff(u)
-    P = len(phases)
-    which_g = np.repeat(np.arange(P), m_u)
-    h = _violation_mixed(design, phases, which_g, np.tile(u, P), O).reshape(P, m_u, 2)
-    y = np.moveaxis(h, 2, 1)  # (P, 2, grid+1)
-    pad = np.full(y.shape[:2] + (1,), -np.inf)
-    left = np.concatenate([pad, y[..., :-1]], axis=2)
-    right = np.concatenate([y[..., 1:], pad], axis=2)
-    pj, side, idx = np.nonzero((y >= left) & (y >= right))
-    n = len(idx)
-    rows = np.arange(n)
-    best_u = u[idx]
-    best_v = y[pj, side, idx]
-    c = best_u.copy()
-    # first stencil: the smaller neighbouring gap of each grid peak
-    left_gap = np.where(idx > 0, gaps[np.maximum(idx - 1, 0)], np.inf)
-    right_gap = np.where(idx < m_u - 1, gaps[np.minimum(idx, m_u - 2)], np.inf)
-    step0 = np.minimum(left_gap, right_gap)
-    step = step0.copy()
-    for _ in range(iters):
-        lo = np.clip(c - step, 0.0, 1.0)
-        hi = np.clip(c + step, 0.0, 1.0)
-        vv = _violation_mixed(design, phases, np.tile(pj, 3), np.concatenate([lo, c, hi]), O)
-        flo, fc, fhi = vv[:n][rows, side], vv[n:2 * n][rows, side], vv[2 * n:][rows, side]
-        for x, fx in ((lo, flo), (c, fc), (hi, fhi)):
-            better = fx > best_v
-            best_u = np.where(better, x, best_u)
-            best_v = np.where(better, fx, best_v)
-        # parabola through (lo, flo), (c, fc), (hi, fhi): vertex offset from c
-        a1, a2 = lo - c, hi - c
-        d1, d2 = flo - fc, fhi - fc
-        den = a1 * a2 * (a1 - a2)
-        ok = den != 0
-        sden = np.where(ok, den, 1.0)
-        A = np.where(ok, (d1 * a2 - d2 * a1) / sden, 0.0)
-        B = np.where(ok, (d2 * a1 * a1 - d1 * a2 * a2) / sden, 0.0)
-        concave = A < 0
-        shift = np.where(concave, -B / (2 * np.where(concave, A, -1.0)), 0.0)
-        shift = np.clip(shift, -step, step)
-        c = np.where(concave, np.clip(best_u + (c + shift - best_u), 0.0, 1.0), best_u)
-        step = np.clip(np.abs(shift) * 4.0, step * 1e-4, step0)
-    vv = _violation_mixed(design, phases, pj, c, O)[rows, side]
-    better = vv > best_v
-    best_u = np.where(better, c, best_u)
-    best_v = np.where(better, vv, best_v)
-    order = np.argsort(-best_v, kind="stable")
-    return [ViolationPeak(phases[pj[k]][0], float(best_u[k]), int(side[k]), float(best_v[k])) for k in order]
+    pk = scan_peaks(t, centre, iters=iters)
+    order = np.argsort(-pk.value, kind="stable")
+    return [ViolationPeak(t.phases[pk.j[q]], float(pk.u[q]), int(pk.side[q]), float(pk.value[q])) for q in order]
