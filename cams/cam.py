@@ -72,6 +72,17 @@ class Cam:
 
         return check_profile(self.design, self.solution.centre, options=self.options, profile=self.profile)
 
+    @cached_property
+    def forces(self):
+        """Spring, contact force, torque and jump speed (:class:`cams.camforces.DesignForces`).
+
+        ``None`` without a ``[dynamics]`` table, for a form-closed cam or
+        without a cam speed (see :func:`cams.camforces.design_forces`).
+        """
+        from cams.camforces import design_forces
+
+        return design_forces(self.design, self.solution.centre)[0]
+
     def motion(self, phi):
         """Displacement and derivatives at cam angles ``phi`` (radians); no solve."""
         return self.design.program.evaluate(phi)

@@ -71,6 +71,8 @@ __all__ = [
     "dynamics_from_dict",
     "DYNAMICS_KEYS",
     "LENGTH_UNITS",
+    "DesignForces",
+    "design_forces",
 ]
 
 TWO_PI = 2.0 * np.pi
@@ -638,3 +640,44 @@ def dynamics_from_dict(table: dict, units: str = "mm") -> DynamicsSpec:
         max_spring_force=v.get("max_spring_force"),
     )
     return DynamicsSpec(dyn, margin, rate)
+
+
+@dataclass(frozen=True)
+class DesignForces:
+    """The forces of a sized, force-closed cam from its design file's ``[dynamics]``.
+
+    ``spring`` is the given one or the one chosen for the contact margin at
+    the design's speed; ``forces`` the contact force and torque over a turn at
+    that speed; ``jump`` the speed at which the follower would leave the cam.
+    """
+
+    spring: Spring
+    forces: CamForces
+    jump: JumpSpeed
+
+    def to_dict(self) -> dict:
+        """JSON-ready: the spring (N/m and N, or N m/rad and N m), force extremes, jump speed."""
+        return {"spring": {"rate": self.spring.rate, "preload": self.spring.preload},
+                **self.forces.to_dict(), "jump_rpm": self.jump.rpm,
+                "jump_at_deg": float(np.degrees(self.jump.phi))}
+
+
+def design_forces(design: CamDesign, centre) -> tuple[DesignForces | None, str | None]:
+    """Spring, cam forces and jump speed of a design with ``[dynamics]``, or why there are none.
+
+    Returns
+    -------
+    (DesignForces or None, note or None)
+        ``None`` with a note when the design has no ``[dynamics]``, is form
+        closed (no closing spring) or has no speed.
+    """
+    spec = design.extra.get("dynamics") if isinstance(design.extra, dict) else None
+    if spec is None:
+        return None, None
+    if design.limits.closure != "force":
+        return None, "form-closed cam: no closing spring to size"
+    if not design.rpm:
+        return None, "[dynamics] needs cam.rpm for the forces"
+    spring = spec.spring(design)
+    dyn = spec.dynamics.with_spring(spring)
+    return DesignForces(spring, cam_forces(design, centre, dyn), jump_speed(design, dyn)), None

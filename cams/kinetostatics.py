@@ -1223,7 +1223,7 @@ def machine_forces(spec, centre=None) -> MachineForces:
     -------
     MachineForces
     """
-    from cams.camforces import cam_forces, jump_speed
+    from cams.camforces import design_forces
 
     notes = []
     lk = fw = cf = spring = jump = None
@@ -1235,15 +1235,12 @@ def machine_forces(spec, centre=None) -> MachineForces:
             fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation)
     else:
         notes.append("no [forces] table: no linkage forces")
-    dyn = spec.cam.extra.get("dynamics")
-    if dyn is not None:
-        if spec.cam.limits.closure != "force":
-            notes.append("form-closed cam: no closing spring to size")
-        elif centre is None:
-            notes.append("no cam centre: no cam forces")
-        else:
-            spring = dyn.spring(spec.cam)
-            d = dyn.dynamics.with_spring(spring)
-            cf = cam_forces(spec.cam, centre, d)
-            jump = jump_speed(spec.cam, d)
+    if spec.cam.extra.get("dynamics") is not None and centre is None:
+        notes.append("no cam centre: no cam forces")
+    elif centre is not None:
+        df, note = design_forces(spec.cam, centre)
+        if note:
+            notes.append(note)
+        if df is not None:
+            cf, spring, jump = df.forces, df.spring, df.jump
     return MachineForces(lk, fw, cf, spring, jump, tuple(notes))

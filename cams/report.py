@@ -71,7 +71,20 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         where = "" if at is None else f" at {at:.3f}°"
         lim_s = "" if cd.get("limit") is None else f" (limit {cd['limit']:.6g})"
         checks.append((cd["name"], f"{'pass' if cd['passed'] else 'FAIL'}: {val}{where}{lim_s}"))
-    return [("Inputs", inputs), ("Results", results), ("Checks", checks)]
+    sections = [("Inputs", inputs), ("Results", results), ("Checks", checks)]
+    df = cam.forces if "dynamics" in d.extra else None
+    if df is not None:
+        fo = df.to_dict()
+        sections.append(("Forces at the cam", [
+            ("closing spring", f"rate {fo['spring']['rate']:.6g}, preload {fo['spring']['preload']:.6g} (SI)"),
+            ("cam speed", f"{fo['rpm']:.6g} rpm"),
+            ("largest contact force", f"{fo['max_contact_force']:.6g} N at {fo['max_contact_at_deg']:.2f}°"),
+            ("smallest contact force", f"{fo['min_contact_force']:.6g} N"),
+            ("largest camshaft torque", f"{fo['max_torque']:.6g} N m at {fo['max_torque_at_deg']:.2f}°"),
+            ("jump speed", f"{fo['jump_rpm']:.6g} rpm (first at {fo['jump_at_deg']:.2f}°)"),
+            ("contact lost / jammed", f"{'yes' if fo['contact_lost'] else 'no'} / {'yes' if fo['jammed'] else 'no'}"),
+        ]))
+    return sections
 
 
 def _figures(cam):

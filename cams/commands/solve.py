@@ -33,6 +33,15 @@ def print_summary(rep: dict) -> None:
     eb = rep["error_bound"]
     print(f"  error bound: {'not stated by this method' if eb is None else f'{eb:.3g} {unit}'}; "
           f"verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    fo = rep.get("forces")
+    if fo:
+        sp = fo["spring"]
+        print(f"  spring: rate {sp['rate']:.6g}, preload {sp['preload']:.6g} (SI: N/m and N, or N m/rad and N m)")
+        print(f"  contact force: max {fo['max_contact_force']:.6g} at {fo['max_contact_at_deg']:.2f} deg, "
+              f"min {fo['min_contact_force']:.6g}; camshaft torque max {fo['max_torque']:.6g} N m "
+              f"at {fo['max_torque_at_deg']:.2f} deg")
+        print(f"  follower jumps above {fo['jump_rpm']:.6g} rpm; contact lost: {'YES' if fo['contact_lost'] else 'no'}; "
+              f"jammed: {'YES' if fo['jammed'] else 'no'} (jamming limit {fo['jamming_limit_deg']:.2f} deg)")
     for n in rep["notes"]:
         print(f"  note: {n}")
 
@@ -44,11 +53,23 @@ def run(args) -> int:
     design = load_design(args.file)
     result = solve(design, method=args.method, objective=design.extra.get("objective", "R0"))
     rep = result.to_dict()
+    ok = result.verified
+    forces = None
+    if "dynamics" in design.extra:
+        from cams.camforces import design_forces
+
+        df, note = design_forces(design, result.centre)
+        if note:
+            rep["notes"].append(note)
+        if df is not None:
+            forces = df.to_dict()
+            ok = ok and df.forces.ok
+    rep["forces"] = forces
     if args.json:
         print(json.dumps(rep, indent=2))
     else:
         print_summary(rep)
-    return EXIT_OK if result.verified else EXIT_CHECK_FAILED
+    return EXIT_OK if ok else EXIT_CHECK_FAILED
 
 
 

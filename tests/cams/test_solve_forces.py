@@ -1,0 +1,36 @@
+"""Forces at the cam through ``cams solve`` and the report: the same numbers as the API."""
+
+import json
+
+import pytest
+
+from cams.cam import Cam
+from cams.camforces import cam_forces, jump_speed
+from cams.cli import main
+from cams.report import report_sections
+from tests.conftest import EXAMPLES
+
+FILE = EXAMPLES / "slotting_feed_cam.toml"
+
+
+def test_solve_json_reports_the_forces(capsys):
+    assert main(["solve", str(FILE), "--json"]) == 0
+    fo = json.loads(capsys.readouterr().out)["forces"]
+    cam = Cam.from_file(FILE)
+    spec = cam.design.extra["dynamics"]
+    dyn = spec.dynamics.with_spring(spec.spring(cam.design))
+    cf = cam_forces(cam.design, cam.solution.centre, dyn)
+    assert fo["max_contact_force"] == pytest.approx(float(cf.contact.max()), rel=1e-12)
+    assert fo["jump_rpm"] == pytest.approx(jump_speed(cam.design, dyn).rpm, rel=1e-12)
+    assert fo["jump_rpm"] > 60 and not fo["contact_lost"] and not fo["jammed"]
+
+
+def test_no_dynamics_no_forces(capsys):
+    assert main(["solve", str(EXAMPLES / "rocker_force.toml"), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["forces"] is None
+
+
+def test_report_has_a_forces_page():
+    titles = [t for t, _ in report_sections(Cam.from_file(FILE))]
+    assert titles[-1] == "Forces at the cam"
+    assert "Forces at the cam" not in [t for t, _ in report_sections(Cam.from_file(EXAMPLES / "rocker_force.toml"))]
