@@ -276,7 +276,7 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
         f"the minimum base radius vanishes (R0 = {R0:.3g}, {R0 / travel:.2g} of the roller's travel; the "
         "pressure angle cannot be verified at this size): set limits.min_base_radius to size a buildable cam",
     )
-    if R0 < 1e-12 * travel:
+    if R0 < 1e-9 * travel:
         raise vanishing
     margin = -G(centre)
     pressure = check_pressure(design, centre)

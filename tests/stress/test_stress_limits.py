@@ -151,22 +151,13 @@ def test_empty_zone_form_closure(method, swing, limit):
     _judge_infeasible(out, d)
 
 
-BUG_FAR_ZONE = (
-    "BUG: exact method refuses a feasible design near the edge of feasibility: rocker arm 125, knife "
-    "edge, swing 83.8 deg, cycloidal rise 150 + cycloidal return 210 (no dwell), limit 42 deg, force "
-    "closure -> InfeasibleError 'limits.pressure_angle: no cam centre satisfies the pressure-angle "
-    "limits', yet a centre with slack 125 mm on every constraint exists (zone witness, pressure.ok) and "
-    "nearest_exact(tol=1e-10) gives R0 = 694.157. Cause: optimize.planar.nearest_point checks the "
-    "crossings of nearly parallel lines (|det| 0.003, |x| ~ 780) against feas_tol = 1.25e-12 absolute; "
-    "their round-off (1.6e-12) exceeds it, so no candidate is feasible (exact.py: 'res is None')"
-)
 
 
 @pytest.mark.parametrize("swing", [
     83.0,
     83.7,
-    pytest.param(83.8, marks=pytest.mark.xfail(strict=True, reason=BUG_FAR_ZONE)),
-    pytest.param(83.9, marks=pytest.mark.xfail(strict=True, reason=BUG_FAR_ZONE)),
+    83.8,  # was a bug: crossings of nearly parallel lines failed a fixed absolute feasibility tolerance
+    83.9,
     84.2,
 ])
 def test_edge_of_feasibility_far_zone(swing):
