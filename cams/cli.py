@@ -12,7 +12,7 @@ import importlib
 import sys
 
 from cams.commands import COMMANDS
-from cams.commands.common import EXIT_BAD_INPUT
+from cams.commands.common import EXIT_BAD_INPUT, EXIT_OK
 from laws.errors import CamsError
 
 __all__ = ["main"]
@@ -54,8 +54,15 @@ def main(argv: list[str] | None = None) -> int:
     except CamsError as e:
         print(f"cams {args.command}: error: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except BrokenPipeError:
+        # the reader went away (e.g. `cams solve ... | head`): not an error of ours
+        sys.stderr.close()
+        return EXIT_OK
     except OSError as e:
         print(f"cams {args.command}: error: {e.filename or ''}: {e.strerror or e}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except MemoryError:
+        print(f"cams {args.command}: error: out of memory; use fewer samples or a lighter method", file=sys.stderr)
         return EXIT_BAD_INPUT
 
 

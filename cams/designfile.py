@@ -70,6 +70,9 @@ def _table(d: dict, key: str) -> dict:
 def design_from_dict(d: dict) -> CamDesign:
     """Build a :class:`CamDesign` from a parsed design file (degrees, lengths)."""
     _check_keys(d, "", "")
+    if d.get("units", "mm") != "mm":
+        raise InputError("units", f"{d['units']!r} is not supported: design files are in mm (lengths of the "
+                         "[dynamics] table are SI as documented)")
     fo = _table(d, "follower")
     _check_keys(fo, "follower", "follower")
     kind = check_option("follower.kind", fo.get("kind", "rocker"), ("rocker", "translating"))

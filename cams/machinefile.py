@@ -171,8 +171,8 @@ def machine_from_dict(d: dict) -> MachineSpec:
     if not isinstance(name, str):
         raise InputError("name", "must be a string")
     units = d.get("units", "mm")
-    if not isinstance(units, str):
-        raise InputError("units", "must be a string")
+    if units != "mm":
+        raise InputError("units", f"{units!r} is not supported: machine files are in mm")
     linkage = _linkage(_table(d, "linkage"))
     cu = _table(d, "cutting")
     _check_keys(cu, _KEYS["cutting"], "cutting")

@@ -70,6 +70,12 @@ def _set(d: dict, key: str, value: float) -> None:
         node[last] = value
 
 
+def _number(v) -> int | float:
+    """An integral value as int (for keys like ``solve.samples``), else float."""
+    f = float(v)
+    return int(f) if f.is_integer() and abs(f) < 2**53 else f
+
+
 def _solve_one(args) -> dict:
     base, keys, values, method = args
     from cams.designfile import design_from_dict
@@ -77,8 +83,8 @@ def _solve_one(args) -> dict:
 
     d = copy.deepcopy(base)
     for k, v in zip(keys, values):
-        _set(d, k, float(v))
-    row = {k: float(v) for k, v in zip(keys, values)}
+        _set(d, k, _number(v))
+    row = {k: _number(v) for k, v in zip(keys, values)}
     row.update({c: None for c in COLUMNS})
     try:
         design = design_from_dict(d)
@@ -134,12 +140,13 @@ def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None 
 
     probe = copy.deepcopy(base)
     for k, v in zip(keys, combos[0]):
-        _set(probe, k, float(v))
+        _set(probe, k, _number(v))
     try:
         design_from_dict(probe)
     except InputError as e:
-        if e.field.startswith(tuple(k.split(".")[0] for k in keys)) and "unknown key" in str(e):
-            raise
+        # a key that does not exist in the schema is a mistake in the sweep, not an infeasible design
+        if "unknown key" in str(e):
+            raise InputError("--vary", str(e)) from None
     workers = workers or os.cpu_count() or 1
     jobs = [(base, keys, c, method) for c in combos]
     t0 = time.perf_counter()

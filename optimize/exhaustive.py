@@ -16,12 +16,17 @@ from __future__ import annotations
 import numpy as np
 
 from cams.design import CamDesign
-from laws.errors import InfeasibleError
+from laws.errors import InfeasibleError, InputError
 from optimize.planar import feasible_mask, line_crossings
 from optimize.result import Binding, CentreSolution
 from optimize.zone import sample_wedges
 
-__all__ = ["nearest_exhaustive"]
+__all__ = ["nearest_exhaustive", "BYTES_PER_PAIR", "MAX_BYTES"]
+
+#: Memory per crossing of a t-t and a t1-t1 line (coordinates, distance, mask, sort index; measured peak).
+BYTES_PER_PAIR = 64
+#: Largest all-pairs run started (bytes).
+MAX_BYTES = 8e9
 
 
 def nearest_exhaustive(
@@ -47,6 +52,15 @@ def nearest_exhaustive(
     tol : float
         Feasibility tolerance relative to the design's scale.
     """
+    m = len(design.constrained_phases()) * (samples + 1)
+    need = m * m * BYTES_PER_PAIR
+    if need > MAX_BYTES:
+        raise InputError(
+            "solve.samples",
+            f"the all-pairs method at {samples} steps per phase needs about {need / 1e9:.1f} GB (it grows with "
+            f"the square of the samples; the limit is {MAX_BYTES / 1e9:.0f} GB): use fewer samples or the "
+            "convex or exact method",
+        )
     W = sample_wedges(design, samples)
     scale = design.scale
     atol = tol * scale

@@ -90,3 +90,9 @@ def test_unreadable_and_invalid_files(tmp_path):
     p.write_text("name = [")
     with pytest.raises(InputError, match="not valid TOML"):
         load_design(p)
+
+
+def test_units_other_than_mm_are_refused():
+    with pytest.raises(InputError, match="^units"):
+        design_from_dict({**rocker_dict(), "units": "m"})
+    assert design_from_dict({**rocker_dict(), "units": "mm"}).follower.arm == 125.0

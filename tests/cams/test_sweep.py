@@ -66,3 +66,12 @@ def test_sweep_cli_bad_key(tmp_path, capsys):
     assert rc == 2
     assert "limits" in capsys.readouterr().err
     assert not (tmp_path / "s.csv").exists()
+
+
+def test_unknown_table_in_vary_is_an_error_and_integers_stay_integers(tmp_path, capsys):
+    rc = main(["sweep", str(EXAMPLES / "rocker_force.toml"), "--vary", "limit.pressure_angle=30,40",
+               "--out", str(tmp_path / "s.csv"), "--jobs", "1", "--quiet"])
+    assert rc == 2 and "--vary" in capsys.readouterr().err
+    res = sweep(rocker_dict(), [("solve.samples", np.array([60.0, 120.0]))], method="convex", workers=1)
+    assert [r["error"] for r in res.rows] == [None, None]
+    assert res.rows[0]["solve.samples"] == 60 and isinstance(res.rows[0]["solve.samples"], int)

@@ -174,3 +174,10 @@ def test_unknown_method_and_objective():
         solve(_d(SEED_FORCE), method="newton")
     with pytest.raises(InputError, match="solve.objective"):
         solve(_d(SEED_FORCE), objective="area")
+
+
+def test_exhaustive_refuses_runs_that_cannot_fit_in_memory():
+    """The all-pairs method's memory grows with the square of the samples: a clear error, not a crash."""
+    d = _d(SEED_FORM, samples=50000)
+    with pytest.raises(InputError, match="solve.samples.*GB"):
+        solve(d, method="exhaustive")
