@@ -23,8 +23,8 @@ Every check is recomputed from the profile (the pitch curve of
   outer wall's ``|rho| - r_roller``) against the user minimum.
 * ``profile_polygon`` / ``outer_polygon``: the closed sampled curve is a valid,
   simple polygon (no self-intersection) around the cam centre (shapely).
-* ``bore``: the working profile's smallest distance from the cam centre
-  exceeds the bore radius.
+* ``bore`` (when ``[cam] bore_radius`` is given): the working profile's
+  smallest distance from the cam centre exceeds the bore radius.
 
 Extremes are located on a dense grid per phase (``grid + 1`` positions) and
 refined by bounded scalar search, so they do not depend on the profile's
@@ -382,13 +382,15 @@ def check_profile(
     if prof.groove:
         checks.append(_polygon_check("outer_polygon", prof.outer, prof.phi))
 
-    # bore
+    # bore: checked only against a bore the user gave ([cam] bore_radius); the default bore
+    # is derived from the profile to fit inside it, so a check against it could not fail
     bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
-    rad = np.linalg.norm(prof.work, axis=1)
-    k = int(np.argmin(rad))
-    rmin = prof.min_work_radius
-    checks.append(Check("bore", bool(rmin > bore), rmin, _deg(prof.phi[k]), float(bore), "mm",
-                        f"working profile's smallest radius {rmin:.6g} vs bore radius {bore:.6g}"))
+    if opts.bore_radius is not None:
+        rad = np.linalg.norm(prof.work, axis=1)
+        k = int(np.argmin(rad))
+        rmin = prof.min_work_radius
+        checks.append(Check("bore", bool(rmin > bore), rmin, _deg(prof.phi[k]), float(bore), "mm",
+                            f"working profile's smallest radius {rmin:.6g} vs bore radius {bore:.6g}"))
     return CheckReport(
         name=design.name,
         checks=tuple(checks),

@@ -35,7 +35,7 @@ def test_examples_pass_every_check(reports, name):
     names = [c.name for c in rep.checks]
     form = name in ("rocker_form", "translating_form_centric")
     expected = ["jamming_rise"] + (["jamming_return"] if form else []) + ["undercut"] + \
-        (["undercut_outer"] if form else []) + ["profile_polygon"] + (["outer_polygon"] if form else []) + ["bore"]
+        (["undercut_outer"] if form else []) + ["profile_polygon"] + (["outer_polygon"] if form else [])
     assert names == expected
     assert all(c.worst == 0 for c in rep.checks if c.name.endswith("polygon"))
 
@@ -122,6 +122,13 @@ def test_user_minimum_radius_of_curvature(solved):
         rep = check_profile(design, O, options=ProfileOptions(min_curvature_radius=minimum))
         c = rep["min_curvature_radius"]
         assert c.passed is passed and c.worst == pytest.approx(ext.convex - r) and c.limit == minimum
+
+
+def test_bore_is_checked_only_when_given(solved):
+    """The default bore is derived to fit the profile: no check that cannot fail is listed."""
+    design, O = solved["rocker_form"]
+    assert "bore" not in [c.name for c in check_profile(design, O).checks]
+    assert check_profile(design, O, options=ProfileOptions(bore_radius=5.0))["bore"].passed
 
 
 def test_bore_too_large_fails(solved):

@@ -21,7 +21,7 @@ def test_check_json_passes(capsys, name):
     rep = json.loads(capsys.readouterr().out)
     assert code == 0 and rep["passed"] is True
     assert all(set(c) == CHECK_KEYS and c["passed"] for c in rep["checks"])
-    assert {c["name"] for c in rep["checks"]} >= {"jamming_rise", "undercut", "profile_polygon", "bore"}
+    assert {c["name"] for c in rep["checks"]} >= {"jamming_rise", "undercut", "profile_polygon"}
 
 
 def test_check_text_output(capsys):
