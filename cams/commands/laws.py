@@ -20,7 +20,11 @@ def run(args) -> int:
     print(f"{'law':<20} {'Cv':>8} {'Ca':>8} {'Cj':>8}")
     for r in rows:
         cells = ["inf" if r[k] is None else f"{r[k]:.4f}" for k in ("Cv", "Ca", "Cj")]
-        print(f"{r['name']:<20} {cells[0]:>8} {cells[1]:>8} {cells[2]:>8}")
+        mark = " *" if r["name"] == "modified_cycloid" else ""
+        print(f"{r['name']:<20} {cells[0]:>8} {cells[1]:>8} {cells[2]:>8}{mark}")
+    print("inf: the law jumps in velocity (Ca) or acceleration (Cj) where it meets a dwell or inside.")
+    print("* modified_cycloid: cycloid with a constant-velocity middle half; values derived here, not"
+          " checked against a published Wildt/Norton table.")
     return EXIT_OK
 
 
