@@ -350,17 +350,10 @@ def cam_forces(
     f = design.follower
     mo = design.program.evaluate(phi)
     q, dq, d2q, arm = _kinematics(design, phi, dyn)
-    # geometry in design units (as cams.pressure)
-    O = np.asarray(centre, dtype=float)
-    A = f.position(mo.s)
-    T = f.tangent(mo.s)
-    r = A - O
+    from cams.pressure import contact_normal
+
+    n, e, r = contact_normal(design, centre, mo.s, mo.ds)
     eps = design.cam_sense
-    V = mo.ds[..., None] * T
-    W = V - eps * np.stack([-r[..., 1], r[..., 0]], axis=-1)
-    n = eps * np.stack([-W[..., 1], W[..., 0]], axis=-1)
-    n = n / np.linalg.norm(n, axis=-1, keepdims=True)
-    e = T / np.linalg.norm(T, axis=-1, keepdims=True)
     cosg = np.clip(np.sum(n * e, axis=-1), -1.0, 1.0)
     gamma = np.arccos(cosg)
     sing = np.sqrt(np.maximum(1.0 - cosg**2, 0.0))

@@ -20,7 +20,45 @@ import numpy as np
 
 from cams.design import CamDesign
 
-__all__ = ["pressure_angle", "PressureReport", "check_pressure"]
+__all__ = ["pressure_angle", "contact_normal", "PressureReport", "check_pressure"]
+
+
+def contact_normal(design: CamDesign, centre: np.ndarray, s: np.ndarray, ds: np.ndarray):
+    """Outward contact normal, rise direction and cam-centre-to-roller vector (fixed frame).
+
+    The one place of the inversion formula (used by :func:`pressure_angle` and
+    :mod:`cams.camforces`).
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre O in the follower's fixed frame, length unit.
+    s, ds : ndarray
+        Displacement (rad or length) and its derivative per radian of cam angle.
+
+    Returns
+    -------
+    n, e, r : ndarray, shape s.shape + (2,)
+        Unit outward normal of the pitch curve (NaN where the roller centre sits
+        on the cam centre with no relative motion: undefined), unit direction of
+        the rise, and ``A - O`` (length unit). ``cos(gamma) = n . e``.
+    """
+    f = design.follower
+    O = np.asarray(centre, dtype=float)
+    A = f.position(s)
+    T = f.tangent(s)
+    V = np.asarray(ds)[..., None] * T
+    r = A - O
+    eps = design.cam_sense
+    W = V - eps * np.stack([-r[..., 1], r[..., 0]], axis=-1)
+    # outward normal: W turned by eps * 90 degrees
+    n = eps * np.stack([-W[..., 1], W[..., 0]], axis=-1)
+    norm = np.linalg.norm(n, axis=-1, keepdims=True)
+    defined = norm > 1e-12 * design.scale
+    n = np.where(defined, n / np.where(defined, norm, 1.0), np.nan)
+    e = T / np.linalg.norm(T, axis=-1, keepdims=True)
+    return n, e, r
 
 
 def pressure_angle(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndarray) -> np.ndarray:
@@ -35,26 +73,16 @@ def pressure_angle(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndar
         Index of a rise or return phase.
     u : array_like
         Normalized positions in [0, 1] (one-sided at the phase ends).
+
+    Returns
+    -------
+    ndarray
+        Radians; NaN where undefined (see :func:`contact_normal`), which the
+        maxima below skip.
     """
-    f = design.follower
-    O = np.asarray(centre, dtype=float)
     m = design.program.evaluate_phase(phase, np.asarray(u, dtype=float))
-    A = f.position(m.s)
-    T = f.tangent(m.s)
-    V = m.ds[..., None] * T
-    r = A - O
-    eps = design.cam_sense
-    W = V - eps * np.stack([-r[..., 1], r[..., 0]], axis=-1)
-    # outward normal: W turned by eps * 90 degrees
-    n = eps * np.stack([-W[..., 1], W[..., 0]], axis=-1)
-    norm = np.linalg.norm(n, axis=-1, keepdims=True)
-    # where the roller centre sits on the cam centre with no relative motion the
-    # normal is undefined: NaN, which the maxima below skip
-    defined = norm > 1e-12 * design.scale
-    n = n / np.where(defined, norm, 1.0)
-    e = T / np.linalg.norm(T, axis=-1, keepdims=True)
-    g = np.arccos(np.clip(np.sum(n * e, axis=-1), -1.0, 1.0))
-    return np.where(defined[..., 0], g, np.nan)
+    n, e, _ = contact_normal(design, centre, m.s, m.ds)
+    return np.arccos(np.clip(np.sum(n * e, axis=-1), -1.0, 1.0))
 
 
 @dataclass(frozen=True)
