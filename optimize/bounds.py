@@ -35,9 +35,10 @@ def _recession_direction(design: CamDesign, grid: int = GRID) -> tuple[np.ndarra
     t = zone_table(design, grid)
     if not t.phases:
         return None
-    # axis of the wedge = bisector of the two inward directions: -(n_t + n_t1)
-    ang = np.arctan2(-(t.ny[:, 0] + t.ny[:, 1]), -(t.nx[:, 0] + t.nx[:, 1])).ravel()
-    lim = np.repeat(t.limit, t.nx.shape[-1])
+    # axis of the wedge = bisector of the two inward directions: -(n_t + n_t1), turned by omega s
+    n = t.n0[:, 0] + t.n0[:, 1]
+    ang = (np.arctan2(-n[:, 1], -n[:, 0])[:, None] + t.omega * t.s[:, 0]).ravel()
+    lim = np.repeat(t.limit, t.s.shape[-1])
     ang = ang[0] + np.mod(ang - ang[0] + np.pi, 2 * np.pi) - np.pi
     # between scan positions the axis turns by at most |omega s'| dphi, s' within |s''| dphi of the scan's
     dphi = np.max(np.diff(t.u)) * t.angle[:, None]

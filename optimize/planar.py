@@ -40,17 +40,19 @@ def line_crossings(N1, c1, N2, c2) -> tuple[np.ndarray, np.ndarray]:
 
 
 @lru_cache(maxsize=128)
-def _pairs(m: int) -> tuple[np.ndarray, np.ndarray]:
-    """Index pairs ``i < j`` of ``m`` lines, in :func:`numpy.triu_indices` order."""
-    return np.triu_indices(m, k=1)
+def _pairs(m: int) -> np.ndarray:
+    """Flat indices ``i * m + j`` of the line pairs ``i < j``, in :func:`numpy.triu_indices` order."""
+    iu, ju = np.triu_indices(m, k=1)
+    return iu * m + ju
 
 
 def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray] | None:
     """Exact nearest point to ``P`` of ``{x : N x <= c}`` (planar, small m).
 
     The nearest point is ``P`` itself, the foot of ``P`` on one line, or the
-    crossing of two lines; the feasible candidate closest to ``P`` is it.
-    Costs O(m^3) and is meant for the few lines of an active-set method.
+    crossing of two lines (as :func:`line_crossings`); the feasible candidate
+    closest to ``P`` is it. Costs O(m^3) and is meant for the few lines of an
+    active-set method.
 
     Returns
     -------
@@ -59,28 +61,29 @@ def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> tu
         ``tol``); ``None`` when the half-planes have no common point.
     """
     P = np.asarray(P, dtype=float)
-    if len(N) == 0:
+    m = len(N)
+    if m == 0:
         return P.copy(), np.zeros(0, int)
     r = N @ P - c
-    if np.all(r <= tol):
-        return P.copy(), np.nonzero(np.abs(r) <= tol)[0]
-    # candidates: the feet of P on the lines, then the crossings of two lines (as line_crossings)
-    iu, ju = _pairs(len(N))
+    if (r <= tol).all():
+        return P.copy(), np.flatnonzero(np.abs(r) <= tol)
     a, b = N[:, 0], N[:, 1]
-    det = a[iu] * b[ju] - b[iu] * a[ju]
+    # all pairs as (m, m) arrays, then the pairs i < j whose lines cross
+    pair = _pairs(m)
+    det = (a[:, None] * b - b[:, None] * a).ravel()[pair]
     ok = np.abs(det) > 1e-12
-    iu, ju, det = iu[ok], ju[ok], det[ok]
-    X = np.empty((len(N) + len(iu), 2))
-    X[: len(N)] = P - r[:, None] * N
-    X[len(N):, 0] = (c[iu] * b[ju] - b[iu] * c[ju]) / det
-    X[len(N):, 1] = (a[iu] * c[ju] - a[ju] * c[iu]) / det
-    feas = np.all(X @ N.T <= c + tol, axis=1)
-    if not np.any(feas):
+    pair, det = pair[ok], det[ok]
+    X = np.empty((m + len(pair), 2))
+    X[:m] = P - r[:, None] * N
+    X[m:, 0] = (c[:, None] * b - b[:, None] * c).ravel()[pair] / det
+    X[m:, 1] = (a[:, None] * c - a * c[:, None]).ravel()[pair] / det
+    feas = (X @ N.T <= c + tol).all(axis=1)
+    if not feas.any():
         return None
     X = X[feas]
     d = X - P
     x = X[np.argmin(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1])]
-    return x, np.nonzero(np.abs(N @ x - c) <= tol)[0]
+    return x, np.flatnonzero(np.abs(N @ x - c) <= tol)
 
 
 def clip_polygon(N: np.ndarray, c: np.ndarray, box: tuple[float, float, float, float]) -> np.ndarray:

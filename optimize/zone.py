@@ -62,7 +62,7 @@ from cams.design import CamDesign
 from cams.follower import Rocker
 
 __all__ = ["Wedges", "wedges", "phase_wedges", "sample_wedges", "max_violation", "ViolationPeak", "ZoneTable",
-           "zone_table", "Peaks", "scan_peaks", "GRID"]
+           "zone_table", "clear_cache", "Peaks", "scan_peaks", "GRID"]
 
 #: Even steps per phase of the violation scan (:class:`ZoneTable`).
 GRID = 384
@@ -228,14 +228,16 @@ class ZoneTable:
         Offset ``b0 + b1 s' + bt s`` of each side's half-plane.
     angle : ndarray, shape (P,)
         Cam angle of each phase (radians).
+    sides : ndarray, shape (2 P, 6)
+        Per side ``2 j + k``: ``n0x, n0y, b0, b1, bt, angle``.
     u : ndarray, shape (M,)
         Scan positions: ``grid`` even steps, geometric steps into both ends
         (laws start from rest, so a peak can sit well inside the first step)
         and a pair at each side of every law breakpoint.
     nx, ny, off : ndarray, shape (P, 2, M)
         Half-planes ``nx x + ny y <= off`` at the scan positions.
-    ds, d2s : ndarray, shape (P, 1, M)
-        ``s'`` and ``s''`` there (per radian of cam angle).
+    s, ds, d2s, d3s : ndarray, shape (P, 1, M)
+        The motion there (per radian of cam angle).
     scale : float
         The design's length scale.
     """
@@ -249,12 +251,15 @@ class ZoneTable:
     b1: np.ndarray
     bt: np.ndarray
     angle: np.ndarray
+    sides: np.ndarray
     u: np.ndarray
     nx: np.ndarray
     ny: np.ndarray
     off: np.ndarray
+    s: np.ndarray
     ds: np.ndarray
     d2s: np.ndarray
+    d3s: np.ndarray
     scale: float
 
     def motion(self, j: int, u: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -290,6 +295,11 @@ def zone_table(design: CamDesign, grid: int = GRID) -> ZoneTable:
     return _zone_table(design, int(grid))
 
 
+def clear_cache() -> None:
+    """Forget the cached zone tables (a benchmark times a design's first solve so)."""
+    _zone_table.cache_clear()
+
+
 @lru_cache(maxsize=32)
 def _zone_table(design: CamDesign, grid: int) -> ZoneTable:
     phases = design.constrained_phases()
@@ -310,12 +320,15 @@ def _zone_table(design: CamDesign, grid: int) -> ZoneTable:
     s, ds, d2s, d3s = mo
     c, sn = np.cos(omega * s), np.sin(omega * s)
     B0, B1, BT = b0[..., None], b1[..., None], bt[..., None]
+    angle = np.array([design.program.phases[i].angle for i, _ in phases])
+    sides = np.stack([n0[..., 0], n0[..., 1], b0, b1, bt, np.repeat(angle[:, None], 2, axis=1)], axis=-1)
+    sides = sides.reshape(2 * P, 6)
     nx, ny = _turn(c, sn, n0[..., 0, None], n0[..., 1, None])
     return ZoneTable(
         design=design, phases=tuple(i for i, _ in phases), limit=np.array([lim for _, lim in phases], float),
         omega=omega, n0=n0, b0=b0, b1=b1, bt=bt,
-        angle=np.array([design.program.phases[i].angle for i, _ in phases]), u=u,
-        nx=nx, ny=ny, off=_offset(B0, B1, BT, s, ds), ds=ds, d2s=d2s, scale=float(design.scale),
+        angle=angle, sides=sides, u=u, nx=nx, ny=ny, off=_offset(B0, B1, BT, s, ds),
+        s=s, ds=ds, d2s=d2s, d3s=d3s, scale=float(design.scale),
     )
 
 
@@ -337,35 +350,47 @@ class Peaks:
     offset: np.ndarray
 
 
-def _refine(t: ZoneTable, O: np.ndarray, j, k, i, i1, h, h1, iters: int) -> Peaks:
-    """Largest value of each side ``(j, k)`` between the scan positions ``i`` and ``i1``.
+def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, h, h1, h2, iters: int) -> Peaks:
+    """Largest value of side ``jk`` (``2 j + k``) from the scan position ``i`` on.
 
-    Where ``i1 > i`` the slope turns from + to - in between: Newton steps on
-    ``h' = 0`` with the analytic ``h''``, safeguarded: the bracket shrinks by
-    the sign of ``h'`` at every new point, and a step that leaves it, or one
-    where ``h`` is not concave, is replaced by bisection. All brackets are
-    stepped together (one law evaluation per phase a step); a bracket stops
-    when the value still to gain, ``h'^2 / (2 |h''|)``, is below round-off.
-    The largest value seen, the scan's included, is kept, so the result can
-    only rise. Where ``i1 == i`` the scan position is the maximum.
+    Where ``cell`` is true the slope turns from + to - between the scan
+    positions ``i`` and ``i + 1``: the first point is the root of the cubic
+    Hermite interpolant of the slope (from ``h'`` and ``h''`` at both ends),
+    then Newton steps on ``h' = 0`` with the analytic ``h''``, safeguarded: the
+    bracket shrinks by the sign of ``h'`` at every new point, and a step that
+    leaves it, or one where ``h`` is not concave, is replaced by bisection.
+    All brackets are stepped together (one law evaluation per phase a step); a
+    bracket stops when the value still to gain, ``h'^2 / (2 |h''|)``, is below
+    round-off. The largest value seen, the scan's included, is kept, so the
+    result can only rise. Elsewhere the scan position ``i`` is the maximum.
+    ``h, h1, h2`` are the scan's values and slopes, flattened (P * 2 * M).
     """
-    omega = t.omega
-    u = t.u
-    a, b = u[i], u[i1]
-    ha, hb = h[j, k, i], h[j, k, i1]
-    ib = np.where(ha >= hb, i, i1)
-    best_u, best_v = u[ib], np.maximum(ha, hb)
-    best_x, best_y, best_c = t.nx[j, k, ib], t.ny[j, k, ib], t.off[j, k, ib]
+    omega, u = t.omega, t.u
+    M = len(u)
+    f0 = jk * M + i
+    f1 = f0 + cell
+    a, b = u[i], u[i + cell]
+    ha, hb = h[f0], h[f1]
+    fb = np.where(ha >= hb, f0, f1)
+    best_u, best_v = np.where(ha >= hb, a, b), np.maximum(ha, hb)
+    best_x, best_y, best_c = t.nx.ravel()[fb], t.ny.ravel()[fb], t.off.ravel()[fb]
     # a step narrower than this (the pairs around breakpoints) keeps its ends' values: a smooth
     # maximum inside would add |h''| w^2 / 8, below round-off; a corner sits at an end
     active = b - a > _NARROW
     if active.any():
-        n0x, n0y = t.n0[j, k, 0], t.n0[j, k, 1]
-        b0, b1, bt = t.b0[j, k], t.b1[j, k], t.bt[j, k]
-        ang = t.angle[j]
-        # start where the slope, interpolated linearly between the ends (da > 0 > db), vanishes
-        da, db = h1[j, k, i], h1[j, k, i1]
-        x = a + (b - a) * (da / np.where(active, da - db, 1.0))
+        n0x, n0y, b0, b1, bt, ang = t.sides[jk].T
+        # the cubic through the slopes and curvatures at both ends, in tau = (u - a) / (b - a)
+        w = (b - a) * ang
+        da, db, ea, eb = h1[f0], h1[f1], w * h2[f0], w * h2[f1]
+        c2 = 3.0 * (db - da) - 2.0 * ea - eb
+        c3 = 2.0 * (da - db) + ea + eb
+        tau = da / np.where(active, da - db, 1.0)
+        for _ in range(2):
+            q1 = ea + tau * (2.0 * c2 + 3.0 * c3 * tau)
+            step = (da + tau * (ea + tau * (c2 + tau * c3))) / np.where(q1 < 0, q1, -1.0)
+            tau = np.clip(tau - np.where(q1 < 0, step, 0.0), 0.0, 1.0)
+        x = a + (b - a) * tau
+        j = jk // 2
         cuts = np.searchsorted(j, np.arange(len(t.phases) + 1)).tolist()  # candidates come sorted by phase
         tol_v = 1e-15 * t.scale
         mo = np.empty((4, len(a)))
@@ -396,7 +421,7 @@ def _refine(t: ZoneTable, O: np.ndarray, j, k, i, i1, h, h1, iters: int) -> Peak
                 break
             xn = x + dphi / ang
             x = np.where(concave & (xn > a) & (xn < b), xn, 0.5 * (a + b))
-    return Peaks(j=j, side=k, u=best_u, value=best_v, nx=best_x, ny=best_y, offset=best_c)
+    return Peaks(j=jk // 2, side=jk % 2, u=best_u, value=best_v, nx=best_x, ny=best_y, offset=best_c)
 
 
 def scan_peaks(t: ZoneTable, centre: np.ndarray, *, iters: int = 8) -> Peaks:
@@ -411,7 +436,8 @@ def scan_peaks(t: ZoneTable, centre: np.ndarray, *, iters: int = 8) -> Peaks:
     O = np.asarray(centre, dtype=float)
     p = t.nx * O[0] + t.ny * O[1]
     h = p - t.off
-    h1 = _slopes(t.omega, O, t.nx, t.ny, p, t.b1[..., None], t.bt[..., None], t.ds, t.d2s)
+    h1, h2 = _slopes(t.omega, O, t.nx, t.ny, p, t.sides[:, 3].reshape(-1, 2, 1), t.sides[:, 4].reshape(-1, 2, 1),
+                     t.ds, t.d2s, t.d3s)
     up, down = h1 > 0, h1 < 0
     point = ~up & ~down
     point[..., 0] |= down[..., 0]
@@ -420,8 +446,9 @@ def scan_peaks(t: ZoneTable, centre: np.ndarray, *, iters: int = 8) -> Peaks:
     point[..., :-1] &= h[..., :-1] >= h[..., 1:]
     cell = np.zeros_like(up)
     cell[..., :-1] = up[..., :-1] & down[..., 1:]
-    j, k, i = np.nonzero(point | cell)
-    return _refine(t, O, j, k, i, np.where(cell[j, k, i], i + 1, i), h, h1, iters)
+    f = np.flatnonzero(point | cell)
+    M = len(t.u)
+    return _refine(t, O, f // M, f % M, cell.ravel()[f].astype(int), h.ravel(), h1.ravel(), h2.ravel(), iters)
 
 
 @dataclass(frozen=True)
