@@ -310,7 +310,7 @@ def main(argv=None):
     ap.add_argument("--quick", action="store_true", help="one law, few steps (seconds; a smoke test)")
     ap.add_argument("--out", default=str(ROOT / "benchmarks" / "results"))
     ap.add_argument("--max-gb", type=float, default=8.0, help="largest all-pairs run to start, GB (default 8)")
-    ap.add_argument("--repeats", type=int, default=21, help="timed runs of the exact method per point")
+    ap.add_argument("--repeats", type=int, default=41, help="timed runs of the exact method per point")
     a = ap.parse_args(argv)
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)

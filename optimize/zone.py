@@ -53,6 +53,7 @@ everything else here is built on these three formulas.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -129,19 +130,19 @@ def _side_constants(design: CamDesign, limit: float) -> tuple[np.ndarray, np.nda
     D (with the K_C shift) at analogue velocity ``s'``; see the module notes.
     """
     f = design.follower
-    A, T, lever = f.frame(np.float64(0.0))
+    A, T, lever = (v.tolist() for v in f.frame(np.float64(0.0)))  # scalars: plain floats are quicker
     # normals: the wedge axis -e turned by +-(90 deg + limit)
-    ax, ay = -T / np.hypot(T[0], T[1])
-    cs, sn = -np.sin(limit), np.cos(limit)
-    na = np.array([cs * ax - sn * ay, sn * ax + cs * ay])
-    nb = np.array([cs * ax + sn * ay, -sn * ax + cs * ay])
+    norm = math.hypot(T[0], T[1])
+    ax, ay = -T[0] / norm, -T[1] / norm
+    cs, sn = -math.sin(limit), math.cos(limit)
+    na = (cs * ax - sn * ay, sn * ax + cs * ay)
+    nb = (cs * ax + sn * ay, -sn * ax + cs * ay)
     # side t: the half-plane that shrinks when D moves outward along the lever
-    n0 = np.array([na, nb]) if na @ lever < 0 else np.array([nb, na])
+    n0 = np.array([na, nb] if na[0] * lever[0] + na[1] * lever[1] < 0 else [nb, na])
     K = design.limits.safety_factor
     ref = getattr(f, "arm", 0.0)
-    shift = np.array([(K - 1.0) * ref, -(1.0 - 1.0 / K) * ref])
-    P0 = A + shift[:, None] * lever
-    Q0 = design.cam_sense * np.array([-T[1], T[0]])
+    P0 = np.array([[A[0] + k * lever[0], A[1] + k * lever[1]] for k in ((K - 1.0) * ref, -(1.0 - 1.0 / K) * ref)])
+    Q0 = np.array([-design.cam_sense * T[1], design.cam_sense * T[0]])
     return n0, P0, Q0
 
 
