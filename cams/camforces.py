@@ -56,7 +56,7 @@ import numpy as np
 
 from cams.design import CamDesign
 from cams.follower import Rocker
-from laws.errors import InfeasibleError, InputError
+from laws.errors import InputError
 
 __all__ = [
     "FollowerDynamics",
@@ -448,20 +448,21 @@ def spring_for_contact(
         k = _num("dynamics.spring_rate", rate, lo=0.0)
         F0 = max(0.0, float(np.max(need - k * q)))
     else:
-        from scipy.optimize import linprog
-
-        # minimize F0 + k qmax  s.t.  F0 + k q_i >= need_i, F0 >= 0, k >= 0
-        res = linprog([1.0, qmax], A_ub=-np.stack([np.ones_like(q), q], axis=1), b_ub=-need, bounds=[(0, None), (0, None)], method="highs")
-        if not res.success:  # pragma: no cover - the programme is always feasible
-            raise InfeasibleError("dynamics", f"no spring found: {res.message}")
-        top = float(res.fun)
-        # among the springs with that largest force, the stiffest: the least preload (less force elsewhere)
-        A = np.vstack([-np.stack([np.ones_like(q), q], axis=1), [[1.0, qmax]]])
-        b = np.append(-need, top + 1e-9 * max(abs(top), 1.0))
-        res2 = linprog([1.0, 0.0], A_ub=A, b_ub=b, bounds=[(0, None), (0, None)], method="highs")
-        F0, k = (float(res2.x[0]), float(res2.x[1])) if res2.success else (float(res.x[0]), float(res.x[1]))
+        # The largest force F0 + k q_max over the springs that hold is least at k = 0: with
+        # F0 = max_i(need_i - k q_i), F0 + k q_max = max_i(need_i + k (q_max - q_i)) and every
+        # slope q_max - q_i is >= 0. So the least largest force is N = max(0, max need), and the
+        # stiffest spring that keeps it has the largest k with need_i + k (q_max - q_i) <= N at
+        # every i and F0 = N - k q_max >= 0 (the linear programme solved in closed form).
+        N = max(0.0, float(np.max(need)))
+        gap = qmax - q
+        below = gap > 0
+        bounds = (N - need[below]) / gap[below]
+        k = float(np.min(bounds, initial=np.inf))
+        if qmax > 0:
+            k = min(k, N / qmax)
+        k = 0.0 if not np.isfinite(k) else max(k, 0.0)
         # round-off: make the constraint hold exactly
-        F0 = max(F0, float(np.max(need - k * q)), 0.0)
+        F0 = max(float(np.max(need - k * q)), 0.0)
     top = F0 + k * qmax
     if dyn.max_spring_force is not None and top > dyn.max_spring_force * (1 + 1e-12):
         hint = ""

@@ -113,6 +113,39 @@ def test_spring_least_largest_force():
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
+@pytest.mark.parametrize("rpm", [150.0, 500.0])
+def test_free_spring_is_the_linear_programmes_optimum(name, rpm):
+    """The closed-form spring against scipy's LP solver (HiGHS) on the same sampled constraints."""
+    from scipy.optimize import linprog
+
+    from cams.camforces import _grid, _kinematics, _omega
+
+    design, dyn = CASES[name]
+    sp = spring_for_contact(design, dyn, rpm=rpm, margin=1.25)
+    q, _, d2q, _ = _kinematics(design, _grid(3600), dyn)
+    need = 1.25 * (-dyn.mass * _omega(design, rpm) ** 2 * d2q - dyn.load)
+    qmax = float(q.max())
+    # it holds at every sample
+    assert np.all(sp.preload + sp.rate * q >= need - 1e-12 * abs(need).max())
+    A = -np.stack([np.ones_like(q), q], axis=1)
+    lp = linprog([1.0, qmax], A_ub=A, b_ub=-need, bounds=[(0, None), (0, None)], method="highs")
+    assert lp.success
+    top = sp.preload + sp.rate * qmax
+    assert top == pytest.approx(lp.fun, rel=1e-7, abs=1e-9)
+    # and it is the stiffest with that largest force
+    stiff = linprog([0.0, -1.0], A_ub=np.vstack([A, [[1.0, qmax]]]), b_ub=np.append(-need, lp.fun * (1 + 1e-9) + 1e-12),
+                    bounds=[(0, None), (0, None)], method="highs")
+    assert stiff.success
+    # (the LP's slack of 1e-9 in the force lets its rate run on by about 1e-9 top / q_max)
+    kscale = top / qmax + 1e-3  # N/m: the free-running case needs no spring (top = 0)
+    assert abs(sp.rate - stiff.x[1]) <= 1e-6 * kscale
+    # and any stiffer spring needs a larger largest force (the definition, by brute force)
+    def largest(k):
+        return max(0.0, float(np.max(need - k * q))) + k * qmax
+    assert largest(sp.rate + 1e-6 * kscale) > top
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
 def test_jump_speed_confirmed_by_simulation(name):
     design, dyn = CASES[name]
     dyn = dyn.with_spring(spring_for_contact(design, dyn, rpm=300, margin=1.3, rate=RATES[name]))
