@@ -26,7 +26,6 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from laws.base import Law
 from laws.diagnostics import law_jumps
@@ -71,6 +70,8 @@ class Characteristics:
 
 def _peak(law: Law, k: int) -> float:
     """``max |S^(k)|`` over [0, 1], one-sided limits at breakpoints included."""
+    from scipy.optimize import minimize_scalar  # here: importing it costs 0.3 s, and only the table needs it
+
     eps = 1e-12
     extra = [x for b in law.breakpoints for x in (b - eps, b + eps) if 0.0 < b < 1.0]
     u = np.unique(np.concatenate([np.linspace(0.0, 1.0, _SAMPLES + 1), extra]))

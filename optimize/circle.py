@@ -12,7 +12,6 @@ from __future__ import annotations
 from typing import Callable
 
 import numpy as np
-from scipy.optimize import brentq
 
 from cams.design import CamDesign
 from optimize.zone import max_violation, sample_wedges
@@ -83,6 +82,8 @@ def crossing_seed(centre: np.ndarray, radius: float, inner: np.ndarray, outer: n
     f = lambda s: float(np.linalg.norm(inner + s * (outer - inner) - centre) - radius)  # noqa: E731
     if f(0.0) > 0 or f(1.0) < 0:
         return None
+    from scipy.optimize import brentq  # here: importing scipy.optimize costs 0.3 s
+
     s = brentq(f, 0.0, 1.0, xtol=1e-15) if f(0.0) < 0 < f(1.0) else (0.0 if f(0.0) == 0 else 1.0)
     p = inner + s * (outer - inner) - centre
     return float(np.arctan2(p[1], p[0]) % (2 * np.pi))
@@ -128,6 +129,8 @@ def _refine(at, a, b) -> float:
     if fa * fb > 0:
         # the sampled scan and the continuum disagree at this resolution: keep the inner end
         return b if fb <= 0 else a
+    from scipy.optimize import brentq  # here: importing scipy.optimize costs 0.3 s
+
     return brentq(at, a, b, xtol=1e-14, rtol=4 * np.finfo(float).eps)
 
 

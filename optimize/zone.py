@@ -237,6 +237,8 @@ class ZoneTable:
         and a pair at each side of every law breakpoint.
     nx, ny, off : ndarray, shape (P, 2, M)
         Half-planes ``nx x + ny y <= off`` at the scan positions.
+    planes : ndarray, shape (3, P * 2 * M)
+        The same stacked and flattened.
     s, ds, d2s, d3s : ndarray, shape (P, 1, M)
         The motion there (per radian of cam angle).
     scale : float
@@ -257,6 +259,7 @@ class ZoneTable:
     nx: np.ndarray
     ny: np.ndarray
     off: np.ndarray
+    planes: np.ndarray
     s: np.ndarray
     ds: np.ndarray
     d2s: np.ndarray
@@ -325,10 +328,11 @@ def _zone_table(design: CamDesign, grid: int) -> ZoneTable:
     sides = np.stack([n0[..., 0], n0[..., 1], b0, b1, bt, np.repeat(angle[:, None], 2, axis=1)], axis=-1)
     sides = sides.reshape(2 * P, 6)
     nx, ny = _turn(c, sn, n0[..., 0, None], n0[..., 1, None])
+    off = _offset(B0, B1, BT, s, ds)
     return ZoneTable(
         design=design, phases=tuple(i for i, _ in phases), limit=np.array([lim for _, lim in phases], float),
         omega=omega, n0=n0, b0=b0, b1=b1, bt=bt,
-        angle=angle, sides=sides, u=u, nx=nx, ny=ny, off=_offset(B0, B1, BT, s, ds),
+        angle=angle, sides=sides, u=u, nx=nx, ny=ny, off=off, planes=np.stack([nx, ny, off]).reshape(3, -1),
         s=s, ds=ds, d2s=d2s, d3s=d3s, scale=float(design.scale),
     )
 
@@ -351,7 +355,7 @@ class Peaks:
     offset: np.ndarray
 
 
-def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, h, h1, h2, iters: int) -> Peaks:
+def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, H, iters: int) -> Peaks:
     """Largest value of side ``jk`` (``2 j + k``) from the scan position ``i`` on.
 
     Where ``cell`` is true the slope turns from + to - between the scan
@@ -364,17 +368,17 @@ def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, h, h1, h2, iters: int) -> 
     bracket stops when the value still to gain, ``h'^2 / (2 |h''|)``, is below
     round-off. The largest value seen, the scan's included, is kept, so the
     result can only rise. Elsewhere the scan position ``i`` is the maximum.
-    ``h, h1, h2`` are the scan's values and slopes, flattened (P * 2 * M).
+    ``H`` holds the scan's ``h, h', h''``, flattened: shape (3, P * 2 * M).
     """
     omega, u = t.omega, t.u
     M = len(u)
     f0 = jk * M + i
     f1 = f0 + cell
     a, b = u[i], u[i + cell]
-    ha, hb = h[f0], h[f1]
-    fb = np.where(ha >= hb, f0, f1)
-    best_u, best_v = np.where(ha >= hb, a, b), np.maximum(ha, hb)
-    best_x, best_y, best_c = t.nx.ravel()[fb], t.ny.ravel()[fb], t.off.ravel()[fb]
+    (ha, da, ea), (hb, db, eb) = H[:, f0], H[:, f1]
+    first = ha >= hb
+    best_u, best_v = np.where(first, a, b), np.maximum(ha, hb)
+    best_x, best_y, best_c = t.planes[:, np.where(first, f0, f1)]
     # a step narrower than this (the pairs around breakpoints) keeps its ends' values: a smooth
     # maximum inside would add |h''| w^2 / 8, below round-off; a corner sits at an end
     active = b - a > _NARROW
@@ -382,14 +386,14 @@ def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, h, h1, h2, iters: int) -> 
         n0x, n0y, b0, b1, bt, ang = t.sides[jk].T
         # the cubic through the slopes and curvatures at both ends, in tau = (u - a) / (b - a)
         w = (b - a) * ang
-        da, db, ea, eb = h1[f0], h1[f1], w * h2[f0], w * h2[f1]
+        ea, eb = w * ea, w * eb
         c2 = 3.0 * (db - da) - 2.0 * ea - eb
         c3 = 2.0 * (da - db) + ea + eb
+        # from the linear interpolant's root, one Newton step on the cubic
         tau = da / np.where(active, da - db, 1.0)
-        for _ in range(2):
-            q1 = ea + tau * (2.0 * c2 + 3.0 * c3 * tau)
-            step = (da + tau * (ea + tau * (c2 + tau * c3))) / np.where(q1 < 0, q1, -1.0)
-            tau = np.clip(tau - np.where(q1 < 0, step, 0.0), 0.0, 1.0)
+        q1 = ea + tau * (2.0 * c2 + 3.0 * c3 * tau)
+        step = (da + tau * (ea + tau * (c2 + tau * c3))) / np.where(q1 < 0, q1, -1.0)
+        tau = np.minimum(np.maximum(tau - np.where(q1 < 0, step, 0.0), 0.0), 1.0)
         x = a + (b - a) * tau
         j = jk // 2
         cuts = np.searchsorted(j, np.arange(len(t.phases) + 1)).tolist()  # candidates come sorted by phase
@@ -449,7 +453,7 @@ def scan_peaks(t: ZoneTable, centre: np.ndarray, *, iters: int = 8) -> Peaks:
     cell[..., :-1] = up[..., :-1] & down[..., 1:]
     f = np.flatnonzero(point | cell)
     M = len(t.u)
-    return _refine(t, O, f // M, f % M, cell.ravel()[f].astype(int), h.ravel(), h1.ravel(), h2.ravel(), iters)
+    return _refine(t, O, f // M, f % M, cell.ravel()[f].astype(int), np.stack([h, h1, h2]).reshape(3, -1), iters)
 
 
 @dataclass(frozen=True)

@@ -1,4 +1,5 @@
-"""Importing the packages, and solving a design, stays light (no matplotlib, cvxpy or ezdxf)."""
+"""Importing the packages, and solving a design, stays light (no matplotlib, cvxpy or ezdxf;
+no scipy.optimize or scipy.interpolate, 0.3 s each to import, where they are not used)."""
 
 import subprocess
 import sys
@@ -8,8 +9,8 @@ from tests.conftest import EXAMPLES
 HEAVY = ("matplotlib", "cvxpy", "ezdxf")
 
 
-def _loaded_after(code: str) -> list[str]:
-    prog = code + "\nimport sys\nprint(' '.join(m for m in %r if m in sys.modules))" % (HEAVY,)
+def _loaded_after(code: str, heavy: tuple[str, ...] = HEAVY) -> list[str]:
+    prog = code + "\nimport sys\nprint(' '.join(m for m in %r if m in sys.modules))" % (heavy,)
     r = subprocess.run([sys.executable, "-c", prog], capture_output=True, text=True, check=True)
     return r.stdout.split()
 
@@ -27,3 +28,13 @@ def test_convex_loads_cvxpy_only_when_used():
     code = (f"from cams.designfile import load_design\nfrom optimize.solve import solve\n"
             f"solve(load_design({str(EXAMPLES / 'rocker_force.toml')!r}), method='convex')")
     assert _loaded_after(code) == ["cvxpy"]
+
+
+def test_cli_and_minimum_r0_solve_do_not_load_scipy_solvers():
+    """``cams solve`` on a minimum-R0 design runs without scipy.optimize or scipy.interpolate."""
+    slow = ("scipy.optimize", "scipy.interpolate")
+    assert _loaded_after("import cams, laws, optimize, cams.cli", slow) == []
+    code = (f"import contextlib, io\nfrom cams.cli import main\n"
+            f"with contextlib.redirect_stdout(io.StringIO()):\n"
+            f"    assert main(['solve', {str(EXAMPLES / 'rocker_force.toml')!r}]) in (0, None)")
+    assert _loaded_after(code, slow) == []
