@@ -57,6 +57,8 @@ import numpy as np
 from cams.design import CamDesign
 from cams.follower import Rocker
 from laws.errors import InputError
+from laws.errors import check_number as _num
+from laws.units import omega_to_rpm, rpm_to_omega
 
 __all__ = [
     "FollowerDynamics",
@@ -80,17 +82,6 @@ LENGTH_UNITS = {"mm": 1e-3, "cm": 1e-2, "m": 1.0, "in": 0.0254}
 """Metres per length unit of a design file."""
 DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "journal_radius", "margin", "max_spring_force")
 """Keys of a design file's optional ``[dynamics]`` table."""
-
-
-def _num(field: str, v, *, lo: float | None = None, strict: bool = False, allow_none: bool = False):
-    if v is None and allow_none:
-        return None
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v):
-        raise InputError(field, f"must be a finite number, got {v!r}")
-    v = float(v)
-    if lo is not None and (v <= lo if strict else v < lo):
-        raise InputError(field, f"must be {'>' if strict else '>='} {lo:g}, got {v!r}")
-    return v
 
 
 @dataclass(frozen=True)
@@ -178,7 +169,7 @@ def _omega(design: CamDesign, rpm: float | None) -> float:
     if n is None:
         raise InputError("cam.rpm", "the cam's speed is needed for its forces; give cam.rpm")
     _num("cam.rpm", n, lo=0.0, strict=True)
-    return float(n) * TWO_PI / 60.0
+    return rpm_to_omega(float(n))
 
 
 def _grid(samples: int) -> np.ndarray:
@@ -289,7 +280,7 @@ class CamForces:
     @property
     def rpm(self) -> float:
         """Cam speed, rev/min."""
-        return float(self.omega * 60.0 / TWO_PI)
+        return omega_to_rpm(self.omega)
 
     def to_dict(self) -> dict:
         """JSON-ready extremes (N, N m, degrees)."""
@@ -472,7 +463,7 @@ def spring_for_contact(
             hint = f"; a free rate ({free.rate:.6g}) would need {free.preload + free.rate * qmax:.6g}"
         raise InputError(
             "dynamics.spring_rate" if rate is not None else "dynamics.max_spring_force",
-            f"a spring of rate {k:.6g} cannot keep contact at {w * 60 / TWO_PI:.6g} rpm with margin {m:g} at any preload "
+            f"a spring of rate {k:.6g} cannot keep contact at {omega_to_rpm(w):.6g} rpm with margin {m:g} at any preload "
             f"within the spring's largest force {dyn.max_spring_force:.6g}: it needs {top:.6g}{hint}",
         )
     return Spring(rate=k, preload=F0)
@@ -552,7 +543,7 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
             best, at = float(rx[j]), float(x[j])
         h = x[1] - x[0]
     w = float(np.sqrt(best))
-    return JumpSpeed(omega=w, rpm=w * 60.0 / TWO_PI, phi=float(np.mod(at, TWO_PI)))
+    return JumpSpeed(omega=w, rpm=omega_to_rpm(w), phi=float(np.mod(at, TWO_PI)))
 
 
 @dataclass(frozen=True)

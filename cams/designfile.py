@@ -23,6 +23,9 @@ from pathlib import Path
 import numpy as np
 
 from cams.design import CamDesign, Limits
+from cams.files import check_keys, read_toml
+from cams.files import toml_number as _num
+from cams.files import toml_table as _table
 from cams.follower import Rocker, Translating, sense_of
 from laws.errors import InputError, check_option
 from laws.program import Phase, Program
@@ -43,32 +46,33 @@ _KEYS = {
 
 
 def _check_keys(table: dict, where: str, field: str) -> None:
-    unknown = set(table) - _KEYS[where]
-    if unknown:
-        allowed = ", ".join(sorted(_KEYS[where]))
-        raise InputError(field or "design", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {allowed}")
-
-
-def _num(table: dict, key: str, field: str, *, required: bool = True, default=None) -> float | None:
-    if key not in table:
-        if required:
-            raise InputError(field, "is required")
-        return default
-    v = table[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
-        raise InputError(field, f"must be a number, got {v!r}")
-    return float(v)
-
-
-def _table(d: dict, key: str) -> dict:
-    t = d.get(key, {})
-    if not isinstance(t, dict):
-        raise InputError(key, "must be a table")
-    return t
+    check_keys(table, _KEYS[where], field or "design")
 
 
 def design_from_dict(d: dict) -> CamDesign:
-    """Build a :class:`CamDesign` from a parsed design file (degrees, lengths)."""
+    """Build a :class:`CamDesign` from a parsed design file (degrees, lengths).
+
+    Parameters
+    ----------
+    d : dict
+        The parsed file (schema in the module notes): lengths in mm, angles
+        in degrees, senses as ``"cw"``/``"ccw"``.
+
+    Returns
+    -------
+    CamDesign
+        Lengths kept in mm; the rocker's swing and heights, the phase angles
+        (scaled to sum to exactly 2 pi) and the pressure-angle limits in
+        radians; ``rise_direction`` and ``rotation`` as senses (+1
+        counter-clockwise). ``extra`` holds ``"objective"``, the file as
+        ``"raw"`` and, with a [dynamics] table, ``"dynamics"``.
+
+    Raises
+    ------
+    InputError
+        Unknown keys, missing or invalid values, units other than mm; the
+        field is named (e.g. ``"motion[2].angle"``).
+    """
     _check_keys(d, "", "")
     if d.get("units", "mm") != "mm":
         raise InputError("units", f"{d['units']!r} is not supported: design files are in mm (lengths of the "
@@ -189,7 +193,16 @@ def _dynamics(d: dict) -> dict:
 
 
 def load_design(path: str | Path) -> CamDesign:
-    """Read a design file; raise :class:`InputError` for unreadable or invalid files."""
-    from cams.files import read_toml
+    """Read a design file; raise :class:`InputError` for unreadable or invalid files.
 
+    Parameters
+    ----------
+    path : str or Path
+        A TOML design file (UTF-8).
+
+    Returns
+    -------
+    CamDesign
+        As :func:`design_from_dict`.
+    """
     return design_from_dict(read_toml(path))

@@ -137,16 +137,20 @@ def _phase_min(fun, program: Program, grid: int = 2000) -> tuple[float, float]:
     return best, at
 
 
+def _rho(dtheta, d2theta, p, dp, d2p):
+    """Radius of curvature ``rho = p + p_thetatheta`` of the envelope, from derivatives in ``phi``."""
+    return p + (d2p * dtheta - dp * d2theta) / dtheta**3
+
+
 def _envelope(theta, dtheta, d2theta, p, dp, d2p):
     """Envelope point (cam frame), radius of curvature and ``p_theta`` of a family of lines."""
     if np.any(np.abs(dtheta) < 1e-12):
         raise InputError("follower", "the face turns with the cam (theta' = 0): no envelope")
     p_t = dp / dtheta
-    p_tt = (d2p * dtheta - dp * d2theta) / dtheta**3
     n = np.stack([np.cos(theta), np.sin(theta)], axis=-1)
     t = np.stack([-np.sin(theta), np.cos(theta)], axis=-1)
     X = p[..., None] * n + p_t[..., None] * t
-    return X, p + p_tt, p_t
+    return X, _rho(dtheta, d2theta, p, dp, d2p), p_t
 
 
 def _check_cam_sense(cam_sense) -> int:
@@ -312,7 +316,7 @@ def oscillating_flat_face(program: Program, *, centre_distance: float, base_radi
 
     def rho_of(i, u):
         _, _, _, t1, t2, q, q1, q2 = _oscillating_terms(program, L, f, rise_sense, eps, a0, phase=i, u=u)
-        return q + (q2 * t1 - q1 * t2) / t1**3
+        return _rho(t1, t2, q, q1, q2)
 
     lo, at = _phase_min(rho_of, program)
     return FlatFaceProfile(phi, X, rho, contact, gamma, R0, lo, at)

@@ -60,22 +60,12 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from laws.errors import InputError, check_option
+from laws.units import omega_to_rpm, rpm_to_omega  # rpm_to_omega re-exported (cams.flywheel.rpm_to_omega)
 
 __all__ = ["FlywheelResult", "flywheel", "INTERPOLATIONS", "rpm_to_omega"]
 
 TWO_PI = 2.0 * np.pi
 INTERPOLATIONS = ("linear", "spline")
-
-
-def rpm_to_omega(rpm: float) -> float:
-    """Crank speed in rad/s from rev/min: ``omega = pi n / 30``.
-
-    Examples
-    --------
-    >>> round(rpm_to_omega(77.0), 4)
-    8.0634
-    """
-    return float(np.pi * rpm / 30.0)
 
 
 def _array(field: str, v, n: int | None = None) -> np.ndarray:
@@ -188,7 +178,7 @@ class FlywheelResult:
     @property
     def rpm(self) -> float:
         """Mean crank speed, rev/min."""
-        return float(self.omega_mean * 30.0 / np.pi)
+        return omega_to_rpm(self.omega_mean)
 
     def at(self, phi) -> dict:
         """Values at crank angles ``phi`` (radians from the cycle's start) by linear interpolation."""

@@ -69,6 +69,8 @@ import numpy as np
 from cams.linkage.primitives import Angle, Point, on_link
 from cams.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError, check_option
+from laws.errors import check_number as _num
+from laws.units import omega_to_rpm, rpm_to_omega
 
 __all__ = [
     "LinkMass",
@@ -118,17 +120,6 @@ WINDOWS = ("cut", "working", "always")
 
 
 # --------------------------------------------------------------------------- inputs
-def _num(field_: str, v, *, lo: float | None = None, strict: bool = False, allow_none: bool = False):
-    if v is None and allow_none:
-        return None
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v):
-        raise InputError(field_, f"must be a finite number, got {v!r}")
-    v = float(v)
-    if lo is not None and (v <= lo if strict else v < lo):
-        raise InputError(field_, f"must be {'>' if strict else '>='} {lo:g}, got {v!r}")
-    return v
-
-
 @dataclass(frozen=True)
 class LinkMass:
     """Mass properties of one link.
@@ -583,7 +574,7 @@ def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
     if n is None:
         raise InputError("linkage.rpm", "the forces need the crank's speed; give linkage.rpm")
     n = _num("linkage.rpm", n, lo=0.0, strict=True)
-    omega = machine.crank_sense * n * TWO_PI / 60.0
+    omega = machine.crank_sense * rpm_to_omega(n)
     if phi is None:
         if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 4:
             raise InputError("forces.samples", f"must be an integer >= 4, got {samples!r}")
@@ -843,7 +834,7 @@ class ForceResult:
         c = np.mod(self.model.sense * (self.phi - self.phi[0]), cycle)
         order = np.argsort(c)
         Mr = self.reduced_resisting + (self.reduced_friction if friction else 0.0)
-        rpm = abs(self.omega) * 60.0 / TWO_PI
+        rpm = omega_to_rpm(abs(self.omega))
         return flywheel(c[order], Mr[order], self.reduced_inertia[order], rpm=rpm, delta=delta, interpolation=interpolation,
                         cycle_deg=cycle_deg)
 
@@ -859,7 +850,7 @@ class ForceResult:
         k = int(np.argmax(np.abs(Mb)))
         fp = {k_: float(np.mean(v)) for k_, v in self.friction_power.items()}
         return {
-            "rpm": abs(self.omega) * 60.0 / TWO_PI,
+            "rpm": omega_to_rpm(abs(self.omega)),
             "passes": self.passes,
             "balancing_moment": {"max_abs": float(abs(Mb[k])), "at_deg": float(deg[k]), "mean": float(np.mean(Mb)),
                                  "virtual_work_max_difference": float(np.max(np.abs(Mb - self.virtual_moment)))},

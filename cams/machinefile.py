@@ -27,12 +27,14 @@ Schema (see ``examples/machines/``)::
 
 from __future__ import annotations
 
-import tomllib
 from pathlib import Path
 
 import numpy as np
 
 from cams.designfile import design_from_dict
+from cams.files import check_keys, read_toml
+from cams.files import toml_number as _num
+from cams.files import toml_table as _table
 from cams.machine import CuttingZone, Drive, MachineSpec, Timing
 from cams.machines import CrankSlider, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError, check_option
@@ -71,28 +73,8 @@ _SIDES = {
 }
 
 
-def _table(d: dict, key: str) -> dict:
-    t = d.get(key, {})
-    if not isinstance(t, dict):
-        raise InputError(key, "must be a table")
-    return t
-
-
 def _check_keys(table: dict, allowed: set, field: str) -> None:
-    unknown = set(table) - allowed
-    if unknown:
-        raise InputError(field or "machine", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(sorted(allowed))}")
-
-
-def _num(table: dict, key: str, field: str, *, default=None, required: bool = True):
-    if key not in table:
-        if required and default is None:
-            raise InputError(field, "is required")
-        return default
-    v = table[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
-        raise InputError(field, f"must be a number, got {v!r}")
-    return float(v)
+    check_keys(table, allowed, field or "machine")
 
 
 def _side(table: dict, key: str, default: str) -> int:
@@ -159,6 +141,23 @@ def _drive(dr: dict) -> Drive:
 def machine_from_dict(d: dict) -> MachineSpec:
     """Build a :class:`MachineSpec` from a parsed machine file (degrees, lengths).
 
+    Parameters
+    ----------
+    d : dict
+        The parsed file (schema in the module notes): lengths in mm, angles
+        in degrees.
+
+    Returns
+    -------
+    MachineSpec
+        The linkage (lengths in mm, crank sense +1 counter-clockwise, rpm as
+        given), the cutting zone, the drive, the timing (margin and
+        follower direction in radians) and the cam's design, built by
+        :func:`cams.designfile.design_from_dict` from the file's cam tables
+        with the cam's sense ``crank sense * drive sense`` and speed
+        ``linkage.rpm * drive ratio`` (rev/min). ``extra`` holds the file as
+        ``"raw"`` and, with a [forces] table, ``"forces"``.
+
     Raises
     ------
     InputError
@@ -212,14 +211,16 @@ def machine_from_dict(d: dict) -> MachineSpec:
 
 
 def load_machine(path: str | Path) -> MachineSpec:
-    """Read a machine file; raise :class:`InputError` for unreadable or invalid files."""
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as e:
-        raise InputError("FILE", f"cannot read {str(p)!r}: {e.strerror or e}") from None
-    try:
-        d = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
-        raise InputError("FILE", f"{p}: not valid TOML: {e}") from None
-    return machine_from_dict(d)
+    """Read a machine file; raise :class:`InputError` for unreadable or invalid files.
+
+    Parameters
+    ----------
+    path : str or Path
+        A TOML machine file (UTF-8).
+
+    Returns
+    -------
+    MachineSpec
+        As :func:`machine_from_dict`.
+    """
+    return machine_from_dict(read_toml(path))

@@ -49,6 +49,7 @@ from cams.linkage.primitives import (
 )
 from cams.linkage.synthesis import SlottedLeverSynthesis, crank_slider_crank, slotted_lever_synthesis
 from laws.errors import InputError
+from laws.units import rpm_to_omega
 
 __all__ = [
     "SlottingMachine",
@@ -120,10 +121,13 @@ def _sign(field_: str, v, words=("+1", "-1")) -> None:
 
 
 class _Base:
-    """Shared plumbing: crank speed, error context, checks."""
+    """Shared plumbing: crank speed, error context, checks, the output protocol."""
 
     crank_sense: int
     rpm: float | None
+    kind: str
+    #: Name of the working member's :class:`Slide` among the kinematics' fields.
+    _output: str
 
     def _check_common(self) -> None:
         _sign("linkage.crank_rotation", self.crank_sense, ("ccw", "cw"))
@@ -135,7 +139,7 @@ class _Base:
         """Crank angular velocity, rad/s, signed; ``crank_sense`` when no rpm is set."""
         if self.rpm is None:
             return float(self.crank_sense)
-        return float(self.crank_sense * self.rpm * TWO_PI / 60.0)
+        return float(self.crank_sense * rpm_to_omega(self.rpm))
 
     def _w(self, omega: float | None) -> float:
         return self.omega if omega is None else float(omega)
@@ -151,6 +155,35 @@ class _Base:
 
     def _check_assembly(self) -> None:
         self._assembled(lambda p: self.kinematics(p, omega=1.0), _CHECK_GRID)
+
+    def output(self, phi, omega: float = 1.0) -> Slide:
+        """The working member's coordinate along its path and its derivatives (see each machine's frame)."""
+        return getattr(self.kinematics(phi, omega=omega), self._output)
+
+    def transmission(self, phi) -> np.ndarray:
+        """Transmission angle at crank angles ``phi``, radians (the kinematics' ``transmission``)."""
+        return self.kinematics(phi, omega=1.0).transmission
+
+    def _lengths(self, **dims) -> dict:
+        """``lengths()``: the type, the machine's ``dims`` under the seed's names, its crank's sense and speed."""
+        return {
+            "type": self.kind,
+            **dims,
+            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
+            "rpm": self.rpm,
+        }
+
+
+class _SwingingLever(_Base):
+    """A crank driving a slotted bar or lever that swings about a pivot at ``(-centre_distance, 0)``."""
+
+    crank: float
+    centre_distance: float
+
+    @property
+    def half_swing(self) -> float:
+        """Half the bar's (lever's) swing, theta/2 = asin(l_crank / L), radians."""
+        return float(np.arcsin(self.crank / self.centre_distance))
 
 
 def _swing_bar_checks(crank_: float, L: float, bar: float, side: int, name: str, field_: str) -> None:
@@ -191,7 +224,8 @@ class SlottingKinematics:
     tool : Slide
         The tool's coordinate y_C along y-y and its derivatives.
     transmission : ndarray
-        Transmission angle at C: 90 deg minus the angle between BC and y-y, radians.
+        Transmission angle at C: 90 deg minus the angle between BC and y-y, radians
+        (the bar's is 90 deg throughout).
     """
 
     phi: np.ndarray
@@ -212,7 +246,7 @@ class SlottingKinematics:
 
 
 @dataclass(frozen=True, eq=False)
-class SlottingMachine(_Base):
+class SlottingMachine(_SwingingLever):
     """The slotting machine's six-bar linkage (seed 003, 六杆插床机构).
 
     Frame: origin at the crank centre O2 (the feed cam's shaft), +x from the
@@ -266,6 +300,7 @@ class SlottingMachine(_Base):
     synthesis: SlottedLeverSynthesis | None = field(default=None, compare=False)
 
     kind = "slotting"
+    _output = "tool"  # y_C of the tool along y-y
 
     def __post_init__(self):
         for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("bar", self.bar), ("rod", self.rod)):
@@ -333,11 +368,6 @@ class SlottingMachine(_Base):
             synthesis=syn,
         )
 
-    @property
-    def half_swing(self) -> float:
-        """Half the bar's swing, theta/2 = asin(l_O2A / L), radians."""
-        return float(np.arcsin(self.crank / self.centre_distance))
-
     def kinematics(self, phi, *, omega: float | None = None) -> SlottingKinematics:
         """Positions, velocities and accelerations at crank angles ``phi`` (radians)."""
         w = self._w(omega)
@@ -354,29 +384,18 @@ class SlottingMachine(_Base):
 
         return self._assembled(run, phi)
 
-    def output(self, phi, omega: float = 1.0) -> Slide:
-        """The tool's coordinate y_C and its derivatives."""
-        return self.kinematics(phi, omega=omega).tool
-
-    def transmission(self, phi) -> np.ndarray:
-        """Transmission angle at the tool slider C, radians (the bar's is 90 deg throughout)."""
-        return self.kinematics(phi, omega=1.0).transmission
-
     def lengths(self) -> dict:
         """The linkage's dimensions under the seed's names (length unit of the machine)."""
-        return {
-            "type": self.kind,
-            "l_O2A": self.crank,
-            "L_O2O3": self.centre_distance,
-            "l_O3B": self.bar,
-            "l_BC": self.rod,
-            "x_yy": self.guide_x,
-            "swing_deg": float(np.degrees(2 * self.half_swing)),
-            "bar_side": "same" if self.bar_side == 1 else "opposite",
-            "tool_side": "above" if self.tool_side == 1 else "below",
-            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
-            "rpm": self.rpm,
-        }
+        return self._lengths(
+            l_O2A=self.crank,
+            L_O2O3=self.centre_distance,
+            l_O3B=self.bar,
+            l_BC=self.rod,
+            x_yy=self.guide_x,
+            swing_deg=float(np.degrees(2 * self.half_swing)),
+            bar_side="same" if self.bar_side == 1 else "opposite",
+            tool_side="above" if self.tool_side == 1 else "below",
+        )
 
 
 # --------------------------------------------------------------------------- crank-slider
@@ -443,6 +462,7 @@ class CrankSlider(_Base):
     rpm: float | None = None
 
     kind = "crank_slider"
+    _output = "slider"  # x_B along the slider's line
 
     def __post_init__(self):
         _pos("linkage.crank", self.crank)
@@ -492,32 +512,25 @@ class CrankSlider(_Base):
 
         return self._assembled(run, phi)
 
-    def output(self, phi, omega: float = 1.0) -> Slide:
-        """The slider's x_B and its derivatives."""
-        return self.kinematics(phi, omega=omega).slider
-
-    def transmission(self, phi) -> np.ndarray:
-        """Transmission angle at the slider, radians."""
-        return self.kinematics(phi, omega=1.0).transmission
-
     def lengths(self) -> dict:
         """Dimensions under the seed's names."""
-        return {
-            "type": self.kind,
-            "l_OA": self.crank,
-            "l_AB": self.rod,
-            "e": self.offset,
-            "l_AS2": self.rod_cg,
-            "slider_side": "right" if self.slider_side == 1 else "left",
-            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
-            "rpm": self.rpm,
-        }
+        return self._lengths(
+            l_OA=self.crank,
+            l_AB=self.rod,
+            e=self.offset,
+            l_AS2=self.rod_cg,
+            slider_side="right" if self.slider_side == 1 else "left",
+        )
 
 
 # --------------------------------------------------------------------------- two-cylinder mechanism
 @dataclass(frozen=True, eq=False)
 class OpposedTwinKinematics:
-    """Points and links of :class:`OpposedTwin` (seed 000's names: 1 crank, 2/4 rods, 3/5 pistons)."""
+    """Points and links of :class:`OpposedTwin` (seed 000's names: 1 crank, 2/4 rods, 3/5 pistons).
+
+    ``transmission`` is the smaller of the two pistons' transmission angles,
+    radians; the machine's output is piston 3 (B, right cylinder).
+    """
 
     phi: np.ndarray
     A: Point
@@ -565,6 +578,7 @@ class OpposedTwin(_Base):
     rpm: float | None = None
 
     kind = "opposed_twin"
+    _output = "piston3"  # x_B of piston 3 (B, right cylinder)
 
     def __post_init__(self):
         _pos("linkage.crank", self.crank)
@@ -588,25 +602,14 @@ class OpposedTwin(_Base):
         mu = np.minimum(np.pi / 2 - acute_angle(rod2.angle, 0.0), np.pi / 2 - acute_angle(rod4.angle, 0.0))
         return OpposedTwinKinematics(phi, A, C, B, D, rod2, rod4, S2, S4, p3, p5, mu)
 
-    def output(self, phi, omega: float = 1.0) -> Slide:
-        """Piston 3 (B, right cylinder): x_B and its derivatives."""
-        return self.kinematics(phi, omega=omega).piston3
-
-    def transmission(self, phi) -> np.ndarray:
-        """Smaller of the two pistons' transmission angles, radians."""
-        return self.kinematics(phi, omega=1.0).transmission
-
     def lengths(self) -> dict:
         """Dimensions under the seed's names."""
-        return {
-            "type": self.kind,
-            "l_OA": self.crank,
-            "l_AB": self.rod,
-            "l_AS2": self.rod_cg,
-            "phase_deg": float(np.degrees(self.phase)),
-            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
-            "rpm": self.rpm,
-        }
+        return self._lengths(
+            l_OA=self.crank,
+            l_AB=self.rod,
+            l_AS2=self.rod_cg,
+            phase_deg=float(np.degrees(self.phase)),
+        )
 
 
 # --------------------------------------------------------------------------- pump
@@ -650,7 +653,7 @@ class PumpKinematics:
 
 
 @dataclass(frozen=True, eq=False)
-class SlottedLeverPump(_Base):
+class SlottedLeverPump(_SwingingLever):
     """Pump with a swinging slotted lever (seed 004): O1A, lever O2C, piston by a Scotch yoke.
 
     Frame: origin at the crank centre O1, +x from the lever's pivot O2 to O1
@@ -685,6 +688,7 @@ class SlottedLeverPump(_Base):
     synthesis: SlottedLeverSynthesis | None = field(default=None, compare=False)
 
     kind = "slotted_lever_pump"
+    _output = "piston"  # the piston's coordinate along its y guide
 
     def __post_init__(self):
         for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("lever", self.lever)):
@@ -709,11 +713,6 @@ class SlottedLeverPump(_Base):
         syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance)
         return cls(crank=syn.crank, centre_distance=syn.centre_distance, lever=syn.bar, lever_side=lever_side, synthesis=syn, **kw)
 
-    @property
-    def half_swing(self) -> float:
-        """Half the lever's swing, asin(l_O1A / L), radians."""
-        return float(np.arcsin(self.crank / self.centre_distance))
-
     def kinematics(self, phi, *, omega: float | None = None) -> PumpKinematics:
         """Positions, velocities and accelerations at crank angles ``phi`` (radians)."""
         w = self._w(omega)
@@ -730,27 +729,16 @@ class SlottedLeverPump(_Base):
 
         return self._assembled(run, phi)
 
-    def output(self, phi, omega: float = 1.0) -> Slide:
-        """The piston's coordinate along y and its derivatives."""
-        return self.kinematics(phi, omega=omega).piston
-
-    def transmission(self, phi) -> np.ndarray:
-        """Transmission angle between the lever and the piston's slot, radians."""
-        return self.kinematics(phi, omega=1.0).transmission
-
     def lengths(self) -> dict:
         """Dimensions under the seed's names."""
-        return {
-            "type": self.kind,
-            "l_O1A": self.crank,
-            "L_O1O2": self.centre_distance,
-            "l_O2C": self.lever,
-            "x_E": self.guide_x,
-            "swing_deg": float(np.degrees(2 * self.half_swing)),
-            "lever_side": "same" if self.lever_side == 1 else "opposite",
-            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
-            "rpm": self.rpm,
-        }
+        return self._lengths(
+            l_O1A=self.crank,
+            L_O1O2=self.centre_distance,
+            l_O2C=self.lever,
+            x_E=self.guide_x,
+            swing_deg=float(np.degrees(2 * self.half_swing)),
+            lever_side="same" if self.lever_side == 1 else "opposite",
+        )
 
 
 MACHINES = {

@@ -12,6 +12,8 @@ from pathlib import Path
 
 import numpy as np
 
+from laws.units import rpm_to_omega
+
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "save", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
@@ -135,7 +137,7 @@ def plot_motion(design, *, n: int = 721):
     rocker = design.follower.kind == "rocker"
     unit = "rad" if rocker else "mm"
     if design.rpm:
-        w = design.rpm * 2 * np.pi / 60
+        w = rpm_to_omega(design.rpm)
         Y = Y * np.array([1, w, w**2, w**3])[:, None]
         labels = [f"{'swing' if rocker else 'stroke'}, {unit}", f"velocity, {unit}/s",
                   f"acceleration, {unit}/s²", f"jerk, {unit}/s³"]

@@ -128,6 +128,27 @@ def check_pressure(design: CamDesign, centre: np.ndarray, *, grid: int = 2000, t
     Every rise and return phase is sampled on ``grid + 1`` positions and the
     largest value refined by zooming into its bracket (tenfold a step). ``ok`` is True when the
     constrained phases stay within their limits plus ``tol`` radians.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre O in the follower's fixed frame (:mod:`cams.follower`),
+        length unit.
+    grid : int, optional
+        Steps per phase of the first scan.
+    tol : float, optional
+        Allowed excess over the limits, radians.
+
+    Returns
+    -------
+    PressureReport
+        The largest pressure angle over all rise phases and over all return
+        phases (radians, in [0, pi]; above pi/2 the cam would pull) and the
+        cam angles where they occur (radians from the start of the cycle);
+        None where the program has no such phase or the angle is undefined
+        throughout. The return is checked against its limit only for form
+        closure (``return_limit`` is None otherwise).
     """
     rise = ret = None
     rise_at = ret_at = None

@@ -7,7 +7,9 @@ print it as one line and exit with code 2.
 
 from __future__ import annotations
 
-__all__ = ["CamsError", "InputError", "InfeasibleError", "check_option"]
+import numpy as np
+
+__all__ = ["CamsError", "InputError", "InfeasibleError", "check_option", "check_number"]
 
 
 class CamsError(ValueError):
@@ -43,4 +45,46 @@ def check_option(field: str, value: object, allowed: tuple[str, ...]) -> str:
     if not isinstance(value, str) or value not in allowed:
         listed = ", ".join(repr(a) for a in allowed)
         raise InputError(field, f"{value!r} is not a valid option, must be one of {listed}")
+    return value
+
+
+def check_number(field: str, value: object, *, lo: float | None = None, strict: bool = False,
+                 allow_none: bool = False) -> float | None:
+    """Return ``value`` as a float if it is a finite number within bounds, else raise :class:`InputError`.
+
+    Parameters
+    ----------
+    field : str
+        Dotted name of the field for the message.
+    value : object
+        A Python or NumPy int or float; booleans are refused.
+    lo : float, optional
+        Lower bound, in the value's own unit.
+    strict : bool, optional
+        ``value > lo`` instead of ``value >= lo``.
+    allow_none : bool, optional
+        Pass None through (an optional field left out).
+
+    Returns
+    -------
+    float or None
+        ``float(value)``; None only for a None with ``allow_none``.
+
+    Examples
+    --------
+    >>> check_number("dynamics.mass", 2, lo=0.0, strict=True)
+    2.0
+    >>> try:
+    ...     check_number("dynamics.mass", 0, lo=0.0, strict=True)
+    ... except InputError as e:
+    ...     print(e)
+    dynamics.mass: must be > 0, got 0.0
+    """
+    if value is None and allow_none:
+        return None
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)) or not np.isfinite(value):
+        raise InputError(field, f"must be a finite number, got {value!r}")
+    value = float(value)
+    if lo is not None and (value <= lo if strict else value < lo):
+        raise InputError(field, f"must be {'>' if strict else '>='} {lo:g}, got {value!r}")
     return value

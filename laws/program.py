@@ -18,6 +18,7 @@ import numpy as np
 
 from laws.base import Law
 from laws.errors import InputError
+from laws.units import rpm_to_omega
 
 __all__ = ["Phase", "Program", "Motion", "TWO_PI", "wrap_angle"]
 
@@ -86,7 +87,7 @@ class Motion:
         """Velocity, acceleration and jerk in time for a cam at ``rpm`` (per s, s^2, s^3)."""
         if not np.isfinite(rpm) or rpm <= 0:
             raise InputError("cam.rpm", f"must be a positive number, got {rpm!r}")
-        w = rpm * TWO_PI / 60.0
+        w = rpm_to_omega(rpm)
         return self.ds * w, self.d2s * w**2, self.d3s * w**3
 
 

@@ -57,6 +57,21 @@ def interior_point(design: CamDesign, near: np.ndarray) -> tuple[np.ndarray, flo
 
     Tries ``near`` moved along a direction of the zone's recession cone, then
     the Chebyshev centre of a sampled zone. ``None`` if neither is interior.
+
+    Parameters
+    ----------
+    design : CamDesign
+    near : ndarray, shape (2,)
+        A cam centre to start from, the follower's fixed frame
+        (:mod:`cams.follower`), length unit.
+
+    Returns
+    -------
+    (ndarray, float) or None
+        A cam centre (shape (2,), same frame) strictly inside the continuous
+        zone, and its slack: the smallest distance to the zone's half-planes
+        over the cycle (length unit, > 0). None when no interior point was
+        found.
     """
     scale = design.scale
     rd = _recession_direction(design)
@@ -98,8 +113,23 @@ def interior_point(design: CamDesign, near: np.ndarray) -> tuple[np.ndarray, flo
 def push_inside(design: CamDesign, centre: np.ndarray, violation: float) -> np.ndarray | None:
     """A feasible centre near ``centre`` whose largest violation is ``violation``.
 
-    Returns ``centre`` itself when ``violation <= 0``, ``None`` when no interior
-    point could be found.
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre, the follower's fixed frame (:mod:`cams.follower`), length unit.
+    violation : float
+        Largest signed distance of ``centre`` outside the continuous zone
+        (length unit; e.g. ``max_violation(design, centre)[0].value``).
+
+    Returns
+    -------
+    ndarray, shape (2,) or None
+        ``centre`` itself when ``violation <= 0``; else ``centre`` moved by
+        ``violation / sin(margin)`` along a recession direction of the zone,
+        or towards an interior point by the fraction ``v / (v + r)`` (module
+        notes); None when the zone has no recession direction and no interior
+        point could be found.
     """
     centre = np.asarray(centre, dtype=float)
     if violation <= 0:

@@ -20,7 +20,24 @@ __all__ = ["admissible_arcs", "best_on_circle", "violation_function", "crossing_
 
 
 def violation_function(design: CamDesign, samples: int | None) -> Callable[[np.ndarray], float]:
-    """Largest signed distance outside the zone: continuous (``samples=None``) or sampled."""
+    """Largest signed distance outside the zone: continuous (``samples=None``) or sampled.
+
+    Parameters
+    ----------
+    design : CamDesign
+    samples : int or None
+        Steps per constrained phase of the sampled zone
+        (:func:`optimize.zone.sample_wedges`); None for the continuous zone
+        (:func:`optimize.zone.max_violation`).
+
+    Returns
+    -------
+    callable
+        ``G(O) -> float`` for a cam centre ``O`` (shape (2,), the follower's
+        fixed frame of :mod:`cams.follower`): the largest signed distance of
+        ``O`` outside the zone's half-planes, length unit; positive outside,
+        <= 0 inside (minus the smallest slack).
+    """
     if samples is None:
         return lambda O: max_violation(design, O)[0].value
     N, c = sample_wedges(design, samples).lines()
@@ -46,6 +63,31 @@ def admissible_arcs(
     ``seeds`` are angles known to be admissible (e.g. from convexity: where a
     segment between two admissible centres crosses the circle); an arc too
     narrow for the scan is found around them.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Centre of the circle in the follower's fixed frame (:mod:`cams.follower`),
+        length unit: the rocker pivot for a fixed L, the roller centre A0 at
+        the near dwell for a fixed R0.
+    radius : float
+        Radius of the circle, length unit.
+    samples : int or None, optional
+        Steps per constrained phase of the zone the ends are refined on; None:
+        the continuous zone.
+    scan : int, optional
+        Points of the first scan round the circle.
+    seeds : tuple of float, optional
+        Admissible angles ``t``, radians.
+
+    Returns
+    -------
+    list of (float, float)
+        Intervals ``(a, b)`` of the angle ``t`` (radians, counter-clockwise from
+        the frame's +X), ``a < b``; not reduced to [0, 2 pi): an arc across
+        ``t = 0`` ends beyond 2 pi (or starts below 0). Empty when the circle
+        misses the zone.
     """
     centre = np.asarray(centre, float)
     arcs = _scanned_arcs(design, centre, radius, samples, scan)
@@ -76,7 +118,24 @@ def crossing_seed(centre: np.ndarray, radius: float, inner: np.ndarray, outer: n
 
     With both ends admissible, ``inner`` inside the circle and ``outer``
     outside, the crossing is admissible too (the zone is convex): a seed for
-    :func:`admissible_arcs`. None when the ends do not straddle the circle.
+    :func:`admissible_arcs`.
+
+    Parameters
+    ----------
+    centre : array_like, shape (2,)
+        Centre of the circle, fixed frame, length unit.
+    radius : float
+        Its radius, length unit.
+    inner, outer : ndarray, shape (2,)
+        Ends of the segment, same frame: ``inner`` inside (or on) the circle,
+        ``outer`` outside (or on) it.
+
+    Returns
+    -------
+    float or None
+        Angle ``t`` of the crossing on the circle ``centre + radius (cos t,
+        sin t)``, radians in [0, 2 pi); None when the ends do not straddle the
+        circle.
     """
     centre = np.asarray(centre, float)
     f = lambda s: float(np.linalg.norm(inner + s * (outer - inner) - centre) - radius)  # noqa: E731
@@ -147,6 +206,27 @@ def best_on_circle(
 
     The objective is evaluated at the arcs' ends and on a fine grid inside each
     arc, then refined by bounded scalar minimization.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Centre of the circle, the follower's fixed frame, length unit.
+    radius : float
+        Its radius, length unit.
+    objective : callable
+        ``objective(O) -> float`` of a cam centre ``O`` (shape (2,), same
+        frame), to be minimized.
+    samples : int or None, optional
+        As :func:`admissible_arcs`: sampled zone, or None for the continuous one.
+    seeds : tuple of float, optional
+        Admissible angles on the circle, radians (see :func:`admissible_arcs`).
+
+    Returns
+    -------
+    ndarray, shape (2,) or None
+        The best admissible point of the circle (same frame), None when the
+        circle misses the zone.
     """
     from scipy.optimize import minimize_scalar
 

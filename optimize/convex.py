@@ -45,7 +45,7 @@ def _solve(design, objective, samples, extra):
 def _binding(W, N, O, c, atol):
     h = N @ O - c
     act = np.nonzero(h >= -atol)[0]
-    return tuple(Binding(int(W.phase[k // 2]), float(W.phi[k // 2]), int(k % 2)) for k in act), act
+    return tuple(Binding.of_line(W, k) for k in act), act
 
 
 def nearest_convex(

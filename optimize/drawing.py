@@ -57,7 +57,22 @@ class ZoneDrawing:
 
 
 def analogue_diagram(design: CamDesign, n: int = 121) -> list[AnalogueCurve]:
-    """Instant points D of every rise and return phase (safety factor not applied)."""
+    """Instant points D of every rise and return phase (safety factor not applied).
+
+    Parameters
+    ----------
+    design : CamDesign
+    n : int, optional
+        Evenly spaced positions per phase, both ends included.
+
+    Returns
+    -------
+    list of AnalogueCurve
+        One per rise or return phase, in program order: roller centres ``A``
+        and instant points ``D`` in the follower's fixed frame
+        (:mod:`cams.follower`), length unit; ``phi`` cam angles, radians from
+        the start of the cycle.
+    """
     base = design.with_(limits=replace(design.limits, safety_factor=1.0)) if design.limits.safety_factor != 1 else design
     out = []
     u = np.linspace(0.0, 1.0, n)
@@ -102,7 +117,7 @@ def zone_drawing(
     ----------
     design : CamDesign
     centre : ndarray (2,)
-        The chosen cam centre.
+        The chosen cam centre, fixed frame, length unit.
     binding : tuple of (phi, side)
         Cam angles (rad) and sides (0 t-t, 1 t1-t1) of the binding lines: drawn and flagged.
     samples : int
@@ -111,6 +126,16 @@ def zone_drawing(
         Evenly spaced positions per constrained phase whose lines are drawn.
     extra_points : tuple of ndarray
         Further points the view must hold (e.g. a trade-off curve's ends).
+
+    Returns
+    -------
+    ZoneDrawing
+        In the follower's fixed frame (:mod:`cams.follower`), length unit: the
+        view box holds ``centre``, the frame's origin (the rocker pivot, or
+        A0 of a translating follower), the analogue curves and
+        ``extra_points`` with 15 % of their span as margin; ``lines`` holds,
+        per constrained phase, the side nearer to binding at ``n_lines``
+        positions and each ``binding`` line of the phase (flagged True).
     """
     curves = analogue_diagram(design)
     f = design.follower

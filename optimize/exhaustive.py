@@ -78,8 +78,7 @@ def nearest_exhaustive(
         if not np.any(feas):
             raise InfeasibleError("follower.offset", "no admissible cam centre on the line of the fixed offset")
         k = order[np.argmax(feas)]
-        i = pair_i[k] // 2
-        binding = (Binding(int(W.phase[i]), float(W.phi[i]), int(pair_i[k] % 2)),)
+        binding = (Binding.of_line(W, pair_i[k]),)
         O = cand[k]
     else:
         pts, ok = line_crossings(W.normals[:, 0], W.offsets[:, 0], W.normals[:, 1], W.offsets[:, 1])

@@ -14,7 +14,26 @@ __all__ = ["nearest_point", "line_crossings", "clip_polygon", "feasible_mask"]
 
 
 def feasible_mask(points: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> np.ndarray:
-    """True for the points (k, 2) that satisfy every half-plane within ``tol``."""
+    """True for the points that satisfy every half-plane ``N x <= c`` within ``tol``.
+
+    Parameters
+    ----------
+    points : ndarray, shape (k, 2)
+        Points in the frame of the half-planes (for the solvers: cam centres
+        in the follower's fixed frame, :mod:`cams.follower`; length unit).
+    N : ndarray, shape (m, 2)
+        Unit normals, pointing out of the half-planes.
+    c : ndarray, shape (m,)
+        Offsets (length unit): ``N x - c`` is the signed distance outside.
+    tol : float
+        Allowed distance outside (length unit), >= 0.
+
+    Returns
+    -------
+    ndarray of bool, shape (k,)
+        True where ``N x <= c + tol`` holds for every half-plane (all True
+        when ``m = 0``).
+    """
     if len(N) == 0:
         return np.ones(len(points), dtype=bool)
     return np.all(points @ N.T <= c + tol, axis=1)
@@ -22,6 +41,17 @@ def feasible_mask(points: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) 
 
 def line_crossings(N1, c1, N2, c2) -> tuple[np.ndarray, np.ndarray]:
     """Crossings of lines ``N1[i] x = c1[i]`` with ``N2[j] x = c2[j]``, all pairs.
+
+    Parameters
+    ----------
+    N1 : ndarray, shape (n1, 2)
+        Normals of the first lines (unit length not needed).
+    c1 : ndarray, shape (n1,)
+        Their offsets.
+    N2 : ndarray, shape (n2, 2)
+        Normals of the second lines.
+    c2 : ndarray, shape (n2,)
+        Their offsets.
 
     Returns
     -------
@@ -53,6 +83,18 @@ def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> tu
     crossing of two lines (as :func:`line_crossings`); the feasible candidate
     closest to ``P`` is it. Costs O(m^3) and is meant for the few lines of an
     active-set method.
+
+    Parameters
+    ----------
+    P : array_like, shape (2,)
+        The point to approach (for the solvers: the target of the objective,
+        fixed frame, length unit).
+    N : ndarray, shape (m, 2)
+        Unit normals of the half-planes (the feet of ``P`` assume unit length).
+    c : ndarray, shape (m,)
+        Offsets, length unit.
+    tol : float
+        Feasibility and activity tolerance, length unit.
 
     Returns
     -------
@@ -89,8 +131,22 @@ def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> tu
 def clip_polygon(N: np.ndarray, c: np.ndarray, box: tuple[float, float, float, float]) -> np.ndarray:
     """Convex polygon ``{x : N x <= c}`` clipped to ``box = (xmin, ymin, xmax, ymax)``.
 
-    Sutherland-Hodgman against each half-plane in turn. Returns the vertices
-    (k, 2) counter-clockwise, empty (0, 2) when the intersection is empty.
+    Sutherland-Hodgman against each half-plane in turn.
+
+    Parameters
+    ----------
+    N : ndarray, shape (m, 2)
+        Outward normals of the half-planes.
+    c : ndarray, shape (m,)
+        Their offsets.
+    box : (xmin, ymin, xmax, ymax)
+        The clipping rectangle, in the frame and unit of the half-planes.
+
+    Returns
+    -------
+    ndarray, shape (k, 2)
+        The vertices counter-clockwise, shape (0, 2) when the intersection is
+        empty.
     """
     x0, y0, x1, y1 = box
     poly = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]], dtype=float)

@@ -21,6 +21,19 @@ class Binding:
     phi: float
     side: int
 
+    @classmethod
+    def of_line(cls, wedges, k: int) -> "Binding":
+        """The constraint of line ``k`` of ``wedges.lines()`` (two lines a sampled position, t-t first).
+
+        Parameters
+        ----------
+        wedges : optimize.zone.Wedges
+            The sampled zone.
+        k : int
+            Index into the flattened lines: position ``k // 2``, side ``k % 2``.
+        """
+        return cls(int(wedges.phase[k // 2]), float(wedges.phi[k // 2]), int(k % 2))
+
 
 @dataclass(frozen=True)
 class CentreSolution:

@@ -51,8 +51,8 @@ class SolveResult:
         Offset of the follower axis from the cam centre, positive when the axis
         lies on the +X side (translating only).
     mode : str
-        ``"min_R0"``, ``"min_L"``, ``"fixed_L"``, ``"floor_R0"`` or
-        ``"fixed_offset"``.
+        ``"min_R0"``, ``"min_L"``, ``"fixed_L"``, ``"fixed_L_and_R0"``,
+        ``"floor_R0"`` or ``"fixed_offset"``.
     pressure : PressureReport
         The independent check of the pressure angle.
     margin : float
@@ -81,7 +81,17 @@ class SolveResult:
         return self.pressure.ok
 
     def to_dict(self) -> dict:
-        """JSON-ready report: lengths in the design's unit, angles in degrees."""
+        """JSON-ready report: lengths in the design's unit, angles in degrees.
+
+        Returns
+        -------
+        dict
+            ``R0``, ``L``, ``offset`` and ``centre`` (``x``, ``y`` in the
+            follower's fixed frame) in the design's length unit; the largest
+            pressure angles, where they occur (cam angle) and the limits, and
+            the binding lines' cam angles, in degrees; the solver's mode,
+            method, samples, error bound, margin, time (s) and notes.
+        """
         deg = lambda x: None if x is None else float(np.degrees(x))  # noqa: E731
         p = self.pressure
         return {
@@ -109,16 +119,56 @@ class SolveResult:
         }
 
 
+def _offset_x(v: float) -> float:
+    """The fixed offset's sign convention, ``x_O = -e``, read either way.
+
+    The follower axis (``x = 0`` of the translating follower's frame, see
+    :mod:`cams.follower`) lies ``e`` to the +X side of the cam centre ``O``, so
+    the centre's abscissa is ``x_O = -e`` and the offset of a centre is
+    ``e = -x_O``: given ``e`` this returns ``x_O``, given ``x_O`` it returns ``e``
+    (lengths, the design's unit).
+    """
+    return -v
+
+
 def _offset_line(design: CamDesign):
+    """Half-planes ``N O <= c`` pinning the centre to the fixed offset's line ``x = x_O``, or None."""
     f = design.follower
     if isinstance(f, Translating) and f.offset is not None:
-        # offset e: follower axis at x = 0 lies e to the +X side of the centre: x_O = -e
-        return np.array([[1.0, 0.0], [-1.0, 0.0]]), np.array([-f.offset, f.offset])
+        x0 = _offset_x(f.offset)
+        return np.array([[1.0, 0.0], [-1.0, 0.0]]), np.array([x0, -x0])
     return None
 
 
 def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None, extra=None) -> CentreSolution:
-    """Admissible centre nearest to ``target`` by the design's (or the given) method."""
+    """Admissible centre nearest to ``target`` by the design's (or the given) method.
+
+    Parameters
+    ----------
+    design : CamDesign
+    target : ndarray, shape (2,)
+        Point to approach in the follower's fixed frame (:mod:`cams.follower`),
+        length unit: the roller centre A0 at the near dwell (minimum R0) or the
+        rocker pivot, the origin (minimum L).
+    method : {"exact", "convex", "exhaustive"}, optional
+        Overrides ``design.method``; the sampled methods use ``design.samples``.
+    extra : (N, c), optional
+        Additional half-planes ``N O <= c`` (unit normals, length unit), e.g.
+        the line of a fixed offset.
+
+    Returns
+    -------
+    CentreSolution
+        The centre (same frame) and its distance to ``target`` (``objective``,
+        length unit).
+
+    Raises
+    ------
+    InfeasibleError
+        The zone (with ``extra``) is empty.
+    InputError
+        An unknown method; an all-pairs run that would need too much memory.
+    """
     method = check_option("solve.method", method or design.method, METHODS)
     if method == "exact":
         from optimize.exact import nearest_exact
@@ -166,7 +216,22 @@ def _seeds(design: CamDesign, ref: np.ndarray, radius: float, inner: np.ndarray)
 
 
 def admissible_L_range(design: CamDesign) -> tuple[float, float]:
-    """Smallest and largest centre distance L of admissible centres (rocker)."""
+    """Smallest and largest centre distance L of admissible centres (rocker).
+
+    Parameters
+    ----------
+    design : CamDesign
+        With a rocker follower (L is measured from its pivot, the origin of
+        the fixed frame).
+
+    Returns
+    -------
+    lo, hi : float
+        Length unit. ``lo`` is exact (the admissible centre nearest to the
+        pivot over the continuous zone); ``hi`` is ``inf`` when the zone is
+        unbounded, else the farthest vertex of the zone sampled at 512 steps
+        per phase and clipped to a square of half-side ``100 * design.scale``.
+    """
     lo = nearest(design, design.follower.pivot, method="exact").objective
     return lo, _lmax(design)
 
@@ -177,16 +242,34 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
     Parameters
     ----------
     design : CamDesign
+        Lengths in its unit, angles in radians; ``design.limits`` may fix the
+        centre distance L (rocker) or a floor on R0, the follower a fixed
+        offset (translating).
     method : {"exact", "convex", "exhaustive"}, optional
         Overrides ``design.method``.
     objective : {"R0", "L"}
-        What to minimize when neither L nor a floor on R0 is fixed.
+        What to minimize when neither L nor a floor on R0 is fixed; ``"L"``
+        applies to rockers only.
+
+    Returns
+    -------
+    SolveResult
+        The cam centre in the follower's fixed frame (:mod:`cams.follower`),
+        ``R0 = |O - A0|`` (A0 the roller centre at the near dwell), ``L = |O|``
+        for a rocker (pivot at the origin), the offset ``e = -x_O`` for a
+        translating follower (positive: the follower's axis on the +X side of
+        the cam centre), lengths in the design's unit, and the independent
+        pressure-angle check.
 
     Raises
     ------
     InfeasibleError
         Empty zone; a fixed L outside the admissible range (the message gives
-        the range); a floor on R0 and a fixed L that cannot both hold.
+        the range); a floor on R0 and a fixed L (or a fixed offset) that
+        cannot both hold; a minimum R0 that vanishes (set a floor).
+    InputError
+        An unknown method or objective; ``objective="L"`` for a translating
+        follower.
     """
     method = check_option("solve.method", method or design.method, METHODS)
     check_option("solve.objective", objective, OBJECTIVES)
@@ -216,7 +299,7 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
         if floor is not None and np.linalg.norm(centre - A0) < floor:
             mode = "floor_R0"
             if extra is not None:
-                cands = [np.array([-f.offset, sg * np.sqrt(max(floor**2 - f.offset**2, 0.0))]) for sg in (1, -1)]
+                cands = [np.array([_offset_x(f.offset), sg * np.sqrt(max(floor**2 - f.offset**2, 0.0))]) for sg in (1, -1)]
                 cands = [p for p in cands if floor >= abs(f.offset) and G(p) <= 1e-9 * design.scale]
                 if not cands:
                     raise InfeasibleError("limits.min_base_radius", f"R0 = {floor:g} with offset {f.offset:g} is not admissible")
@@ -289,7 +372,7 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
         centre=np.asarray(centre, float),
         R0=R0,
         L=float(np.linalg.norm(centre - f.pivot)) if isinstance(f, Rocker) else None,
-        offset=float(-centre[0]) + 0.0 if isinstance(f, Translating) else None,
+        offset=_offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
         method=method,
         samples=samples,
         mode=mode,

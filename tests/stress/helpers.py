@@ -33,6 +33,7 @@ from cams.designfile import design_from_dict
 from cams.pressure import check_pressure
 from laws.errors import CamsError, InfeasibleError, InputError
 from optimize.solve import solve
+from tests.conftest import rocker_dict as base_rocker_dict
 
 #: Largest time one guarded call may take (seconds).
 LIMIT_S = 20
@@ -100,19 +101,7 @@ def translating_dict(**over) -> dict:
 
 def rocker_dict(**over) -> dict:
     """The rocker of tests/conftest.py (arm 125, swing 15, cycloidal 120/30/120/rest), samples 60."""
-    d = {
-        "name": "stress rocker",
-        "follower": {"kind": "rocker", "arm": 125.0, "swing": 15.0, "roller_radius": 10.0, "rise_direction": "cw"},
-        "cam": {"rotation": "ccw"},
-        "motion": [
-            {"phase": "rise", "law": "cycloidal", "angle": 120},
-            {"phase": "dwell", "angle": 30},
-            {"phase": "return", "law": "cycloidal", "angle": 120},
-            {"phase": "dwell"},
-        ],
-        "limits": {"pressure_angle": 45, "closure": "force"},
-        "solve": {"method": "exact", "samples": 60},
-    }
+    d = base_rocker_dict(name="stress rocker", solve={"samples": 60})
     for k, v in over.items():
         d[k] = {**d.get(k, {}), **v} if isinstance(v, dict) else v
     return d

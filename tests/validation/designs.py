@@ -5,6 +5,16 @@ from __future__ import annotations
 from cams.designfile import design_from_dict
 
 
+def _motion(rise, dwell, ret) -> list:
+    """Rise, dwell, return and a dwell taking the rest of 360 degrees; ``rise``, ``ret`` are (law, angle)."""
+    return [
+        {"phase": "rise", "law": rise[0], "angle": rise[1]},
+        {"phase": "dwell", "angle": dwell},
+        {"phase": "return", "law": ret[0], "angle": ret[1]},
+        {"phase": "dwell"},
+    ]
+
+
 def rocker_dict(*, arm=125.0, swing=15.0, rise_direction="cw", rotation="ccw",
                 rise=("cycloidal", 120.0), dwell=30.0, ret=("cycloidal", 120.0),
                 limit=45.0, return_limit=None, closure="force", safety_factor=1.0,
@@ -20,12 +30,7 @@ def rocker_dict(*, arm=125.0, swing=15.0, rise_direction="cw", rotation="ccw",
         "follower": {"kind": "rocker", "arm": arm, "swing": swing, "roller_radius": roller_radius,
                      "rise_direction": rise_direction},
         "cam": {"rotation": rotation},
-        "motion": [
-            {"phase": "rise", "law": rise[0], "angle": rise[1]},
-            {"phase": "dwell", "angle": dwell},
-            {"phase": "return", "law": ret[0], "angle": ret[1]},
-            {"phase": "dwell"},
-        ],
+        "motion": _motion(rise, dwell, ret),
         "limits": limits,
         "solve": {"samples": samples},
     }
@@ -45,12 +50,7 @@ def translating_dict(*, stroke=30.0, offset=None, rotation="ccw", rise=("poly456
         "name": name,
         "follower": fo,
         "cam": {"rotation": rotation},
-        "motion": [
-            {"phase": "rise", "law": rise[0], "angle": rise[1]},
-            {"phase": "dwell", "angle": dwell},
-            {"phase": "return", "law": ret[0], "angle": ret[1]},
-            {"phase": "dwell"},
-        ],
+        "motion": _motion(rise, dwell, ret),
         "limits": limits,
         "solve": {"samples": samples},
     }

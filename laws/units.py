@@ -1,0 +1,59 @@
+"""Unit conversions shared by every layer (laws is the bottom package).
+
+Speeds of cams and cranks are given in rev/min (``rpm``) in design and machine
+files and used in rad/s (``omega``) in the formulas: ``omega = 2 pi n / 60 =
+pi n / 30``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["rpm_to_omega", "omega_to_rpm"]
+
+
+def rpm_to_omega(rpm: float) -> float:
+    """Angular speed in rad/s from a speed in rev/min: ``omega = pi n / 30``.
+
+    Parameters
+    ----------
+    rpm : float
+        Speed n, rev/min. Not checked: a sign is kept (a signed speed gives a
+        signed omega).
+
+    Returns
+    -------
+    float
+        Angular speed omega, rad/s.
+
+    Examples
+    --------
+    >>> round(rpm_to_omega(77.0), 4)
+    8.0634
+    >>> round(rpm_to_omega(60.0) / np.pi, 12)
+    2.0
+    """
+    return float(np.pi * rpm / 30.0)
+
+
+def omega_to_rpm(omega: float) -> float:
+    """Speed in rev/min from an angular speed in rad/s: ``n = 30 omega / pi``.
+
+    Parameters
+    ----------
+    omega : float
+        Angular speed, rad/s; a sign is kept.
+
+    Returns
+    -------
+    float
+        Speed n, rev/min.
+
+    Examples
+    --------
+    >>> round(omega_to_rpm(2 * np.pi), 12)
+    60.0
+    >>> round(omega_to_rpm(rpm_to_omega(123.4)), 12)
+    123.4
+    """
+    return float(omega * 30.0 / np.pi)

@@ -1,0 +1,82 @@
+"""The Examples sections of the docstrings run as doctests; the modules declare ``__all__``.
+
+One list for the whole project: a module with ``>>>`` examples must be named in
+``DOCTEST_MODULES`` (checked by :func:`test_every_module_with_examples_is_listed`).
+"""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGES = ("cams", "laws", "optimize")
+
+#: Modules whose docstrings are run as doctests (some have no examples yet).
+DOCTEST_MODULES = [
+    # laws
+    "laws.characteristics",
+    "laws.diagnostics",
+    "laws.errors",
+    "laws.modified",
+    "laws.polynomial",
+    "laws.program",
+    "laws.registry",
+    "laws.standard",
+    "laws.table",
+    "laws.units",
+    # linkage and machines
+    "cams.linkage",
+    "cams.linkage.primitives",
+    "cams.linkage.synthesis",
+    "cams.linkage.analysis",
+    "cams.machines",
+    "cams.machine",
+    "cams.machinefile",
+    "cams.commands.machine",
+    # forces
+    "cams.flywheel",
+    "cams.camforces",
+    "cams.kinetostatics",
+    # profiles
+    "cams.flatface",
+    "cams.profile",
+]
+
+#: Modules checked for a complete ``__all__``.
+ALL_MODULES = DOCTEST_MODULES + ["laws.base"]
+
+
+@pytest.mark.parametrize("name", DOCTEST_MODULES)
+def test_docstring_examples(name):
+    result = doctest.testmod(importlib.import_module(name), optionflags=doctest.ELLIPSIS)
+    assert result.failed == 0
+
+
+@pytest.mark.parametrize("name", ALL_MODULES)
+def test_module_declares_all(name):
+    mod = importlib.import_module(name)
+    assert mod.__all__ and all(hasattr(mod, n) for n in mod.__all__)
+
+
+def test_package_exports():
+    import laws
+
+    for n in laws.__all__:
+        assert hasattr(laws, n), n
+
+
+def test_every_module_with_examples_is_listed():
+    """A ``>>>`` example anywhere in the packages is run by this file."""
+    found = []
+    for pkg in PACKAGES:
+        for path in sorted((ROOT / pkg).rglob("*.py")):
+            if ">>>" in path.read_text(encoding="utf-8"):
+                parts = path.relative_to(ROOT).with_suffix("").parts
+                found.append(".".join(parts[:-1] if parts[-1] == "__init__" else parts))
+    assert found, "no module with examples found: wrong root?"
+    missing = sorted(set(found) - set(DOCTEST_MODULES))
+    assert not missing, f"modules with doctest examples not run: {missing}"
