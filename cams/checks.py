@@ -26,9 +26,11 @@ Every check is recomputed from the profile (the pitch curve of
 * ``bore`` (when ``[cam] bore_radius`` is given): the working profile's
   smallest distance from the cam centre exceeds the bore radius.
 
-Extremes are located on a dense grid per phase (``grid + 1`` positions) and
-refined by bounded scalar search, so they do not depend on the profile's
-sampling.
+Extremes are located on a dense grid per phase (``grid + 1`` positions, and
+both sides of a piecewise law's breakpoints) and refined between grid points
+where their analytic derivative by the cam angle changes sign: all brackets
+together, one array evaluation a step (:func:`_maximize`). They do not depend
+on the profile's sampling.
 """
 
 from __future__ import annotations
@@ -36,14 +38,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from cams.design import CamDesign
 from cams.profile import (
     Profile,
     ProfileOptions,
     _cross,
-    _rot,
+    _inversion,
     build_profile,
     default_bore_radius,
     pitch_phase,
@@ -167,7 +168,53 @@ class CheckReport:
         }
 
 
-# -- pressure angle from the profile ---------------------------------------------------------
+# -- pressure angle and curvature with their slopes -------------------------------------------
+
+
+def _pressure_rates(inv, eps: int, ds: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Pressure angle (radians, in [0, pi]) and its derivative by the cam angle (per radian).
+
+    Parameters
+    ----------
+    inv : cams.profile._Inversion
+        The inverted motion at the positions.
+    eps : {+1, -1}
+        The cam's sense of rotation.
+    ds : ndarray
+        ``s'``, the follower's displacement per radian of cam angle.
+
+    Notes
+    -----
+    The contact normal in the fixed frame is along ``eps J w1`` (the pitch
+    curve's outward normal turned back by ``R(eps phi)``), the follower's
+    velocity along ``T = dA/ds``. With ``alpha`` the signed angle from the
+    normal to ``T``, ``gamma = |alpha|`` and
+    ``d alpha / dphi = s' (T x T2) / |T|^2 - (w1 x w2) / |w1|^2 - eps``
+    (the turn of ``T`` less the turn of the normal, ``w1' = w2 + eps J w1``).
+    """
+    (wx, wy), (vx, vy), (tx, ty), (bx, by) = inv.w1, inv.w2, inv.t, inv.t2
+    nx, ny = -eps * wy, eps * wx
+    sin_, cos_ = nx * ty - ny * tx, nx * tx + ny * ty  # both times |n| |T| > 0
+    gamma = np.arctan2(np.abs(sin_), cos_)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        dalpha = ds * (tx * by - ty * bx) / (tx * tx + ty * ty) - (wx * vy - wy * vx) / (wx * wx + wy * wy) - eps
+    return gamma, np.sign(sin_) * dalpha
+
+
+def _curvature_rates(inv, eps: int) -> tuple[np.ndarray, np.ndarray]:
+    """Signed curvature (1/length, positive convex) and its derivative by the cam angle (1/length per radian).
+
+    ``kappa = -eps (w1 x w2) / |w1|^3``, so
+    ``dkappa/dphi = -eps ((w1 x w3) / |w1|^3 - 3 (w1 x w2)(w1 . w2) / |w1|^5)``
+    (``inv`` computed with ``third=True``).
+    """
+    (wx, wy), (vx, vy), (zx, zy) = inv.w1, inv.w2, inv.w3
+    speed = np.sqrt(wx * wx + wy * wy)
+    cr = wx * vy - wy * vx
+    with np.errstate(divide="ignore", invalid="ignore"):
+        kappa = -eps * cr / speed**3
+        dkappa = -eps * ((wx * zy - wy * zx) / speed**3 - 3 * cr * (wx * vx + wy * vy) / speed**5)
+    return kappa, dkappa
 
 
 def pressure_from_profile(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndarray) -> np.ndarray:
@@ -187,28 +234,164 @@ def pressure_from_profile(design: CamDesign, centre: np.ndarray, phase: int, u: 
     The contact normal is the pitch curve's outward normal (cam frame) turned
     into the fixed frame by ``R(eps phi)``; the follower's velocity is along
     ``e = dA/ds / |dA/ds|``. ``gamma = arccos(n . e)``, computed as
-    ``atan2(|n x e|, n . e)`` (accurate near 0).
+    ``atan2(|n x e|, n . e)`` (accurate near 0), on the components in the
+    fixed frame (:func:`_pressure_rates`).
     """
-    g = pitch_phase(design, centre, phase, u)
-    n = _rot(g.normal, design.cam_sense * g.phi)
-    e = g.rise_dir
-    return np.arctan2(np.abs(_cross(n, e)), np.sum(n * e, axis=-1))
+    u = np.atleast_1d(np.asarray(u, dtype=float))
+    m = design.program.evaluate_phase(phase, u)
+    inv = _inversion(design, np.asarray(centre, dtype=float), m)
+    return _pressure_rates(inv, design.cam_sense, m.ds)[0]
 
 
-def _phase_max(fun, design: CamDesign, i: int, grid: int) -> tuple[float, float]:
-    """Largest ``fun(u)`` over phase ``i`` and the cam angle (radians) where it occurs."""
+def _phase_rates(design: CamDesign, centre: np.ndarray, i: int, u: np.ndarray, what: tuple[str, ...]):
+    """Functions of phase ``i`` at positions ``u`` and their derivatives by the cam angle.
+
+    ``what`` names the rows: ``"convex"`` (kappa, 1/length), ``"concave"``
+    (-kappa) and ``"pressure"`` (radians). Returns ``values, slopes``, arrays
+    of shape ``(len(what), len(u))``.
+    """
+    m = design.program.evaluate_phase(i, u)
+    eps = design.cam_sense
+    inv = _inversion(design, centre, m, third="convex" in what or "concave" in what)
+    rows = {}
+    if "convex" in what or "concave" in what:
+        k, dk = _curvature_rates(inv, eps)
+        rows["convex"], rows["concave"] = (k, dk), (-k, -dk)
+    if "pressure" in what:
+        rows["pressure"] = _pressure_rates(inv, eps, m.ds)
+    return np.array([rows[w][0] for w in what]), np.array([rows[w][1] for w in what])
+
+
+# -- the largest values over a phase -----------------------------------------------------------
+
+#: Largest number of refinement steps (one array evaluation each) of :func:`_maximize`.
+MAX_STEPS = 60
+#: Width of a bracket (normalized position u) at which its refinement stops.
+U_TOL = 1e-12
+
+
+def _grid(design: CamDesign, i: int, grid: int) -> np.ndarray:
+    """Positions ``u`` searched over phase ``i``.
+
+    ``grid + 1`` even positions, and both sides of each breakpoint of the
+    phase's law: a piecewise law's derivatives may jump there, and with the
+    positions one rounding step either side of it each piece is smooth between
+    neighbouring positions and its one-sided ends are on the grid. A dwell's
+    functions are constant (the pitch curve is a circle): its two ends only.
+    """
+    p = design.program.phases[i]
+    if p.kind == "dwell":
+        return np.array([0.0, 1.0])
     u = np.linspace(0.0, 1.0, grid + 1)
-    v = fun(u)
-    k = int(np.nanargmax(v))
-    best_u, best = float(u[k]), float(v[k])
-    if design.program.phases[i].kind != "dwell":
-        lo, hi = u[max(k - 1, 0)], u[min(k + 1, grid)]
-        res = minimize_scalar(lambda x: -float(fun(np.array([x]))[0]), bounds=(lo, hi), method="bounded",
-                              options={"xatol": 1e-13})
-        if np.isfinite(res.fun) and -res.fun > best:
-            best_u, best = float(res.x), float(-res.fun)
+    bps = np.asarray(getattr(p.law, "breakpoints", ()), dtype=float)
+    bps = bps[(bps > 0) & (bps < 1)]
+    if len(bps) == 0:
+        return u
+    return np.unique(np.concatenate([u, bps, np.nextafter(bps, 0.0), np.nextafter(bps, 1.0)]))
+
+
+def _maximize(fun, u: np.ndarray, *, refine: bool = True) -> tuple[np.ndarray, np.ndarray]:
+    """Largest values of ``q`` smooth functions over sorted positions, refined between them.
+
+    Parameters
+    ----------
+    fun : callable
+        ``fun(x) -> (values, slopes)``, arrays of shape ``(q, len(x))``: the
+        functions at positions ``x`` and their derivatives (any positive
+        multiple of ``d/dx``).
+    u : ndarray, shape (n,)
+        Increasing positions covering the interval; the functions are smooth
+        between neighbouring positions.
+    refine : bool
+        Refine the local maxima between positions (else the grid's best).
+
+    Returns
+    -------
+    best, at : ndarray, shape (q,)
+        Largest value of each function and its position.
+
+    Notes
+    -----
+    Every pair of neighbouring positions where a function's slope turns from
+    positive to non-positive brackets a local maximum. All brackets of all
+    functions are refined together: each step evaluates ``fun`` once, at the
+    regula-falsi point on the slopes of every open bracket (the Illinois
+    variant: the slope of an end kept twice in a row is halved, so both ends
+    converge), at least ``U_TOL / 2`` inside it, and keeps the part where the
+    slope changes sign. A bracket closes at width ``U_TOL`` (or where the
+    slope is 0); there are at most ``MAX_STEPS`` steps. The best value
+    evaluated in a bracket replaces the grid's best if it is larger.
+    """
+    v, dv = fun(u)
+    rows = np.arange(len(v))
+    k = np.nanargmax(v, axis=1)
+    best, at = v[rows, k], u[k]
+    if not refine:
+        return best, at
+    row, j = np.nonzero((dv[:, :-1] > 0) & (dv[:, 1:] <= 0))
+    a, b = u[j], u[j + 1]
+    fa, fb = dv[row, j], dv[row, j + 1]
+    a = np.where(fb == 0, b, a)  # the slope vanishes at the right end: that is the maximum
+    top, top_u = np.full(len(j), -np.inf), a.copy()
+    kept = np.zeros(len(j), dtype=int)  # +1: a moved last, -1: b moved last
+    for _ in range(MAX_STEPS):
+        act = np.nonzero(b - a > U_TOL)[0]
+        if len(act) == 0:
+            break
+        A, B, FA, FB = a[act], b[act], fa[act], fb[act]
+        x = B - FB * (B - A) / (FB - FA)  # FA > 0 > FB
+        # at least U_TOL / 2 inside: a root within that of an end closes the bracket next step
+        x = np.clip(np.where(np.isfinite(x), x, 0.5 * (A + B)), A + U_TOL / 2, B - U_TOL / 2)
+        vx, dx = fun(x)
+        n = np.arange(len(act))
+        vx, dx = vx[row[act], n], dx[row[act], n]
+        better = vx > top[act]
+        top[act[better]], top_u[act[better]] = vx[better], x[better]
+        up, down = dx > 0, dx < 0
+        ia, ib, done = act[up], act[down], act[~(up | down)]  # slope 0 (or not a number): stop there
+        fb[ia[kept[ia] == 1]] *= 0.5
+        fa[ib[kept[ib] == -1]] *= 0.5
+        a[ia], fa[ia], kept[ia] = x[up], dx[up], 1
+        b[ib], fb[ib], kept[ib] = x[down], dx[down], -1
+        a[done] = b[done] = x[~(up | down)]
+    for q in rows:
+        mine = np.nonzero(row == q)[0]
+        if len(mine) and top[mine].max() > best[q]:
+            w = mine[np.argmax(top[mine])]
+            best[q], at[q] = top[w], top_u[w]
+    return best, at
+
+
+def _phase_maxima(design: CamDesign, centre: np.ndarray, grid: int, pressure=()) -> list[dict]:
+    """Largest curvature, negative curvature and pressure angle of every phase.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre, fixed frame, length unit.
+    grid : int
+        Even positions per phase of the search, ``grid + 1``.
+    pressure : collection of int
+        Phases whose largest pressure angle is wanted too.
+
+    Returns
+    -------
+    list of dict
+        Per phase, ``{"convex": (kappa, phi), "concave": (-kappa, phi)}`` and
+        ``"pressure": (gamma, phi)`` for the phases in ``pressure``: the
+        largest value (1/length; radians) and the cam angle where it is
+        (radians). A dwell is not refined (its values are constant).
+    """
     prog = design.program
-    return best, float(prog.starts[i] + best_u * prog.phases[i].angle)
+    centre = np.asarray(centre, dtype=float)
+    out = []
+    for i, p in enumerate(prog.phases):
+        what = ("convex", "concave") + (("pressure",) if i in pressure else ())
+        best, at = _maximize(lambda x: _phase_rates(design, centre, i, x, what), _grid(design, i, grid),
+                             refine=p.kind != "dwell")
+        out.append({w: (float(b), float(prog.starts[i] + a * p.angle)) for w, b, a in zip(what, best, at)})
+    return out
 
 
 # -- curvature --------------------------------------------------------------------------------
@@ -233,21 +416,25 @@ def curvature_extremes(design: CamDesign, centre: np.ndarray, *, grid: int = 200
     """Smallest convex and concave radius of curvature of the pitch curve.
 
     The largest signed curvature ``kappa`` (and the largest ``-kappa``) is
-    found per phase on ``grid + 1`` positions and refined by bounded search;
-    ``rho = 1 / kappa``. Phase joints where the pitch curve has a corner give
-    radius 0 on their side.
+    found per phase on ``grid + 1`` positions and refined where its analytic
+    derivative changes sign (:func:`_maximize`); ``rho = 1 / kappa``. Phase
+    joints where the pitch curve has a corner give radius 0 on their side.
     """
+    return _curvature(design, centre, _phase_maxima(design, centre, grid))
+
+
+def _curvature(design: CamDesign, centre: np.ndarray, maxima: list[dict]) -> CurvatureExtremes:
+    """:class:`CurvatureExtremes` from the phases' maxima (:func:`_phase_maxima`) and the joints' corners."""
     kmax, kat = -np.inf, 0.0
     cmax, cat = -np.inf, None
     prog = design.program
     nph = len(prog.phases)
     for i in range(nph):
-        k, at = _phase_max(lambda u: pitch_phase(design, centre, i, u).kappa, design, i, grid)
+        (k, at), (c, c_at) = maxima[i]["convex"], maxima[i]["concave"]
         if k > kmax:
             kmax, kat = k, at
-        k, at = _phase_max(lambda u: -pitch_phase(design, centre, i, u).kappa, design, i, grid)
-        if k > cmax:
-            cmax, cat = k, at
+        if c > cmax:
+            cmax, cat = c, c_at
         end = pitch_phase(design, centre, i, np.array([1.0]))
         start = pitch_phase(design, centre, (i + 1) % nph, np.array([0.0]))
         t1, t2 = end.d1[0], start.d1[0]
@@ -344,10 +531,12 @@ def check_profile(
     checks: list[Check] = []
 
     # jamming
+    constrained = design.constrained_phases()
+    maxima = _phase_maxima(design, centre, grid, pressure={i for i, _ in constrained})
     by_kind: dict[str, tuple[float, float, float]] = {}
-    for i, lim in design.constrained_phases():
+    for i, lim in constrained:
         kind = design.program.phases[i].kind
-        g, at = _phase_max(lambda u: pressure_from_profile(design, centre, i, u), design, i, grid)
+        g, at = maxima[i]["pressure"]
         if kind not in by_kind or g - lim > by_kind[kind][0] - by_kind[kind][2]:
             by_kind[kind] = (g, at, lim)
     for kind in ("rise", "return"):
@@ -359,7 +548,7 @@ def check_profile(
                                 f"(limit {np.degrees(lim):.4f} deg)"))
 
     # undercut and sharp points
-    ext = curvature_extremes(design, centre, grid=grid)
+    ext = _curvature(design, centre, maxima)
     checks.append(Check("undercut", bool(ext.convex > r), ext.convex, _deg(ext.convex_at), r, "mm",
                         f"smallest convex radius of curvature of the pitch curve {ext.convex:.6g} "
                         f"vs roller radius {r:g}"))

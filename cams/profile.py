@@ -15,11 +15,14 @@ Frames and signs
   It runs round the cam centre in the sense ``-eps`` as ``phi`` grows.
   Its derivatives with respect to the cam angle are analytic::
 
-      P'  = R(-eps phi) (r' - eps J r)
-      P'' = R(-eps phi) (r'' - 2 eps J r' - r)
+      P'   = R(-eps phi) (r' - eps J r)
+      P''  = R(-eps phi) (r'' - 2 eps J r' - r)
+      P''' = R(-eps phi) (r''' - 3 eps J r'' - 3 r' + eps J r)
 
-  with ``r = A - O``, ``r' = s' dA/ds``, ``r'' = s'' dA/ds + s'^2 d2A/ds2``
-  and ``J`` the rotation by +90 degrees.
+  with ``r = A - O``, ``r' = s' dA/ds``, ``r'' = s'' dA/ds + s'^2 d2A/ds2``,
+  ``r''' = s''' dA/ds + 3 s' s'' d2A/ds2 + s'^3 d3A/ds3`` and ``J`` the
+  rotation by +90 degrees. They are computed on the ``x`` and ``y``
+  components (:func:`_inversion`), vectorized over the cam angles.
 * Outward normal ``n``: the unit normal of the pitch curve pointing away from
   the cam's material, ``n = R(eps 90 deg) P' / |P'|``.
 * Signed curvature ``kappa = -eps (P' x P'') / |P'|^3`` and radius of
@@ -43,8 +46,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from cams.design import CamDesign
-from cams.follower import Follower, Rocker, Translating
+from cams.follower import Rocker, Translating
 from laws.errors import InputError
+from laws.program import Motion
 
 __all__ = [
     "PitchGeometry",
@@ -68,32 +72,100 @@ PROFILE_KEYS = ("tolerance", "min_curvature_radius")
 MAX_POINTS = 2_000_000
 
 
-def _J(v: np.ndarray) -> np.ndarray:
-    """Rotate vectors (last axis of size 2) by +90 degrees."""
-    return np.stack([-v[..., 1], v[..., 0]], axis=-1)
-
-
-def _rot(v: np.ndarray, angle: np.ndarray) -> np.ndarray:
-    """Rotate vectors ``v`` (..., 2) counter-clockwise by ``angle`` (radians, broadcast)."""
-    c, s = np.cos(angle), np.sin(angle)
-    return np.stack([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]], axis=-1)
+def _xy(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Vectors of shape ``x.shape + (2,)`` from their components ``x`` and ``y``."""
+    out = np.empty(np.shape(x) + (2,))
+    out[..., 0] = x
+    out[..., 1] = y
+    return out
 
 
 def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
 
 
-def _second(follower: Follower, s: np.ndarray) -> np.ndarray:
-    """``d2A/ds2`` of the roller centre in the fixed frame.
+@dataclass(frozen=True, eq=False)
+class _Inversion:
+    """Pitch-curve derivatives by inversion, as components, before the turn into the cam frame.
 
-    Rocker: ``A = arm (cos(sense s), sin(sense s))`` about the pivot at the
-    origin, so ``d2A/ds2 = -(A - pivot)``. Translating: a straight line, zero.
+    Every field is a pair ``(x, y)`` of arrays in the orientation of the fixed
+    frame; turned by ``R(-eps phi)`` they give the cam-frame vectors.
+
+    Attributes
+    ----------
+    r : tuple of ndarray
+        ``A - O``, length unit (turned: the pitch point ``P``).
+    w1, w2 : tuple of ndarray
+        Turned: ``dP/dphi`` (length per radian) and ``d2P/dphi2`` (per radian^2).
+    w3 : tuple of ndarray or None
+        Turned: ``d3P/dphi3`` (per radian^3); ``None`` unless asked for.
+    t, t2 : tuple of ndarray
+        The follower's ``dA/ds`` and ``d2A/ds2``, fixed frame.
     """
-    if isinstance(follower, Rocker):
-        return follower.pivot - follower.position(s)
-    if isinstance(follower, Translating):
-        return np.zeros(np.shape(s) + (2,))
-    raise InputError("follower.kind", "profiles are defined for rocker and translating followers")  # pragma: no cover
+
+    r: tuple[np.ndarray, np.ndarray]
+    w1: tuple[np.ndarray, np.ndarray]
+    w2: tuple[np.ndarray, np.ndarray]
+    w3: tuple[np.ndarray, np.ndarray] | None
+    t: tuple[np.ndarray, np.ndarray]
+    t2: tuple[np.ndarray, np.ndarray]
+
+
+def _inversion(design: CamDesign, centre: np.ndarray, m, *, third: bool = False) -> _Inversion:
+    """Derivatives of the pitch curve ``P = R(-eps phi) r``, ``r = A(s(phi)) - O``, as components.
+
+    With ``D v = v' - eps J v`` (a derivative seen from the turning cam, ``J``
+    the rotation by +90 degrees), ``P^(k) = R(-eps phi) D^k r``::
+
+        w1 = D r  = r' - eps J r
+        w2 = D w1 = r'' - 2 eps J r' - r
+        w3 = D w2 = r''' - 3 eps J r'' - 3 r' + eps J r
+
+    where ``r' = s' T``, ``r'' = s'' T + s'^2 T2``,
+    ``r''' = s''' T + 3 s' s'' T2 + s'^3 T3`` and ``T, T2, T3`` are ``dA/ds``
+    and its derivatives. A rocker's roller centre turns about the pivot, so
+    ``T2 = -(A - pivot)`` and ``T3 = -T``; a translating follower's moves on a
+    line, ``T2 = T3 = 0``.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : ndarray, shape (2,)
+        Cam centre O, fixed frame, length unit.
+    m : laws.program.Motion
+        Follower displacement ``s`` and its derivatives by the cam angle.
+    third : bool
+        Also compute ``w3`` (from ``m.d3s``).
+
+    Returns
+    -------
+    _Inversion
+    """
+    f = design.follower
+    eps = design.cam_sense
+    A, T, _ = f.frame(np.asarray(m.s, dtype=float))
+    tx, ty = T[..., 0], T[..., 1]
+    if isinstance(f, Rocker):
+        px, py = f.pivot
+        bx, by = px - A[..., 0], py - A[..., 1]
+        cx, cy = -tx, -ty
+    elif isinstance(f, Translating):
+        bx = by = cx = cy = np.zeros_like(tx)
+    else:  # pragma: no cover
+        raise InputError("follower.kind", "profiles are defined for rocker and translating followers")
+    rx, ry = A[..., 0] - centre[0], A[..., 1] - centre[1]
+    s1, s2 = m.ds, m.d2s
+    r1x, r1y = s1 * tx, s1 * ty
+    q = s1**2
+    r2x, r2y = s2 * tx + q * bx, s2 * ty + q * by
+    w1 = (r1x + eps * ry, r1y - eps * rx)
+    w2 = (r2x + 2 * eps * r1y - rx, r2y - 2 * eps * r1x - ry)
+    w3 = None
+    if third:
+        k2, k3 = 3 * s1 * s2, s1**3
+        r3x, r3y = m.d3s * tx + k2 * bx + k3 * cx, m.d3s * ty + k2 * by + k3 * cy
+        w3 = (r3x + 3 * eps * r2y - 3 * r1x - eps * ry, r3y - 3 * eps * r2x - 3 * r1y + eps * rx)
+    return _Inversion((rx, ry), w1, w2, w3, (tx, ty), (bx, by))
 
 
 @dataclass(frozen=True, eq=False)
@@ -139,32 +211,37 @@ class PitchGeometry:
         return self.point + distance * self.normal
 
 
-def _geometry(design: CamDesign, centre: np.ndarray, phi: np.ndarray, m) -> PitchGeometry:
-    f = design.follower
+def _pitch_values(design: CamDesign, centre: np.ndarray, phi: np.ndarray, m):
+    """Pitch point and outward unit normal (cam frame, as components), signed curvature.
+
+    Returns ``inv, (c, s), (px, py), (nx, ny), kappa`` with ``inv`` the
+    :class:`_Inversion`, ``c, s`` the cosine and sine of the turn ``-eps phi``
+    into the cam frame, and ``kappa`` in 1/length (positive convex).
+    """
     eps = design.cam_sense
-    O = np.asarray(centre, dtype=float)
-    A = f.position(m.s)
-    T = f.tangent(m.s)
-    T2 = _second(f, m.s)
-    r = A - O
-    r1 = m.ds[..., None] * T
-    r2 = m.d2s[..., None] * T + (m.ds**2)[..., None] * T2
-    W = r1 - eps * _J(r)
-    W2 = r2 - 2 * eps * _J(r1) - r
-    ang = -eps * phi
-    speed = np.linalg.norm(W, axis=-1)
+    inv = _inversion(design, np.asarray(centre, dtype=float), m)
+    (rx, ry), (wx, wy), (vx, vy) = inv.r, inv.w1, inv.w2
+    speed = np.sqrt(wx * wx + wy * wy)
     with np.errstate(divide="ignore", invalid="ignore"):
-        kappa = -eps * _cross(W, W2) / speed**3
-        n = eps * _J(W) / speed[..., None]
+        kappa = -eps * (wx * vy - wy * vx) / speed**3
+        nx, ny = -eps * wy / speed, eps * wx / speed
+    c, s = np.cos(-eps * phi), np.sin(-eps * phi)
+    return inv, (c, s), (c * rx - s * ry, s * rx + c * ry), (c * nx - s * ny, s * nx + c * ny), kappa
+
+
+def _geometry(design: CamDesign, centre: np.ndarray, phi: np.ndarray, m) -> PitchGeometry:
+    inv, (c, s), (px, py), (nx, ny), kappa = _pitch_values(design, centre, phi, m)
+    (wx, wy), (vx, vy), (tx, ty) = inv.w1, inv.w2, inv.t
+    tn = np.sqrt(tx * tx + ty * ty)
     return PitchGeometry(
         phi=phi,
-        point=_rot(r, ang),
-        d1=_rot(W, ang),
-        d2=_rot(W2, ang),
-        normal=_rot(n, ang),
+        point=_xy(px, py),
+        d1=_xy(c * wx - s * wy, s * wx + c * wy),
+        d2=_xy(c * vx - s * vy, s * vx + c * vy),
+        normal=_xy(nx, ny),
         kappa=kappa,
         s=np.asarray(m.s, dtype=float),
-        rise_dir=T / np.linalg.norm(T, axis=-1, keepdims=True),
+        rise_dir=_xy(tx / tn, ty / tn),
     )
 
 
@@ -388,64 +465,98 @@ def default_bore_radius(profile: Profile) -> float:
     return float(min(0.3 * profile.R0, 0.8 * profile.min_work_radius))
 
 
-def _curves(g: PitchGeometry, r: float, groove: bool) -> list[tuple[np.ndarray, np.ndarray]]:
-    """The curves that are exported, with their absolute curvature: pitch, work, outer."""
-    out = [(g.point, np.abs(g.kappa))]
+def _motion(prog, ph: np.ndarray, u: np.ndarray) -> Motion:
+    """Motion at positions ``u`` of phases ``ph`` (sorted by phase), one-sided at the phase ends."""
+    cut = np.searchsorted(ph, np.arange(len(prog.phases) + 1))
+    parts = [prog.evaluate_phase(i, u[a:b]) for i, (a, b) in enumerate(zip(cut[:-1], cut[1:])) if b > a]
+    return Motion(*(np.concatenate([getattr(m, k) for m in parts]) for k in ("s", "ds", "d2s", "d3s")))
+
+
+def _curves(design: CamDesign, centre, ph: np.ndarray, u: np.ndarray, r: float, groove: bool):
+    """The exported curves at positions ``u`` of phases ``ph``: pitch, work (``r > 0``), outer (groove).
+
+    Returns ``x, y, k``, arrays of shape ``(curves, len(u))``: the points'
+    components in the cam frame (length) and the curves' absolute curvature
+    (1/length; an offset ``d`` along the normal has ``kappa / (1 + d kappa)``).
+    """
+    prog = design.program
+    angles = np.array([p.angle for p in prog.phases])
+    phi = prog.starts[ph] + u * angles[ph]
+    _, _, (px, py), (nx, ny), kappa = _pitch_values(design, centre, phi, _motion(prog, ph, u))
+    xs, ys, ks = [px], [py], [np.abs(kappa)]
     with np.errstate(divide="ignore", invalid="ignore"):
-        if r > 0:
-            out.append((g.offset(-r), np.abs(g.kappa / (1.0 - r * g.kappa))))
-        if groove:
-            out.append((g.offset(r), np.abs(g.kappa / (1.0 + r * g.kappa))))
+        for d in ([-r] if r > 0 else []) + ([r] if groove else []):
+            xs.append(px + d * nx)
+            ys.append(py + d * ny)
+            ks.append(np.abs(kappa / (1.0 + d * kappa)))
+    return np.array(xs), np.array(ys), np.array(ks)
+
+
+def _merge(a: np.ndarray, b: np.ndarray, kept: np.ndarray) -> np.ndarray:
+    """``a`` and ``b`` interleaved along the last axis: ``a`` where ``kept``, ``b`` elsewhere."""
+    out = np.empty(a.shape[:-1] + kept.shape, dtype=a.dtype)
+    out[..., kept] = a
+    out[..., ~kept] = b
     return out
 
 
-def _sample_phase(design: CamDesign, centre, i: int, tol: float, r: float, groove: bool) -> np.ndarray:
-    """Adaptive normalized positions ``u`` of phase ``i`` (0 and 1 included).
+def _sample(design: CamDesign, centre, tol: float, r: float, groove: bool) -> list[np.ndarray]:
+    """Adaptive normalized positions ``u`` of every phase (0 and 1 included), one array per phase.
 
     Each chord is split at its middle while the sagitta of any exported curve,
     estimated as ``max(L^2 |kappa|_max / 8, distance of the mid-point from the
     chord)``, exceeds ``tol``; chords shorter than ``tol`` are accepted (the
     curve then stays within ``tol`` of them up to a cusp of an undercut
-    profile).
+    profile). All phases are refined together and every position is
+    evaluated once: a round evaluates the mid-points of the fresh chords of
+    every phase, and a mid-point that splits its chord keeps its values as an
+    end of two of the next round's fresh chords.
     """
-    p = design.program.phases[i]
-    n0 = 2 if p.kind == "dwell" else 16
-    bps = tuple(getattr(p.law, "breakpoints", ())) if p.law is not None else ()
-    u = np.unique(np.concatenate([np.linspace(0.0, 1.0, n0 + 1), np.asarray(bps, float)]))
+    prog = design.program
+    us = []
+    for p in prog.phases:
+        n0 = 2 if p.kind == "dwell" else 16
+        bps = tuple(getattr(p.law, "breakpoints", ())) if p.law is not None else ()
+        us.append(np.unique(np.concatenate([np.linspace(0.0, 1.0, n0 + 1), np.asarray(bps, float)])))
+    # all phases' positions in one array, in phase order; a chord joins neighbours of the same phase
+    ph = np.concatenate([np.full(len(u), i) for i, u in enumerate(us)])
+    u = np.concatenate(us)
     du_min = 1e-12
-    fresh = np.ones(len(u) - 1, dtype=bool)
+    x, y, kk = _curves(design, centre, ph, u, r, groove)  # every curve at every position
+    fresh = ph[1:] == ph[:-1]
     for _ in range(64):
         idx = np.nonzero(fresh)[0]
         if len(idx) == 0:
             break
         ua, ub = u[idx], u[idx + 1]
         um = 0.5 * (ua + ub)
-        ga = pitch_phase(design, centre, i, ua)
-        gb = pitch_phase(design, centre, i, ub)
-        gm = pitch_phase(design, centre, i, um)
-        split = np.zeros(len(idx), dtype=bool)
-        for (a, ka), (b, kb), (m, km) in zip(_curves(ga, r, groove), _curves(gb, r, groove), _curves(gm, r, groove)):
-            d = b - a
-            L = np.linalg.norm(d, axis=1)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                dev = np.where(L > 0, np.abs(_cross(d, m - a)) / np.where(L > 0, L, 1.0), np.linalg.norm(m - a, axis=1))
-                k = np.nan_to_num(np.fmax(np.fmax(ka, kb), km), nan=np.inf, posinf=np.inf)
-                est = np.where(k > 0, L * L * k / 8.0, 0.0)
-            sag = np.fmax(dev, np.nan_to_num(est, nan=np.inf))
-            split |= (sag > tol) & (L > tol)
-        split &= (ub - ua) > du_min
+        xm, ym, km = _curves(design, centre, ph[idx], um, r, groove)
+        # chord a-b and mid-point m of every fresh chord, on every curve (rows)
+        ax, ay, ka, kb = x[:, idx], y[:, idx], kk[:, idx], kk[:, idx + 1]
+        dx, dy = x[:, idx + 1] - ax, y[:, idx + 1] - ay
+        mx, my = xm - ax, ym - ay
+        L = np.sqrt(dx * dx + dy * dy)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            dev = np.where(L > 0, np.abs(dx * my - dy * mx) / np.where(L > 0, L, 1.0), np.sqrt(mx * mx + my * my))
+            k = np.fmax(np.fmax(ka, kb), km)
+            k = np.where(np.isnan(k), np.inf, k)
+            est = np.where(k > 0, L * L * k / 8.0, 0.0)
+        sag = np.fmax(dev, np.where(np.isnan(est), np.inf, est))
+        split = np.any((sag > tol) & (L > tol), axis=0) & ((ub - ua) > du_min)
         if not np.any(split):
             break
         if len(u) + int(split.sum()) > MAX_POINTS:
             raise InputError("profile.tolerance", f"{tol:g} needs more than {MAX_POINTS} points; choose a larger tolerance")
-        new = um[split]
-        # the two halves of every split chord are the next round's fresh chords
-        u = np.concatenate([u, new])
-        order = np.argsort(u, kind="stable")
-        u = u[order]
-        is_new = np.concatenate([np.zeros(len(u) - len(new), bool), np.ones(len(new), bool)])[order]
-        fresh = is_new[1:] | is_new[:-1]
-    return u
+        # the mid-points of the split chords go between their ends (the k-th split one to idx + 1 + k);
+        # the two halves of each split chord are the next round's fresh chords
+        new = idx[split] + 1 + np.arange(int(split.sum()))
+        kept = np.ones(len(u) + len(new), dtype=bool)
+        kept[new] = False
+        u, ph = _merge(u, um[split], kept), _merge(ph, ph[idx[split]], kept)
+        x, y, kk = _merge(x, xm[:, split], kept), _merge(y, ym[:, split], kept), _merge(kk, km[:, split], kept)
+        fresh = np.zeros(len(u) - 1, dtype=bool)
+        fresh[new - 1] = fresh[new] = True
+    return [u[ph == i] for i in range(len(prog.phases))]
 
 
 def _corner_arc(P: np.ndarray, n1: np.ndarray, n2: np.ndarray, dist: float, tol: float) -> np.ndarray:
@@ -458,7 +569,7 @@ def _corner_arc(P: np.ndarray, n1: np.ndarray, n2: np.ndarray, dist: float, tol:
     if k <= 1:
         return np.empty((0, 2))
     t = a1 + da * np.arange(1, k) / k
-    return P + dist * np.stack([np.cos(t), np.sin(t)], axis=-1)
+    return P + dist * _xy(np.cos(t), np.sin(t))
 
 
 def build_profile(
@@ -506,8 +617,7 @@ def build_profile(
     nph = len(prog.phases)
     blocks: list[dict] = []
     closing = None
-    for i in range(nph):
-        u = _sample_phase(design, centre, i, tol, r, groove)
+    for i, u in enumerate(_sample(design, centre, tol, r, groove)):
         g = pitch_phase(design, centre, i, u[:-1])
         blocks.append(_rows(g, i, g.offset(-r), g.offset(r) if groove else None))
         if r > 0:
