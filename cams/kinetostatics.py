@@ -887,6 +887,48 @@ class ForceResult:
         plt.close(fig)
         return path
 
+    def plot_hodographs(self, path, *, title: str = "hodographs", marks: int = 12):
+        """Hodographs of the reactions: the tip of each pair's reaction vector over the cycle, to ``path``.
+
+        One panel a pair: ``R_x`` against ``R_y`` in N (frame axes), the
+        reaction on the pair's first body from its second, as stored in
+        :attr:`reactions`. ``marks`` positions equally spaced in crank
+        rotation from the first crank angle are numbered 1, 2, ... as in the
+        seeds' plans (position 1 at the first crank angle). Returns the path.
+        """
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        c = np.mod(self.model.sense * (self.phi - self.phi[0]), TWO_PI)
+        o = np.argsort(c)
+        joints = self.model.joints
+        cols = min(4, len(joints))
+        rows = -(-len(joints) // cols)
+        fig, axes = plt.subplots(rows, cols, figsize=(3.2 * cols, 3.2 * rows), squeeze=False)
+        at = [int(np.argmin(np.abs(np.angle(np.exp(1j * (c - TWO_PI * k / marks)))))) for k in range(marks)]
+        for ax, j in zip(axes.ravel(), joints):
+            R = self.reactions[j.name]
+            ax.plot(np.real(R)[o], np.imag(R)[o], lw=1.2)
+            ax.plot([0.0], [0.0], "k+", ms=8)
+            for k, i in enumerate(at):
+                ax.plot(np.real(R[i]), np.imag(R[i]), "o", ms=3, color="C3")
+                ax.annotate(str(k + 1), (np.real(R[i]), np.imag(R[i])), fontsize=7, xytext=(3, 3), textcoords="offset points")
+            ax.set_title(f"{j.name} ({j.kind})", fontsize=9)
+            ax.set_aspect("equal", adjustable="datalim")
+            ax.grid(True, alpha=0.3)
+            ax.tick_params(labelsize=7)
+            ax.set_xlabel("R_x, N", fontsize=8)
+            ax.set_ylabel("R_y, N", fontsize=8)
+        for ax in axes.ravel()[len(joints):]:
+            ax.set_visible(False)
+        fig.suptitle(title)
+        fig.tight_layout()
+        fig.savefig(path)
+        plt.close(fig)
+        return path
+
 
 def solve_model(model: Model, *, passes: int = 2, tol: float = 1e-9, max_passes: int = 50) -> ForceResult:
     """Reactions and the balancing moment of a model, with friction by successive passes.
@@ -1159,13 +1201,14 @@ class MachineForces:
         return out
 
     def plot(self, directory, stem: str, *, title: str = "") -> list:
-        """Reactions and balancing moment, energy curves, cam forces as PNGs in ``directory``; the paths."""
+        """Reactions and balancing moment, hodographs, energy curves, cam forces as PNGs in ``directory``; the paths."""
         from pathlib import Path
 
         d = Path(directory)
         paths = []
         if self.linkage is not None:
             paths.append(self.linkage.plot(d / f"{stem}_forces.png", title=f"{title}: reactions and balancing moment"))
+            paths.append(self.linkage.plot_hodographs(d / f"{stem}_hodographs.png", title=f"{title}: hodographs of the reactions"))
         if self.flywheel is not None:
             paths.append(self.flywheel.plot(d / f"{stem}_flywheel.png", title=f"{title}: energy"))
         if self.cam is not None:

@@ -97,7 +97,7 @@ def test_text_report(capsys):
 
 def test_plots(tmp_path, capsys):
     assert main(["machine", str(DATA), "--forces", "--plot", str(tmp_path)]) == 0
-    for name in ("cycle", "forces", "flywheel", "cam_forces"):
+    for name in ("cycle", "forces", "hodographs", "flywheel", "cam_forces"):
         png = tmp_path / f"slotting_forces_{name}.png"
         assert png.exists() and png.stat().st_size > 1000, name
 
