@@ -3,6 +3,12 @@
 ``Cam(design)`` does no work when it is made. Asking for ``solution`` solves
 the zone (once); ``tradeoff`` needs the zone but not the profile; the motion
 diagrams need only the program. Every result is computed once and reused.
+
+A flat-faced follower's design (:class:`cams.design.FlatFaceDesign`) has the
+same attributes: ``solution`` is a :class:`cams.flatface.FlatFaceSolution`
+(size from convexity), ``profile`` a :class:`cams.flatface.FlatFaceProfile`,
+``checks`` a :class:`cams.flatface.FlatCheckReport`; it has no trade-off and
+no forces (both None).
 """
 
 from __future__ import annotations
@@ -19,7 +25,7 @@ class Cam:
 
     Parameters
     ----------
-    design : CamDesign
+    design : CamDesign or FlatFaceDesign
     objective : {"R0", "L"}, optional
         What to minimize; default from the design file's ``[solve] objective``.
     """
@@ -27,6 +33,11 @@ class Cam:
     def __init__(self, design: CamDesign, *, objective: str | None = None):
         self.design = design
         self.objective = objective or design.extra.get("objective", "R0")
+
+    @property
+    def flat(self) -> bool:
+        """True for a flat-faced follower (sized by convexity)."""
+        return getattr(self.design, "face", "roller") == "flat"
 
     @classmethod
     def from_file(cls, path) -> "Cam":
@@ -38,6 +49,10 @@ class Cam:
     @cached_property
     def solution(self):
         """The sized cam (:class:`optimize.solve.SolveResult`), solved on first use."""
+        if self.flat:
+            from cams.flatface import size_flat_face
+
+            return size_flat_face(self.design)
         from optimize.solve import solve
 
         return solve(self.design, objective=self.objective)
@@ -45,7 +60,7 @@ class Cam:
     @cached_property
     def tradeoff(self):
         """The R0-L trade-off (rocker only; None for a translating follower)."""
-        if self.design.follower.kind != "rocker":
+        if self.flat or self.design.follower.kind != "rocker":
             return None
         from optimize.tradeoff import tradeoff
 
@@ -54,6 +69,10 @@ class Cam:
     @cached_property
     def options(self):
         """Profile settings from the design file (:class:`cams.profile.ProfileOptions`)."""
+        if self.flat:
+            from cams.profile import ProfileOptions
+
+            return ProfileOptions(self.design.tolerance, None, self.design.bore_radius)
         from cams.profile import profile_options
 
         return profile_options(self.design)
@@ -61,6 +80,10 @@ class Cam:
     @cached_property
     def profile(self):
         """The sampled pitch curve and working profile(s) at the design's chord tolerance."""
+        if self.flat:
+            from cams.flatface import flat_face_profile
+
+            return flat_face_profile(self.design, self.solution.R0, tolerance=self.options.tolerance)
         from cams.profile import build_profile
 
         return build_profile(self.design, self.solution.centre, tolerance=self.options.tolerance)
@@ -68,6 +91,10 @@ class Cam:
     @cached_property
     def checks(self):
         """Jamming, undercut, validity and bore checks of the finished profile."""
+        if self.flat:
+            from cams.flatface import check_flat_face
+
+            return check_flat_face(self.design, self.solution, self.profile)
         from cams.checks import check_profile
 
         return check_profile(self.design, self.solution.centre, options=self.options, profile=self.profile)
@@ -79,6 +106,8 @@ class Cam:
         ``None`` without a ``[dynamics]`` table, for a form-closed cam or
         without a cam speed (see :func:`cams.camforces.design_forces`).
         """
+        if self.flat:
+            return None
         from cams.camforces import design_forces
 
         return design_forces(self.design, self.solution.centre)[0]

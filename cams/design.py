@@ -14,7 +14,7 @@ from cams.follower import Follower, Rocker, Translating
 from laws.errors import InputError, check_option
 from laws.program import Program
 
-__all__ = ["Limits", "CamDesign", "METHODS", "CLOSURES"]
+__all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES"]
 
 METHODS = ("exact", "convex", "exhaustive")
 CLOSURES = ("force", "form")
@@ -137,8 +137,83 @@ class CamDesign:
                 out.append((i, self.limits.return_limit))
         return out
 
+    face = "roller"
+
     def with_(self, **changes) -> "CamDesign":
         """A copy with some fields changed."""
         from dataclasses import replace
 
         return replace(self, **changes)
+
+
+@dataclass(frozen=True)
+class FlatFaceDesign:
+    """A cam for a flat-faced follower: sized by convexity, not by a pressure-angle limit.
+
+    The pressure angle of a flat face is fixed by the geometry (zero for a
+    translating face and for a rocker face through its pivot); the base
+    radius is the smallest one whose profile keeps its radius of curvature at
+    least ``min_radius`` everywhere (see :mod:`cams.flatface`).
+
+    Parameters
+    ----------
+    follower : cams.flatface.FlatTranslating or cams.flatface.FlatRocker
+    program : Program
+        Lift in radians (rocker swing) or length (translating stroke).
+    min_radius : float
+        Smallest allowed radius of curvature of the cam profile, length, > 0.
+    cam_sense : {+1, -1}
+    rpm : float or None
+    name : str
+    min_base_radius : float or None
+        Constructive floor on R0 (length).
+    base_radius : float or None
+        A chosen R0 (length) instead of the smallest: checked, not sized.
+    bore_radius : float or None
+        Bore radius (length) to check the profile against.
+    tolerance : float
+        Chord tolerance of the sampled profile (length).
+    """
+
+    follower: object
+    program: Program
+    min_radius: float
+    cam_sense: int = 1
+    rpm: float | None = None
+    name: str = "cam"
+    min_base_radius: float | None = None
+    base_radius: float | None = None
+    bore_radius: float | None = None
+    tolerance: float = 1e-3
+    extra: dict = field(default_factory=dict, compare=False, hash=False)
+
+    face = "flat"
+
+    def __post_init__(self):
+        from cams.flatface import FlatRocker, FlatTranslating
+
+        if self.cam_sense not in (1, -1):
+            raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
+        if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
+            raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
+        if not isinstance(self.follower, (FlatTranslating, FlatRocker)):
+            raise InputError("follower", "must be a FlatTranslating or FlatRocker follower")
+        if isinstance(self.follower, FlatRocker) and not self.program.lift < np.pi:
+            raise InputError("follower.swing", "must be < 180 degrees")
+        for name, fld in (("min_radius", "limits.min_radius"), ("min_base_radius", "limits.min_base_radius"),
+                          ("base_radius", "cam.base_radius"), ("bore_radius", "cam.bore_radius"),
+                          ("tolerance", "profile.tolerance")):
+            v = getattr(self, name)
+            if v is None and name not in ("min_radius", "tolerance"):
+                continue
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (np.isfinite(v) and v > 0):
+                raise InputError(fld, f"must be a number > 0, got {v!r}")
+        floor = self.min_base_radius
+        if self.base_radius is not None and floor is not None and self.base_radius < floor:
+            raise InputError("cam.base_radius", f"{self.base_radius:g} is below limits.min_base_radius = "
+                             f"{self.min_base_radius:g}")
+
+    @property
+    def scale(self) -> float:
+        """Characteristic length for relative tolerances (stroke or centre distance)."""
+        return self.follower.scale

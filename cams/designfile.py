@@ -3,8 +3,8 @@
 Schema (see ``examples/``)::
 
     name = "feed cam"
-    [follower]   kind, arm, swing (rocker) | stroke, offset (translating),
-                 roller_radius, rise_direction ("cw" | "ccw", rocker)
+    [follower]   kind, face ("roller" default | "flat"), arm, swing (rocker) | stroke, offset
+                 (translating), roller_radius, rise_direction ("cw" | "ccw", rocker)
     [cam]        rotation ("cw" | "ccw"), rpm (optional)
     [[motion]]   phase ("rise" | "dwell" | "return"), law, angle (degrees),
                  height (optional, part of the lift); one dwell may omit angle
@@ -14,6 +14,24 @@ Schema (see ``examples/``)::
     [dynamics]   optional, force closure: mass, load, spring_rate, preload, friction,
                  journal_radius, margin, max_spring_force (see cams.camforces.dynamics_from_dict);
                  parsed into ``design.extra["dynamics"]`` (a cams.camforces.DynamicsSpec)
+
+A flat-faced follower (``face = "flat"``) gives a :class:`cams.design.FlatFaceDesign`
+instead: its size is limited by convexity, not by a pressure angle::
+
+    [follower]   kind, face = "flat"; translating: stroke, offset (default 0: it only
+                 moves the contact); rocker: swing, rise_direction, centre_distance
+                 (L, pivot to cam centre, required), face_offset (signed distance
+                 pivot to face line, positive with the pivot on the cam's side; default 0)
+    [cam]        rotation, rpm, bore_radius, base_radius (optional: a chosen R0 to
+                 check instead of the smallest)
+    [[motion]]   as above
+    [limits]     min_radius (smallest radius of curvature of the profile, default a
+                 tenth of the stroke, or of L times the swing in radians), min_base_radius,
+                 closure = "force" (the only one)
+    [profile]    tolerance
+
+No roller_radius, arm, pressure-angle limits, safety_factor, [solve] or [dynamics]
+for a flat face: each is refused with a one-line error naming it.
 """
 
 from __future__ import annotations
@@ -22,10 +40,11 @@ from pathlib import Path
 
 import numpy as np
 
-from cams.design import CamDesign, Limits
+from cams.design import CamDesign, FlatFaceDesign, Limits
 from cams.files import check_keys, read_toml
 from cams.files import toml_number as _num
 from cams.files import toml_table as _table
+from cams.flatface import FlatRocker, FlatTranslating
 from cams.follower import Rocker, Translating, sense_of
 from laws.errors import InputError, check_option
 from laws.program import Phase, Program
@@ -35,21 +54,62 @@ __all__ = ["load_design", "design_from_dict"]
 
 _KEYS = {
     "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics"},
-    "follower": {"kind", "arm", "swing", "stroke", "offset", "roller_radius", "rise_direction"},
+    "follower": {"kind", "face", "arm", "swing", "stroke", "offset", "roller_radius", "rise_direction"},
     "cam": {"rotation", "rpm", "bore_radius"},
     "motion": {"phase", "law", "angle", "height"},
     "limits": {"pressure_angle", "return_pressure_angle", "closure", "safety_factor",
                "centre_distance", "min_base_radius"},
     "solve": {"method", "samples", "objective"},
     "profile": {"tolerance", "min_curvature_radius"},
+    # flat-faced followers
+    "flat_rocker": {"kind", "face", "swing", "rise_direction", "centre_distance", "face_offset"},
+    "flat_translating": {"kind", "face", "stroke", "offset"},
+    "flat_cam": {"rotation", "rpm", "bore_radius", "base_radius"},
+    "flat_limits": {"min_radius", "min_base_radius", "closure"},
+    "flat_profile": {"tolerance"},
 }
+
+#: Keys of roller designs a flat face does not take, and why (one line each).
+_NOT_FLAT = {
+    "follower.roller_radius": "does not apply to a flat-faced follower (face = \"flat\"); remove it",
+    "follower.arm": "does not apply to a flat-faced rocker: give follower.centre_distance (pivot to cam centre) "
+                    "and follower.face_offset (pivot to face line, default 0)",
+    "limits.pressure_angle": "does not apply to a flat-faced follower: its pressure angle is fixed by the geometry "
+                             "(cams solve reports it); its size is limited by limits.min_radius",
+    "limits.return_pressure_angle": "does not apply to a flat-faced follower: its pressure angle is fixed by the "
+                                    "geometry (cams solve reports it); its size is limited by limits.min_radius",
+    "limits.safety_factor": "does not apply to a flat-faced follower (K_C widens a roller rocker's pressure-angle "
+                            "limit); remove it",
+    "limits.centre_distance": "for a flat-faced rocker the centre distance L is follower.centre_distance",
+    "profile.min_curvature_radius": "for a flat-faced follower the profile's smallest radius of curvature is "
+                                    "limits.min_radius",
+}
+
+#: Keys only flat-faced followers take, and what a roller design uses instead.
+_ONLY_FLAT = {
+    "follower.centre_distance": "applies to flat-faced rockers (face = \"flat\"); a roller rocker's fixed centre "
+                                "distance is limits.centre_distance",
+    "follower.face_offset": "applies to flat-faced rockers (face = \"flat\")",
+    "cam.base_radius": "applies to flat-faced followers (face = \"flat\"); a roller cam's R0 is solved "
+                       "(a floor: limits.min_base_radius)",
+    "limits.min_radius": "applies to flat-faced followers (face = \"flat\"); for a roller cam use [profile] "
+                         "min_curvature_radius",
+}
+
+
+def _refuse(table: dict, where: str, reasons: dict) -> None:
+    """Raise for the first key of ``table`` that ``reasons`` (by ``where.key``) refuses."""
+    for k in table:
+        why = reasons.get(f"{where}.{k}")
+        if why:
+            raise InputError(f"{where}.{k}", why)
 
 
 def _check_keys(table: dict, where: str, field: str) -> None:
     check_keys(table, _KEYS[where], field or "design")
 
 
-def design_from_dict(d: dict) -> CamDesign:
+def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     """Build a :class:`CamDesign` from a parsed design file (degrees, lengths).
 
     Parameters
@@ -60,8 +120,10 @@ def design_from_dict(d: dict) -> CamDesign:
 
     Returns
     -------
-    CamDesign
-        Lengths kept in mm; the rocker's swing and heights, the phase angles
+    CamDesign or FlatFaceDesign
+        A :class:`FlatFaceDesign` for ``follower.face = "flat"`` (see the
+        module notes), else a :class:`CamDesign`:
+        lengths kept in mm; the rocker's swing and heights, the phase angles
         (scaled to sum to exactly 2 pi) and the pressure-angle limits in
         radians; ``rise_direction`` and ``rotation`` as senses (+1
         counter-clockwise). ``extra`` holds ``"objective"``, the file as
@@ -78,8 +140,11 @@ def design_from_dict(d: dict) -> CamDesign:
         raise InputError("units", f"{d['units']!r} is not supported: design files are in mm (lengths of the "
                          "[dynamics] table are SI as documented)")
     fo = _table(d, "follower")
-    _check_keys(fo, "follower", "follower")
     kind = check_option("follower.kind", fo.get("kind", "rocker"), ("rocker", "translating"))
+    if check_option("follower.face", fo.get("face", "roller"), ("roller", "flat")) == "flat":
+        return _flat_design(d, fo, kind)
+    _refuse(fo, "follower", _ONLY_FLAT)
+    _check_keys(fo, "follower", "follower")
     roller = _num(fo, "roller_radius", "follower.roller_radius", required=False, default=0.0)
     if kind == "rocker":
         for k in ("stroke", "offset"):
@@ -102,10 +167,52 @@ def design_from_dict(d: dict) -> CamDesign:
         lift = stroke
 
     cam = _table(d, "cam")
+    _refuse(cam, "cam", _ONLY_FLAT)
     _check_keys(cam, "cam", "cam")
     cam_sense = sense_of("cam.rotation", cam.get("rotation", "ccw"))
     rpm = _num(cam, "rpm", "cam.rpm", required=False)
+    program = _program(d, kind, lift)
 
+    li = _table(d, "limits")
+    _refuse(li, "limits", _ONLY_FLAT)
+    _check_keys(li, "limits", "limits")
+    pa = _num(li, "pressure_angle", "limits.pressure_angle")
+    rpa = _num(li, "return_pressure_angle", "limits.return_pressure_angle", required=False)
+    for name, v in (("pressure_angle", pa), ("return_pressure_angle", rpa)):
+        if v is not None and not 0 < v < 90:
+            raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {v!r}")
+    limits = Limits(
+        pressure_angle=np.radians(pa),
+        return_pressure_angle=None if rpa is None else np.radians(rpa),
+        closure=li.get("closure", "force"),
+        safety_factor=_num(li, "safety_factor", "limits.safety_factor", required=False, default=1.0),
+        centre_distance=_num(li, "centre_distance", "limits.centre_distance", required=False),
+        min_base_radius=_num(li, "min_base_radius", "limits.min_base_radius", required=False),
+    )
+    _check_keys(_table(d, "profile"), "profile", "profile")
+    so = _table(d, "solve")
+    _check_keys(so, "solve", "solve")
+    samples = so.get("samples", 360)
+    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 2:
+        raise InputError("solve.samples", f"must be an integer >= 2, got {samples!r}")
+    name = _name(d)
+    return CamDesign(
+        follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=name,
+        method=so.get("method", "exact"), samples=samples,
+        extra={"objective": check_option("solve.objective", so.get("objective", "R0"), ("R0", "L")), "raw": d,
+               **_dynamics(d)},
+    )
+
+
+def _name(d: dict) -> str:
+    name = d.get("name", "cam")
+    if not isinstance(name, str):
+        raise InputError("name", "must be a string")
+    return name
+
+
+def _program(d: dict, kind: str, lift: float) -> Program:
+    """The ``[[motion]]`` phases as a :class:`Program` (heights of a rocker in degrees in the file)."""
     motion = d.get("motion")
     if not isinstance(motion, list) or not motion:
         raise InputError("motion", "needs a list of phases ([[motion]] tables)")
@@ -148,37 +255,75 @@ def design_from_dict(d: dict) -> CamDesign:
     # exact 2 pi: scale away rounding of the degree inputs
     angles = np.radians([s[1] for s in specs])
     angles *= 2 * np.pi / angles.sum()
-    program = Program(tuple(Phase(s[0], float(a), s[2], s[3]) for s, a in zip(specs, angles)), lift)
+    return Program(tuple(Phase(s[0], float(a), s[2], s[3]) for s, a in zip(specs, angles)), lift)
+
+
+def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
+    """The design of a flat-faced follower (``face = "flat"``): see the module notes."""
+    _refuse(fo, "follower", _NOT_FLAT)
+    if kind == "rocker":
+        for k in ("stroke", "offset"):
+            if k in fo:
+                raise InputError(f"follower.{k}", "applies to translating followers; a flat-faced rocker takes "
+                                 "swing, centre_distance and face_offset")
+        check_keys(fo, _KEYS["flat_rocker"], "follower")
+        swing = _num(fo, "swing", "follower.swing")
+        if not 0 < swing < 180:
+            raise InputError("follower.swing", f"must be in (0, 180) degrees, got {swing!r}")
+        if "centre_distance" not in fo:
+            raise InputError("follower.centre_distance", "is required for a flat-faced rocker: the distance L from "
+                             "the pivot to the cam centre (mm, > 0)")
+        L = _num(fo, "centre_distance", "follower.centre_distance")
+        if L <= 0:
+            raise InputError("follower.centre_distance", f"must be > 0, got {L!r}")
+        follower = FlatRocker(L, _num(fo, "face_offset", "follower.face_offset", default=0.0),
+                              sense=sense_of("follower.rise_direction", fo.get("rise_direction", "cw")))
+        lift = np.radians(swing)
+        default_min_radius = 0.1 * L * lift
+    else:
+        for k in ("swing", "rise_direction", "centre_distance", "face_offset"):
+            if k in fo:
+                raise InputError(f"follower.{k}", "applies to rocker followers; a flat-faced translating follower "
+                                 "takes stroke and offset")
+        check_keys(fo, _KEYS["flat_translating"], "follower")
+        stroke = _num(fo, "stroke", "follower.stroke")
+        if stroke <= 0:
+            raise InputError("follower.stroke", f"must be > 0, got {stroke!r}")
+        follower = FlatTranslating(_num(fo, "offset", "follower.offset", default=0.0), stroke_scale=stroke)
+        lift = stroke
+        default_min_radius = 0.1 * stroke
+
+    cam = _table(d, "cam")
+    check_keys(cam, _KEYS["flat_cam"], "cam")
+    cam_sense = sense_of("cam.rotation", cam.get("rotation", "ccw"))
+    program = _program(d, kind, lift)
 
     li = _table(d, "limits")
-    _check_keys(li, "limits", "limits")
-    pa = _num(li, "pressure_angle", "limits.pressure_angle")
-    rpa = _num(li, "return_pressure_angle", "limits.return_pressure_angle", required=False)
-    for name, v in (("pressure_angle", pa), ("return_pressure_angle", rpa)):
-        if v is not None and not 0 < v < 90:
-            raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {v!r}")
-    limits = Limits(
-        pressure_angle=np.radians(pa),
-        return_pressure_angle=None if rpa is None else np.radians(rpa),
-        closure=li.get("closure", "force"),
-        safety_factor=_num(li, "safety_factor", "limits.safety_factor", required=False, default=1.0),
-        centre_distance=_num(li, "centre_distance", "limits.centre_distance", required=False),
-        min_base_radius=_num(li, "min_base_radius", "limits.min_base_radius", required=False),
-    )
-    _check_keys(_table(d, "profile"), "profile", "profile")
+    _refuse(li, "limits", _NOT_FLAT)
+    check_keys(li, _KEYS["flat_limits"], "limits")
+    if li.get("closure", "force") != "force":
+        check_option("limits.closure", li["closure"], ("force", "form"))
+        raise InputError("limits.closure", "a flat-faced follower is force-closed (a spring keeps it on the cam): "
+                         "only 'force'")
+    pt = _table(d, "profile")
+    _refuse(pt, "profile", _NOT_FLAT)
+    check_keys(pt, _KEYS["flat_profile"], "profile")
     so = _table(d, "solve")
-    _check_keys(so, "solve", "solve")
-    samples = so.get("samples", 360)
-    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 2:
-        raise InputError("solve.samples", f"must be an integer >= 2, got {samples!r}")
-    name = d.get("name", "cam")
-    if not isinstance(name, str):
-        raise InputError("name", "must be a string")
-    return CamDesign(
-        follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=name,
-        method=so.get("method", "exact"), samples=samples,
-        extra={"objective": check_option("solve.objective", so.get("objective", "R0"), ("R0", "L")), "raw": d,
-               **_dynamics(d)},
+    for k in so:
+        raise InputError(f"solve.{k}", "does not apply to a flat-faced follower: its base radius follows from "
+                         "convexity directly; remove the [solve] table")
+    if "dynamics" in d:
+        raise InputError("dynamics", "forces are computed for roller followers only; remove the [dynamics] table "
+                         "for a flat face")
+    return FlatFaceDesign(
+        follower=follower, program=program,
+        min_radius=_num(li, "min_radius", "limits.min_radius", default=default_min_radius),
+        cam_sense=cam_sense, rpm=_num(cam, "rpm", "cam.rpm", required=False), name=_name(d),
+        min_base_radius=_num(li, "min_base_radius", "limits.min_base_radius", required=False),
+        base_radius=_num(cam, "base_radius", "cam.base_radius", required=False),
+        bore_radius=_num(cam, "bore_radius", "cam.bore_radius", required=False),
+        tolerance=_num(pt, "tolerance", "profile.tolerance", default=1e-3),
+        extra={"raw": d},
     )
 
 
@@ -192,7 +337,7 @@ def _dynamics(d: dict) -> dict:
     return {"dynamics": dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm")}
 
 
-def load_design(path: str | Path) -> CamDesign:
+def load_design(path: str | Path) -> CamDesign | FlatFaceDesign:
     """Read a design file; raise :class:`InputError` for unreadable or invalid files.
 
     Parameters
@@ -202,7 +347,7 @@ def load_design(path: str | Path) -> CamDesign:
 
     Returns
     -------
-    CamDesign
+    CamDesign or FlatFaceDesign
         As :func:`design_from_dict`.
     """
     return design_from_dict(read_toml(path))

@@ -13,6 +13,11 @@ Layers (DXF) and groups (SVG):
 * ``PITCH``: the pitch curve (roller-centre path);
 * ``BASE``: the base circle of radius R0 (the pitch curve's, the project's R0);
 * ``BORE``: the bore circle.
+
+A flat-faced follower's cam (:class:`cams.flatface.FlatFaceProfile`) has no
+pitch curve: its files hold the profile (``PROFILE``, the envelope of the face
+lines, CSV columns ``phi_deg,work_x,work_y``), the base circle (R0, the
+profile's distance from the centre at the near dwell) and the bore.
 """
 
 from __future__ import annotations
@@ -42,6 +47,8 @@ _SVG_STYLE = {
 
 def csv_header(profile: Profile) -> str:
     """The CSV header line (without newline)."""
+    if profile.pitch is None:
+        return "phi_deg,work_x,work_y"
     cols = ["phi_deg", "pitch_x", "pitch_y", "work_x", "work_y"]
     if profile.outer is not None:
         cols += ["outer_x", "outer_y"]
@@ -52,9 +59,10 @@ def write_csv(profile: Profile, path: str | os.PathLike, *, field: str = "--csv"
     """Write the profile as CSV: one header line, then one row per sample.
 
     Columns ``phi_deg,pitch_x,pitch_y,work_x,work_y`` (plus ``outer_x,outer_y``
-    for a groove): cam angle in degrees, coordinates in the cam frame, length
-    unit; rows in cam-angle order, the first at ``phi = 0``. The curves are
-    closed: the last row joins the first.
+    for a groove; ``phi_deg,work_x,work_y`` for a flat-faced follower's cam):
+    cam angle in degrees, coordinates in the cam frame, length unit; rows in
+    cam-angle order, the first at ``phi = 0``. The curves are closed: the last
+    row joins the first.
 
     Parameters
     ----------
@@ -68,7 +76,11 @@ def write_csv(profile: Profile, path: str | os.PathLike, *, field: str = "--csv"
     InputError
         The file cannot be written (no partial file is left).
     """
-    cols = [np.degrees(profile.phi), profile.pitch[:, 0], profile.pitch[:, 1], profile.work[:, 0], profile.work[:, 1]]
+    if profile.pitch is None:
+        cols = [np.degrees(profile.phi), profile.work[:, 0], profile.work[:, 1]]
+    else:
+        cols = [np.degrees(profile.phi), profile.pitch[:, 0], profile.pitch[:, 1], profile.work[:, 0],
+                profile.work[:, 1]]
     if profile.outer is not None:
         cols += [profile.outer[:, 0], profile.outer[:, 1]]
     data = np.column_stack(cols)
@@ -116,14 +128,15 @@ def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     doc.units = units.MM
     doc.header["$MEASUREMENT"] = 1
     for name in LAYERS:
-        if name == "OUTER" and profile.outer is None:
+        if (name == "OUTER" and profile.outer is None) or (name == "PITCH" and profile.pitch is None):
             continue
         doc.layers.add(name, color=_COLOURS[name])
     msp = doc.modelspace()
     msp.add_lwpolyline(profile.work.tolist(), format="xy", close=True, dxfattribs={"layer": "PROFILE"})
     if profile.outer is not None:
         msp.add_lwpolyline(profile.outer.tolist(), format="xy", close=True, dxfattribs={"layer": "OUTER"})
-    msp.add_lwpolyline(profile.pitch.tolist(), format="xy", close=True, dxfattribs={"layer": "PITCH"})
+    if profile.pitch is not None:
+        msp.add_lwpolyline(profile.pitch.tolist(), format="xy", close=True, dxfattribs={"layer": "PITCH"})
     msp.add_circle((0.0, 0.0), profile.R0, dxfattribs={"layer": "BASE"})
     msp.add_circle((0.0, 0.0), bore, dxfattribs={"layer": "BORE"})
 
@@ -160,7 +173,7 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     from xml.sax.saxutils import escape
 
     bore = _bore(profile, bore_radius)
-    pts = [profile.work, profile.pitch] + ([profile.outer] if profile.outer is not None else [])
+    pts = [c for c in (profile.work, profile.pitch, profile.outer) if c is not None]
     allp = np.concatenate(pts)
     ext = max(float(np.max(np.abs(allp))), profile.R0)
     margin = 0.05 * ext
@@ -171,7 +184,7 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     body = {
         "PROFILE": f'<path d="{_path_d(profile.work)}"/>',
         "OUTER": f'<path d="{_path_d(profile.outer)}"/>' if profile.outer is not None else None,
-        "PITCH": f'<path d="{_path_d(profile.pitch)}"/>',
+        "PITCH": f'<path d="{_path_d(profile.pitch)}"/>' if profile.pitch is not None else None,
         "BASE": f'<circle cx="0" cy="0" r="{profile.R0:.6f}"/>',
         "BORE": f'<circle cx="0" cy="0" r="{bore:.6f}"/>',
     }

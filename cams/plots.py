@@ -1,5 +1,10 @@
 """Pictures: the allowable-centre zone, motion diagrams, pressure angle.
 
+A flat-faced follower's cam (``cam.flat``) has no zone; its pictures are the
+motion diagrams, the pressure angle (:func:`plot_flat_pressure`, fixed by the
+geometry), the radius of curvature with the contact's travel on the face
+(:func:`plot_curvature`) and the profile (:func:`plot_profile`, face drawn).
+
 matplotlib is imported inside the functions only, and figures are built with
 ``matplotlib.figure.Figure`` (no pyplot state). Every function returns the
 Figure; :func:`save` writes it as PNG and SVG. Pictures take results and data
@@ -14,7 +19,8 @@ import numpy as np
 
 from laws.units import rpm_to_omega
 
-__all__ = ["plot_zone", "plot_motion", "plot_pressure", "save", "A4_WIDTH_IN"]
+__all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
+           "animate_profile", "save", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
 A4_WIDTH_IN = 7.5
@@ -201,12 +207,123 @@ def plot_pressure(result, *, n: int = 721):
     return fig
 
 
+def plot_flat_pressure(solution, *, n: int = 721):
+    """Pressure angle of a flat-faced follower against the cam angle (fixed by the geometry).
+
+    Parameters
+    ----------
+    solution : cams.flatface.FlatFaceSolution
+    """
+    d = solution.design
+    c = solution.curves(n)
+    fig = _figure(h=4.0)
+    ax = fig.add_subplot()
+    ax.plot(np.degrees(c["phi"]), np.degrees(c["pressure"]), color="#2f855a", lw=1.3, label="pressure angle")
+    for s in d.program.starts:
+        ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
+    why = ("face perpendicular to the axis" if d.follower.kind == "translating"
+           else f"face offset {d.follower.face_offset:g} mm from the pivot")
+    ax.set_xlim(0, 360)
+    top = max(5.0, 1.15 * np.degrees(np.nanmax(c["pressure"])))
+    ax.set_ylim(-0.05 * top, top)
+    ax.set_xlabel("cam angle φ, deg")
+    ax.set_ylabel("pressure angle γ, deg")
+    ax.set_title(f"{d.name}: pressure angle, fixed by the geometry ({why})")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def plot_curvature(solution, *, n: int = 721):
+    """A flat-faced follower's cam: radius of curvature with its limit, and the contact's travel on the face.
+
+    Parameters
+    ----------
+    solution : cams.flatface.FlatFaceSolution
+    """
+    d = solution.design
+    c = solution.curves(n)
+    x = np.degrees(c["phi"])
+    fig = _figure(h=6.0)
+    ax1, ax2 = fig.subplots(2, 1, sharex=True)
+    ax1.plot(x, c["rho"], color="#2b6cb0", lw=1.3, label="radius of curvature ρ")
+    ax1.axhline(d.min_radius, color="#c53030", ls="--", lw=1, label=f"limits.min_radius = {d.min_radius:g}")
+    ax1.plot(np.degrees(solution.min_rho_at) % 360, solution.min_rho, "o", color="#c53030", ms=5,
+             label=f"smallest ρ = {solution.min_rho:.3f} at {np.degrees(solution.min_rho_at) % 360:.1f}°")
+    ax1.set_ylim(min(0.0, np.nanmin(c["rho"])), 1.1 * np.nanmax(c["rho"]))
+    ax1.set_ylabel("ρ, mm")
+    ax1.set_title(f"{d.name}: radius of curvature (R0 = {solution.R0:.3f} mm) and contact on the face")
+    where = "from the axis" if d.follower.kind == "translating" else "from the pivot's foot"
+    ax2.plot(x, c["contact"], color="#6b46c1", lw=1.3, label=f"contact position {where}")
+    lo, hi = solution.face_range
+    for v in (lo, hi):
+        ax2.axhline(v, color="#6b46c1", ls=":", lw=0.8)
+    ax2.plot([], [], color="#6b46c1", ls=":", lw=0.8, label=f"face width {solution.face_width:.3f} mm")
+    ax2.set_ylabel("contact, mm")
+    ax2.set_xlabel("cam angle φ, deg")
+    for ax in (ax1, ax2):
+        for s in d.program.starts:
+            ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=7, loc="best")
+        ax.set_xlim(0, 360)
+    return fig
+
+
 def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
     """Cam-frame points turned to cam angle ``phi`` and placed at the cam centre (fixed frame)."""
     a = profile.cam_sense * phi
     c, s = np.cos(a), np.sin(a)
     R = np.array([[c, -s], [s, c]])
     return profile.centre + pts @ R.T
+
+
+def _turned(centre, sense: int, pts: np.ndarray, phi: float) -> np.ndarray:
+    a = sense * phi
+    c, s = np.cos(a), np.sin(a)
+    return np.asarray(centre) + pts @ np.array([[c, -s], [s, c]]).T
+
+
+def _draw_flat_mechanism(ax, cam, profile, phi: float):
+    """A flat-faced follower's cam (turned to ``phi``) and its face, in the follower's fixed frame."""
+    from matplotlib.patches import Circle
+
+    d = cam.design
+    sol = cam.solution
+    centre = sol.centre
+    work = _turned(centre, d.cam_sense, profile.work, phi)
+    ax.fill(work[:, 0], work[:, 1], fc="#e2e8f0", ec="#1a202c", lw=1.2, label="cam profile")
+    ax.add_patch(Circle(centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
+                        label=f"base circle R0 = {profile.R0:.3f}"))
+    origin, direction = (v[0] for v in sol.face_line(np.array([phi])))
+    lo, hi = sol.face_range
+    margin = 0.1 * max(hi - lo, 1e-9)
+    ends = origin + np.outer([lo - margin, hi + margin], direction)
+    ax.plot(ends[:, 0], ends[:, 1], color="#c53030", lw=3, solid_capstyle="butt", label="flat face")
+    k = int(np.argmin(np.abs((profile.phi - phi + np.pi) % (2 * np.pi) - np.pi)))
+    contact = _turned(centre, d.cam_sense, profile.work[k:k + 1], profile.phi[k])[0]
+    ax.plot(*contact, "o", color="#c53030", ms=3)
+    if d.follower.kind == "translating":
+        top = origin + np.array([0.0, 0.6 * d.scale])
+        ax.plot([origin[0], top[0]], [origin[1], top[1]], color="#c53030", lw=3, label="follower")
+        ax.axvline(0.0, color="k", lw=0.6, ls="-.")
+    else:
+        near = origin + (lo - margin) * direction
+        ax.plot([0, origin[0], near[0]], [0, origin[1], near[1]], color="#c53030", lw=2.5,
+                solid_capstyle="round", label="rocker")
+        ax.plot(0, 0, "ko", ms=5)
+    ax.plot(*centre, "k+", ms=10)
+    ax.set_aspect("equal")
+    ax.grid(True, lw=0.3)
+    ax.set_xlabel("x, mm")
+    ax.set_ylabel("y, mm")
+
+
+def _draw(ax, cam, profile, phi: float):
+    if getattr(cam, "flat", False):
+        _draw_flat_mechanism(ax, cam, profile, phi)
+    else:
+        _draw_mechanism(ax, cam, profile, phi)
 
 
 def _draw_mechanism(ax, cam, profile, phi: float):
@@ -260,7 +377,7 @@ def plot_profile(cam, *, phi: float | None = None):
         phi = d.program.starts[i] + 0.5 * d.program.phases[i].angle
     fig = _figure(w=A4_WIDTH_IN, h=6.0)
     ax = fig.add_subplot()
-    _draw_mechanism(ax, cam, profile, phi)
+    _draw(ax, cam, profile, phi)
     ax.set_title(f"{d.name}: cam at φ = {np.degrees(phi):.1f}°")
     ax.legend(fontsize=7, loc="best")
     return fig
@@ -274,14 +391,22 @@ def animate_profile(cam, path, *, frames: int = 72, fps: int = 12) -> Path:
     fig = _figure(w=5.0, h=5.0)
     ax = fig.add_subplot()
     span = np.max(np.abs(profile.work)) + profile.roller_radius
-    pts = np.concatenate([profile.centre[None] + span * np.array([[-1.1, -1.1], [1.1, 1.1]]),
-                          cam.design.follower.position(np.array([0.0, cam.design.program.lift])),
-                          cam.design.follower.pivot[None]])
+    if getattr(cam, "flat", False):
+        sol = cam.solution
+        phis = np.linspace(0, 2 * np.pi, 73)
+        o, t = sol.face_line(phis)
+        lo, hi = sol.face_range
+        face = np.concatenate([o + lo * t, o + hi * t, o + np.array([0.0, 0.6 * cam.design.scale])])
+        pts = np.concatenate([sol.centre[None] + span * np.array([[-1.1, -1.1], [1.1, 1.1]]), face, np.zeros((1, 2))])
+    else:
+        pts = np.concatenate([profile.centre[None] + span * np.array([[-1.1, -1.1], [1.1, 1.1]]),
+                              cam.design.follower.position(np.array([0.0, cam.design.program.lift])),
+                              cam.design.follower.pivot[None]])
     lo, hi = pts.min(axis=0) - 0.05 * span, pts.max(axis=0) + 0.05 * span
 
     def frame(k):
         ax.clear()
-        _draw_mechanism(ax, cam, profile, 2 * np.pi * k / frames)
+        _draw(ax, cam, profile, 2 * np.pi * k / frames)
         ax.set_xlim(lo[0], hi[0])
         ax.set_ylim(lo[1], hi[1])
         ax.set_title(f"φ = {360 * k / frames:.0f}°")

@@ -1,5 +1,9 @@
 """One report per design: inputs, results, checks and pictures, as HTML and PDF.
 
+A flat-faced follower's report has the same sections; its pictures are the
+motion diagrams, the pressure angle, the radius of curvature with the contact's
+travel on the face, and the profile (no allowable-centre zone).
+
 The HTML file is self-contained (pictures embedded as PNG data); the PDF is
 written with matplotlib's PdfPages, one page per topic. Both are written to a
 temporary file first and renamed, so a failed run leaves no partial report.
@@ -21,8 +25,67 @@ def _deg(x):
     return "—" if x is None else f"{np.degrees(x):.4f}°"
 
 
+def _flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
+    """The report's tables for a flat-faced follower."""
+    from cams.commands.solve import pressure_text
+
+    d = cam.design
+    f = d.follower
+    inputs = [("name", d.name), ("follower", f"{f.kind}, flat face")]
+    if f.kind == "rocker":
+        inputs += [("swing ψmax", _deg(d.program.lift)), ("rocker on the rise", "ccw" if f.sense > 0 else "cw"),
+                   ("centre distance L", f"{f.centre_distance:g} mm"),
+                   ("face offset from the pivot", f"{f.face_offset:g} mm")]
+    else:
+        inputs += [("stroke h", f"{d.program.lift:g} mm"), ("offset", f"{f.offset:g} mm")]
+    inputs += [("cam rotation", "ccw" if d.cam_sense > 0 else "cw")]
+    if d.rpm:
+        inputs.append(("cam speed", f"{d.rpm:g} rpm"))
+    for i, p in enumerate(d.program.phases):
+        law = "" if p.law is None else f", {p.law.name}"
+        inputs.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.4g}°"))
+    inputs.append(("smallest radius of curvature allowed", f"{d.min_radius:g} mm"))
+    if d.min_base_radius is not None:
+        inputs.append(("constructive floor on R0", f"{d.min_base_radius:g} mm"))
+    if d.base_radius is not None:
+        inputs.append(("chosen base radius", f"{d.base_radius:g} mm"))
+    r = cam.solution.to_dict()
+    results = [("sizing", f"convexity (R0 from {r['R0_source']})"), ("base radius R0", f"{r['R0']:.6f} mm")]
+    if r["R0_min"] is not None and r["R0_source"] != "convexity":
+        results.append(("smallest convex enough R0", f"{r['R0_min']:.6f} mm"))
+    fr = r["face_range"]
+    where = "of the follower axis" if f.kind == "translating" else "along the face from the pivot's foot"
+    results += [
+        ("cam centre (x, y)", f"({r['centre']['x']:.6f}, {r['centre']['y']:.6f}) mm"),
+        ("smallest radius of curvature", f"{r['min_rho']:.6f} mm at {r['min_rho_at_deg']:.3f}°"),
+        ("contact travel on the face", f"{fr['from']:.6f} to {fr['to']:.6f} mm {where}"),
+        ("face width needed (no margins)", f"{r['face_width']:.6f} mm"),
+    ]
+    if r["face_width_centred"] is not None:
+        results.append(("face centred on the axis", f"{r['face_width_centred']:.6f} mm"))
+    results += [("pressure angle", pressure_text(r)),
+                ("verified (radius of curvature >= limit)", "yes" if r["verified"] else "NO")]
+    results += [("note", n) for n in r["notes"]]
+    return [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
+
+
+def _check_rows(cam) -> list[tuple[str, str]]:
+    checks = []
+    for c in cam.checks.checks:
+        cd = c.to_dict()
+        worst = cd.get("worst")
+        at = cd.get("at_deg")
+        val = "—" if worst is None else f"{worst:.6g} {cd.get('unit', '')}".strip()
+        where = "" if at is None else f" at {at:.3f}°"
+        lim_s = "" if cd.get("limit") is None else f" (limit {cd['limit']:.6g})"
+        checks.append((cd["name"], f"{'pass' if cd['passed'] else 'FAIL'}: {val}{where}{lim_s}"))
+    return checks
+
+
 def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     """The report's tables as ``[(title, [(label, value), ...]), ...]`` (strings)."""
+    if getattr(cam, "flat", False):
+        return _flat_sections(cam)
     d = cam.design
     f = d.follower
     inputs = [("name", d.name), ("follower", f.kind), ("roller radius", f"{f.roller_radius:g} mm")]
@@ -62,16 +125,7 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         ("verified (independent pressure-angle check)", "yes" if r["verified"] else "NO"),
     ]
     results += [("note", n) for n in r["notes"]]
-    checks = []
-    for c in cam.checks.checks:
-        cd = c.to_dict()
-        worst = cd.get("worst")
-        at = cd.get("at_deg")
-        val = "—" if worst is None else f"{worst:.6g} {cd.get('unit', '')}".strip()
-        where = "" if at is None else f" at {at:.3f}°"
-        lim_s = "" if cd.get("limit") is None else f" (limit {cd['limit']:.6g})"
-        checks.append((cd["name"], f"{'pass' if cd['passed'] else 'FAIL'}: {val}{where}{lim_s}"))
-    sections = [("Inputs", inputs), ("Results", results), ("Checks", checks)]
+    sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
     df = cam.forces if "dynamics" in d.extra else None
     if df is not None:
         fo = df.to_dict()
@@ -90,6 +144,11 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
 def _figures(cam):
     from cams import plots
 
+    if getattr(cam, "flat", False):
+        return [("Motion diagrams", plots.plot_motion(cam.design)),
+                ("Pressure angle", plots.plot_flat_pressure(cam.solution)),
+                ("Radius of curvature and contact on the face", plots.plot_curvature(cam.solution)),
+                ("Cam profile", plots.plot_profile(cam))]
     figs = [("Allowable-centre zone", plots.plot_zone(cam.solution, tradeoff=cam.tradeoff)),
             ("Motion diagrams", plots.plot_motion(cam.design)),
             ("Pressure angle", plots.plot_pressure(cam.solution)),

@@ -88,5 +88,86 @@ method = "exact"
 tolerance = 0.001
 '''
 
-#: Template text by follower kind.
-TEMPLATES = {"rocker": _ROCKER, "translating": _TRANSLATING}
+_TRANSLATING_FLAT = '''# A translating flat-faced (mushroom) follower disk cam. Lengths in mm, angles in degrees.
+# The face's pressure angle is fixed by the geometry (0: the face is perpendicular to the axis);
+# the cam is sized by convexity: the smallest base radius whose profile keeps its radius of
+# curvature >= limits.min_radius. No roller_radius, pressure-angle limits or [solve] table.
+name = "my translating flat-face cam"
+
+[follower]
+kind = "translating"
+face = "flat"
+stroke = 20.0                # total stroke
+offset = 0.0                 # axis offset; it only moves the contact along the face
+
+[cam]
+rotation = "ccw"             # "cw" | "ccw"
+# rpm = 120                  # optional: time derivatives in the motion diagrams
+# base_radius = 30.0         # optional: check this R0 instead of sizing the smallest
+
+# Laws without velocity jumps (a drop of the follower's velocity gives the cam a cusp).
+[[motion]]
+phase = "rise"
+law = "cycloidal"
+angle = 120
+[[motion]]
+phase = "dwell"
+angle = 60
+[[motion]]
+phase = "return"
+law = "poly345"
+angle = 120
+[[motion]]
+phase = "dwell"
+
+[limits]
+min_radius = 5.0             # smallest radius of curvature of the profile (default stroke / 10)
+# min_base_radius = 25.0     # constructive floor on R0
+
+[profile]
+tolerance = 0.001            # chord tolerance of the exported profile, mm
+'''
+
+_ROCKER_FLAT = '''# A rocker (oscillating) flat-faced follower disk cam. Lengths in mm, angles in degrees.
+# The face's pressure angle is fixed by the geometry (0 when the face passes through the pivot);
+# the cam is sized by convexity: the smallest base radius whose profile keeps its radius of
+# curvature >= limits.min_radius. No arm, roller_radius, pressure-angle limits or [solve] table.
+name = "my rocker flat-face cam"
+
+[follower]
+kind = "rocker"
+face = "flat"
+swing = 15.0                 # total swing, degrees (< 180)
+centre_distance = 120.0      # L, pivot to cam centre (required)
+face_offset = 0.0            # pivot to face line; positive: the pivot on the cam's side of the face
+rise_direction = "cw"        # the rocker's sense of rotation during the rise
+
+[cam]
+rotation = "ccw"             # "cw" | "ccw"
+# rpm = 60
+# base_radius = 45.0         # optional: check this R0 instead of sizing the smallest
+
+[[motion]]
+phase = "rise"
+law = "cycloidal"
+angle = 120
+[[motion]]
+phase = "dwell"
+angle = 40
+[[motion]]
+phase = "return"
+law = "poly345"
+angle = 120
+[[motion]]
+phase = "dwell"
+
+[limits]
+min_radius = 5.0             # smallest radius of curvature of the profile (default L * swing[rad] / 10)
+
+[profile]
+tolerance = 0.001
+'''
+
+#: Template text by follower kind (``_flat``: flat-faced follower).
+TEMPLATES = {"rocker": _ROCKER, "translating": _TRANSLATING, "rocker_flat": _ROCKER_FLAT,
+             "translating_flat": _TRANSLATING_FLAT}

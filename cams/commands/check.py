@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
 
 __all__ = ["register", "print_checks"]
 
@@ -25,11 +25,23 @@ def print_checks(rep: dict) -> None:
         at = "" if c["at_deg"] is None else f" at {c['at_deg']:.4f} deg"
         lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'])})"
         print(f"  {'pass' if c['passed'] else 'FAIL'}  {c['name']:<22} {_fmt(c['worst'], c['unit'])}{at}{lim}")
-    lr = rep["largest_roller_radius"]
+    lr = rep.get("largest_roller_radius")
     if lr is not None:
         print(f"  roller radius {rep['roller_radius']:g} mm; largest without undercut {lr:.4f} mm, "
               f"recommended <= {rep['recommended_roller_radius']:.4f} mm")
     print(f"  bore radius {rep['bore_radius']:.4f} mm; {'all checks pass' if rep['passed'] else 'a check FAILS'}")
+
+
+def _check_flat(args, design):
+    from cams.flatface import check_flat_face, flat_face_profile, size_flat_face
+    from cams.profile import _check_tolerance
+
+    refuse_method(args.method)
+    tol = design.tolerance if args.tolerance is None else args.tolerance
+    field = "profile.tolerance" if args.tolerance is None else "--tolerance"
+    _check_tolerance(tol, field)  # bad options fail before sizing
+    solution = size_flat_face(design)
+    return check_flat_face(design, solution, flat_face_profile(design, solution.R0, tolerance=tol, field=field))
 
 
 def run(args) -> int:
@@ -37,7 +49,10 @@ def run(args) -> int:
     from cams.designfile import load_design
 
     design = load_design(args.file)
-    report = check_design(design, tolerance=args.tolerance, method=args.method)
+    if is_flat(design):
+        report = _check_flat(args, design)
+    else:
+        report = check_design(design, tolerance=args.tolerance, method=args.method)
     rep = report.to_dict()
     if args.json:
         print(json.dumps(rep, indent=2))
@@ -53,12 +68,14 @@ def register(sub) -> None:
         help="solve, then check the profile: jamming, undercut, polygon, bore",
         description="Solve a design file and check the finished profile: pressure angle recomputed from the "
                     "pitch curve, undercut and sharp points, a valid closed working profile, the bore. "
-                    "Exit code 0: all pass, 1: a check fails, 2: bad input.",
+                    "A flat-faced follower: convexity (radius of curvature >= limits.min_radius), a valid "
+                    "closed profile, the bore. Exit code 0: all pass, 1: a check fails, 2: bad input.",
         epilog="example: cams check examples/rocker_force.toml --json",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
-    q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override [solve] method")
+    q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
+                   help="override [solve] method (roller followers)")
     q.add_argument("--json", action="store_true", help="print the checks as JSON")
     q.set_defaults(func=run)

@@ -12,7 +12,7 @@ __all__ = ["register", "run"]
 def run(args) -> int:
     from cams.templates import TEMPLATES
 
-    text = TEMPLATES[args.kind]
+    text = TEMPLATES[f"{args.kind}_flat" if args.flat else args.kind]
     if args.out is None:
         print(text, end="")
         return EXIT_OK
@@ -38,10 +38,11 @@ def register(sub) -> None:
         "new",
         help="write a commented design file to start from",
         description="Print (or write) a commented design file for a follower kind.",
-        epilog="example: cams new rocker --out my_cam.toml",
+        epilog="example: cams new rocker --out my_cam.toml; cams new translating --flat",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     q.add_argument("kind", choices=("rocker", "translating"), help="follower kind")
+    q.add_argument("--flat", action="store_true", help="a flat-faced follower (sized by convexity)")
     q.add_argument("--out", help="file to write (default: print)")
     q.add_argument("--force", action="store_true", help="overwrite an existing file")
     q.set_defaults(func=run)

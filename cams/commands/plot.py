@@ -5,13 +5,27 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+import sys
+
 from cams.commands.common import EXIT_OK
 from laws.errors import InputError
 
-__all__ = ["register", "run", "PICTURES"]
+__all__ = ["register", "run", "PICTURES", "FLAT_PICTURES"]
 
 #: Picture names in the order they are written; each needs only what it draws.
 PICTURES = ("motion", "zone", "pressure", "profile")
+#: A flat-faced follower's pictures: no zone; the radius of curvature with the contact's travel instead.
+FLAT_PICTURES = ("motion", "pressure", "curvature", "profile")
+#: Every picture name ``--only`` takes.
+NAMES = ("motion", "zone", "pressure", "curvature", "profile")
+
+#: Why a picture is skipped, by follower face.
+_SKIP = {
+    ("flat", "zone"): "the allowable-centre zone does not apply to a flat-faced follower (its size is set by "
+                      "convexity, not by a pressure-angle limit); skipped",
+    ("roller", "curvature"): "drawn for flat-faced followers only (a roller cam's curvature is checked by cams "
+                             "check); skipped",
+}
 
 
 def draw(cam, which: tuple[str, ...], out: Path) -> list[Path]:
@@ -23,7 +37,8 @@ def draw(cam, which: tuple[str, ...], out: Path) -> list[Path]:
 
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
-    for name in PICTURES:
+    flat = getattr(cam, "flat", False)
+    for name in FLAT_PICTURES if flat else PICTURES:
         if name not in which:
             continue
         if name == "motion":
@@ -31,7 +46,9 @@ def draw(cam, which: tuple[str, ...], out: Path) -> list[Path]:
         elif name == "zone":
             fig = plots.plot_zone(cam.solution, tradeoff=cam.tradeoff)
         elif name == "pressure":
-            fig = plots.plot_pressure(cam.solution)
+            fig = plots.plot_flat_pressure(cam.solution) if flat else plots.plot_pressure(cam.solution)
+        elif name == "curvature":
+            fig = plots.plot_curvature(cam.solution)
         else:
             fig = plots.plot_profile(cam)
         written += plots.save(fig, f"{stem}_{name}")
@@ -47,11 +64,17 @@ def _slug(name: str) -> str:
 def run(args) -> int:
     from cams.cam import Cam
 
-    which = tuple(w.strip() for w in args.only.split(",")) if args.only else PICTURES
-    for w in which:
-        if w not in PICTURES:
-            raise InputError("--only", f"{w!r} is not a picture, must be among {', '.join(PICTURES)}")
+    which = tuple(w.strip() for w in args.only.split(",")) if args.only else None
+    for w in which or ():
+        if w not in NAMES:
+            raise InputError("--only", f"{w!r} is not a picture, must be among {', '.join(NAMES)}")
     cam = Cam.from_file(args.file)
+    face = "flat" if cam.flat else "roller"
+    if which is None:
+        which = FLAT_PICTURES + ("zone",) if cam.flat else PICTURES
+    for w in which:
+        if (face, w) in _SKIP:
+            print(f"cams plot: note: {w}: {_SKIP[face, w]}", file=sys.stderr)
     from cams.files import ensure_folder
 
     out = ensure_folder(args.out, "--out")
@@ -69,12 +92,15 @@ def register(sub) -> None:
     q = sub.add_parser(
         "plot",
         help="pictures: zone, motion diagrams, pressure angle, profile (PNG and SVG)",
-        description="Draw the pictures of a design file; only what is asked for is computed.",
+        description="Draw the pictures of a design file; only what is asked for is computed. A flat-faced "
+                    "follower has no zone (skipped with a note) and a curvature picture instead: the radius of "
+                    "curvature against its limit and the contact's travel on the face.",
         epilog="example: cams plot examples/rocker_force.toml --out pictures --only zone,motion",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--out", default=".", help="output folder (default: current)")
-    q.add_argument("--only", help=f"comma-separated subset of {','.join(PICTURES)}")
+    q.add_argument("--only", help=f"comma-separated subset of {','.join(PICTURES)} (flat face: "
+                   f"{','.join(FLAT_PICTURES)})")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
     q.set_defaults(func=run)

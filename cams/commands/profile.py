@@ -5,20 +5,79 @@ from __future__ import annotations
 import argparse
 import json
 
-from cams.commands.common import EXIT_OK
+from cams.commands.common import EXIT_OK, is_flat, refuse_method
 
 __all__ = ["register"]
+
+
+def _write(args, prof, bore) -> list[str]:
+    from cams.export import write_csv, write_dxf, write_svg
+
+    written = []
+    if args.csv:
+        written.append(str(write_csv(prof, args.csv)))
+    if args.dxf:
+        written.append(str(write_dxf(prof, args.dxf, bore_radius=bore)))
+    if args.svg:
+        written.append(str(write_svg(prof, args.svg, bore_radius=bore)))
+    return written
+
+
+def _run_flat(args, design) -> int:
+    from cams.files import check_output_path
+    from cams.flatface import flat_face_profile, size_flat_face
+    from cams.profile import _check_tolerance, default_bore_radius
+
+    refuse_method(args.method)
+    tol = design.tolerance if args.tolerance is None else args.tolerance
+    field = "profile.tolerance" if args.tolerance is None else "--tolerance"
+    _check_tolerance(tol, field)
+    for opt in ("csv", "dxf", "svg"):  # fail before sizing, and before writing any file
+        out = getattr(args, opt)
+        if out:
+            check_output_path(out, f"--{opt}")
+    sol = size_flat_face(design)
+    prof = flat_face_profile(design, sol.R0, tolerance=tol, field=field)
+    bore = design.bore_radius if design.bore_radius is not None else default_bore_radius(prof)
+    written = _write(args, prof, bore)
+    rep = {
+        "name": design.name,
+        "face": "flat",
+        "points": len(prof),
+        "tolerance": prof.tolerance,
+        "R0": prof.R0,
+        "centre": {"x": float(sol.centre[0]), "y": float(sol.centre[1])},
+        "min_work_radius": prof.min_work_radius,
+        "min_rho": sol.min_rho,
+        "min_radius": design.min_radius,
+        "bore_radius": bore,
+        "columns": "phi_deg,work_x,work_y",
+        "written": written,
+    }
+    if args.json:
+        print(json.dumps(rep, indent=2))
+    else:
+        print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
+              f"R0 = {rep['R0']:.6f} mm, profile radius >= {rep['min_work_radius']:.6f} mm, "
+              f"radius of curvature >= {sol.min_rho:.6f} mm, bore {bore:.4f} mm")
+        if not sol.verified:
+            print(f"  warning: radius of curvature {sol.min_rho:.6g} mm < limits.min_radius {design.min_radius:g} mm "
+                  "(run cams check)")
+        for w in written:
+            print(f"  wrote {w}")
+    return EXIT_OK
 
 
 def run(args) -> int:
     from cams.checks import curvature_extremes
     from cams.designfile import load_design
-    from cams.export import write_csv, write_dxf, write_svg
     from cams.files import check_output_path
     from cams.profile import build_profile, default_bore_radius, profile_options
     from optimize.solve import solve
 
     design = load_design(args.file)
+    if is_flat(design):
+        return _run_flat(args, design)
     opts = profile_options(design, tolerance=args.tolerance)
     for opt in ("csv", "dxf", "svg"):  # fail before solving, and before writing any file
         out = getattr(args, opt)
@@ -27,13 +86,7 @@ def run(args) -> int:
     result = solve(design, method=args.method, objective=design.extra.get("objective", "R0"))
     prof = build_profile(result.design, result.centre, tolerance=opts.tolerance)
     bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
-    written = []
-    if args.csv:
-        written.append(str(write_csv(prof, args.csv)))
-    if args.dxf:
-        written.append(str(write_dxf(prof, args.dxf, bore_radius=bore)))
-    if args.svg:
-        written.append(str(write_svg(prof, args.svg, bore_radius=bore)))
+    written = _write(args, prof, bore)
     ext = curvature_extremes(result.design, result.centre)
     rep = {
         "name": design.name,
@@ -68,15 +121,18 @@ def register(sub) -> None:
         "profile",
         help="solve, then export the cam profile as CSV, DXF or SVG",
         description="Solve a design file and write its profile in the cam frame (mm): pitch curve, working "
-                    "profile (and outer groove wall), sampled within a chord tolerance.",
+                    "profile (and outer groove wall), sampled within a chord tolerance. A flat-faced follower's cam "
+                    "has no pitch curve: CSV columns phi_deg,work_x,work_y.",
         epilog="example: cams profile examples/rocker_force.toml --csv cam.csv --dxf cam.dxf --svg cam.svg",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     q.add_argument("file", help="design file (TOML)")
-    q.add_argument("--csv", metavar="OUT", help="write phi_deg,pitch_x,pitch_y,work_x,work_y[,outer_x,outer_y]")
+    q.add_argument("--csv", metavar="OUT", help="write phi_deg,pitch_x,pitch_y,work_x,work_y[,outer_x,outer_y] "
+                   "(flat face: phi_deg,work_x,work_y)")
     q.add_argument("--dxf", metavar="OUT", help="write a DXF drawing (layers PROFILE, PITCH, BASE, BORE)")
     q.add_argument("--svg", metavar="OUT", help="write an SVG drawing to scale")
     q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
-    q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override [solve] method")
+    q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
+                   help="override [solve] method (roller followers)")
     q.add_argument("--json", action="store_true", help="print the summary as JSON")
     q.set_defaults(func=run)

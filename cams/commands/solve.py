@@ -5,9 +5,9 @@ from __future__ import annotations
 import argparse
 import json
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
 
-__all__ = ["register", "print_summary"]
+__all__ = ["register", "print_summary", "print_flat_summary"]
 
 
 def _fmt_deg(x) -> str:
@@ -46,11 +46,69 @@ def print_summary(rep: dict) -> None:
         print(f"  note: {n}")
 
 
+def pressure_text(rep: dict) -> str:
+    """The pressure angle of a flat face in words (from ``FlatFaceSolution.to_dict``)."""
+    pa = rep["pressure_angle"]
+    if pa["max"] == 0:
+        why = "the face is perpendicular to the axis" if rep["follower"] == "translating" else \
+            "the face passes through the pivot"
+        return f"0 deg everywhere (fixed by the geometry: {why})"
+    return (f"{pa['min']:.4f} to {pa['max']:.4f} deg, largest at {pa['max_at_deg']:.4f} deg "
+            f"(fixed by the geometry: atan(|face_offset| / contact distance from the pivot's foot))")
+
+
+def print_flat_summary(rep: dict) -> None:
+    """Short readable summary of a flat-face solve report (as from ``FlatFaceSolution.to_dict``)."""
+    unit = "mm"
+    print(f"{rep['name']}: {rep['follower']} follower, flat face, sized by convexity")
+    src = {"convexity": "the smallest with radius of curvature >= limits.min_radius",
+           "limits.min_base_radius": "raised to limits.min_base_radius",
+           "cam.base_radius": "given by cam.base_radius"}[rep["R0_source"]]
+    print(f"  R0      = {rep['R0']:.6f} {unit}  ({src})")
+    if rep["R0_source"] != "convexity" and rep["R0_min"] is not None:
+        print(f"  R0 min  = {rep['R0_min']:.6f} {unit}  (convexity, binding at {rep['binding_deg']:.4f} deg)")
+    elif rep["binding_deg"] is not None and rep["R0_source"] == "convexity":
+        print(f"  binding: smallest radius of curvature at {rep['binding_deg']:.4f} deg")
+    print(f"  radius of curvature >= {rep['min_rho']:.6f} {unit} at {rep['min_rho_at_deg']:.4f} deg "
+          f"(limit {rep['min_radius']:g} {unit})")
+    if rep["L"] is not None:
+        print(f"  L       = {rep['L']:.6f} {unit}, face offset {rep['face_offset']:g} {unit}")
+    else:
+        print(f"  offset  = {rep['offset']:.6f} {unit}")
+    c = rep["centre"]
+    print(f"  centre  = ({c['x']:.6f}, {c['y']:.6f}) {unit}")
+    fr = rep["face_range"]
+    where = "of the follower axis" if rep["follower"] == "translating" else "along the face from the pivot's foot"
+    print(f"  face: contact from {fr['from']:.6f} to {fr['to']:.6f} {unit} {where} "
+          f"(at {fr['from_at_deg']:.2f} and {fr['to_at_deg']:.2f} deg): width {rep['face_width']:.6f} {unit}")
+    if rep["face_width_centred"] is not None:
+        print(f"        a face centred on the axis needs {rep['face_width_centred']:.6f} {unit} (no margins)")
+    print(f"  pressure angle: {pressure_text(rep)}")
+    print(f"  verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    for n in rep["notes"]:
+        print(f"  note: {n}")
+
+
+def _run_flat(args, design) -> int:
+    from cams.flatface import size_flat_face
+
+    refuse_method(args.method)
+    result = size_flat_face(design)
+    rep = result.to_dict()
+    if args.json:
+        print(json.dumps(rep, indent=2))
+    else:
+        print_flat_summary(rep)
+    return EXIT_OK if result.verified else EXIT_CHECK_FAILED
+
+
 def run(args) -> int:
     from cams.designfile import load_design
     from optimize.solve import solve
 
     design = load_design(args.file)
+    if is_flat(design):
+        return _run_flat(args, design)
     result = solve(design, method=args.method, objective=design.extra.get("objective", "R0"))
     rep = result.to_dict()
     ok = result.verified
@@ -78,11 +136,15 @@ def register(sub) -> None:
     q = sub.add_parser(
         "solve",
         help="smallest cam: R0, L or offset, verified pressure angle",
-        description="Find the allowable-centre zone and the smallest cam of a design file.",
+        description="Find the allowable-centre zone and the smallest cam of a design file. For a flat-faced "
+                    "follower (face = \"flat\"): the smallest base radius from convexity (radius of curvature "
+                    ">= limits.min_radius), the face width the contact travels over and the pressure angle, "
+                    "which the geometry fixes.",
         epilog="example: cams solve examples/rocker_force.toml --json",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     q.add_argument("file", help="design file (TOML)")
-    q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override [solve] method")
+    q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
+                   help="override [solve] method (roller followers)")
     q.add_argument("--json", action="store_true", help="print the report as JSON")
     q.set_defaults(func=run)

@@ -1,0 +1,264 @@
+"""Flat-faced followers on the command line: outputs, JSON keys, exit codes and one-line errors."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from cams.cli import main
+from cams.design import FlatFaceDesign
+from cams.designfile import design_from_dict, load_design
+from cams.flatface import FlatRocker, FlatTranslating
+from laws.errors import InputError
+from tests.conftest import EXAMPLES
+
+TRANSLATING = EXAMPLES / "translating_flat.toml"
+ROCKER = EXAMPLES / "rocker_flat.toml"
+
+SOLVE_KEYS = {"name", "follower", "face", "R0", "R0_min", "R0_source", "binding_deg", "min_radius", "min_rho",
+              "min_rho_at_deg", "L", "face_offset", "offset", "centre", "face_range", "face_width",
+              "face_width_centred", "pressure_angle", "verified", "seconds", "notes"}
+
+
+def _flat(kind="translating", **over) -> dict:
+    """A flat-face design file as a dict, with overrides per table (``None`` removes a key)."""
+    fo = ({"kind": "translating", "face": "flat", "stroke": 20.0} if kind == "translating" else
+          {"kind": "rocker", "face": "flat", "swing": 15.0, "centre_distance": 120.0})
+    d = {"name": "flat", "follower": fo, "cam": {"rotation": "ccw"},
+         "motion": [{"phase": "rise", "law": "cycloidal", "angle": 120}, {"phase": "dwell", "angle": 60},
+                    {"phase": "return", "law": "poly345", "angle": 120}, {"phase": "dwell"}],
+         "limits": {"min_radius": 5.0}}
+    for table, v in over.items():
+        if isinstance(v, dict):
+            t = {**d.get(table, {}), **v}
+            d[table] = {k: x for k, x in t.items() if x is not None}
+        else:
+            d[table] = v
+    return d
+
+
+def _toml(d: dict) -> str:
+    def val(v):
+        return json.dumps(v) if isinstance(v, str) else repr(v)
+
+    lines = [f"name = {val(d['name'])}"]
+    for table in ("follower", "cam", "limits", "solve", "profile", "dynamics"):
+        if table in d:
+            lines.append(f"[{table}]")
+            lines += [f"{k} = {val(v)}" for k, v in d[table].items()]
+    for m in d["motion"]:
+        lines.append("[[motion]]")
+        lines += [f"{k} = {val(v)}" for k, v in m.items()]
+    return "\n".join(lines) + "\n"
+
+
+def _file(tmp_path, d: dict, name="flat.toml") -> str:
+    p = tmp_path / name
+    p.write_text(_toml(d), encoding="utf-8")
+    return str(p)
+
+
+def _run(capsys, *argv):
+    rc = main(list(argv))
+    out = capsys.readouterr()
+    return rc, out.out, out.err
+
+
+@pytest.mark.parametrize("file, kind", [(TRANSLATING, "translating"), (ROCKER, "rocker")])
+def test_solve_json_keys_and_values(capsys, file, kind):
+    rc, out, err = _run(capsys, "solve", str(file), "--json")
+    assert rc == 0 and err == ""
+    rep = json.loads(out)
+    assert set(rep) == SOLVE_KEYS
+    assert rep["follower"] == kind and rep["face"] == "flat" and rep["verified"] is True
+    assert set(rep["face_range"]) == {"from", "to", "from_at_deg", "to_at_deg"}
+    assert set(rep["pressure_angle"]) == {"min", "max", "max_at_deg"} and rep["pressure_angle"]["max"] == 0.0
+    assert rep["face_width"] == pytest.approx(rep["face_range"]["to"] - rep["face_range"]["from"])
+    if kind == "rocker":
+        assert rep["L"] == 120.0 and rep["face_offset"] == 0.0 and rep["offset"] is None
+        assert rep["centre"] == {"x": 120.0, "y": 0.0} and rep["face_width_centred"] is None
+        assert 0 < rep["face_range"]["from"] < rep["face_range"]["to"]  # on the cam's side of the pivot
+    else:
+        assert rep["L"] is None and rep["offset"] == 0.0
+        assert rep["centre"] == {"x": 0.0, "y": pytest.approx(-rep["R0"])}
+        assert rep["face_range"]["from"] < 0 < rep["face_range"]["to"]  # both sides of the axis
+
+
+def test_solve_text(capsys):
+    rc, out, _ = _run(capsys, "solve", str(TRANSLATING))
+    assert rc == 0
+    assert "flat face, sized by convexity" in out and "R0      = 20.66" in out
+    assert "pressure angle: 0 deg everywhere (fixed by the geometry" in out
+    assert "a face centred on the axis needs 38.197" in out
+    rc, out, _ = _run(capsys, "solve", str(ROCKER))
+    assert rc == 0 and "along the face from the pivot's foot" in out and "the face passes through the pivot" in out
+
+
+def test_offset_moves_only_the_contact(tmp_path, capsys):
+    base = json.loads(_run(capsys, "solve", _file(tmp_path, _flat()), "--json")[1])
+    shifted = json.loads(_run(capsys, "solve", _file(tmp_path, _flat(follower={"offset": 3.0}), "s.toml"),
+                              "--json")[1])
+    assert shifted["R0"] == base["R0"] and shifted["face_width"] == pytest.approx(base["face_width"])
+    assert shifted["face_range"]["from"] == pytest.approx(base["face_range"]["from"] - 3.0)
+    assert shifted["centre"]["x"] == -3.0
+
+
+def test_offset_face_reports_its_pressure_angle(tmp_path, capsys):
+    rc, out, _ = _run(capsys, "solve", _file(tmp_path, _flat("rocker", follower={"face_offset": 10.0})), "--json")
+    rep = json.loads(out)
+    assert rc == 0 and 0 < rep["pressure_angle"]["min"] < rep["pressure_angle"]["max"] < 90
+    # atan(|f| / c): largest where the contact is nearest the pivot's foot
+    import math
+
+    assert rep["pressure_angle"]["max"] == pytest.approx(math.degrees(math.atan(10.0 / rep["face_range"]["from"])),
+                                                         abs=1e-6)
+
+
+def test_defaults_and_floor(tmp_path, capsys):
+    d = design_from_dict(_flat(limits={"min_radius": None}))
+    assert isinstance(d, FlatFaceDesign) and isinstance(d.follower, FlatTranslating)
+    assert d.min_radius == pytest.approx(2.0)  # a tenth of the stroke
+    r = design_from_dict(_flat("rocker", limits={"min_radius": None}))
+    assert isinstance(r.follower, FlatRocker) and r.follower.face_offset == 0.0 and r.follower.sense == -1
+    assert r.min_radius == pytest.approx(0.1 * 120.0 * 15 * 3.141592653589793 / 180)
+    rc, out, _ = _run(capsys, "solve", _file(tmp_path, _flat(limits={"min_base_radius": 40.0})), "--json")
+    rep = json.loads(out)
+    assert rc == 0 and rep["R0"] == 40.0 and rep["R0_source"] == "limits.min_base_radius"
+    assert rep["R0_min"] < 40.0 and rep["min_rho"] > rep["min_radius"] and rep["notes"]
+
+
+@pytest.mark.parametrize("file", [TRANSLATING, ROCKER])
+def test_check_profile_plot_report_run(tmp_path, capsys, file):
+    rc, out, _ = _run(capsys, "check", str(file), "--json")
+    rep = json.loads(out)
+    assert rc == 0 and rep["passed"] and rep["face"] == "flat"
+    assert [c["name"] for c in rep["checks"]] == ["convexity", "profile_polygon"]
+    rc, out, _ = _run(capsys, "check", str(file))
+    assert rc == 0 and "pass  convexity" in out and "all checks pass" in out
+    csv, dxf, svg = tmp_path / "c.csv", tmp_path / "c.dxf", tmp_path / "c.svg"
+    rc, out, _ = _run(capsys, "profile", str(file), "--csv", str(csv), "--dxf", str(dxf), "--svg", str(svg), "--json")
+    rep = json.loads(out)
+    assert rc == 0 and rep["columns"] == "phi_deg,work_x,work_y" and len(rep["written"]) == 3
+    lines = csv.read_text().splitlines()
+    assert lines[0] == "phi_deg,work_x,work_y" and len(lines) == rep["points"] + 1
+    assert len(lines[1].split(",")) == 3
+    import ezdxf
+
+    doc = ezdxf.readfile(str(dxf))
+    assert {e.dxf.layer for e in doc.modelspace()} == {"PROFILE", "BASE", "BORE"}
+    text = svg.read_text()
+    assert 'id="PROFILE"' in text and 'id="PITCH"' not in text
+    rc, out, err = _run(capsys, "plot", str(file), "--out", str(tmp_path / "pics"))
+    assert rc == 0
+    names = sorted(p.name for p in (tmp_path / "pics").iterdir())
+    stem = "translating_flat_face_cam" if file == TRANSLATING else "rocker_flat_face_cam"
+    assert names == sorted(f"{stem}_{k}.{e}" for k in ("motion", "pressure", "curvature", "profile")
+                           for e in ("png", "svg"))
+    assert err.count("\n") == 1 and "zone" in err and "does not apply to a flat-faced follower" in err
+    rc, out, err = _run(capsys, "report", str(file), "--out", str(tmp_path / "rep"))
+    assert rc == 0 and (tmp_path / "rep" / "report.pdf").exists()
+    html = (tmp_path / "rep" / "report.html").read_text()
+    assert "face width needed" in html and "smallest radius of curvature" in html
+
+
+def test_plot_only_zone_is_a_note(tmp_path, capsys):
+    rc, out, err = _run(capsys, "plot", str(TRANSLATING), "--out", str(tmp_path), "--only", "zone")
+    assert rc == 0 and out == "" and list(tmp_path.iterdir()) == []
+    assert err.startswith("cams plot: note: zone:") and err.count("\n") == 1
+
+
+def test_check_fails_on_a_bore_too_large(tmp_path, capsys):
+    f = _file(tmp_path, _flat(cam={"bore_radius": 30.0}))
+    rc, out, _ = _run(capsys, "check", f, "--json")
+    rep = json.loads(out)
+    assert rc == 1 and not rep["passed"]
+    assert [c["name"] for c in rep["checks"] if not c["passed"]] == ["bore"]
+
+
+@pytest.mark.parametrize("over, field, words", [
+    ({"follower": {"roller_radius": 5.0}}, "follower.roller_radius", "does not apply to a flat-faced follower"),
+    ({"limits": {"pressure_angle": 30}}, "limits.pressure_angle", "does not apply to a flat-faced follower"),
+    ({"limits": {"return_pressure_angle": 30}}, "limits.return_pressure_angle", "fixed by the geometry"),
+    ({"limits": {"safety_factor": 1.1}}, "limits.safety_factor", "does not apply"),
+    ({"limits": {"closure": "form"}}, "limits.closure", "only 'force'"),
+    ({"limits": {"closure": "glue"}}, "limits.closure", "must be one of 'force', 'form'"),
+    ({"limits": {"min_radius": 0.0}}, "limits.min_radius", "must be a number > 0"),
+    ({"limits": {"min_radius": "big"}}, "limits.min_radius", "must be a number"),
+    ({"follower": {"face": "curved"}}, "follower.face", "must be one of 'roller', 'flat'"),
+    ({"follower": {"stroke": -2.0}}, "follower.stroke", "must be > 0"),
+    ({"follower": {"swing": 10.0}}, "follower.swing", "applies to rocker followers"),
+    ({"follower": {"colour": "red"}}, "follower", "unknown key(s) colour"),
+    ({"cam": {"base_radius": -1.0}}, "cam.base_radius", "must be a number > 0"),
+    ({"cam": {"base_radius": 20.0}, "limits": {"min_base_radius": 30.0}}, "cam.base_radius", "below"),
+    ({"solve": {"method": "exact"}}, "solve.method", "does not apply to a flat-faced follower"),
+    ({"profile": {"min_curvature_radius": 2.0}}, "profile.min_curvature_radius", "limits.min_radius"),
+    ({"dynamics": {"mass": 1.0}}, "dynamics", "roller followers only"),
+    ({"motion": [{"phase": "rise", "law": "linear", "angle": 180}, {"phase": "return", "law": "cycloidal",
+                                                                    "angle": 180}]}, "motion[1]", "cusp"),
+])
+def test_bad_translating_input_is_one_line(tmp_path, capsys, over, field, words):
+    rc, out, err = _run(capsys, "solve", _file(tmp_path, _flat(**over)))
+    assert rc == 2 and out == ""
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert err.startswith(f"cams solve: error: {field}") and words in err
+
+
+@pytest.mark.parametrize("over, field, words", [
+    ({"follower": {"centre_distance": None}}, "follower.centre_distance", "is required for a flat-faced rocker"),
+    ({"follower": {"centre_distance": 0.0}}, "follower.centre_distance", "must be > 0"),
+    ({"follower": {"arm": 125.0}}, "follower.arm", "give follower.centre_distance"),
+    ({"follower": {"stroke": 20.0}}, "follower.stroke", "applies to translating followers"),
+    ({"follower": {"swing": 180.0}}, "follower.swing", "(0, 180)"),
+    ({"follower": {"rise_direction": "up"}}, "follower.rise_direction", "'cw', 'ccw'"),
+    ({"limits": {"centre_distance": 120.0}}, "limits.centre_distance", "follower.centre_distance"),
+    ({"limits": {"min_radius": 500.0}}, "limits.min_radius", "no base radius below"),
+    ({"cam": {"base_radius": 200.0}}, "cam.base_radius", "cannot touch a base circle"),
+])
+def test_bad_rocker_input_is_one_line(tmp_path, capsys, over, field, words):
+    rc, out, err = _run(capsys, "solve", _file(tmp_path, _flat("rocker", **over)))
+    assert rc == 2 and out == ""
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert err.startswith(f"cams solve: error: {field}") and words in err
+
+
+@pytest.mark.parametrize("key, table, value", [
+    ("centre_distance", "follower", 120.0), ("face_offset", "follower", 0.0), ("base_radius", "cam", 30.0),
+    ("min_radius", "limits", 5.0),
+])
+def test_flat_only_keys_on_a_roller_design_say_so(tmp_path, capsys, key, table, value):
+    from tests.conftest import rocker_dict
+
+    d = rocker_dict(**{table: {key: value}})
+    with pytest.raises(InputError, match=rf"^{table}\.{key}: .*flat-faced"):
+        design_from_dict(d)
+
+
+def test_method_options_and_commands_that_do_not_apply(tmp_path, capsys):
+    for cmd in ("solve", "check", "profile"):
+        rc, _, err = _run(capsys, cmd, str(ROCKER), "--method", "convex")
+        assert rc == 2 and err.startswith(f"cams {cmd}: error: --method: does not apply to a flat-faced follower")
+    rc, _, err = _run(capsys, "sweep", str(ROCKER), "--vary", "follower.swing=10:20:3", "--out",
+                      str(tmp_path / "s.csv"), "--quiet")
+    assert rc == 2 and "follower.face" in err and not (tmp_path / "s.csv").exists()
+    rc, _, err = _run(capsys, "profile", str(ROCKER), "--tolerance", "0")
+    assert rc == 2 and err.startswith("cams profile: error: --tolerance:")
+
+
+def test_new_flat_templates_load_and_solve(tmp_path, capsys):
+    for kind in ("rocker", "translating"):
+        out = tmp_path / f"{kind}.toml"
+        assert main(["new", kind, "--flat", "--out", str(out)]) == 0
+        d = load_design(out)
+        assert d.face == "flat" and d.follower.kind == kind
+        assert main(["solve", str(out)]) == 0
+    capsys.readouterr()
+
+
+def test_roller_designs_are_untouched(capsys):
+    """The face key is optional and "roller" by default: an explicit one changes nothing."""
+    from tests.conftest import rocker_dict
+
+    a = design_from_dict(rocker_dict())
+    b = design_from_dict(rocker_dict(follower={"face": "roller"}))
+    assert a == b and a.face == "roller"
