@@ -77,7 +77,7 @@ def whole_design(repeats: int) -> list[dict]:
         rows.append({
             "file": str(path.relative_to(ROOT)),
             "tolerance_mm": cam.options.tolerance,
-            "profile_points": int(len(prof.pitch)),
+            "profile_points": int(len(prof)),
             "checks_passed": bool(checks.passed),
             **{f"{name}_ms": 1e3 * statistics.median(ts) for name, ts in stages.items()},
         })

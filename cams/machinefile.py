@@ -202,6 +202,9 @@ def machine_from_dict(d: dict) -> MachineSpec:
     dd["cam"] = cam_table
     dd["name"] = f"{name}: cam"
     design = design_from_dict(dd)
+    if getattr(design, "face", "roller") == "flat":
+        raise InputError("follower.face", "a machine's feed cam is sized for roller followers only; size a "
+                         "flat-faced follower's cam on its own with cams solve")
     extra = {"raw": d}
     if "forces" in d:
         from cams.kinetostatics import force_spec_from_dict

@@ -133,6 +133,10 @@ def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None 
     """
     keys = tuple(k for k, _ in vary)
     combos = list(itertools.product(*[v for _, v in vary]))
+    fo = base.get("follower")
+    if isinstance(fo, dict) and fo.get("face") == "flat":
+        raise InputError("follower.face", "cams sweep solves roller followers only; size flat-faced followers one "
+                         "file at a time with cams solve")
     if not combos:
         raise InputError("--vary", "the sweep has no designs")
     # fail early on a key that does not fit the design file

@@ -6,7 +6,7 @@ import argparse
 import json
 from pathlib import Path
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
 
 __all__ = ["register", "print_machine", "print_forces"]
 
@@ -99,11 +99,6 @@ def run(args) -> int:
     from cams.machinefile import load_machine
 
     spec = load_machine(args.file)
-    if is_flat(spec.cam):
-        from laws.errors import InputError
-
-        raise InputError("follower.face", "a machine's feed cam is sized for roller followers only; size a "
-                         "flat-faced follower's cam on its own with cams solve")
     res = design_machine(spec, method=args.method)
     rep = res.to_dict()
     forces = None

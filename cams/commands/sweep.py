@@ -17,12 +17,6 @@ def run(args) -> int:
 
     out = check_output_path(args.out, "--out")
     base = read_toml(args.file)
-    fo = base.get("follower")
-    if isinstance(fo, dict) and fo.get("face") == "flat":
-        from laws.errors import InputError
-
-        raise InputError("follower.face", "cams sweep solves roller followers only; size flat-faced followers one "
-                         "file at a time with cams solve")
     vary = [parse_vary(v) for v in args.vary]
     res = sweep(base, vary, method=args.method, workers=args.jobs, progress=not args.quiet)
 

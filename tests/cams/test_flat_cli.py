@@ -262,3 +262,24 @@ def test_roller_designs_are_untouched(capsys):
     a = design_from_dict(rocker_dict())
     b = design_from_dict(rocker_dict(follower={"face": "roller"}))
     assert a == b and a.face == "roller"
+
+
+def test_api_refuses_flat_faces_where_only_rollers_apply(tmp_path):
+    """The sweep and the machine loader refuse a flat face with an InputError (not an AttributeError)."""
+    import tomllib
+
+    from cams.machinefile import load_machine
+    from cams.sweep import sweep
+
+    base = tomllib.loads(ROCKER.read_text(encoding="utf-8"))
+    with pytest.raises(InputError, match="follower.face"):
+        sweep(base, [("follower.swing", [10.0, 20.0])], workers=1, progress=False)
+    machine = (EXAMPLES / "machines" / "slotting_machine.toml").read_text(encoding="utf-8")
+    head = machine[: machine.index("[follower]")]
+    tail = machine[machine.index("[[motion]]"):]
+    tail = tail[: tail.index("[limits]")]
+    path = tmp_path / "m.toml"
+    path.write_text(head + '[follower]\nkind = "rocker"\nface = "flat"\nswing = 15.0\ncentre_distance = 120.0\n'
+                    'rise_direction = "cw"\n' + tail, encoding="utf-8")
+    with pytest.raises(InputError, match="follower.face"):
+        load_machine(path)
