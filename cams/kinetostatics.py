@@ -53,7 +53,7 @@ of the external loads and weights ``Mr = -sum(F . v + M omega) / |omega_1|``
 
 Frames and units
 ----------------
-The machine's frame (:mod:`cams.machines`): origin at the crank centre,
+The machine's frame (:mod:`cams.linkage.machines`): origin at the crank centre,
 angles counter-clockwise from +x; gravity acts along -y. Lengths are given in
 the machine's unit and converted with ``length_unit`` (m per unit, 1e-3 for
 mm); forces in N, moments in N m (counter-clockwise positive), masses in kg,
@@ -67,7 +67,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from cams.linkage.primitives import Angle, Point, on_link
-from cams.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
+from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError, check_option
 from laws.errors import check_number as _num
 from laws.units import omega_to_rpm, rpm_to_omega
@@ -548,7 +548,7 @@ def _external_loads(model: Model, spec: ForceSpec) -> list[AppliedLoad]:
 
 
 def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: float | None = None) -> Model:
-    """The rigid-body model of a machine of :mod:`cams.machines` at crank angles ``phi``.
+    """The rigid-body model of a machine of :mod:`cams.linkage.machines` at crank angles ``phi``.
 
     Parameters
     ----------
@@ -973,7 +973,7 @@ def analyse_forces(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rp
     A crank-slider with a 10 kg piston at 120 rpm, no friction: the balancing
     moment equals the one from Zhukovsky's lever.
 
-    >>> from cams.machines import CrankSlider
+    >>> from cams.linkage.machines import CrankSlider
     >>> m = CrankSlider(crank=100.0, rod=400.0, rpm=120)
     >>> r = analyse_forces(m, ForceSpec(links={"slider": LinkMass(10.0)}), samples=36)
     >>> bool(np.allclose(r.balancing_moment, r.virtual_moment, atol=1e-9))

@@ -252,7 +252,7 @@ def windows(machine: Machine, cutting: CuttingZone, *, samples: int = 720) -> Wi
     Parameters
     ----------
     machine : Machine
-        A linkage of :mod:`cams.machines`.
+        A linkage of :mod:`cams.linkage.machines`.
     cutting : CuttingZone
         The cut as a part of the working stroke.
     samples : int, optional
@@ -560,7 +560,7 @@ class MachineSpec:
     ----------
     name : str
     linkage : Machine
-        One of :mod:`cams.machines`.
+        One of :mod:`cams.linkage.machines`.
     cutting : CuttingZone
     drive : Drive
     timing : Timing

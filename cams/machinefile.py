@@ -36,7 +36,7 @@ from cams.files import check_keys, read_toml
 from cams.files import toml_number as _num
 from cams.files import toml_table as _table
 from cams.machine import CuttingZone, Drive, MachineSpec, Timing
-from cams.machines import CrankSlider, SlottedLeverPump, SlottingMachine
+from cams.linkage.machines import CrankSlider, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError, check_option
 
 __all__ = ["load_machine", "machine_from_dict", "LINKAGE_TYPES"]

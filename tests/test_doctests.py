@@ -33,7 +33,7 @@ DOCTEST_MODULES = [
     "cams.linkage.primitives",
     "cams.linkage.synthesis",
     "cams.linkage.analysis",
-    "cams.machines",
+    "cams.linkage.machines",
     "cams.machine",
     "cams.machinefile",
     "cams.commands.machine",

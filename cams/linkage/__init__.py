@@ -7,7 +7,7 @@
 * :mod:`cams.linkage.analysis` -- dead positions, stroke, time ratio and
   transmission angle of a one-input machine.
 
-The ready-made machines of the seeds live in :mod:`cams.machines`.
+The ready-made machines of the seeds live in :mod:`cams.linkage.machines`.
 """
 
 from cams.linkage.analysis import WORKING, Machine, StrokeReport, analyse, dead_positions

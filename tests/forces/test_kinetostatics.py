@@ -29,7 +29,7 @@ from cams.kinetostatics import (
     build_model,
     JOINTS,
 )
-from cams.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
+from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError
 
 SLOTTING = SlottingMachine.from_course(2.0, 100.0, 150.0, 1.0, rpm=60)

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from cams.kinetostatics import ForceSpec, build_model
-from cams.machines import OpposedTwin, SlottedLeverPump
+from cams.linkage.machines import OpposedTwin, SlottedLeverPump
 
 
 def _structure(machine):

@@ -7,7 +7,7 @@ import pytest
 from scipy.optimize import fsolve
 
 from cams.linkage import AssemblyError, analyse, crank_slider_crank
-from cams.machines import CrankSlider, OpposedTwin, SlottedLeverPump
+from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump
 from laws.errors import InfeasibleError, InputError
 from tests.linkage.conftest import assert_close, numeric_angle_derivatives, numeric_derivatives
 

@@ -39,7 +39,7 @@ import pytest
 from cams.linkage import analyse
 from cams.machine import windows
 from cams.machinefile import load_machine
-from cams.machines import OpposedTwin
+from cams.linkage.machines import OpposedTwin
 
 ROOT = Path(__file__).resolve().parents[2]
 SLOTTING_FILE = ROOT / "examples" / "machines" / "slotting_machine.toml"

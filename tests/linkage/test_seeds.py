@@ -25,7 +25,7 @@ import numpy as np
 import pytest
 
 from cams.linkage import analyse
-from cams.machines import CrankSlider, OpposedTwin, SlottedLeverPump
+from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump
 
 SEED_TOL = 0.10  # the seeds accept 3-10 % between graphical plans and analysis
 
