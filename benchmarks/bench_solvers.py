@@ -80,7 +80,7 @@ def _rocker(law, closure, rise_dir="cw", rotation="ccw"):
         "cam": {"rotation": rotation},
         "motion": [{"phase": "rise", "law": law, "angle": 120}, {"phase": "dwell", "angle": 30},
                    {"phase": "return", "law": law, "angle": 110}, {"phase": "dwell"}],
-        "limits": {"pressure_angle": 45, "return_pressure_angle": 50, "closure": closure},
+        "limits": {"pressure_angle": 45, "closure": closure, **({"return_pressure_angle": 50} if closure == "form" else {})},
     }
 
 

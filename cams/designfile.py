@@ -36,6 +36,8 @@ for a flat face: each is refused with a one-line error naming it.
 
 from __future__ import annotations
 
+import math
+
 from pathlib import Path
 
 import numpy as np
@@ -109,6 +111,32 @@ def _check_keys(table: dict, where: str, field: str) -> None:
     check_keys(table, _KEYS[where], field or "design")
 
 
+#: Lengths (mm) a design may use: from a picometre to 1000 km; outside, round-off or overflow would
+#: make the answers meaningless (the solvers work to 1e-12 of the design's scale).
+LENGTH_RANGE = (1e-9, 1e9)
+_LENGTH_KEYS = {
+    "follower": ("arm", "stroke", "offset", "roller_radius", "centre_distance", "face_offset"),
+    "limits": ("centre_distance", "min_base_radius", "min_radius"),
+    "cam": ("bore_radius", "base_radius"),
+    "profile": ("tolerance", "min_curvature_radius"),
+}
+
+
+def _check_length_range(d: dict) -> None:
+    """Refuse a non-zero length outside :data:`LENGTH_RANGE` (one-line error naming the field)."""
+    lo, hi = LENGTH_RANGE
+    for table, keys in _LENGTH_KEYS.items():
+        t = d.get(table)
+        if not isinstance(t, dict):
+            continue
+        for k in keys:
+            v = t.get(k)
+            if isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) and v != 0 \
+                    and not lo <= abs(v) <= hi:
+                raise InputError(f"{table}.{k}", f"{v:g} mm is outside the lengths a design may use "
+                                 f"({lo:g} to {hi:g} mm in size)")
+
+
 def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     """Build a :class:`CamDesign` from a parsed design file (degrees, lengths).
 
@@ -139,6 +167,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     if d.get("units", "mm") != "mm":
         raise InputError("units", f"{d['units']!r} is not supported: design files are in mm (lengths of the "
                          "[dynamics] table are SI as documented)")
+    _check_length_range(d)
     fo = _table(d, "follower")
     kind = check_option("follower.kind", fo.get("kind", "rocker"), ("rocker", "translating"))
     if check_option("follower.face", fo.get("face", "roller"), ("roller", "flat")) == "flat":
@@ -181,10 +210,14 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     for name, v in (("pressure_angle", pa), ("return_pressure_angle", rpa)):
         if v is not None and not 0 < v < 90:
             raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {v!r}")
+    closure = check_option("limits.closure", li.get("closure", "force"), ("force", "form"))
+    if closure == "force" and rpa is not None:
+        raise InputError("limits.return_pressure_angle", 'applies to form closure (closure = "form"); under force '
+                         "closure the spring drives the return and its pressure angle is not limited: remove it")
     limits = Limits(
         pressure_angle=np.radians(pa),
         return_pressure_angle=None if rpa is None else np.radians(rpa),
-        closure=li.get("closure", "force"),
+        closure=closure,
         safety_factor=_num(li, "safety_factor", "limits.safety_factor", required=False, default=1.0),
         centre_distance=_num(li, "centre_distance", "limits.centre_distance", required=False),
         min_base_radius=_num(li, "min_base_radius", "limits.min_base_radius", required=False),
@@ -216,6 +249,8 @@ def _program(d: dict, kind: str, lift: float) -> Program:
     motion = d.get("motion")
     if not isinstance(motion, list) or not motion:
         raise InputError("motion", "needs a list of phases ([[motion]] tables)")
+    # the lift as the file gives it, for messages: a rocker's swing in degrees, a stroke in the length unit
+    shown_lift, unit, lift_name = (np.degrees(lift), "degrees", "swing") if kind == "rocker" else (lift, "mm", "stroke")
     specs = []
     missing = []
     for i, m in enumerate(motion):
@@ -239,8 +274,10 @@ def _program(d: dict, kind: str, lift: float) -> Program:
         elif "law" in m:
             raise InputError(f"{f}.law", "a dwell takes no law")
         h = _num(m, "height", f"{f}.height", required=False)
-        if h is not None and kind == "rocker":
-            h = np.radians(h)
+        if h is not None and ph == "dwell":
+            raise InputError(f"{f}.height", "a dwell takes no height")
+        if h is not None and not 0 < h <= shown_lift * (1 + 1e-12):
+            raise InputError(f"{f}.height", f"must be in (0, {shown_lift:g}] {unit} (the {lift_name}), got {h:g}")
         specs.append([ph, ang, law, h])
     if len(missing) > 1:
         raise InputError("motion", "only one dwell may omit its angle")
@@ -251,7 +288,25 @@ def _program(d: dict, kind: str, lift: float) -> Program:
             raise InputError(f"motion[{missing[0]}].angle", f"the other phases take {total:g} degrees, nothing is left")
         specs[missing[0]][1] = rest
     elif abs(total - 360.0) > 1e-6:
-        raise InputError("motion", f"phase angles sum to {total:g} degrees, must sum to 360")
+        raise InputError("motion", f"phase angles sum to {total:.10g} degrees, must sum to 360 (or leave one dwell's "
+                         "angle out: it takes the rest)")
+    # rises and returns must balance and reach the lift (checked here in the file's units)
+    level = top = 0.0
+    for i, (ph, _, _, h) in enumerate(specs):
+        step = 0.0 if ph == "dwell" else (shown_lift if h is None else h)
+        level += step if ph == "rise" else -step
+        if level > shown_lift * (1 + 1e-9) or level < -1e-9 * shown_lift:
+            raise InputError(f"motion[{i}]", f"takes the follower to {level:.6g} {unit}, outside [0, {shown_lift:g}] "
+                             f"(the {lift_name}); give the phases heights that balance")
+        top = max(top, level)
+    if abs(level) > 1e-9 * shown_lift:
+        raise InputError("motion", f"the follower ends the cycle {level:.6g} {unit} above where it started: the rises "
+                         "and returns must balance (give heights, or add a return)")
+    if abs(top - shown_lift) > 1e-9 * shown_lift:
+        raise InputError("motion", f"the follower reaches only {top:.6g} {unit}, the {lift_name} is {shown_lift:g}")
+    for spec in specs:
+        if spec[3] is not None and kind == "rocker":
+            spec[3] = float(np.radians(spec[3]))
     # exact 2 pi: scale away rounding of the degree inputs
     angles = np.radians([s[1] for s in specs])
     angles *= 2 * np.pi / angles.sum()

@@ -142,12 +142,12 @@ class Program:
                 elif not isinstance(p.law, Law):
                     raise InputError(f"{f}.law", f"must be a law or a law name, got {type(p.law).__name__}")
             if p.height is not None and not (_is_positive(p.height) and p.height <= self.lift * (1 + 1e-12)):
-                raise InputError(f"{f}.height", f"must be in (0, lift={self.lift}], got {p.height!r}")
+                raise InputError(f"{f}.height", f"must be in (0, lift={self.lift:.10g}], got {float(p.height):.10g}")
             checked.append(p)
         object.__setattr__(self, "phases", tuple(checked))
         total = sum(p.angle for p in self.phases)
         if abs(total - TWO_PI) > ANGLE_TOL:
-            raise InputError("motion", f"phase angles sum to {np.degrees(total):.6g} degrees, must sum to 360")
+            raise InputError("motion", f"phase angles sum to {np.degrees(total):.10g} degrees, must sum to 360")
         level = 0.0
         top = 0.0
         tol = 1e-9 * self.lift

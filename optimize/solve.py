@@ -315,8 +315,23 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
             notes.append(f"constructive floor {floor:g} below the minimum R0: not binding")
     else:
         mode = "fixed_L"
-        if floor is not None:
-            # both circles fixed: their crossings
+        dist = lambda O: float(np.linalg.norm(O - A0))  # noqa: E731
+        centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples)
+        if centre is None:
+            # a narrow arc near the least L: seed it from the min-L centre (convexity)
+            near = nearest(design, f.pivot, method=method).centre
+            centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples,
+                                    seeds=_seeds(design, f.pivot, L_fixed, near))
+        if centre is None:
+            lo, hi = admissible_L_range(design)
+            rng = f"from {lo:.6g} upward" if not np.isfinite(hi) else f"from {lo:.6g} to {hi:.6g}"
+            raise InfeasibleError("limits.centre_distance",
+                                  f"L = {L_fixed:g} misses the allowable-centre zone; admissible L {rng}")
+        least = dist(centre)
+        if floor is not None and least >= floor:
+            notes.append(f"constructive floor {floor:g} below the least R0 at this L ({least:.6g}): not binding")
+        elif floor is not None:
+            # R0 raised to the floor: the crossings of the circles |O - pivot| = L and |O - A0| = floor
             d = np.linalg.norm(A0 - f.pivot)
             a = (L_fixed**2 - floor**2 + d**2) / (2 * d)
             hh = L_fixed**2 - a**2
@@ -328,22 +343,11 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
             cands = [p for p in cands if G(p) <= 1e-9 * design.scale]
             if not cands:
                 raise InfeasibleError("limits.min_base_radius",
-                                      f"R0 = {floor:g} and L = {L_fixed:g} together give no admissible centre")
+                                      f"R0 = {floor:g} is not admissible at L = {L_fixed:g} (the least R0 there is "
+                                      f"{least:.6g}; the admissible centres on that circle do not reach R0 = {floor:g})")
             centre = min(cands, key=G)
             mode = "fixed_L_and_R0"
-        else:
-            dist = lambda O: float(np.linalg.norm(O - A0))  # noqa: E731
-            centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples)
-            if centre is None:
-                # a narrow arc near the least L: seed it from the min-L centre (convexity)
-                near = nearest(design, f.pivot, method=method).centre
-                centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples,
-                                        seeds=_seeds(design, f.pivot, L_fixed, near))
-            if centre is None:
-                lo, hi = admissible_L_range(design)
-                rng = f"from {lo:.6g} upward" if not np.isfinite(hi) else f"from {lo:.6g} to {hi:.6g}"
-                raise InfeasibleError("limits.centre_distance",
-                                      f"L = {L_fixed:g} misses the allowable-centre zone; admissible L {rng}")
+            notes.append(f"R0 raised to the constructive floor {floor:g} (least at this L {least:.6g})")
     seconds = time.perf_counter() - t0
     if sol is not None and mode in ("min_R0", "min_L", "fixed_offset"):
         binding, error_bound = sol.binding, sol.error_bound

@@ -96,3 +96,58 @@ def test_units_other_than_mm_are_refused():
     with pytest.raises(InputError, match="^units"):
         design_from_dict({**rocker_dict(), "units": "m"})
     assert design_from_dict({**rocker_dict(), "units": "mm"}).follower.arm == 125.0
+
+
+def _motion(*phases):
+    return [dict(p) for p in phases]
+
+
+RISE = {"phase": "rise", "law": "cycloidal", "angle": 120}
+RET = {"phase": "return", "law": "cycloidal", "angle": 120}
+
+
+@pytest.mark.parametrize(
+    "motion, message",
+    [
+        # a rocker's heights and levels are in degrees in the messages, as in the file (swing 15 deg)
+        (_motion(RISE, {"phase": "dwell"}), "motion: the follower ends the cycle 15 degrees above where it started"),
+        (_motion({**RISE, "height": -5}, {"phase": "dwell"}), "motion[0].height: must be in (0, 15] degrees (the swing), got -5"),
+        (_motion({**RISE, "height": 20}, RET, {"phase": "dwell"}), "motion[0].height: must be in (0, 15] degrees"),
+        (_motion({**RISE, "height": 5}, {**RET, "height": 10}, {"phase": "dwell"}), "motion[1]: takes the follower to -5 degrees"),
+        (_motion({**RISE, "height": 10}, {**RET, "height": 10}, {"phase": "dwell"}), "motion: the follower reaches only 10 degrees, the swing is 15"),
+        (_motion(RISE, {"phase": "dwell", "angle": 59.99999}, RET, {"phase": "dwell", "angle": 60}),
+         "motion: phase angles sum to 359.99999 degrees, must sum to 360"),
+        (_motion(RISE, {"phase": "dwell", "height": 3}, RET, {"phase": "dwell"}), "motion[1].height: a dwell takes no height"),
+    ],
+)
+def test_motion_messages_in_the_files_units(motion, message):
+    d = rocker_dict()
+    d["motion"] = motion
+    with pytest.raises(InputError) as e:
+        design_from_dict(d)
+    assert str(e.value).startswith(message), str(e.value)
+    assert "np.float64" not in str(e.value) and "0.2617" not in str(e.value)
+
+
+def test_heights_in_degrees_become_radians():
+    d = rocker_dict()
+    d["motion"] = _motion({**RISE, "height": 5}, {"phase": "dwell", "angle": 10}, {**RISE, "height": 10},
+                          {"phase": "dwell", "angle": 10}, {**RET, "angle": 100})
+    p = design_from_dict(d).program
+    assert p.phases[0].height == pytest.approx(np.radians(5)) and p.phases[2].height == pytest.approx(np.radians(10))
+
+
+def test_return_limit_needs_form_closure():
+    with pytest.raises(InputError) as e:
+        design_from_dict(rocker_dict(limits={"return_pressure_angle": 40}))
+    assert str(e.value).startswith("limits.return_pressure_angle: applies to form closure")
+    d = design_from_dict(rocker_dict(limits={"return_pressure_angle": 40, "closure": "form"}))
+    assert d.limits.return_pressure_angle == pytest.approx(np.radians(40))
+
+
+@pytest.mark.parametrize("table, key, value", [("follower", "arm", 1e300), ("follower", "roller_radius", 1e-12),
+                                               ("limits", "centre_distance", 2e9), ("cam", "bore_radius", 1e12)])
+def test_lengths_outside_the_usable_range(table, key, value):
+    with pytest.raises(InputError) as e:
+        design_from_dict(rocker_dict(**{table: {key: value}}))
+    assert str(e.value).startswith(f"{table}.{key}: ") and "outside the lengths" in str(e.value)

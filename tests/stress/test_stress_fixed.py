@@ -180,13 +180,40 @@ def test_floor_below_minimum_is_not_binding():
     assert any("not binding" in n for n in r.notes)
 
 
-@pytest.mark.parametrize("factor", [1e-3, 1.0, 1e3])
+@pytest.mark.parametrize("factor", [1e-3, 0.5, 1.0, 1.3, 1e3])
 def test_fixed_L_with_floor(factor):
-    """Both circles fixed: their crossing if admissible, else InfeasibleError naming min_base_radius."""
+    """A floor with a fixed L is a floor: below the least R0 on the circle it does not bind; above, R0 is the floor
+    at a crossing of the two circles if that is admissible, else an InfeasibleError naming min_base_radius."""
     d = design_dict("rocker")
     r0 = check_outcome(d)
+    least = check_outcome(_with(d, centre_distance=r0.L))
+    assert least.R0 == pytest.approx(r0.R0, rel=1e-9)  # the global minimum lies on this circle
     out = check_outcome(_with(d, centre_distance=r0.L, min_base_radius=r0.R0 * factor))
-    if isinstance(out, CamsError):
+    if factor <= 1.0:
+        assert not isinstance(out, CamsError), out
+        assert out.mode == "fixed_L" and out.R0 == pytest.approx(least.R0, rel=1e-12)
+        assert any("not binding" in n for n in out.notes)
+    elif isinstance(out, CamsError):
         assert out.field == "limits.min_base_radius"
     else:
+        assert out.mode == "fixed_L_and_R0" and out.pressure.ok
         assert out.L == pytest.approx(r0.L, rel=1e-9) and out.R0 == pytest.approx(r0.R0 * factor, rel=1e-9)
+
+
+def test_fixed_L_floor_between_least_and_reachable():
+    """The README's design (L = 115, floor 30): the floor is below the least R0 at L = 115 (46.78), so R0 is that
+    least R0; brute force over the circle with the independent pressure check finds nothing smaller."""
+    from cams.pressure import check_pressure
+
+    d = design_dict("rocker")
+    base = check_outcome(_with(d, centre_distance=115.0))
+    out = check_outcome(_with(d, centre_distance=115.0, min_base_radius=30.0))
+    assert not isinstance(out, CamsError), out
+    assert out.R0 == pytest.approx(base.R0, rel=1e-12) and out.mode == "fixed_L"
+    design = design_from_dict(_with(d, centre_distance=115.0, min_base_radius=30.0))
+    A0 = design.follower.position(0.0)
+    t = np.linspace(-np.pi, np.pi, 3601)
+    pts = 115.0 * np.stack([np.cos(t), np.sin(t)], axis=1)
+    ok = [p for p in pts if check_pressure(design, p, grid=400).ok]
+    assert ok, "the circle meets the zone"
+    assert min(np.linalg.norm(p - A0) for p in ok) >= out.R0 * (1 - 1e-3)
