@@ -229,12 +229,17 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     if isinstance(samples, bool) or not isinstance(samples, int) or samples < 2:
         raise InputError("solve.samples", f"must be an integer >= 2, got {samples!r}")
     name = _name(d)
-    return CamDesign(
+    design = CamDesign(
         follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=name,
         method=so.get("method", "exact"), samples=samples,
         extra={"objective": check_option("solve.objective", so.get("objective", "R0"), ("R0", "L")), "raw": d,
                **_dynamics(d)},
     )
+    # [profile] and the bore are checked on loading, so cams solve refuses what cams check would
+    from cams.profile import profile_options
+
+    profile_options(design)
+    return design
 
 
 def _name(d: dict) -> str:

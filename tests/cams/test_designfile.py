@@ -151,3 +151,26 @@ def test_lengths_outside_the_usable_range(table, key, value):
     with pytest.raises(InputError) as e:
         design_from_dict(rocker_dict(**{table: {key: value}}))
     assert str(e.value).startswith(f"{table}.{key}: ") and "outside the lengths" in str(e.value)
+
+
+@pytest.mark.parametrize("over, field", [({"cam": {"bore_radius": -5.0}}, "cam.bore_radius"),
+                                         ({"profile": {"tolerance": 0.0}}, "profile.tolerance"),
+                                         ({"profile": {"min_curvature_radius": -1.0}}, "profile.min_curvature_radius")])
+def test_profile_and_bore_checked_on_loading(over, field, tmp_path, capsys):
+    """cams solve refuses what cams check refuses (both load the file the same way)."""
+    import tomllib
+
+    from cams.cli import main
+
+    with pytest.raises(InputError) as e:
+        design_from_dict(rocker_dict(**over))
+    assert str(e.value).startswith(field)
+    text = (EXAMPLES / "rocker_force.toml").read_text(encoding="utf-8")
+    table, (key, value) = next(iter(over.items()))[0], next(iter(next(iter(over.values())).items()))
+    assert tomllib.loads(text)  # the example parses
+    path = tmp_path / "bad.toml"
+    path.write_text(text + f"\n[{table}]\n{key} = {value}\n" if f"[{table}]" not in text
+                    else text.replace(f"[{table}]\n", f"[{table}]\n{key} = {value}\n"), encoding="utf-8")
+    for cmd in ("solve", "check"):
+        assert main([cmd, str(path)]) == 2
+        assert capsys.readouterr().err.startswith(f"cams {cmd}: error: {field}")
