@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+import warnings
 
 from cams.commands import COMMANDS
 from cams.commands.common import EXIT_BAD_INPUT, EXIT_OK
@@ -50,7 +51,13 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help()
         return EXIT_BAD_INPUT
     try:
-        return args.func(args)
+        with warnings.catch_warnings():
+            # matplotlib's font and layout notices are not the user's errors: a name in a script the font
+            # lacks is drawn as boxes, a crowded figure keeps its default layout
+            warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from", category=UserWarning)
+            warnings.filterwarnings("ignore", message=r".*constrained_layout not applied", category=UserWarning)
+            warnings.filterwarnings("ignore", message=r".*layout not applied", category=UserWarning)
+            return args.func(args)
     except CamsError as e:
         print(f"cams {args.command}: error: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT

@@ -80,3 +80,21 @@ def test_translating_zone_shows_the_offset(cams_by_name):
     fig = plot_zone(cam.solution)
     labels = [h.get_label() for h in fig.axes[0].get_lines()]
     assert f"offset e = {cam.solution.offset:.3f}" in labels
+
+
+def test_names_the_font_lacks_print_no_warnings(tmp_path):
+    """A design named in a script the default font lacks (the seeds' Chinese) plots without stderr noise
+    (a process of its own: pytest would capture the warnings)."""
+    import subprocess
+    import sys
+
+    from tests.conftest import EXAMPLES
+
+    text = (EXAMPLES / "rocker_form.toml").read_text(encoding="utf-8")
+    lines = [ln for ln in text.splitlines() if not ln.startswith("name =")]
+    path = tmp_path / "zh.toml"
+    path.write_text('name = "插床进给凸轮"\n' + "\n".join(lines) + "\n", encoding="utf-8")
+    r = subprocess.run([sys.executable, "-m", "cams.cli", "plot", str(path), "--out", str(tmp_path / "out"),
+                        "--only", "motion"], capture_output=True, text=True)
+    assert r.returncode == 0 and r.stderr == "", r.stderr
+    assert (tmp_path / "out" / "插床进给凸轮_motion.png").stat().st_size > 1000
