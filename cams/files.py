@@ -6,21 +6,28 @@ so that both name the offending field the same way.
 
 Every file the project writes goes through :func:`atomic_write`: the content is
 written to a temporary file in the same folder and then renamed over the
-target, so a failure leaves no partial file.
+target, so a failure leaves no partial file. A command writing several files
+does so inside :func:`all_or_nothing`: every file is rendered to its temporary
+first and they are all renamed into place only when every one succeeded, so a
+failure leaves none of them. :func:`check_output_paths` checks all the output
+options of a command at once, before any computation.
 """
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import os
 import tempfile
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Iterable, Iterator
 
 import numpy as np
 
 from laws.errors import InputError
 
-__all__ = ["atomic_write", "check_output_path", "ensure_folder", "read_toml", "toml_table", "toml_number", "check_keys"]
+__all__ = ["atomic_write", "all_or_nothing", "check_output_path", "check_output_paths", "ensure_folder", "read_toml",
+           "toml_table", "toml_number", "check_keys"]
 
 
 def read_toml(path: str | os.PathLike) -> dict:
@@ -171,10 +178,20 @@ def ensure_folder(path: str | os.PathLike, field: str) -> Path:
         ``path``.
     """
     p = Path(path)
+    if not str(path).strip():
+        raise InputError(field, "must name a folder, got an empty path")
+    missing = []  # the folders this call creates, deepest first
+    q = p
+    while not q.exists() and q != q.parent:
+        missing.append(q)
+        q = q.parent
     try:
         p.mkdir(parents=True, exist_ok=True)
     except OSError as e:
         raise InputError(field, f"cannot create {str(p)!r}: {e.strerror or e}") from None
+    t = _PENDING.get()
+    if t is not None:
+        t.folders += missing
     return p
 
 
@@ -196,12 +213,21 @@ def check_output_path(path: str | os.PathLike, field: str) -> Path:
     Raises
     ------
     InputError
-        The folder does not exist or is not writable, or ``path`` is a folder.
+        ``path`` is empty, the folder does not exist or is not writable, or
+        ``path`` is a folder.
     """
+    if not str(path).strip():
+        raise InputError(field, "must name a file, got an empty path")
     p = Path(path)
     folder = _folder(p)
     if not folder.is_dir():
         raise InputError(field, f"cannot write {str(p)!r}: folder {str(folder)!r} does not exist")
+    try:
+        os.stat(p)
+    except FileNotFoundError:
+        pass
+    except OSError as e:  # a name too long, a loop of links ...
+        raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
     if p.is_dir():
         raise InputError(field, f"cannot write {str(p)!r}: it is a folder")
     if not os.access(folder, os.W_OK):
@@ -209,8 +235,158 @@ def check_output_path(path: str | os.PathLike, field: str) -> Path:
     return p
 
 
-def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None]) -> Path:
+def _same_file(a: Path, b: Path) -> bool:
+    """Whether paths ``a`` and ``b`` name the same file (resolved; the same inode when both exist)."""
+    try:
+        if a.exists() and b.exists():
+            return os.path.samefile(a, b)
+    except OSError:
+        pass
+    return os.path.normcase(str(a.resolve())) == os.path.normcase(str(b.resolve()))
+
+
+def check_output_paths(outputs: Iterable[tuple[str, str | os.PathLike | None]], *,
+                       inputs: Iterable[tuple[str, str | os.PathLike]] = ()) -> list[Path]:
+    """Check all the output files of one command together, before anything is computed.
+
+    Each output goes through :func:`check_output_path`; besides, no output may
+    be one of the input files, and no two outputs may be the same file (after
+    resolving links and ``..``).
+
+    Parameters
+    ----------
+    outputs : iterable of (field, path)
+        The option naming each output (e.g. ``"--csv"``) and its path; a None
+        path (option not given) is skipped, an empty one refused.
+    inputs : iterable of (field, path)
+        The files the command reads (e.g. ``("FILE", "cam.toml")``).
+
+    Returns
+    -------
+    list of Path
+        The output paths given, in order.
+
+    Raises
+    ------
+    InputError
+        Naming the option of the first output that is refused.
+    """
+    ins = [(f, Path(p)) for f, p in inputs]
+    seen: list[tuple[str, Path]] = []
+    for field, path in outputs:
+        if path is None:
+            continue
+        p = check_output_path(path, field)
+        for f, q in ins:
+            if _same_file(p, q):
+                raise InputError(field, f"cannot write {str(p)!r}: it is the input file {f}; give another file name")
+        for f, q in seen:
+            if _same_file(p, q):
+                raise InputError(field, f"cannot write {str(p)!r}: it is also the {f} output; give each output its "
+                                 "own file")
+        seen.append((field, p))
+    return [p for _, p in seen]
+
+
+class _Transaction:
+    """The temporaries written inside :func:`all_or_nothing`, and the folders it created."""
+
+    def __init__(self):
+        self.files: list[tuple[str, Path, str]] = []  # (temporary, target, field)
+        self.folders: list[Path] = []
+
+    def add(self, tmp: str, target: Path, field: str) -> None:
+        for _, q, _f in self.files:
+            if _same_file(target, q):
+                raise InputError(field, f"cannot write {str(target)!r}: it is written twice by one command")
+        self.files.append((tmp, target, field))
+
+    def discard(self) -> None:
+        for tmp, _, _ in self.files:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
+        self.files = []
+        for f in self.folders:  # deepest first; only empty ones go
+            with contextlib.suppress(OSError):
+                f.rmdir()
+        self.folders = []
+
+    def commit(self) -> None:
+        """Rename every temporary into place; when one rename fails, put back what the others replaced."""
+        for _, target, field in self.files:  # what would fail, before anything moves
+            if target.is_dir():
+                raise InputError(field, f"cannot write {str(target)!r}: it is a folder")
+        done: list[tuple[Path, str | None, bool]] = []  # (target, hard link to the file it replaced, existed)
+        try:
+            for tmp, target, field in self.files:
+                backup = None
+                existed = target.exists()
+                if existed:
+                    backup = f"{tmp}.old"
+                    try:
+                        os.link(target, backup)
+                    except OSError:
+                        backup = None  # no hard links here: that file cannot be put back
+                try:
+                    os.replace(tmp, target)
+                except OSError as e:
+                    if backup is not None:
+                        os.unlink(backup)
+                    raise InputError(field, f"cannot write {str(target)!r}: {e.strerror or e}") from None
+                done.append((target, backup, existed))
+        except BaseException:
+            for target, backup, existed in reversed(done):
+                with contextlib.suppress(OSError):
+                    if backup is not None:
+                        os.replace(backup, target)
+                    elif not existed:
+                        os.unlink(target)
+            raise
+        for _, backup, _ in done:
+            if backup is not None:
+                with contextlib.suppress(OSError):
+                    os.unlink(backup)
+        self.files = []
+        self.folders = []
+
+
+_PENDING: contextvars.ContextVar[_Transaction | None] = contextvars.ContextVar("cams_files_pending", default=None)
+
+
+@contextlib.contextmanager
+def all_or_nothing() -> Iterator[None]:
+    """Make the files written in the block (by :func:`atomic_write`) appear together or not at all.
+
+    Inside the block :func:`atomic_write` writes each file whole to a
+    temporary next to its target and keeps it; when the block ends normally
+    the temporaries are renamed into place, one after the other. When the
+    block raises (any exception, Ctrl-C included) the temporaries are removed,
+    and so are the folders :func:`ensure_folder` created in the block if they
+    are still empty: no file of the block is left. A block inside another one
+    joins it.
+    """
+    if _PENDING.get() is not None:
+        yield
+        return
+    t = _Transaction()
+    token = _PENDING.set(t)
+    try:
+        yield
+    except BaseException:
+        _PENDING.reset(token)
+        t.discard()
+        raise
+    _PENDING.reset(token)
+    try:
+        t.commit()
+    finally:
+        t.discard()  # what a failed rename left
+
+
+def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None], *, suffix: str = ".tmp") -> Path:
     """Call ``write(tmp)`` for a temporary file next to ``path``, then move it to ``path``.
+
+    Inside :func:`all_or_nothing` the move waits for the end of the block.
 
     Parameters
     ----------
@@ -220,6 +396,9 @@ def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], Non
         Name of the option for error messages (e.g. ``"--csv"``).
     write : callable
         Writes the whole content to the temporary file name it is given.
+    suffix : str, optional
+        End of the temporary file's name, for writers that choose the format
+        from it (e.g. ``".gif"``).
 
     Returns
     -------
@@ -232,20 +411,27 @@ def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], Non
         The folder does not exist or the file cannot be written; no file is
         left behind.
     """
+    if not str(path).strip():
+        raise InputError(field, "must name a file, got an empty path")
     p = Path(path)
     folder = _folder(p)
     try:
-        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{p.name}.", suffix=".tmp")
+        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{p.name}.", suffix=suffix)
     except OSError as e:
         raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
     os.close(fd)
+    pending = _PENDING.get()
     try:
         write(tmp)
         os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual permissions
-        os.replace(tmp, p)
+        if pending is not None:
+            pending.add(tmp, p, field)
+            tmp = None  # the transaction owns it now
+        else:
+            os.replace(tmp, p)
     except OSError as e:
         raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
     finally:
-        if os.path.exists(tmp):
+        if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)
     return p

@@ -1,16 +1,21 @@
 """Parameter sweeps: many designs from one design file, in parallel.
 
 A sweep varies dotted design-file keys (``limits.pressure_angle``,
-``follower.arm``, ``motion.0.angle`` ...) over ranges and solves every
-combination. Infeasible combinations are rows with an ``error`` and no sizes,
-not failures of the batch.
+``follower.arm``, ``motion.0.angle`` or ``motion[0].angle`` ...) over ranges
+and solves every combination. Infeasible combinations are rows with an
+``error`` and no sizes, not failures of the batch; a base design that is wrong
+whatever the varied keys are (a required key missing, an unknown table) is an
+:class:`~laws.errors.InputError` before anything is solved.
 """
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import itertools
 import os
+import re
+import signal
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor
@@ -20,7 +25,10 @@ import numpy as np
 
 from laws.errors import CamsError, InputError
 
-__all__ = ["parse_vary", "sweep", "SweepResult", "COLUMNS"]
+__all__ = ["parse_vary", "key_parts", "sweep", "SweepResult", "COLUMNS", "MAX_WORKERS_PER_CPU"]
+
+#: At most this many processes per core (and never more than designs).
+MAX_WORKERS_PER_CPU = 4
 
 #: Result columns after the varied keys.
 COLUMNS = ("R0", "L", "offset", "centre_x", "centre_y", "max_pressure_rise", "max_pressure_return",
@@ -44,30 +52,79 @@ def parse_vary(spec: str) -> tuple[str, np.ndarray]:
             vals = np.array([float(v) for v in rng.split(",")])
     except ValueError:
         raise InputError("--vary", f"{spec!r}: range must be a:b:n (n >= 1) or a list of numbers") from None
+    if not np.all(np.isfinite(vals)):
+        raise InputError("--vary", f"{spec!r}: values must be finite numbers")
     if not key:
         raise InputError("--vary", f"{spec!r} names no key")
+    key_parts(key)
     return key, vals
 
 
+_SEGMENT = re.compile(r"([^.\[\]]+)((?:\[\d+\])*)")
+
+
+def key_parts(key: str, field: str = "--vary") -> tuple[str, ...]:
+    """The parts of a dotted key: ``"motion[0].angle"`` and ``"motion.0.angle"`` -> ``("motion", "0", "angle")``.
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: an empty part or a malformed ``[index]``.
+    """
+    parts: list[str] = []
+    for seg in key.split("."):
+        m = _SEGMENT.fullmatch(seg.strip())
+        if not m:
+            raise InputError(field, f"{key!r} is not a dotted key (table.key, list items as motion.0 or motion[0])")
+        parts.append(m.group(1))
+        parts += re.findall(r"\[(\d+)\]", m.group(2))
+    return tuple(parts)
+
+
+def _index(node: list, p: str, key: str) -> int:
+    if not p.isdigit() or int(p) >= len(node):
+        raise InputError("--vary", f"{key!r}: {p!r} is not an index of the list (0 to {len(node) - 1})")
+    return int(p)
+
+
 def _set(d: dict, key: str, value: float) -> None:
-    parts = key.split(".")
+    parts = key_parts(key)
     node = d
     for k, p in enumerate(parts[:-1]):
         if isinstance(node, list):
-            try:
-                node = node[int(p)]
-            except (ValueError, IndexError):
-                raise InputError("--vary", f"{key!r}: {p!r} is not an index of the list") from None
+            node = node[_index(node, p, key)]
         else:
             node = node.setdefault(p, {})
+        if not isinstance(node, (dict, list)):
+            raise InputError("--vary", f"{key!r}: {'.'.join(parts[:k + 1])!r} is a value, not a table or list")
     last = parts[-1]
     if isinstance(node, list):
-        try:
-            node[int(last)] = value
-        except (ValueError, IndexError):
-            raise InputError("--vary", f"{key!r}: {last!r} is not an index of the list") from None
+        node[_index(node, last, key)] = value
     else:
         node[last] = value
+
+
+def _involves(field: str, keys: tuple[str, ...]) -> bool:
+    """Whether an error about ``field`` can come from the varied ``keys``.
+
+    It does when one is a prefix of the other (``motion`` and ``motion.0.angle``)
+    or both are items of the same list (``motion[3].angle`` and ``motion.0.angle``:
+    the phases' angles share the turn).
+    """
+    try:
+        f = key_parts(field) if field else ()
+    except InputError:
+        f = tuple(field.split("."))
+    if not f:
+        return True  # an error naming no field: cannot tell, keep it a row
+    for key in keys:
+        k = key_parts(key)
+        n = min(len(f), len(k))
+        if f[:n] == k[:n]:
+            return True
+        if len(f) > 1 and len(k) > 1 and f[0] == k[0] and f[1].isdigit() and k[1].isdigit():
+            return True
+    return False
 
 
 def _number(v) -> int | float:
@@ -114,6 +171,72 @@ class SweepResult:
         return len(self.rows) / self.seconds if self.seconds > 0 else float("inf")
 
 
+def _ignore_sigint() -> None:
+    """In the workers: Ctrl-C is the parent's to handle (it stops the pool); no traceback per process."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if hasattr(signal, "pthread_sigmask"):
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+
+
+@contextlib.contextmanager
+def _sigint_held():
+    """Hold SIGINT back (POSIX) while the pool forks its workers, so that none gets it before ignoring it."""
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
+def _stop(ex: ProcessPoolExecutor) -> None:
+    """Shut the pool down now: cancel the pending designs, end the running ones."""
+    procs = list((getattr(ex, "_processes", None) or {}).values())
+    for p in procs:
+        if p.is_alive():
+            p.terminate()
+    ex.shutdown(wait=True, cancel_futures=True)
+
+
+def _check_workers(workers) -> None:
+    if workers is None:
+        return
+    if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
+        raise InputError("workers", f"must be an integer >= 1 (processes), got {workers!r}")
+
+
+def _check_base(base: dict, keys: tuple[str, ...], combos: list) -> None:
+    """Refuse a base design that is wrong whatever the varied keys are (exit 2, not a table of the same error)."""
+    from cams.designfile import design_from_dict
+
+    def probe(values):
+        d = copy.deepcopy(base)
+        for k, v in zip(keys, values or ()):
+            _set(d, k, _number(v))
+        try:
+            design_from_dict(d)
+        except CamsError as e:
+            return e
+        return None
+
+    e = probe(combos[0])
+    if e is None:
+        return
+    if "unknown key" in str(e):
+        b = probe(None)
+        if b is not None and str(b) == str(e):
+            raise e from None  # the design file's own unknown key
+        # a varied key that does not exist in the schema is a mistake in the sweep, not an infeasible design
+        raise InputError("--vary", str(e)) from None
+    if _involves(getattr(e, "field", "") or "", keys):
+        return  # the varied values may be at fault: the rows say so
+    last = probe(combos[-1])
+    if last is not None and str(last) == str(e):
+        raise e from None  # the base design itself is wrong
+
+
 def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None = None,
           workers: int | None = None, progress: bool = False) -> SweepResult:
     """Solve every combination of the varied keys over a base design (a design-file dict).
@@ -127,11 +250,32 @@ def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None 
     method : str, optional
         Overrides the design's method.
     workers : int, optional
-        Processes (default: the machine's cores); 1 runs in this process.
+        Processes (default: the machine's cores), an integer >= 1; never more
+        than the designs nor :data:`MAX_WORKERS_PER_CPU` per core. 1 runs in
+        this process.
     progress : bool
         Draw a progress bar on stderr.
+
+    Raises
+    ------
+    InputError
+        A bad ``workers``; a key varied twice (``--vary``) or that does not
+        fit the design file; a base design that is wrong whatever the varied
+        values (the design's own error, e.g. ``follower.swing: is required``).
+        An infeasible combination is no error: its row carries it.
+    KeyboardInterrupt
+        Passed on after the processes are stopped and the pending designs
+        cancelled.
     """
+    _check_workers(workers)
     keys = tuple(k for k, _ in vary)
+    seen = {}
+    for k in keys:
+        parts = key_parts(k)
+        if parts in seen:
+            same = "" if seen[parts] == k else f" (as {seen[parts]!r})"
+            raise InputError("--vary", f"{k!r} is varied twice{same}; give each key once with all its values")
+        seen[parts] = k
     combos = list(itertools.product(*[v for _, v in vary]))
     fo = base.get("follower")
     if isinstance(fo, dict) and fo.get("face") == "flat":
@@ -139,42 +283,45 @@ def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None 
                          "file at a time with cams solve")
     if not combos:
         raise InputError("--vary", "the sweep has no designs")
-    # fail early on a key that does not fit the design file
-    from cams.designfile import design_from_dict
-
-    probe = copy.deepcopy(base)
-    for k, v in zip(keys, combos[0]):
-        _set(probe, k, _number(v))
-    try:
-        design_from_dict(probe)
-    except InputError as e:
-        # a key that does not exist in the schema is a mistake in the sweep, not an infeasible design
-        if "unknown key" in str(e):
-            raise InputError("--vary", str(e)) from None
-    workers = workers or os.cpu_count() or 1
+    _check_base(base, keys, combos)  # fail early on a key that does not fit, or a base design that cannot work
+    n = len(combos)
+    cpus = os.cpu_count() or 1
+    workers = min(workers or cpus, n, MAX_WORKERS_PER_CPU * cpus)
     jobs = [(base, keys, c, method) for c in combos]
     t0 = time.perf_counter()
     rows = []
-    n = len(jobs)
+    drawn = False
 
     def tick(k):
+        nonlocal drawn
         if progress:
             w = 40
             done = int(w * k / n)
             sys.stderr.write(f"\r[{'#' * done}{'.' * (w - done)}] {k}/{n}")
             sys.stderr.flush()
+            drawn = True
 
-    if workers == 1:
-        for k, j in enumerate(jobs, 1):
-            rows.append(_solve_one(j))
-            tick(k)
-    else:
-        chunk = max(1, min(64, n // (workers * 8) or 1))
-        with ProcessPoolExecutor(max_workers=workers) as ex:
-            for k, r in enumerate(ex.map(_solve_one, jobs, chunksize=chunk), 1):
-                rows.append(r)
-                if k % chunk == 0 or k == n:
-                    tick(k)
-    if progress:
-        sys.stderr.write("\n")
+    try:
+        if workers == 1:
+            for k, j in enumerate(jobs, 1):
+                rows.append(_solve_one(j))
+                tick(k)
+        else:
+            chunk = max(1, min(64, n // (workers * 8) or 1))
+            ex = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
+            try:
+                with _sigint_held():  # a Ctrl-C while the workers start reaches this process only, just after
+                    results = ex.map(_solve_one, jobs, chunksize=chunk)
+                for k, r in enumerate(results, 1):
+                    rows.append(r)
+                    if k % chunk == 0 or k == n:
+                        tick(k)
+            except BaseException:  # Ctrl-C included: no process, no pending design is left
+                _stop(ex)
+                raise
+            ex.shutdown(wait=True)
+    finally:
+        if drawn:
+            sys.stderr.write("\n")
+            sys.stderr.flush()
     return SweepResult(keys=keys, rows=rows, seconds=time.perf_counter() - t0, workers=workers)

@@ -61,13 +61,25 @@ def _slug(name: str) -> str:
     return s or "cam"
 
 
-def run(args) -> int:
-    from cams.cam import Cam
-
-    which = tuple(w.strip() for w in args.only.split(",")) if args.only else None
-    for w in which or ():
+def _only(spec: str | None) -> tuple[str, ...] | None:
+    """The pictures ``--only`` asks for (None: all); an empty or unknown entry is refused."""
+    if spec is None:
+        return None
+    which = tuple(w.strip() for w in spec.split(","))
+    for w in which:
+        if not w:
+            raise InputError("--only", f"{spec!r} has an empty entry; give a comma-separated list of pictures among "
+                             f"{', '.join(NAMES)}")
         if w not in NAMES:
             raise InputError("--only", f"{w!r} is not a picture, must be among {', '.join(NAMES)}")
+    return tuple(dict.fromkeys(which))
+
+
+def run(args) -> int:
+    from cams.cam import Cam
+    from cams.files import all_or_nothing, atomic_write, ensure_folder
+
+    which = _only(args.only)
     cam = Cam.from_file(args.file)
     face = "flat" if cam.flat else "roller"
     if which is None:
@@ -75,15 +87,18 @@ def run(args) -> int:
     for w in which:
         if (face, w) in _SKIP:
             print(f"cams plot: note: {w}: {_SKIP[face, w]}", file=sys.stderr)
-    from cams.files import ensure_folder
+    # every picture is drawn to a temporary file; they are moved into place together only when all succeeded,
+    # so a failure (a design that cannot be solved for the zone ...) leaves none of them behind
+    with all_or_nothing():
+        out = ensure_folder(args.out, "--out")
+        written = draw(cam, which, out)
+        if args.animate:
+            from cams.plots import animate_profile
 
-    out = ensure_folder(args.out, "--out")
-    for p in draw(cam, which, out):
+            written.append(atomic_write(out / f"{_slug(cam.design.name)}_turn.gif", "--out",
+                                        lambda tmp: animate_profile(cam, tmp), suffix=".gif"))
+    for p in written:
         print(p)
-    if args.animate:
-        from cams.plots import animate_profile
-
-        print(animate_profile(cam, out / f"{_slug(cam.design.name)}_turn.gif"))
     return EXIT_OK
 
 

@@ -10,21 +10,31 @@ from cams.commands.common import EXIT_OK, is_flat, refuse_method
 __all__ = ["register"]
 
 
+def _check_outputs(args) -> None:
+    """Refuse bad output paths before anything is computed: empty, unwritable, the design file, or one twice."""
+    from cams.files import check_output_paths
+
+    check_output_paths([(f"--{opt}", getattr(args, opt)) for opt in ("csv", "dxf", "svg")],
+                       inputs=[("FILE", args.file)])
+
+
 def _write(args, prof, bore) -> list[str]:
+    """Write the outputs asked for, all of them or none (each rendered to a temporary first)."""
     from cams.export import write_csv, write_dxf, write_svg
+    from cams.files import all_or_nothing
 
     written = []
-    if args.csv:
-        written.append(str(write_csv(prof, args.csv)))
-    if args.dxf:
-        written.append(str(write_dxf(prof, args.dxf, bore_radius=bore)))
-    if args.svg:
-        written.append(str(write_svg(prof, args.svg, bore_radius=bore)))
+    with all_or_nothing():
+        if args.csv is not None:
+            written.append(str(write_csv(prof, args.csv)))
+        if args.dxf is not None:
+            written.append(str(write_dxf(prof, args.dxf, bore_radius=bore)))
+        if args.svg is not None:
+            written.append(str(write_svg(prof, args.svg, bore_radius=bore)))
     return written
 
 
 def _run_flat(args, design) -> int:
-    from cams.files import check_output_path
     from cams.flatface import flat_face_profile, size_flat_face
     from cams.profile import _check_tolerance, default_bore_radius
 
@@ -32,10 +42,7 @@ def _run_flat(args, design) -> int:
     tol = design.tolerance if args.tolerance is None else args.tolerance
     field = "profile.tolerance" if args.tolerance is None else "--tolerance"
     _check_tolerance(tol, field)
-    for opt in ("csv", "dxf", "svg"):  # fail before sizing, and before writing any file
-        out = getattr(args, opt)
-        if out:
-            check_output_path(out, f"--{opt}")
+    _check_outputs(args)  # fail before sizing, and before writing any file
     sol = size_flat_face(design)
     prof = flat_face_profile(design, sol.R0, tolerance=tol, field=field)
     bore = design.bore_radius if design.bore_radius is not None else default_bore_radius(prof)
@@ -71,7 +78,6 @@ def _run_flat(args, design) -> int:
 def run(args) -> int:
     from cams.checks import curvature_extremes
     from cams.designfile import load_design
-    from cams.files import check_output_path
     from cams.profile import build_profile, default_bore_radius, profile_options
     from optimize.solve import solve
 
@@ -79,15 +85,12 @@ def run(args) -> int:
     if is_flat(design):
         return _run_flat(args, design)
     opts = profile_options(design, tolerance=args.tolerance)
-    for opt in ("csv", "dxf", "svg"):  # fail before solving, and before writing any file
-        out = getattr(args, opt)
-        if out:
-            check_output_path(out, f"--{opt}")
+    _check_outputs(args)  # fail before solving, and before writing any file
     result = solve(design, method=args.method, objective=design.extra.get("objective", "R0"))
     prof = build_profile(result.design, result.centre, tolerance=opts.tolerance)
     bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
+    ext = curvature_extremes(result.design, result.centre)  # all that can fail, before writing
     written = _write(args, prof, bore)
-    ext = curvature_extremes(result.design, result.centre)
     rep = {
         "name": design.name,
         "points": len(prof),

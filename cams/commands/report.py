@@ -3,20 +3,31 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+from laws.errors import InputError
 
 __all__ = ["register", "run"]
 
 
 def run(args) -> int:
     from cams.cam import Cam
+    from cams.files import all_or_nothing, check_output_paths
     from cams.report import write_report
 
     cam = Cam.from_file(args.file)
-    for p in write_report(cam, args.out):
+    if not args.out.strip():
+        raise InputError("--out", "must name a folder, got an empty path")
+    if Path(args.out).is_dir():  # a folder to be made is checked when made
+        check_output_paths([("--out", Path(args.out) / name) for name in ("report.html", "report.pdf")],
+                           inputs=[("FILE", args.file)])
+    with all_or_nothing():  # report.html and report.pdf appear together or not at all
+        written = write_report(cam, args.out)
+        passed = cam.checks.passed and cam.solution.verified
+    for p in written:
         print(p)
-    return EXIT_OK if cam.checks.passed and cam.solution.verified else EXIT_CHECK_FAILED
+    return EXIT_OK if passed else EXIT_CHECK_FAILED
 
 
 def register(sub) -> None:

@@ -7,18 +7,35 @@ import csv
 import sys
 
 from cams.commands.common import EXIT_OK
+from laws.errors import InputError
 
 __all__ = ["register", "run"]
 
 
+#: Exit code after Ctrl-C (128 + SIGINT), as shells report it.
+EXIT_INTERRUPTED = 130
+
+
 def run(args) -> int:
-    from cams.files import atomic_write, check_output_path, read_toml
+    try:
+        return _run(args)
+    except KeyboardInterrupt:
+        # the pool is stopped by cams.sweep.sweep; no CSV is written (atomic_write leaves no temporary)
+        print("cams sweep: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+def _run(args) -> int:
+    from cams.files import atomic_write, check_output_paths, read_toml
     from cams.sweep import COLUMNS, parse_vary, sweep
 
-    out = check_output_path(args.out, "--out")
+    if args.jobs is not None and args.jobs < 1:
+        raise InputError("--jobs", f"must be an integer >= 1 (processes), got {args.jobs}")
+    (out,) = check_output_paths([("--out", args.out)], inputs=[("FILE", args.file)])
     base = read_toml(args.file)
     vary = [parse_vary(v) for v in args.vary]
-    res = sweep(base, vary, method=args.method, workers=args.jobs, progress=not args.quiet)
+    progress = not args.quiet and sys.stderr.isatty()  # no bar in a log file or a pipe
+    res = sweep(base, vary, method=args.method, workers=args.jobs, progress=progress)
 
     def write(tmp):
         with open(tmp, "w", newline="", encoding="utf-8") as fh:
@@ -45,9 +62,11 @@ def register(sub) -> None:
     )
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--vary", action="append", required=True, metavar="KEY=a:b:n",
-                   help="dotted key and range (n values from a to b) or list v1,v2; repeatable")
+                   help="dotted key (list items as motion.0.angle or motion[0].angle) and range (n values "
+                   "from a to b) or list v1,v2; repeatable, each key once")
     q.add_argument("--out", required=True, help="CSV file to write")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override [solve] method")
-    q.add_argument("--jobs", type=int, help="processes (default: all cores)")
-    q.add_argument("--quiet", action="store_true", help="no progress bar")
+    q.add_argument("--jobs", type=int, help="processes, an integer >= 1 (default: all cores; never more than the "
+                   "designs)")
+    q.add_argument("--quiet", action="store_true", help="no progress bar (drawn only when stderr is a terminal)")
     q.set_defaults(func=run)

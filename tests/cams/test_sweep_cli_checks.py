@@ -1,0 +1,182 @@
+"""``cams sweep``: --jobs and --vary checked, a wrong base design refused, Ctrl-C one line, a bar only on a terminal."""
+
+import csv
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import cams.sweep
+from cams.cli import main
+from cams.sweep import key_parts, parse_vary, sweep
+from laws.errors import InputError
+from tests.conftest import EXAMPLES, rocker_dict
+
+ROCKER = EXAMPLES / "rocker_force.toml"
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _run(capsys, *argv):
+    rc = main(["sweep", *map(str, argv)])
+    cap = capsys.readouterr()
+    return rc, cap.out, cap.err
+
+
+@pytest.mark.parametrize("jobs", ["-1", "0"])
+def test_jobs_must_be_at_least_one(tmp_path, capsys, jobs):
+    out = tmp_path / "s.csv"
+    rc, _, err = _run(capsys, ROCKER, "--vary", "follower.arm=100,120", "--out", out, "--jobs", jobs, "--quiet")
+    assert rc == 2 and err == f"cams sweep: error: --jobs: must be an integer >= 1 (processes), got {jobs}\n"
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("workers", [0, -1, 1.5, True, "2"])
+def test_workers_checked_in_the_api(workers):
+    with pytest.raises(InputError, match="^workers: "):
+        sweep(rocker_dict(), [("follower.arm", np.array([100.0]))], workers=workers)
+
+
+def test_pool_never_larger_than_the_designs(monkeypatch):
+    res = sweep(rocker_dict(), [("follower.arm", np.array([100.0, 120.0]))], method="convex", workers=64)
+    assert res.workers == 2 and [r["error"] for r in res.rows] == [None, None]
+    monkeypatch.setattr(os, "cpu_count", lambda: 1)
+    res = sweep(rocker_dict(), [("follower.arm", np.linspace(100, 120, 12))], method="convex", workers=1000)
+    assert res.workers == cams.sweep.MAX_WORKERS_PER_CPU
+    res = sweep(rocker_dict(), [("follower.arm", np.array([100.0]))], method="convex")
+    assert res.workers == 1
+
+
+def test_ctrl_c_is_one_line_and_writes_no_csv(tmp_path, capsys, monkeypatch):
+    calls = []
+    real = cams.sweep._solve_one
+
+    def solve_then_interrupt(job):
+        calls.append(job)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return real(job)
+
+    monkeypatch.setattr(cams.sweep, "_solve_one", solve_then_interrupt)
+    out = tmp_path / "s.csv"
+    rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100:120:4", "--out", out, "--jobs", "1")
+    assert rc == 130 and err == "cams sweep: interrupted\n" and stdout == ""
+    assert os.listdir(tmp_path) == []
+
+
+@pytest.mark.skipif(not (sys.platform.startswith("linux") and Path("/proc").is_dir()), reason="needs /proc")
+def test_ctrl_c_stops_the_pool(tmp_path):
+    """SIGINT to the whole process group, as a terminal sends it: one line, exit 130, no worker left."""
+    code = ("import signal, sys; signal.signal(signal.SIGINT, signal.default_int_handler); "
+            "from cams.cli import main; sys.exit(main())")
+    out = tmp_path / "s.csv"
+    p = subprocess.Popen([sys.executable, "-c", code, "sweep", str(ROCKER), "--vary", "limits.pressure_angle=30:50:60",
+                          "--vary", "follower.arm=100:200:60", "--out", str(out), "--jobs", "2"],
+                         stderr=subprocess.PIPE, text=True, start_new_session=True, cwd=ROOT)
+
+    def children():
+        kids = []
+        for d in Path("/proc").iterdir():
+            if d.name.isdigit():
+                try:
+                    if int((d / "stat").read_text().rsplit(")", 1)[1].split()[1]) == p.pid:
+                        kids.append(int(d.name))
+                except (OSError, ValueError, IndexError):
+                    pass
+        return kids
+
+    try:
+        deadline = time.monotonic() + 60
+        while len(children()) < 2 and p.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)
+        time.sleep(0.5)
+        assert p.poll() is None, "the sweep ended before it could be interrupted"
+        os.killpg(p.pid, signal.SIGINT)
+        _, err = p.communicate(timeout=30)
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait()
+    assert p.returncode == 130 and err == "cams sweep: interrupted\n"
+    assert os.listdir(tmp_path) == []
+    assert children() == []
+
+
+def test_a_base_design_wrong_whatever_the_keys_is_refused(tmp_path, capsys):
+    empty = tmp_path / "empty.toml"
+    empty.write_text("")
+    out = tmp_path / "s.csv"
+    rc, _, err = _run(capsys, empty, "--vary", "follower.arm=100,120", "--out", out, "--jobs", "1", "--quiet")
+    assert rc == 2 and err == "cams sweep: error: follower.swing: is required\n"
+    assert not out.exists()
+    with pytest.raises(InputError, match="^limits.pressure_angle: "):
+        sweep(rocker_dict(limits={"pressure_angle": 95}), [("follower.arm", np.array([100.0, 120.0]))], workers=1)
+    with pytest.raises(InputError, match="^limits: unknown key"):
+        sweep(rocker_dict(limits={"pressure_angel": 40}), [("follower.arm", np.array([100.0]))], workers=1)
+
+
+def test_errors_of_the_varied_keys_stay_rows():
+    # the base lacks the varied key: the varied values supply it
+    base = rocker_dict()
+    del base["follower"]["arm"]
+    res = sweep(base, [("follower.arm", np.array([100.0, 120.0]))], method="convex", workers=1)
+    assert [r["error"] for r in res.rows] == [None, None]
+    # a bad value of a varied key, a phase angle that leaves nothing to the other phases: rows
+    res = sweep(rocker_dict(), [("motion[0].angle", np.array([400.0, 120.0]))], method="convex", workers=1)
+    assert "motion[3].angle" in res.rows[0]["error"] and res.rows[1]["error"] is None
+    res = sweep(rocker_dict(), [("follower.swing", np.array([-5.0, 15.0]))], method="convex", workers=1)
+    assert res.rows[0]["error"].startswith("follower.swing") and res.rows[1]["error"] is None
+
+
+@pytest.mark.parametrize("second", ["follower.arm=130,140", " follower.arm =130,140"])
+def test_a_key_varied_twice_is_refused(tmp_path, capsys, second):
+    out = tmp_path / "s.csv"
+    rc, _, err = _run(capsys, ROCKER, "--vary", "follower.arm=100,120", "--vary", second, "--out", out, "--quiet")
+    assert rc == 2 and err.startswith("cams sweep: error: --vary: 'follower.arm' is varied twice")
+    assert not out.exists()
+    with pytest.raises(InputError, match="^--vary: 'motion.0.angle' is varied twice"):
+        sweep(rocker_dict(), [("motion[0].angle", np.array([100.0])), ("motion.0.angle", np.array([110.0]))])
+
+
+def test_no_progress_bar_unless_stderr_is_a_terminal(tmp_path, capsys, monkeypatch):
+    argv = [ROCKER, "--vary", "follower.arm=100,120", "--out", tmp_path / "s.csv", "--jobs", "1"]
+    rc, _, err = _run(capsys, *argv)
+    assert rc == 0 and "\r" not in err and "[#" not in err and len(err.splitlines()) == 1
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
+    rc, _, err = _run(capsys, *argv)
+    assert rc == 0 and "\r[" in err and "2/2" in err
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
+    rc, _, err = _run(capsys, *argv, "--quiet")
+    assert rc == 0 and "\r" not in err
+
+
+def test_list_items_by_index_in_either_form(tmp_path, capsys):
+    k, _ = parse_vary("motion[2].angle=100,120")
+    assert k == "motion[2].angle"
+    for bad in ("motion[x].angle=1", "motion..angle=1", "motion[0.angle=1"):
+        with pytest.raises(InputError, match="^--vary: "):
+            parse_vary(bad)
+    a = sweep(rocker_dict(), [("motion[0].angle", np.array([100.0, 130.0]))], method="convex", workers=1)
+    b = sweep(rocker_dict(), [("motion.0.angle", np.array([100.0, 130.0]))], method="convex", workers=1)
+    assert [r["R0"] for r in a.rows] == [r["R0"] for r in b.rows]
+    assert a.rows[0]["R0"] != a.rows[1]["R0"] and all(r["error"] is None for r in a.rows)
+    assert key_parts("motion[0].angle") == key_parts("motion.0.angle") == ("motion", "0", "angle")
+    out = tmp_path / "s.csv"
+    rc, _, _ = _run(capsys, ROCKER, "--vary", "motion[0].angle=100,130", "--out", out, "--jobs", "1", "--quiet")
+    assert rc == 0
+    rows = list(csv.DictReader(out.open()))
+    assert [r["motion[0].angle"] for r in rows] == ["100", "130"] and all(r["error"] == "" for r in rows)
+    rc, _, err = _run(capsys, ROCKER, "--vary", "motion[9].angle=100", "--out", out, "--quiet")
+    assert rc == 2 and "--vary" in err and "index" in err
+
+
+def test_sweep_output_is_not_the_design_file(tmp_path, capsys):
+    design = tmp_path / "d.toml"
+    design.write_text(ROCKER.read_text())
+    rc, _, err = _run(capsys, design, "--vary", "follower.arm=100,120", "--out", design, "--quiet")
+    assert rc == 2 and err.startswith("cams sweep: error: --out: ") and "input file" in err
+    assert design.read_text() == ROCKER.read_text()
