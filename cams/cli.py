@@ -13,7 +13,7 @@ import sys
 import warnings
 
 from cams.commands import COMMANDS
-from cams.commands.common import EXIT_BAD_INPUT, EXIT_OK
+from cams.commands.common import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK
 from laws.errors import CamsError
 
 __all__ = ["main"]
@@ -61,6 +61,10 @@ def main(argv: list[str] | None = None) -> int:
     except CamsError as e:
         print(f"cams {args.command}: error: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except KeyboardInterrupt:
+        # Ctrl-C: one line, the shell's exit code for SIGINT; outputs are whole or absent (cams.files)
+        print(f"cams {args.command}: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
     except BrokenPipeError:
         # the reader went away (e.g. `cams solve ... | head`): not an error of ours
         sys.stderr.close()

@@ -3,14 +3,16 @@
 Schema (see ``examples/``)::
 
     name = "feed cam"
+    units = "mm"  (the only length unit)
     [follower]   kind, face ("roller" default | "flat"), arm, swing (rocker) | stroke, offset
                  (translating), roller_radius, rise_direction ("cw" | "ccw", rocker)
-    [cam]        rotation ("cw" | "ccw"), rpm (optional)
+    [cam]        rotation ("cw" | "ccw"), rpm (optional), bore_radius (optional)
     [[motion]]   phase ("rise" | "dwell" | "return"), law, angle (degrees),
                  height (optional, part of the lift); one dwell may omit angle
     [limits]     pressure_angle, return_pressure_angle, closure ("force" | "form"),
                  safety_factor, centre_distance, min_base_radius
-    [solve]      method ("exact" | "convex" | "exhaustive"), samples, objective ("R0" | "L")
+    [solve]      method ("exact" | "convex" | "exhaustive"), samples, objective ("R0" | "L", rocker)
+    [profile]    tolerance (chord, mm; default 0.001), min_curvature_radius (optional)
     [dynamics]   optional, force closure: mass, load, spring_rate, preload, friction,
                  journal_radius, margin, max_spring_force (see cams.camforces.dynamics_from_dict);
                  parsed into ``design.extra["dynamics"]`` (a cams.camforces.DynamicsSpec)
@@ -228,11 +230,15 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     samples = so.get("samples", 360)
     if isinstance(samples, bool) or not isinstance(samples, int) or samples < 2:
         raise InputError("solve.samples", f"must be an integer >= 2, got {samples!r}")
+    objective = check_option("solve.objective", so.get("objective", "R0"), ("R0", "L"))
+    if objective == "L" and kind != "rocker":
+        raise InputError("solve.objective", "'L' (least centre distance) applies to rocker followers; a translating "
+                         "follower's cam is sized by R0 ('R0')")
     name = _name(d)
     design = CamDesign(
         follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=name,
         method=so.get("method", "exact"), samples=samples,
-        extra={"objective": check_option("solve.objective", so.get("objective", "R0"), ("R0", "L")), "raw": d,
+        extra={"objective": objective, "raw": d,
                **_dynamics(d)},
     )
     # [profile] and the bore are checked on loading, so cams solve refuses what cams check would

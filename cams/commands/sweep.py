@@ -6,14 +6,12 @@ import argparse
 import csv
 import sys
 
-from cams.commands.common import EXIT_OK
+from cams.commands.common import EXIT_INTERRUPTED, EXIT_OK
 from laws.errors import InputError
 
 __all__ = ["register", "run"]
 
 
-#: Exit code after Ctrl-C (128 + SIGINT), as shells report it.
-EXIT_INTERRUPTED = 130
 
 
 def run(args) -> int:

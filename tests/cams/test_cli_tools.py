@@ -91,3 +91,16 @@ def test_animation_gif(tmp_path):
 
     with Image.open(p) as im:
         assert im.n_frames == 4
+
+
+def test_ctrl_c_is_one_line_with_the_shells_code(monkeypatch, capsys):
+    """Ctrl-C in any command: `cams CMD: interrupted` and exit code 130, no traceback."""
+    import cams.commands.laws as laws_cmd
+    from cams.cli import main
+
+    def interrupted(args):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(laws_cmd, "run", interrupted)
+    assert main(["laws"]) == 130
+    assert capsys.readouterr().err == "cams laws: interrupted\n"

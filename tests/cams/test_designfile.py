@@ -174,3 +174,12 @@ def test_profile_and_bore_checked_on_loading(over, field, tmp_path, capsys):
     for cmd in ("solve", "check"):
         assert main([cmd, str(path)]) == 2
         assert capsys.readouterr().err.startswith(f"cams {cmd}: error: {field}")
+
+
+def test_objective_L_is_refused_for_a_translating_follower_on_loading():
+    from tests.stress.helpers import translating_dict
+
+    with pytest.raises(InputError) as e:
+        design_from_dict(translating_dict(solve={"objective": "L"}))
+    assert str(e.value).startswith("solve.objective: 'L' (least centre distance) applies to rocker followers")
+    assert design_from_dict(rocker_dict(solve={"objective": "L"})).extra["objective"] == "L"
