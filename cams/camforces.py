@@ -44,6 +44,26 @@ rotation) is the moment of the roller's force on the cam about the cam's
 centre, ``T = eps N (r x n)`` (``r`` from the cam centre to the roller
 centre); by the power balance it equals ``N |dA/dq| cos(gamma) dq/dphi``.
 
+Rigid impacts
+-------------
+Where the program's velocity analogue ``dq/dphi`` jumps (a *hard impact* of
+:func:`laws.diagnostics.find_impacts`: a constant-velocity law meeting a
+dwell) the follower's acceleration is infinite, so no finite force model
+applies there (DYNACAM shows the force as infinite):
+
+* a jump *up* (``dq'`` > 0, e.g. the start of a linear rise, the end of a
+  linear return) needs an impulse from the cam: the contact force and the
+  camshaft torque are unbounded (:attr:`CamForces.unbounded`);
+* a jump *down* (the end of a linear rise, the start of a linear return)
+  needs an infinite pull from the spring: the follower leaves the cam at any
+  speed (:attr:`CamForces.separation`, a jump speed of 0).
+
+:class:`CamForces` lists them (:attr:`CamForces.impacts`); its sampled
+arrays hold the forces *between* the impacts, its ``ok`` is False with any
+of them, and its report gives the unbounded values as such (``inf``, with
+the finite values between the impacts under ``between_impacts``).
+:func:`jump_speed` returns 0 rpm at a jump down.
+
 Units: the design's lengths are in its file's unit (``length_unit`` metres
 each, 1e-3 for mm); forces in N, masses in kg, time in s.
 """
@@ -56,11 +76,16 @@ import numpy as np
 
 from cams.design import CamDesign
 from cams.follower import Rocker
+from cams.linkage.messages import show_value
 from laws.errors import InputError
 from laws.errors import check_number as _num
 from laws.units import omega_to_rpm, rpm_to_omega
 
 __all__ = [
+    "RigidImpact",
+    "rigid_impacts",
+    "impact_note",
+    "json_safe",
     "FollowerDynamics",
     "Spring",
     "CamForces",
@@ -75,6 +100,7 @@ __all__ = [
     "LENGTH_UNITS",
     "DesignForces",
     "design_forces",
+    "jump_dict",
 ]
 
 TWO_PI = 2.0 * np.pi
@@ -174,7 +200,7 @@ def _omega(design: CamDesign, rpm: float | None) -> float:
 
 def _grid(samples: int) -> np.ndarray:
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 8:
-        raise InputError("dynamics.samples", f"must be an integer >= 8, got {samples!r}")
+        raise InputError("dynamics.samples", f"must be an integer >= 8, got {show_value(samples)}")
     return np.linspace(0.0, TWO_PI, int(samples), endpoint=False)
 
 
@@ -185,6 +211,97 @@ def _kinematics(design: CamDesign, phi: np.ndarray, dyn: FollowerDynamics):
         return mo.s, mo.ds, mo.d2s, design.follower.arm * dyn.length_unit
     u = dyn.length_unit
     return mo.s * u, mo.ds * u, mo.d2s * u, 1.0
+
+
+@dataclass(frozen=True)
+class RigidImpact:
+    """A velocity jump of the follower (a hard impact): infinite acceleration at one cam angle.
+
+    Attributes
+    ----------
+    phi : float
+        Cam angle, radians from the program's start, in [0, 2 pi).
+    jump : float
+        ``dq/dphi`` after minus before: radians per radian (rocker) or design
+        length unit per radian (translating).
+    rocker : bool
+        The follower is a rocker (``q`` an angle).
+    """
+
+    phi: float
+    jump: float
+    rocker: bool
+
+    @property
+    def separation(self) -> bool:
+        """A jump down: the spring would have to pull infinitely hard, the follower leaves the cam at any speed."""
+        return self.jump < 0
+
+    @property
+    def effect(self) -> str:
+        """``"impulse"`` (jump up: unbounded contact force) or ``"separation"`` (jump down: contact lost)."""
+        return "separation" if self.separation else "impulse"
+
+    @property
+    def unit(self) -> str:
+        """Unit of :meth:`velocity_jump`: ``"deg/s"`` for a rocker, ``"mm/s"`` (the design's length unit) otherwise."""
+        return "deg/s" if self.rocker else "mm/s"
+
+    def velocity_jump(self, omega: float, length_unit: float = 1e-3) -> float:
+        """The follower's velocity jump at the cam speed ``omega`` (rad/s): deg/s, or mm/s for a translating follower.
+
+        ``length_unit`` (metres per design unit) converts the design's unit to mm.
+        """
+        v = self.jump * abs(omega)
+        return float(np.degrees(v)) if self.rocker else float(v * length_unit * 1e3)
+
+    def to_dict(self, omega: float, length_unit: float = 1e-3) -> dict:
+        """JSON-ready: cam angle in degrees, the velocity jump at ``omega`` and its effect."""
+        return {"cam_angle_deg": float(np.degrees(self.phi)), "velocity_jump": self.velocity_jump(omega, length_unit),
+                "unit": self.unit, "effect": self.effect}
+
+
+def rigid_impacts(design: CamDesign) -> tuple[RigidImpact, ...]:
+    """The program's velocity jumps (:func:`laws.diagnostics.find_impacts`, hard ones), sorted by cam angle.
+
+    Examples
+    --------
+    >>> from cams.design import CamDesign, Limits
+    >>> from cams.follower import Translating
+    >>> from laws.program import Phase, Program
+    >>> prog = Program((Phase("rise", np.pi, "linear"), Phase("return", np.pi, "cycloidal")), 20.0)
+    >>> d = CamDesign(Translating(5.0, offset=0.0), prog, Limits(np.radians(30)))
+    >>> [(round(float(np.degrees(i.phi))), i.effect) for i in rigid_impacts(d)]
+    [(0, 'impulse'), (180, 'separation')]
+    """
+    from laws.diagnostics import find_impacts
+
+    rocker = isinstance(design.follower, Rocker)
+    return tuple(RigidImpact(float(i.phi), float(i.size), rocker) for i in find_impacts(design.program) if i.kind == "hard")
+
+
+def impact_note(forces: "CamForces") -> str | None:
+    """One line on the rigid impacts of a :class:`CamForces` for a report's notes; None without any."""
+    if not forces.impacts:
+        return None
+    parts = []
+    for i in forces.impacts:
+        what = "contact force unbounded" if not i.separation else "the follower leaves the cam at any speed"
+        parts.append(f"{np.degrees(i.phi):.2f} deg ({i.velocity_jump(forces.omega, forces.length_unit):+.4g} {i.unit}: {what})")
+    return ("rigid impacts (velocity jumps, infinite acceleration) at cam angle " + ", ".join(parts)
+            + "; the forces and the jump speed are unbounded or lost there, the other figures are between the "
+            "impacts; use a law without velocity jumps (e.g. cycloidal, modified trapezoid)")
+
+
+def json_safe(obj):
+    """``obj`` with every non-finite float (an unbounded force, ``inf``) as None, for strict JSON."""
+    if isinstance(obj, dict):
+        return {k: json_safe(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [json_safe(v) for v in obj]
+    if isinstance(obj, float) and not np.isfinite(obj):
+        return None
+    return obj
 
 
 def jamming_limit(design: CamDesign, dyn: FollowerDynamics) -> float:
@@ -247,6 +364,11 @@ class CamForces:
         The cam cannot drive: the denominator is <= 0 during a rise.
     gamma_limit : float
         :func:`jamming_limit`, radians.
+    impacts : tuple of RigidImpact
+        The program's velocity jumps: the arrays above hold the forces between
+        them; at them the force is unbounded (see the module).
+    length_unit : float
+        Metres per design length unit (for the impacts' velocity jumps).
     """
 
     phi: np.ndarray
@@ -266,16 +388,33 @@ class CamForces:
     amplification: np.ndarray
     jammed: np.ndarray
     gamma_limit: float
+    impacts: tuple = ()
+    length_unit: float = 1e-3
 
     @property
     def lost(self) -> np.ndarray:
-        """True where the contact force would be negative (the follower leaves the cam)."""
+        """True where the contact force would be negative (the follower leaves the cam), at the samples."""
         return self.contact < 0
 
     @property
+    def unbounded(self) -> bool:
+        """A velocity jump up somewhere: the contact force (an impulse) is unbounded there."""
+        return any(not i.separation for i in self.impacts)
+
+    @property
+    def separation(self) -> bool:
+        """A velocity jump down somewhere: the follower leaves the cam there at any speed."""
+        return any(i.separation for i in self.impacts)
+
+    @property
+    def contact_lost(self) -> bool:
+        """Contact lost at a sample or at a velocity jump down."""
+        return bool(np.any(self.lost)) or self.separation
+
+    @property
     def ok(self) -> bool:
-        """Contact everywhere and no jamming."""
-        return not (np.any(self.lost) or np.any(self.jammed))
+        """Contact everywhere, no jamming and no rigid impact (bounded forces)."""
+        return not (self.contact_lost or np.any(self.jammed) or self.impacts)
 
     @property
     def rpm(self) -> float:
@@ -283,11 +422,19 @@ class CamForces:
         return omega_to_rpm(self.omega)
 
     def to_dict(self) -> dict:
-        """JSON-ready extremes (N, N m, degrees)."""
+        """JSON-ready extremes (N, N m, degrees).
+
+        With rigid impacts (:attr:`impacts`) the extremes are the true ones:
+        ``max_contact_force`` (and ``max_torque``, and ``max_lateral_force``)
+        ``inf`` at the first velocity jump up, ``min_contact_force`` ``-inf``
+        at a jump down, ``contact_lost`` True at a jump down; ``impacts`` lists
+        them and ``between_impacts`` gives the sampled, finite extremes
+        between them. Use :func:`json_safe` before strict JSON (``inf`` -> null).
+        """
         finite = np.isfinite(self.contact)
         k = int(np.argmax(np.where(finite, self.contact, -np.inf)))
         kt = int(np.argmax(np.abs(self.torque)))
-        return {
+        out = {
             "rpm": self.rpm,
             "max_contact_force": float(self.contact[k]),
             "max_contact_at_deg": float(np.degrees(self.phi[k])),
@@ -296,10 +443,26 @@ class CamForces:
             "max_torque": float(self.torque[kt]),
             "max_torque_at_deg": float(np.degrees(self.phi[kt])),
             "mean_torque": float(np.mean(self.torque[finite])) if np.any(finite) else None,
-            "contact_lost": bool(np.any(self.lost)),
+            "contact_lost": self.contact_lost,
             "jammed": bool(np.any(self.jammed)),
             "jamming_limit_deg": float(np.degrees(self.gamma_limit)),
+            "contact_force_unbounded": self.unbounded,
+            "impacts": [i.to_dict(self.omega, self.length_unit) for i in self.impacts],
         }
+        if self.impacts:
+            keys = ("max_contact_force", "max_contact_at_deg", "min_contact_force", "max_lateral_force", "max_torque",
+                    "max_torque_at_deg", "mean_torque")
+            out["between_impacts"] = {key: out[key] for key in keys}
+            up = [i for i in self.impacts if not i.separation]
+            down = [i for i in self.impacts if i.separation]
+            if up:
+                at = float(np.degrees(up[0].phi))
+                out.update(max_contact_force=np.inf, max_contact_at_deg=at, max_lateral_force=np.inf,
+                           max_torque=np.inf, max_torque_at_deg=at)
+            if down:
+                out["min_contact_force"] = -np.inf
+            out["mean_torque"] = None  # the impacts' work is not in the samples
+        return out
 
 
 def cam_forces(
@@ -382,6 +545,8 @@ def cam_forces(
         amplification=amp,
         jammed=jammed,
         gamma_limit=jamming_limit(design, dyn),
+        impacts=rigid_impacts(design),
+        length_unit=dyn.length_unit,
     )
 
 
@@ -476,16 +641,24 @@ class JumpSpeed:
     Attributes
     ----------
     omega : float
-        Cam speed, rad/s, above which contact is lost.
+        Cam speed, rad/s, above which contact is lost; 0 with a velocity jump
+        down (contact is lost there at any speed).
     rpm : float
         The same in rev/min.
     phi : float
         Cam angle (radians) where contact is lost first.
+    at_impact : bool
+        The jump is at a velocity jump down (a rigid impact), at any speed.
+    between_impacts_rpm : float or None
+        With rigid impacts: the jump speed of the motion between them (the
+        samples' value, excluding the impacts); None without impacts.
     """
 
     omega: float
     rpm: float
     phi: float
+    at_impact: bool = False
+    between_impacts_rpm: float | None = None
 
 
 def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200) -> JumpSpeed:
@@ -494,7 +667,10 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
     Contact is lost where ``m omega^2 d2q/dphi^2 + F0 + k q + P`` turns
     negative; only decelerations (``d2q < 0``) can pull the follower off, so
     ``omega_jump^2 = min over d2q < 0 of (F0 + k q + P) / (m |d2q|)``, refined
-    around the grid's minimum by three 100-fold zooms.
+    around the grid's minimum by three 100-fold zooms. A velocity jump down
+    (:func:`rigid_impacts`) is an infinite deceleration: the jump speed is
+    then 0 (``at_impact``) and the value between the impacts is kept in
+    ``between_impacts_rpm``.
 
     Parameters
     ----------
@@ -543,7 +719,12 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
             best, at = float(rx[j]), float(x[j])
         h = x[1] - x[0]
     w = float(np.sqrt(best))
-    return JumpSpeed(omega=w, rpm=omega_to_rpm(w), phi=float(np.mod(at, TWO_PI)))
+    impacts = rigid_impacts(design)
+    down = [i for i in impacts if i.separation]
+    if down:
+        return JumpSpeed(omega=0.0, rpm=0.0, phi=down[0].phi, at_impact=True, between_impacts_rpm=omega_to_rpm(w))
+    return JumpSpeed(omega=w, rpm=omega_to_rpm(w), phi=float(np.mod(at, TWO_PI)),
+                     between_impacts_rpm=omega_to_rpm(w) if impacts else None)
 
 
 @dataclass(frozen=True)
@@ -641,10 +822,24 @@ class DesignForces:
     jump: JumpSpeed
 
     def to_dict(self) -> dict:
-        """JSON-ready: the spring (N/m and N, or N m/rad and N m), force extremes, jump speed."""
-        return {"spring": {"rate": self.spring.rate, "preload": self.spring.preload},
-                **self.forces.to_dict(), "jump_rpm": self.jump.rpm,
-                "jump_at_deg": float(np.degrees(self.jump.phi))}
+        """JSON-ready: the spring (N/m and N, or N m/rad and N m), force extremes, jump speed.
+
+        With rigid impacts (see :meth:`CamForces.to_dict`) ``jump_rpm`` is 0
+        at a velocity jump down (``jump_at_impact``) and ``between_impacts``
+        also holds the jump speed of the motion between the impacts.
+        """
+        out = {"spring": {"rate": self.spring.rate, "preload": self.spring.preload},
+               **self.forces.to_dict(), **jump_dict(self.jump)}
+        if "between_impacts" in out:
+            out["between_impacts"]["jump_rpm"] = self.jump.between_impacts_rpm
+        return out
+
+
+def jump_dict(jump: JumpSpeed | None) -> dict:
+    """``jump_rpm``, ``jump_at_deg`` (cam angle) and ``jump_at_impact`` of a jump speed (all None without one)."""
+    if jump is None:
+        return {"jump_rpm": None, "jump_at_deg": None, "jump_at_impact": None}
+    return {"jump_rpm": jump.rpm, "jump_at_deg": float(np.degrees(jump.phi)), "jump_at_impact": jump.at_impact}
 
 
 def design_forces(design: CamDesign, centre) -> tuple[DesignForces | None, str | None]:

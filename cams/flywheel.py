@@ -59,6 +59,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
+from cams.linkage.messages import show_value
 from laws.errors import InputError, check_option
 from laws.units import omega_to_rpm, rpm_to_omega  # rpm_to_omega re-exported (cams.flywheel.rpm_to_omega)
 
@@ -72,7 +73,7 @@ def _array(field: str, v, n: int | None = None) -> np.ndarray:
     try:
         a = np.asarray(v, dtype=float)
     except (TypeError, ValueError):
-        raise InputError(field, f"must be numbers, got {v!r}") from None
+        raise InputError(field, f"must be numbers, got {show_value(v)}") from None
     if a.ndim > 1 or not np.all(np.isfinite(a)):
         raise InputError(field, "must be a finite number or a 1-D array of finite numbers")
     if n is not None:
@@ -85,7 +86,7 @@ def _array(field: str, v, n: int | None = None) -> np.ndarray:
 
 def _positive(field: str, v) -> float:
     if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v) or v <= 0:
-        raise InputError(field, f"must be a number > 0, got {v!r}")
+        raise InputError(field, f"must be a number > 0, got {show_value(v)}")
     return float(v)
 
 
@@ -140,6 +141,9 @@ class FlywheelResult:
         ``1/2 (J + J_F) omega^2``, J.
     interpolation : str
         How the samples were joined.
+    reference : str
+        What :attr:`phi` is measured from, as the plot's axis and the JSON
+        name it (e.g. ``"cycle angle from position 1"`` in a machine).
     """
 
     phi: np.ndarray
@@ -158,6 +162,7 @@ class FlywheelResult:
     epsilon: np.ndarray
     kinetic_energy: np.ndarray
     interpolation: str
+    reference: str = "crank angle from the cycle's start"
 
     @property
     def driving_moment(self) -> float:
@@ -191,6 +196,7 @@ class FlywheelResult:
         k = max(1, int(round(np.radians(step_deg) / (self.phi[1] - self.phi[0]))))
         pick = slice(None, None, k)
         return {
+            "angle_reference": self.reference,
             "rpm": self.rpm,
             "delta": self.delta,
             "interpolation": self.interpolation,
@@ -230,7 +236,7 @@ class FlywheelResult:
         axes[3].plot(deg, self.omega, color="C3", label=f"omega, J_F = {self.flywheel_inertia:.4g} kg m^2")
         axes[3].axhline(self.omega_mean, color="0.5", lw=0.8)
         axes[3].set_ylabel("omega, rad/s")
-        axes[3].set_xlabel("crank angle from the cycle's start, deg")
+        axes[3].set_xlabel(f"{self.reference}, deg")
         for ax in axes:
             ax.grid(True, alpha=0.3)
             ax.legend(loc="upper right")
@@ -267,6 +273,7 @@ def flywheel(
     interpolation: str = "linear",
     dense: int = 7200,
     cycle_deg: float = 360.0,
+    reference: str = "crank angle from the cycle's start",
 ) -> FlywheelResult:
     """The flywheel for a coefficient of speed fluctuation, and the crank's speed with it.
 
@@ -296,6 +303,9 @@ def flywheel(
         for linear interpolation, so its integrals are exact).
     cycle_deg : {360, 720}
         Crank rotation of one cycle, degrees (720: a four-stroke engine).
+    reference : str
+        The name of the angle ``phi`` (what its 0 is), for the result's plot
+        and JSON.
 
     Returns
     -------
@@ -325,11 +335,11 @@ def flywheel(
     """
     how = check_option("flywheel.interpolation", interpolation, INTERPOLATIONS)
     if cycle_deg not in (360, 720):
-        raise InputError("flywheel.cycle_deg", f"must be 360 or 720 degrees, got {cycle_deg!r}")
+        raise InputError("flywheel.cycle_deg", f"must be 360 or 720 degrees, got {show_value(cycle_deg)}")
     cycle = float(np.radians(cycle_deg))
     rpm = _positive("flywheel.rpm", rpm)
     if isinstance(delta, bool) or not isinstance(delta, (int, float, np.floating)) or not np.isfinite(delta) or not 0 < delta < 1:
-        raise InputError("flywheel.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {delta!r}")
+        raise InputError("flywheel.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")
     delta = float(delta)
     phi = _array("flywheel.phi", phi)
     _check_cycle(phi, cycle)
@@ -340,7 +350,7 @@ def flywheel(
         k = int(np.argmin(J))
         raise InputError("flywheel.inertia", f"a moment of inertia cannot be negative: {J[k]:.6g} kg m^2 at {np.degrees(phi[k]):.6g} deg")
     if isinstance(dense, bool) or not isinstance(dense, (int, np.integer)) or dense < 12:
-        raise InputError("flywheel.dense", f"must be an integer >= 12, got {dense!r}")
+        raise InputError("flywheel.dense", f"must be an integer >= 12, got {show_value(dense)}")
 
     x = np.linspace(phi[0], phi[0] + cycle, dense + 1)
     if how == "linear":
@@ -395,6 +405,7 @@ def flywheel(
         epsilon=eps,
         kinetic_energy=0.5 * Jt * omega**2,
         interpolation=how,
+        reference=str(reference),
     )
 
 

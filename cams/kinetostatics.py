@@ -68,6 +68,7 @@ import numpy as np
 
 from cams.linkage.primitives import Angle, Point, on_link
 from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
+from cams.linkage.messages import show_value
 from laws.errors import InputError, check_option
 from laws.errors import check_number as _num
 from laws.units import omega_to_rpm, rpm_to_omega
@@ -227,7 +228,7 @@ class GasPressure:
         _num("forces.loads.bore", self.bore, lo=0.0, strict=True)
         _num("forces.loads.start", self.start)
         if self.period not in (360.0, 720.0, 360, 720):
-            raise InputError("forces.loads.period", f"must be 360 or 720 degrees, got {self.period!r}")
+            raise InputError("forces.loads.period", f"must be 360 or 720 degrees, got {show_value(self.period)}")
         _check_table("forces.loads.angles", self.angles, self.pressure, float(self.period))
 
 
@@ -577,7 +578,7 @@ def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
     omega = machine.crank_sense * rpm_to_omega(n)
     if phi is None:
         if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 4:
-            raise InputError("forces.samples", f"must be an integer >= 4, got {samples!r}")
+            raise InputError("forces.samples", f"must be an integer >= 4, got {show_value(samples)}")
         phi = np.linspace(0.0, TWO_PI, int(samples), endpoint=False)
     phi = np.atleast_1d(np.asarray(phi, dtype=float))
     kind = machine.kind
@@ -709,6 +710,11 @@ class ForceResult:
         Passes made (1: no reaction-dependent friction).
     change : float
         Largest change of |M_b| in the last pass, N m (0 for one pass).
+    reference : str
+        What the reported angles (:attr:`rotation`: the crank's rotation in
+        its own sense from the first crank angle) are called, e.g. ``"cycle
+        angle from position 1"`` when the first angle is a machine's position
+        1; empty: ``"crank rotation from <phi[0]> deg (frame)"``.
     """
 
     model: Model
@@ -717,11 +723,22 @@ class ForceResult:
     friction_loads: tuple
     passes: int
     change: float
+    reference: str = ""
 
     @property
     def phi(self) -> np.ndarray:
         """Frame crank angles, radians."""
         return self.model.phi
+
+    @property
+    def rotation(self) -> np.ndarray:
+        """The crank's rotation in its own sense from the first crank angle, radians in [0, 2 pi)."""
+        return np.mod(self.model.sense * (self.phi - self.phi[0]), TWO_PI)
+
+    @property
+    def angle_reference(self) -> str:
+        """The name of the angle of :attr:`rotation` in reports and plots."""
+        return self.reference or f"crank rotation from {np.degrees(self.phi[0]) % 360:.1f} deg (frame)"
 
     @property
     def omega(self) -> float:
@@ -836,11 +853,14 @@ class ForceResult:
         Mr = self.reduced_resisting + (self.reduced_friction if friction else 0.0)
         rpm = omega_to_rpm(abs(self.omega))
         return flywheel(c[order], Mr[order], self.reduced_inertia[order], rpm=rpm, delta=delta, interpolation=interpolation,
-                        cycle_deg=cycle_deg)
+                        cycle_deg=cycle_deg, reference=self.angle_reference)
 
     def to_dict(self) -> dict:
-        """JSON-ready summary: extremes of the reactions and the balancing moment, friction losses."""
-        deg = np.degrees(self.phi)
+        """JSON-ready summary: extremes of the reactions and the balancing moment, friction losses.
+
+        The angles (``at_deg``) are :attr:`rotation` in degrees, named by ``angle_reference``.
+        """
+        deg = np.degrees(self.rotation)
         pairs = {}
         for j in self.model.joints:
             R = self.magnitude(j.name)
@@ -850,6 +870,7 @@ class ForceResult:
         k = int(np.argmax(np.abs(Mb)))
         fp = {k_: float(np.mean(v)) for k_, v in self.friction_power.items()}
         return {
+            "angle_reference": self.angle_reference,
             "rpm": omega_to_rpm(abs(self.omega)),
             "passes": self.passes,
             "balancing_moment": {"max_abs": float(abs(Mb[k])), "at_deg": float(deg[k]), "mean": float(np.mean(Mb)),
@@ -867,7 +888,7 @@ class ForceResult:
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
-        c = np.degrees(np.mod(self.model.sense * (self.phi - self.phi[0]), TWO_PI))
+        c = np.degrees(self.rotation)
         o = np.argsort(c)
         fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 6.5))
         for j in self.model.joints:
@@ -877,7 +898,7 @@ class ForceResult:
         ax2.plot(c[o], self.balancing_moment[o], label="M_b (force analysis)")
         ax2.plot(c[o], self.virtual_moment[o], "--", label="M_b (Zhukovsky)")
         ax2.set_ylabel("balancing moment, N m")
-        ax2.set_xlabel(f"crank rotation from {np.degrees(self.phi[0]):.1f} deg (frame), deg")
+        ax2.set_xlabel(f"{self.angle_reference}, deg")
         ax2.legend(loc="upper right")
         for ax in (ax1, ax2):
             ax.grid(True, alpha=0.3)
@@ -894,14 +915,15 @@ class ForceResult:
         reaction on the pair's first body from its second, as stored in
         :attr:`reactions`. ``marks`` positions equally spaced in crank
         rotation from the first crank angle are numbered 1, 2, ... as in the
-        seeds' plans (position 1 at the first crank angle). Returns the path.
+        seeds' plans (position 1 at the first crank angle); the figure's
+        subtitle names the angle (:attr:`angle_reference`). Returns the path.
         """
         import matplotlib
 
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
-        c = np.mod(self.model.sense * (self.phi - self.phi[0]), TWO_PI)
+        c = self.rotation
         o = np.argsort(c)
         joints = self.model.joints
         cols = min(4, len(joints))
@@ -923,7 +945,8 @@ class ForceResult:
             ax.set_ylabel("R_y, N", fontsize=8)
         for ax in axes.ravel()[len(joints):]:
             ax.set_visible(False)
-        fig.suptitle(title)
+        fig.suptitle(f"{title}\npoints 1..{marks} every {360 / marks:g} deg of {self.angle_reference}, point 1 at 0 deg",
+                     fontsize=10)
         fig.tight_layout()
         fig.savefig(path)
         plt.close(fig)
@@ -948,7 +971,7 @@ def solve_model(model: Model, *, passes: int = 2, tol: float = 1e-9, max_passes:
     ForceResult
     """
     if passes is not None and (isinstance(passes, bool) or not isinstance(passes, (int, np.integer)) or passes < 1):
-        raise InputError("forces.passes", f"must be an integer >= 1 or None, got {passes!r}")
+        raise InputError("forces.passes", f"must be an integer >= 1 or None, got {show_value(passes)}")
     has_friction = any(j.friction is not None and j.friction.coefficient > 0 for j in model.joints)
     R, Mb = _solve(model, model.loads)
     fl: list = []
@@ -1072,7 +1095,7 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
         vals = {k: _num(f"forces.links.{nm}.{k}", v) for k, v in lt.items()}
         for k in ("mass", "inertia"):
             if vals.get(k, 0.0) < 0:
-                raise InputError(f"forces.links.{nm}.{k}", f"cannot be negative, got {vals[k]!r}")
+                raise InputError(f"forces.links.{nm}.{k}", f"cannot be negative, got {show_value(vals[k])}")
         links[nm] = LinkMass(vals.get("mass", 0.0), vals.get("inertia", 0.0), vals.get("cg"))
     fr = _keys(t.get("friction", {}), {"revolute", "prismatic", *pairs}, "forces.friction")
 
@@ -1114,7 +1137,7 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
                         raise InputError(f"{f}.{key}", "is required")
                 for key in ("angles", "pressure"):
                     if not isinstance(ld[key], list):
-                        raise InputError(f"{f}.{key}", f"must be a list of numbers, got {ld[key]!r}")
+                        raise InputError(f"{f}.{key}", f"must be a list of numbers, got {show_value(ld[key])}")
                 loads.append(GasPressure(body, tuple(ld["angles"]), tuple(ld["pressure"]), _num(f"{f}.bore", ld["bore"]),
                                          start=_num(f"{f}.start", ld.get("start", 0.0)), period=ld.get("period", 360.0)))
             else:
@@ -1137,17 +1160,17 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
             raise InputError(fld, msg) from None
     samples = t.get("samples", 360)
     if isinstance(samples, bool) or not isinstance(samples, int) or samples < 12:
-        raise InputError("forces.samples", f"must be an integer >= 12, got {samples!r}")
+        raise InputError("forces.samples", f"must be an integer >= 12, got {show_value(samples)}")
     passes = t.get("passes", 2)
     if passes == "iterate":
         passes = None
     elif isinstance(passes, bool) or not isinstance(passes, int) or passes < 1:
-        raise InputError("forces.passes", f"must be an integer >= 1 or 'iterate', got {passes!r}")
+        raise InputError("forces.passes", f"must be an integer >= 1 or 'iterate', got {show_value(passes)}")
     delta = t.get("delta")
     if delta is not None:
         delta = _num("forces.delta", delta)
         if not 0 < delta < 1:
-            raise InputError("forces.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {delta!r}")
+            raise InputError("forces.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")
     from cams.flywheel import INTERPOLATIONS
 
     interp = check_option("forces.interpolation", t.get("interpolation", "linear"), INTERPOLATIONS)
@@ -1179,11 +1202,26 @@ class MachineForces:
     spring: object = None
     jump: object = None
     notes: tuple = ()
+    cam_timing: object = None
 
     @property
     def ok(self) -> bool:
         """The cam keeps contact and does not jam (True without cam forces)."""
         return self.cam is None or bool(self.cam.ok)
+
+    def cycle_angles(self, cam_angle) -> np.ndarray:
+        """Cycle angles (radians from position 1, in [0, 2 pi q)) at which the cam is at ``cam_angle``.
+
+        The cam's program angle ``theta`` is reached at ``mount + (theta + 2 pi j) / ratio``
+        for each of its ``p`` turns ``j`` in the repeating period of ``q`` crank
+        turns (:class:`cams.machine.CamTiming`); sorted. Empty without the cam's timing.
+        """
+        t = self.cam_timing
+        if t is None:
+            return np.zeros(0)
+        p, q = t.period
+        c = t.mount + (float(cam_angle) + TWO_PI * np.arange(p)) / t.ratio
+        return np.sort(np.mod(c, TWO_PI * q))
 
     def to_dict(self) -> dict:
         """JSON-ready report."""
@@ -1195,9 +1233,26 @@ class MachineForces:
             fw.pop("curves")
             out["flywheel"] = fw
         if self.cam is not None:
-            out["cam"] = {**self.cam.to_dict(), "spring": {"rate": self.spring.rate, "preload": self.spring.preload},
-                          "jump_rpm": None if self.jump is None else self.jump.rpm,
-                          "jump_at_deg": None if self.jump is None else float(np.degrees(self.jump.phi)), "ok": bool(self.cam.ok)}
+            from cams.camforces import jump_dict
+
+            cam = {**self.cam.to_dict(), "spring": {"rate": self.spring.rate, "preload": self.spring.preload},
+                   **jump_dict(self.jump), "ok": bool(self.cam.ok)}
+            if "between_impacts" in cam and self.jump is not None:
+                cam["between_impacts"]["jump_rpm"] = self.jump.between_impacts_rpm
+            if self.cam_timing is not None:
+                cam["angle_reference"] = (f"*_at_deg, cam_angle_deg: {CAM_ANGLE}; *_at_cycle_deg, cycle_deg: {CYCLE_ANGLE} "
+                                          f"(every time the cam is there in {self.cam_timing.period[1]} crank turn(s))")
+
+                def cyc(a):
+                    return None if a is None else [float(np.degrees(c)) for c in self.cycle_angles(np.radians(a))]
+
+                for key in ("max_contact_at", "max_torque_at", "jump_at"):
+                    cam[key + "_cycle_deg"] = cyc(cam.get(key + "_deg"))
+                for imp in cam["impacts"]:
+                    imp["cycle_deg"] = cyc(imp["cam_angle_deg"])
+            else:
+                cam["angle_reference"] = f"*_at_deg, cam_angle_deg: {CAM_ANGLE}"
+            out["cam"] = cam
         return out
 
     def plot(self, directory, stem: str, *, title: str = "") -> list:
@@ -1212,17 +1267,34 @@ class MachineForces:
         if self.flywheel is not None:
             paths.append(self.flywheel.plot(d / f"{stem}_flywheel.png", title=f"{title}: energy"))
         if self.cam is not None:
-            paths.append(_plot_cam(self.cam, d / f"{stem}_cam_forces.png", title=f"{title}: cam forces"))
+            paths.append(_plot_cam(self.cam, d / f"{stem}_cam_forces.png", title=f"{title}: cam forces",
+                                   timing=self.cam_timing))
         return paths
 
 
-def _plot_cam(cf, path, *, title: str):
+CYCLE_ANGLE = "cycle angle from position 1"
+"""How a machine's reports name their crank angles: the crank's rotation from position 1 (:mod:`cams.machine`)."""
+CAM_ANGLE = "cam angle from the start of its program"
+
+
+def _plot_cam(cf, path, *, title: str, timing=None):
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    deg = np.degrees(cf.phi)
+    if timing is None:
+        deg, o = np.degrees(cf.phi), slice(None)
+        xlabel = f"{CAM_ANGLE}, deg"
+    else:  # every cam sample at each cycle angle where it occurs over the repeating period
+        p, q = timing.period
+        c = np.concatenate([timing.mount + (cf.phi + TWO_PI * j) / timing.ratio for j in range(p)])
+        deg = np.degrees(np.mod(c, TWO_PI * q))
+        o = np.argsort(deg)
+        deg = deg[o]
+        o = np.tile(np.arange(cf.phi.size), p)[o]
+        xlabel = f"{CYCLE_ANGLE}, deg" + (f" (over {q} crank turns)" if q > 1 else "")
+    cf = _Picked(cf, o)
     N = np.where(np.isfinite(cf.contact), cf.contact, np.nan)
     fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8, 5.5))
     ax1.plot(deg, N, label="contact force N")
@@ -1232,7 +1304,16 @@ def _plot_cam(cf, path, *, title: str):
     ax1.legend(loc="upper right")
     ax2.plot(deg, np.where(np.isfinite(cf.torque), cf.torque, np.nan), color="C3", label="camshaft torque")
     ax2.set_ylabel("torque, N m")
-    ax2.set_xlabel("cam angle, deg")
+    ax2.set_xlabel(xlabel)
+    for n, imp in enumerate(getattr(cf, "impacts", ())):  # rigid impacts: unbounded force (or contact lost) there
+        xs = [np.degrees(imp.phi)] if timing is None else np.degrees(
+            np.mod(timing.mount + (imp.phi + TWO_PI * np.arange(timing.period[0])) / timing.ratio, TWO_PI * timing.period[1]))
+        for x in xs:
+            for ax in (ax1, ax2):
+                ax.axvline(x, color="C3", lw=1.0, ls=":",
+                           label=("rigid impact (unbounded / contact lost)" if ax is ax1 and n == 0 and x == xs[0] else None))
+    if getattr(cf, "impacts", ()):
+        ax1.legend(loc="upper right")
     for ax in (ax1, ax2):
         ax.grid(True, alpha=0.3)
     ax1.set_title(f"{title} at {cf.rpm:.4g} rpm")
@@ -1240,6 +1321,17 @@ def _plot_cam(cf, path, *, title: str):
     fig.savefig(path)
     plt.close(fig)
     return path
+
+
+class _Picked:
+    """The arrays of a :class:`cams.camforces.CamForces` indexed by ``o`` (for plotting in another order)."""
+
+    def __init__(self, cf, o):
+        self._cf, self._o = cf, o
+
+    def __getattr__(self, name):
+        v = getattr(self._cf, name)
+        return v[self._o] if isinstance(v, np.ndarray) and v.shape == self._cf.phi.shape else v
 
 
 def machine_forces(spec, centre=None) -> MachineForces:
@@ -1256,15 +1348,27 @@ def machine_forces(spec, centre=None) -> MachineForces:
     Returns
     -------
     MachineForces
+        The linkage's forces sampled at ``opt.samples`` equal steps of the
+        cycle angle from position 1 (:class:`cams.machine.Windows`), so that
+        their angles (``rotation``, ``to_dict``'s ``at_deg``, the plots) and
+        the flywheel's are cycle angles, as the machine's windows; the cam's
+        timing (:class:`cams.machine.CamTiming`) to map the cam's angles to
+        cycle angles.
     """
+    from dataclasses import replace
+
     from cams.camforces import design_forces
+    from cams.machine import place_cam, windows
 
     notes = []
     lk = fw = cf = spring = jump = None
+    win = windows(spec.linkage, spec.cutting)
     forces = spec.extra.get("forces")
     if forces is not None:
         fs, opt = forces
-        lk = analyse_forces(spec.linkage, fs, samples=opt.samples, passes=opt.passes)
+        c = np.linspace(0.0, TWO_PI, opt.samples, endpoint=False)
+        lk = analyse_forces(spec.linkage, fs, phi=win.frame_angle(c), passes=opt.passes)
+        lk = replace(lk, reference=CYCLE_ANGLE)
         if opt.delta is not None:
             fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation)
     else:
@@ -1276,5 +1380,11 @@ def machine_forces(spec, centre=None) -> MachineForces:
         if note:
             notes.append(note)
         if df is not None:
+            from cams.camforces import impact_note
+
             cf, spring, jump = df.forces, df.spring, df.jump
-    return MachineForces(lk, fw, cf, spring, jump, tuple(notes))
+            note = impact_note(cf)
+            if note:
+                notes.append(note)
+    timing = place_cam(win, spec.cam.program, spec.drive, spec.timing) if cf is not None else None
+    return MachineForces(lk, fw, cf, spring, jump, tuple(notes), timing)

@@ -40,6 +40,7 @@ from scipy.optimize import brentq
 from cams.design import CamDesign
 from cams.follower import Rocker
 from cams.linkage.analysis import WORKING, Machine, StrokeReport, analyse
+from cams.linkage.messages import show_value
 from laws.errors import InfeasibleError, InputError, check_option
 from laws.program import Program
 
@@ -69,7 +70,7 @@ def _deg(x: float) -> float:
 
 def _frac(field_: str, v) -> float:
     if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v) or not 0 <= v < 1:
-        raise InputError(field_, f"must be a fraction of the stroke in [0, 1), got {v!r}")
+        raise InputError(field_, f"must be a fraction of the stroke in [0, 1), got {show_value(v)}")
     return float(v)
 
 
@@ -121,7 +122,7 @@ class Drive:
 
     def __post_init__(self):
         if not (isinstance(self.ratio, (int, float)) and np.isfinite(self.ratio) and self.ratio > 0):
-            raise InputError("drive.ratio", f"must be > 0, got {self.ratio!r}")
+            raise InputError("drive.ratio", f"must be > 0, got {show_value(self.ratio)}")
         if self.sense not in (1, -1):
             raise InputError("drive.mesh", "sense must be +1 or -1")
 
@@ -135,7 +136,7 @@ class Drive:
         """A gear pair: Z_crank on the crank's shaft drives Z_cam on the cam's (seed 004: Z5-Z6)."""
         for f, z in (("drive.z_crank", z_crank), ("drive.z_cam", z_cam)):
             if isinstance(z, bool) or not isinstance(z, int) or z < 1:
-                raise InputError(f, f"must be a positive whole number of teeth, got {z!r}")
+                raise InputError(f, f"must be a positive whole number of teeth, got {show_value(z)}")
         check_option("drive.mesh", mesh, ("external", "internal"))
         return cls(ratio=z_crank / z_cam, sense=-1 if mesh == "external" else 1, teeth=(z_crank, z_cam))
 
@@ -182,7 +183,8 @@ class Timing:
 
     def __post_init__(self):
         if not (isinstance(self.margin, (int, float)) and np.isfinite(self.margin) and 0 <= self.margin < np.pi):
-            raise InputError("timing.margin", f"must be in [0, 180) degrees, got {np.degrees(self.margin)!r}")
+            shown = np.degrees(self.margin) if isinstance(self.margin, (int, float)) else self.margin
+            raise InputError("timing.margin", f"must be in [0, 180) degrees, got {show_value(shown)}")
         check_option("timing.placement", self.placement, PLACEMENTS)
 
 
@@ -377,7 +379,7 @@ def place_cam(win: Windows, program: Program, drive: Drive, timing: Timing) -> C
         raise InfeasibleError(
             "motion",
             f"feed window too short: the tool is out of the work for {np.degrees(Lw):.4g} deg of crank angle "
-            f"({np.degrees(w0) % 360:.4g} to {np.degrees(w1) % 360:.4g} deg after position 1); {what} take "
+            f"({np.degrees(w0) % 360:.4g} to {np.degrees(w1) % 360:.4g} deg after position 1); {what} take{'s' if len(rises) == 1 else ''} "
             f"{np.degrees(b1 - a0):.4g} deg of cam = {np.degrees(span):.4g} deg of crank at ratio {i:g}, plus 2 x "
             f"{np.degrees(m):.4g} deg margin; the largest feasible rise angle is {np.degrees(largest):.4g} deg"
             + (" (less the other phases between the rises)" if len(rises) > 1 else ""),
@@ -489,7 +491,7 @@ class CycleDiagram:
         f = np.degrees(self.follower) if self.follower_unit == "rad" else self.follower
         ax2.plot(deg, f, color="C1")
         ax2.set_ylabel("follower, " + ("deg" if self.follower_unit == "rad" else self.follower_unit))
-        ax2.set_xlabel("crank angle from position 1, deg")
+        ax2.set_xlabel("cycle angle from position 1 (crank rotation), deg")
         for ax in (ax1, ax2):
             ax.fill_between(deg, 0, 1, where=self.cutting, transform=ax.get_xaxis_transform(), color="C3", alpha=0.15, label="cutting")
             ax.fill_between(deg, 0, 1, where=self.feeding, transform=ax.get_xaxis_transform(), color="C2", alpha=0.25, label="feeding")

@@ -15,6 +15,12 @@ Schema (see ``examples/machines/``)::
                   crank_slider:       stroke, rod | crank, rod; offset, slider_side ("right" | "left"), rod_cg
                   slotted_lever_pump: time_ratio, stroke, centre_distance | crank, centre_distance, lever
                                       lever_side ("opposite" | "same"), guide_x
+                time_ratio K (course data) must give the linkage that stroke and K (checked to 1e-9):
+                  slotting:           1 < K < K_max(rod_ratio) = (180 + theta) / (180 - theta),
+                                      theta = 2 acos(1 / (1 + 2 rod_ratio)) (8.2444 for rod_ratio 1;
+                                      cams.linkage.synthesis.slotting_time_ratio_limit), and K <= 1000
+                  slotted_lever_pump: 1 < K <= 1000
+                  crank_slider:       1e-6 rod <= stroke < the rod's reach
     [cutting]   approach, overrun (fractions of the stroke), working ("slow" | "fast" | "forward" | "backward")
     [drive]     kind ("shaft" | "gears"), z_crank, z_cam, mesh ("external" | "internal")
     [timing]    margin (degrees of crank angle), placement ("centre" | "early" | "late"),
@@ -83,6 +89,8 @@ def _side(table: dict, key: str, default: str) -> int:
 
 
 def _linkage(lk: dict):
+    if "type" not in lk:
+        raise InputError("linkage.type", f"is required, one of {', '.join(map(repr, LINKAGE_TYPES))}")
     kind = check_option("linkage.type", lk.get("type"), LINKAGE_TYPES)
     course, lengths, options = _LINKAGE[kind]
     _check_keys(lk, _COMMON | course | lengths | options, "linkage")
@@ -161,17 +169,25 @@ def machine_from_dict(d: dict) -> MachineSpec:
     Raises
     ------
     InputError
-        Unknown keys, missing or invalid values; the field is named.
+        Unknown keys, missing or invalid values; the field is named. A file
+        without a [linkage] table (a design file for ``cams solve``) is
+        refused on ``linkage``.
     AssemblyError
         The linkage cannot be assembled at some crank angle.
     """
+    if "linkage" not in d:
+        if d.get("follower") is not None or d.get("motion") is not None:
+            raise InputError("linkage", "the file has no [linkage] table: it is a cam design file, to be sized "
+                             "with `cams solve`; a machine file adds a [linkage] table (see examples/machines/)")
+        raise InputError("linkage", "the file has no [linkage] table; a machine file needs one (see examples/machines/)")
     _check_keys(d, _KEYS[""], "")
     name = d.get("name", "machine")
     if not isinstance(name, str):
         raise InputError("name", "must be a string")
     units = d.get("units", "mm")
     if units != "mm":
-        raise InputError("units", f"{units!r} is not supported: machine files are in mm")
+        raise InputError("units", f"{units!r} is not supported: machine files are in mm" if isinstance(units, str)
+                         else f"must be the string 'mm', got {units}")
     linkage = _linkage(_table(d, "linkage"))
     cu = _table(d, "cutting")
     _check_keys(cu, _KEYS["cutting"], "cutting")

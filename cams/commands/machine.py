@@ -65,7 +65,7 @@ def print_forces(rep: dict) -> None:
     if lk is not None:
         mb = lk["balancing_moment"]
         passes = {1: "no friction from the reactions", 2: "two-stage friction"}.get(lk["passes"], f"{lk['passes']} friction passes")
-        print(f"  forces at {lk['rpm']:.4g} rpm ({passes}):")
+        print(f"  forces at {lk['rpm']:.4g} rpm ({passes}); angles: {lk['angle_reference']}:")
         print(f"    balancing moment: max |M_b| = {mb['max_abs']:.4g} N m at {mb['at_deg']:.1f} deg, mean {mb['mean']:.4g} N m; "
               f"Zhukovsky's lever agrees within {mb['virtual_work_max_difference']:.2g} N m")
         for name, p in lk["pairs"].items():
@@ -77,6 +77,7 @@ def print_forces(rep: dict) -> None:
         else:
             print(f"    drive power mean {lk['drive_power_mean_W']:.4g} W")
     fw = rep.get("flywheel")
+    # the flywheel's curves are over the same angle as the linkage's (fw["angle_reference"])
     if fw is not None:
         print(f"  flywheel for delta = {fw['delta']:g}: driving moment {fw['driving_moment']:.4g} N m, excess work "
               f"{fw['excess_work']:.4g} J, J_F = {fw['flywheel_inertia']:.4g} kg m^2; omega {fw['omega_min']:.4g} .. "
@@ -84,20 +85,56 @@ def print_forces(rep: dict) -> None:
     cam = rep.get("cam")
     if cam is not None:
         sp = cam["spring"]
+
+        def at(key):
+            where = f"cam angle {cam[key + '_deg']:.1f} deg"
+            cyc = cam.get(key + "_cycle_deg")
+            if cyc:
+                where += f" = cycle angle {', '.join(f'{c:.1f}' for c in cyc)} deg"
+            return where
+
+        def g(x):
+            return "UNBOUNDED" if x is None or x == float("inf") else f"{x:.4g}"
+
         print(f"  cam forces at {cam['rpm']:.4g} rpm: spring rate {sp['rate']:.4g}, preload {sp['preload']:.4g}; "
-              f"max contact force {cam['max_contact_force']:.4g} N at {cam['max_contact_at_deg']:.1f} deg; "
-              f"max camshaft torque {cam['max_torque']:.4g} N m at {cam['max_torque_at_deg']:.1f} deg")
-        jump = "none" if cam["jump_rpm"] is None else f"{cam['jump_rpm']:.4g} rpm (at {cam['jump_at_deg']:.1f} deg)"
+              f"max contact force {g(cam['max_contact_force'])} N at {at('max_contact_at')}; "
+              f"max camshaft torque {g(cam['max_torque'])} N m at {at('max_torque_at')}")
+        bi = cam.get("between_impacts")
+        if bi:
+            print(f"    between the rigid impacts: max contact force {bi['max_contact_force']:.4g} N, max camshaft torque "
+                  f"{bi['max_torque']:.4g} N m, jump speed {bi['jump_rpm']:.4g} rpm")
+        if cam["jump_rpm"] is None:
+            jump = "none"
+        elif cam.get("jump_at_impact"):
+            jump = f"0 rpm: the follower leaves the cam at any speed at its velocity drop (at {at('jump_at')})"
+        else:
+            jump = f"{cam['jump_rpm']:.4g} rpm (at {at('jump_at')})"
         print(f"    jump speed {jump}; jamming limit {cam['jamming_limit_deg']:.2f} deg; contact lost: "
               f"{'YES' if cam['contact_lost'] else 'no'}; jammed: {'YES' if cam['jammed'] else 'no'}")
     for n in rep.get("notes", []):
         print(f"  note: {n}")
 
 
+def _check_plot_folder(path: str) -> None:
+    """Refuse a ``--plot`` folder that cannot be one (an existing file, an empty name) before any work."""
+    from laws.errors import InputError
+
+    if not str(path).strip():
+        raise InputError("--plot", "needs a folder name")
+    p = Path(path)
+    if p.exists() and not p.is_dir():
+        raise InputError("--plot", f"{str(p)!r} is a file; give a folder for the PNGs (it is created when missing)")
+    for parent in p.parents:
+        if parent.exists() and not parent.is_dir():
+            raise InputError("--plot", f"cannot create the folder {str(p)!r}: {str(parent)!r} is a file")
+
+
 def run(args) -> int:
     from cams.machine import design_machine
     from cams.machinefile import load_machine
 
+    if args.plot is not None:
+        _check_plot_folder(args.plot)
     spec = load_machine(args.file)
     res = design_machine(spec, method=args.method)
     rep = res.to_dict()
@@ -107,16 +144,19 @@ def run(args) -> int:
 
         forces = machine_forces(spec, res.solve.centre)
         rep["forces"] = forces.to_dict()
-    if args.plot:
-        out = Path(args.plot)
-        out.mkdir(parents=True, exist_ok=True)
+    if args.plot is not None:
+        from cams.files import ensure_folder
+
+        out = ensure_folder(args.plot, "--plot")
         path = out / f"{Path(args.file).stem}_cycle.png"
         res.diagram.plot(path, title=spec.name)
         rep["plots"] = [str(path)]
         if forces is not None:
             rep["plots"] += [str(p) for p in forces.plot(out, Path(args.file).stem, title=spec.name)]
     if args.json:
-        print(json.dumps(rep, indent=2, ensure_ascii=False))
+        from cams.camforces import json_safe
+
+        print(json.dumps(json_safe(rep), indent=2, ensure_ascii=False, allow_nan=False))
     else:
         print_machine(rep)
         if forces is not None:

@@ -7,7 +7,7 @@ import json
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
 
-__all__ = ["register", "print_summary", "print_flat_summary"]
+__all__ = ["register", "print_summary", "print_flat_summary", "print_cam_forces"]
 
 
 def _fmt_deg(x) -> str:
@@ -35,15 +35,42 @@ def print_summary(rep: dict) -> None:
           f"verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
     fo = rep.get("forces")
     if fo:
-        sp = fo["spring"]
-        print(f"  spring: rate {sp['rate']:.6g}, preload {sp['preload']:.6g} (SI: N/m and N, or N m/rad and N m)")
-        print(f"  contact force: max {fo['max_contact_force']:.6g} at {fo['max_contact_at_deg']:.2f} deg, "
-              f"min {fo['min_contact_force']:.6g}; camshaft torque max {fo['max_torque']:.6g} N m "
-              f"at {fo['max_torque_at_deg']:.2f} deg")
-        print(f"  follower jumps above {fo['jump_rpm']:.6g} rpm; contact lost: {'YES' if fo['contact_lost'] else 'no'}; "
-              f"jammed: {'YES' if fo['jammed'] else 'no'} (jamming limit {fo['jamming_limit_deg']:.2f} deg)")
+        print_cam_forces(fo)
     for n in rep["notes"]:
         print(f"  note: {n}")
+
+
+def _g(x) -> str:
+    """A force for the text: ``inf`` (unbounded) and None (from JSON) as words."""
+    if x is None or x == float("inf"):
+        return "UNBOUNDED"
+    if x == float("-inf"):
+        return "-UNBOUNDED"
+    return f"{x:.6g}"
+
+
+def print_cam_forces(fo: dict, indent: str = "  ") -> None:
+    """The [dynamics] part of a report (from ``DesignForces.to_dict``): spring, contact force, torque, jump speed.
+
+    With rigid impacts the unbounded values are said so, the finite ones
+    between the impacts follow, and the jump speed is "any speed".
+    """
+    sp = fo["spring"]
+    print(f"{indent}spring: rate {sp['rate']:.6g}, preload {sp['preload']:.6g} (SI: N/m and N, or N m/rad and N m)")
+    print(f"{indent}contact force: max {_g(fo['max_contact_force'])} at {fo['max_contact_at_deg']:.2f} deg, "
+          f"min {_g(fo['min_contact_force'])}; camshaft torque max {_g(fo['max_torque'])} N m "
+          f"at {fo['max_torque_at_deg']:.2f} deg")
+    bi = fo.get("between_impacts")
+    if bi:
+        print(f"{indent}  between the rigid impacts: contact force max {bi['max_contact_force']:.6g} at "
+              f"{bi['max_contact_at_deg']:.2f} deg, min {bi['min_contact_force']:.6g}; camshaft torque max "
+              f"{bi['max_torque']:.6g} N m at {bi['max_torque_at_deg']:.2f} deg; jump speed {bi['jump_rpm']:.6g} rpm")
+    if fo.get("jump_at_impact"):
+        jump = f"follower leaves the cam at any speed (velocity drop at {fo['jump_at_deg']:.2f} deg)"
+    else:
+        jump = f"follower jumps above {fo['jump_rpm']:.6g} rpm"
+    print(f"{indent}{jump}; contact lost: {'YES' if fo['contact_lost'] else 'no'}; "
+          f"jammed: {'YES' if fo['jammed'] else 'no'} (jamming limit {fo['jamming_limit_deg']:.2f} deg)")
 
 
 def pressure_text(rep: dict) -> str:
@@ -114,7 +141,7 @@ def run(args) -> int:
     ok = result.verified
     forces = None
     if "dynamics" in design.extra:
-        from cams.camforces import design_forces
+        from cams.camforces import design_forces, impact_note
 
         df, note = design_forces(design, result.centre)
         if note:
@@ -122,8 +149,15 @@ def run(args) -> int:
         if df is not None:
             forces = df.to_dict()
             ok = ok and df.forces.ok
+            note = impact_note(df.forces)
+            if note:
+                rep["notes"].append(note)
     rep["forces"] = forces
     if args.json:
+        if forces is not None:
+            from cams.camforces import json_safe
+
+            rep["forces"] = json_safe(forces)  # an unbounded force (rigid impact) as null: strict JSON
         print(json.dumps(rep, indent=2))
     else:
         print_summary(rep)

@@ -57,8 +57,23 @@ def dead_positions(machine: Machine, *, samples: int = 720) -> np.ndarray:
     -------
     ndarray
         Sorted angles of the output's extreme positions.
+
+    Notes
+    -----
+    A machine may offer ``dead_position_hints()``: frame angles (radians)
+    where its output is known to stop (e.g. a swinging lever's extreme
+    positions). Each is bracketed by grid points a hair either side of it, so
+    that two dead positions closer together than the grid's step (a quick
+    return with a large time ratio) are not lost.
     """
     grid = np.linspace(0.0, TWO_PI, samples + 1)
+    hints = getattr(machine, "dead_position_hints", None)
+    if hints is not None:
+        h = np.mod(np.asarray(hints(), dtype=float), TWO_PI)
+        d = 1e-9
+        extra = np.concatenate([h - d, h + d])
+        grid = np.unique(np.concatenate([grid, extra[(extra > 0) & (extra < TWO_PI)]]))
+    samples = grid.size - 1
     v = machine.output(grid).ds
     out = []
     for k in range(samples):

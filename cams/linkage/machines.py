@@ -47,8 +47,17 @@ from cams.linkage.primitives import (
     rpr,
     rrp,
 )
-from cams.linkage.synthesis import SlottedLeverSynthesis, crank_slider_crank, slotted_lever_synthesis
-from laws.errors import InputError
+from cams.linkage.analysis import analyse
+from cams.linkage.messages import show_value as _show
+from cams.linkage.synthesis import (
+    MAX_TIME_RATIO,
+    SlottedLeverSynthesis,
+    _below,
+    crank_slider_crank,
+    slotted_lever_synthesis,
+    slotting_time_ratio_limit,
+)
+from laws.errors import InfeasibleError, InputError
 from laws.units import rpm_to_omega
 
 __all__ = [
@@ -104,20 +113,20 @@ def describe_angles(phi: np.ndarray, mask: np.ndarray, *, periodic: bool = False
 
 def _num(field_: str, v) -> float:
     if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v):
-        raise InputError(field_, f"must be a number, got {v!r}")
+        raise InputError(field_, f"must be a number, got {_show(v)}")
     return float(v)
 
 
 def _pos(field_: str, v) -> float:
     v = _num(field_, v)
     if v <= 0:
-        raise InputError(field_, f"must be > 0, got {v!r}")
+        raise InputError(field_, f"must be > 0, got {_show(v)}")
     return v
 
 
 def _sign(field_: str, v, words=("+1", "-1")) -> None:
     if v not in (1, -1):
-        raise InputError(field_, f"must be +1 or -1 ({words[0]} or {words[1]}), got {v!r}")
+        raise InputError(field_, f"must be +1 or -1 ({words[0]} or {words[1]}), got {_show(v)}")
 
 
 class _Base:
@@ -174,6 +183,37 @@ class _Base:
         }
 
 
+def _verify_course(machine, *, stroke: float, time_ratio: float | None = None, allowed: str = "") -> None:
+    """Check a synthesized linkage against its course data: its own stroke and time ratio to 1e-9 (relative).
+
+    Raises
+    ------
+    InputError
+        On ``linkage.time_ratio`` (or ``linkage.stroke``) when the linkage's
+        motion does not have the asked stroke or time ratio; ``allowed`` (the
+        allowed range) is appended to the message.
+    """
+    tail = f"; {allowed}" if allowed else ""
+    field_ = "linkage.stroke" if time_ratio is None else "linkage.time_ratio"
+    try:
+        rep = analyse(machine, working="slow")
+    except InfeasibleError as e:
+        if isinstance(e, AssemblyError):
+            raise
+        raise InputError(field_, f"the synthesized linkage does not move as asked ({str(e).split(': ', 1)[-1]}){tail}") from None
+    if time_ratio is not None and not abs(rep.time_ratio - time_ratio) <= 1e-9 * time_ratio:
+        raise InputError(
+            "linkage.time_ratio",
+            f"the synthesized linkage has K = {rep.time_ratio:.10g} and stroke {rep.stroke:.10g}, not the asked "
+            f"K = {time_ratio:.10g} and stroke {stroke:.10g}{tail}",
+        )
+    if not abs(rep.stroke - stroke) <= 1e-9 * stroke:
+        raise InputError(
+            field_,
+            f"the synthesized linkage has a stroke of {rep.stroke:.10g}, not the asked {stroke:.10g}{tail}",
+        )
+
+
 class _SwingingLever(_Base):
     """A crank driving a slotted bar or lever that swings about a pivot at ``(-centre_distance, 0)``."""
 
@@ -184,6 +224,15 @@ class _SwingingLever(_Base):
     def half_swing(self) -> float:
         """Half the bar's (lever's) swing, theta/2 = asin(l_crank / L), radians."""
         return float(np.arcsin(self.crank / self.centre_distance))
+
+    def dead_position_hints(self) -> np.ndarray:
+        """Frame crank angles of the bar's extreme positions (the crank perpendicular to the bar), radians.
+
+        ``cos phi = -l_crank / L``: ``pi/2 + theta/2`` and ``3 pi/2 - theta/2``;
+        :func:`cams.linkage.analysis.dead_positions` brackets them exactly.
+        """
+        h = self.half_swing
+        return np.array([np.pi / 2 + h, 1.5 * np.pi - h])
 
 
 def _swing_bar_checks(crank_: float, L: float, bar: float, side: int, name: str, field_: str) -> None:
@@ -355,7 +404,7 @@ class SlottingMachine(_SwingingLever):
         """
         _sign("linkage.bar_side", bar_side, ("same", "opposite"))
         syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance, rod_ratio)
-        return cls(
+        m = cls(
             crank=syn.crank,
             centre_distance=syn.centre_distance,
             bar=syn.bar,
@@ -367,6 +416,10 @@ class SlottingMachine(_SwingingLever):
             rpm=rpm,
             synthesis=syn,
         )
+        kmax = min(slotting_time_ratio_limit(syn.rod_ratio), MAX_TIME_RATIO)
+        _verify_course(m, stroke=syn.stroke, time_ratio=syn.time_ratio,
+                       allowed=f"a slotting linkage with rod_ratio = {syn.rod_ratio:.6g} allows 1 < K < {_below(kmax)}")
+        return m
 
     def kinematics(self, phi, *, omega: float | None = None) -> SlottingKinematics:
         """Positions, velocities and accelerations at crank angles ``phi`` (radians)."""
@@ -488,7 +541,9 @@ class CrankSlider(_Base):
         >>> CrankSlider.from_stroke(0.35, 1.4).crank
         0.175
         """
-        return cls(crank=crank_slider_crank(stroke, rod, offset), rod=rod, offset=offset, **kw)
+        m = cls(crank=crank_slider_crank(stroke, rod, offset), rod=rod, offset=offset, **kw)
+        _verify_course(m, stroke=float(stroke), allowed="a shorter stroke, a longer rod or a smaller offset")
+        return m
 
     @property
     def extreme_positions(self) -> tuple[float, float]:
@@ -711,7 +766,10 @@ class SlottedLeverPump(_SwingingLever):
         (262.5, 250.0)
         """
         syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance)
-        return cls(crank=syn.crank, centre_distance=syn.centre_distance, lever=syn.bar, lever_side=lever_side, synthesis=syn, **kw)
+        m = cls(crank=syn.crank, centre_distance=syn.centre_distance, lever=syn.bar, lever_side=lever_side, synthesis=syn, **kw)
+        _verify_course(m, stroke=syn.stroke, time_ratio=syn.time_ratio,
+                       allowed=f"a slotted-lever pump allows 1 < K <= {MAX_TIME_RATIO:g}")
+        return m
 
     def kinematics(self, phi, *, omega: float | None = None) -> PumpKinematics:
         """Positions, velocities and accelerations at crank angles ``phi`` (radians)."""

@@ -27,20 +27,42 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
+from cams.linkage.messages import show_value as _show
 from laws.errors import InfeasibleError, InputError
 
 __all__ = [
     "swing_from_time_ratio",
     "time_ratio_from_swing",
+    "slotting_time_ratio_limit",
+    "slotting_rod_ratio_min",
+    "MAX_TIME_RATIO",
     "SlottedLeverSynthesis",
     "slotted_lever_synthesis",
     "crank_slider_crank",
 ]
 
 
+MAX_TIME_RATIO = 1000.0
+"""Largest time ratio K the synthesis accepts for any swinging-lever linkage.
+
+Geometrically K may approach infinity (the swing theta approaches 180 deg and
+the crank the centre distance), but beyond ~1000 the return stroke takes less
+than 0.36 deg of crank, the crank's pin passes within ~5e-6 L of the lever's
+pivot and the linkage's own time ratio can no longer be checked to 1e-9.
+"""
+
+
+def _below(x: float) -> str:
+    """``x`` to 6 significant digits, rounded down (an upper limit quoted in a message stays valid)."""
+    t = f"{x:.6g}"
+    if float(t) > x:  # rounded up: step down by one unit of the 6th digit
+        t = f"{x - 10 ** (np.floor(np.log10(abs(x))) - 5):.6g}"
+    return t
+
+
 def _positive(field: str, v: float) -> float:
     if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v) or v <= 0:
-        raise InputError(field, f"must be a number > 0, got {v!r}")
+        raise InputError(field, f"must be a number > 0, got {_show(v)}")
     return float(v)
 
 
@@ -65,13 +87,59 @@ def swing_from_time_ratio(K: float, *, field: str = "linkage.time_ratio") -> flo
     60.0
     """
     if isinstance(K, bool) or not isinstance(K, (int, float, np.floating, np.integer)) or not np.isfinite(K) or K <= 1:
-        raise InputError(field, f"K must be > 1 for a quick return, got {K!r}")
+        raise InputError(field, f"K must be > 1 for a quick return, got {_show(K)}")
     return float(np.pi * (K - 1) / (K + 1))
 
 
 def time_ratio_from_swing(theta: float) -> float:
     """Inverse of :func:`swing_from_time_ratio`: K = (pi + theta) / (pi - theta)."""
     return float((np.pi + theta) / (np.pi - theta))
+
+
+def slotting_time_ratio_limit(rod_ratio: float) -> float:
+    """Largest time ratio of a slotting machine (seed 003) synthesized with the rod ratio l_BC / l_O3B.
+
+    With the guide y-y through the middle of the sagitta of B's arc
+    (:func:`slotted_lever_synthesis`), the tool's coordinate along y-y,
+    ``y(psi) = b sin psi + sqrt(l^2 - b^2 (cos psi - (1 + cos(theta/2)) / 2)^2)``
+    (up to signs; ``psi`` the bar's angle, ``b = l_O3B``, ``l = rho b``),
+    is monotonic over the swing ``|psi| <= theta/2`` exactly when
+    ``cos(theta/2) > 1 / (1 + 2 rho)``: at the limit the rod BC lies along the
+    bar at its extreme positions, so the tool stops before the bar does.
+    Beyond it the tool reverses near both ends of its stroke (four dead
+    positions a turn) and neither the stroke nor the time ratio is the one asked.
+
+    Parameters
+    ----------
+    rod_ratio : float
+        rho = l_BC / l_O3B, > 0.
+
+    Returns
+    -------
+    float
+        K_max = (pi + theta_max) / (pi - theta_max), theta_max = 2 acos(1 / (1 + 2 rho)).
+
+    Examples
+    --------
+    >>> round(slotting_time_ratio_limit(0.5), 9), round(slotting_time_ratio_limit(1.0), 6)
+    (5.0, 8.244413)
+    """
+    rho = _positive("linkage.rod_ratio", rod_ratio)
+    return time_ratio_from_swing(2 * float(np.arccos(1 / (1 + 2 * rho))))
+
+
+def slotting_rod_ratio_min(time_ratio: float) -> float:
+    """Smallest rod ratio l_BC / l_O3B for which a slotting machine with time ratio K keeps two dead positions.
+
+    The inverse of :func:`slotting_time_ratio_limit`: ``(1 / cos(theta/2) - 1) / 2``.
+
+    Examples
+    --------
+    >>> round(slotting_rod_ratio_min(5.0), 9)
+    0.5
+    """
+    half = swing_from_time_ratio(time_ratio) / 2
+    return float((1 / np.cos(half) - 1) / 2)
 
 
 @dataclass(frozen=True)
@@ -149,6 +217,13 @@ def slotted_lever_synthesis(
     -------
     SlottedLeverSynthesis
 
+    Raises
+    ------
+    InputError
+        Field ``linkage.time_ratio``: K <= 1, K > :data:`MAX_TIME_RATIO`, or,
+        with a rod, K >= :func:`slotting_time_ratio_limit` (the tool would
+        reverse near the ends of its stroke); other fields: a length <= 0.
+
     Examples
     --------
     Seed 004 (pump): K = 2, H = 250 mm, O1O2 = 525 mm.
@@ -161,6 +236,25 @@ def slotted_lever_synthesis(
     H = _positive("linkage.stroke", stroke)
     L = _positive("linkage.centre_distance", centre_distance)
     rr = None if rod_ratio is None else _positive("linkage.rod_ratio", rod_ratio)
+    K = float(time_ratio)
+    if rr is not None:
+        kmax = slotting_time_ratio_limit(rr)
+        if K >= kmax and kmax <= MAX_TIME_RATIO:
+            need = slotting_rod_ratio_min(K) if K <= MAX_TIME_RATIO else None
+            raise InputError(
+                "linkage.time_ratio",
+                f"K = {K:.6g} is too large for rod_ratio = {rr:.6g}: the tool would stop and turn back near both ends "
+                f"of its stroke (4 dead positions a turn); a slotting linkage with rod_ratio = {rr:.6g} allows "
+                f"1 < K < {_below(kmax)}" + ("" if need is None else f" (K = {K:.6g} needs rod_ratio > {need:.6g})"),
+            )
+    if K > MAX_TIME_RATIO:
+        what = "slotting" if rr is not None else "slotted-lever"
+        raise InputError(
+            "linkage.time_ratio",
+            f"K = {K:.6g} is too large: a {what} linkage allows 1 < K <= {MAX_TIME_RATIO:g} (at larger K the "
+            f"return stroke takes under {360 / (MAX_TIME_RATIO + 1):.2g} deg of crank and the crank passes next to the "
+            "pivot)" + ("" if rr is None else f"; with rod_ratio = {rr:.6g} also K < {_below(slotting_time_ratio_limit(rr))}"),
+        )
     half = theta / 2
     bar = H / (2 * np.sin(half))
     return SlottedLeverSynthesis(
@@ -197,7 +291,8 @@ def crank_slider_crank(stroke: float, rod: float, offset: float = 0.0) -> float:
     Raises
     ------
     InputError
-        Non-positive stroke or rod.
+        Non-positive stroke or rod, or a stroke under 1e-6 of the rod (too
+        small to resolve against the rod).
     InfeasibleError
         No crank gives the stroke (the rod too short for it); the message
         states the largest stroke the rod and offset allow.
@@ -210,6 +305,9 @@ def crank_slider_crank(stroke: float, rod: float, offset: float = 0.0) -> float:
     H = _positive("linkage.stroke", stroke)
     l = _positive("linkage.rod", rod)
     e = abs(float(offset))
+    if H < 1e-6 * l:
+        raise InputError("linkage.stroke", f"{H:.6g} is too small against the rod {l:.6g} to be checked to 1e-9: "
+                         f"a crank-slider is synthesized for stroke >= 1e-6 x rod = {1e-6 * l:.6g}")
     if e == 0:
         r = H / 2
         if r >= l:

@@ -1,0 +1,26 @@
+"""Numbers in messages are shown plainly (cams.linkage.messages.show_value)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from cams.linkage.messages import show_value
+from cams.linkage.machines import CrankSlider
+from laws.errors import InputError
+
+
+@pytest.mark.parametrize(
+    "value, shown",
+    [(np.float64(-5.0), "-5.0"), (0.25, "0.25"), (3, "3"), (np.int64(7), "7"), ("abc", "'abc'"),
+     ([1, np.float64(2.5)], "[1, 2.5]"), (np.array([1.0, 2.0]), "[1.0, 2.0]"), (np.float64("nan"), "nan"),
+     (True, "True"), (np.float32(0.5), "0.5")],
+)
+def test_show_value(value, shown):
+    assert show_value(value) == shown
+
+
+def test_linkage_messages_show_plain_numbers():
+    with pytest.raises(InputError) as e:
+        CrankSlider(crank=np.float64(-1.0), rod=100.0)
+    assert str(e.value) == "linkage.crank: must be > 0, got -1.0"
