@@ -14,17 +14,32 @@ def _fmt_deg(x) -> str:
     return "-" if x is None else f"{x:.4f} deg"
 
 
+def length_format(scale: float) -> str:
+    """Format spec for lengths of a design of size ``scale``: 6 decimals, more for designs under 1 mm.
+
+    Keeps about seven significant digits of the design's size, so a
+    micrometre cam does not print as ``0.000000``; at 1 mm and above it is
+    ``.6f``.
+    """
+    import math
+
+    if not (scale > 0 and math.isfinite(scale)):
+        return ".6f"
+    return f".{min(15, max(6, 6 - math.floor(math.log10(scale))))}f"
+
+
 def print_summary(rep: dict) -> None:
     """Short readable summary of a solve report (as from ``SolveResult.to_dict``)."""
     unit = "mm"
+    f = length_format(max(abs(rep["R0"]), abs(rep["L"] or 0.0), abs(rep["offset"] or 0.0)))
     print(f"{rep['name']}: {rep['follower']} follower, method {rep['method']}, {rep['mode']}")
-    print(f"  R0      = {rep['R0']:.6f} {unit}")
+    print(f"  R0      = {rep['R0']:{f}} {unit}")
     if rep["L"] is not None:
-        print(f"  L       = {rep['L']:.6f} {unit}")
+        print(f"  L       = {rep['L']:{f}} {unit}")
     if rep["offset"] is not None:
-        print(f"  offset  = {rep['offset']:.6f} {unit}")
+        print(f"  offset  = {rep['offset']:{f}} {unit}")
     c = rep["centre"]
-    print(f"  centre  = ({c['x']:.6f}, {c['y']:.6f}) {unit}")
+    print(f"  centre  = ({c['x']:{f}}, {c['y']:{f}}) {unit}")
     mp, lim = rep["max_pressure_angle"], rep["limits"]
     print(f"  max pressure angle: rise {_fmt_deg(mp['rise'])} (limit {_fmt_deg(lim['rise'])}), "
           f"return {_fmt_deg(mp['return'])} (limit {_fmt_deg(lim['return'])})")

@@ -63,3 +63,21 @@ def test_infeasible_L_is_one_line_exit_2(tmp_path, capsys):
 def test_usage_error_exit_2():
     r = subprocess.run([sys.executable, "-m", "cams.cli", "solve"], capture_output=True, text=True)
     assert r.returncode == 2 and "Traceback" not in r.stderr
+
+
+def test_tiny_design_prints_its_digits(tmp_path, capsys):
+    """A micrometre design keeps about seven significant digits (was R0 = 0.000000 mm)."""
+    from cams.cli import main
+    from cams.designfile import load_design
+    from optimize.solve import solve
+    from tests.conftest import EXAMPLES
+
+    text = (EXAMPLES / "rocker_force.toml").read_text(encoding="utf-8")
+    text = text.replace("arm = 125.0", "arm = 1.25e-6").replace("roller_radius = 10.0", "roller_radius = 1e-7")
+    path = tmp_path / "tiny.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["solve", str(path)]) == 0
+    out = capsys.readouterr().out
+    R0 = solve(load_design(path)).R0
+    shown = float(out.split("R0      = ")[1].split()[0])
+    assert shown == pytest.approx(R0, rel=1e-5) and R0 < 1e-6
