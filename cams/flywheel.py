@@ -378,13 +378,13 @@ def flywheel(
     dA = float(np.max(dE - 0.5 * J_x * w_hi2) - np.min(dE - 0.5 * J_x * w_lo2))
     needed = dA / (wm**2 * delta)
     JF = max(needed, 0.0)
-    if JF > 0:
-        T0 = -float(np.max(dE - 0.5 * (J_x + JF) * w_hi2))
-    else:  # the linkage alone: choose T0 so that the mean speed is omega_m
-        T0 = _mean_speed_energy(dE, J_x, wm)
     Jt = J_x + JF
     if np.any(Jt <= 0):
         raise InputError("flywheel.inertia", "the machine has no inertia at some angle; give the crank's own moment of inertia")
+    if JF > 0:
+        T0 = -float(np.max(dE - 0.5 * Jt * w_hi2))
+    else:  # the linkage alone: choose T0 so that the mean speed is omega_m
+        T0 = _mean_speed_energy(dE, J_x, wm)
     T = T0 + dE
     omega = np.sqrt(np.maximum(2 * T / Jt, 0.0))
     eps = (Md_x - Mr_x - 0.5 * dJ * omega**2) / Jt

@@ -1370,6 +1370,10 @@ def machine_forces(spec, centre=None) -> MachineForces:
         lk = analyse_forces(spec.linkage, fs, phi=win.frame_angle(c), passes=opt.passes)
         lk = replace(lk, reference=CYCLE_ANGLE)
         if opt.delta is not None:
+            if np.any(lk.reduced_inertia <= 0):
+                raise InputError("forces.links", "the linkage has no inertia at some crank angle, so no flywheel can be "
+                                 "sized for forces.delta: give the links' masses and the crank's moment of inertia "
+                                 "([forces.links.crank] inertia)")
             fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation)
     else:
         notes.append("no [forces] table: no linkage forces")

@@ -168,3 +168,13 @@ def test_plotting_imports_matplotlib_lazily():
             "print('matplotlib' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True).stdout
     assert out.strip() == "False"
+
+
+def test_flywheel_without_inertia_is_one_line(tmp_path, capsys):
+    """[forces] delta with no link masses: one line naming forces.links (was a brentq traceback)."""
+    text = SLOTTING.read_text(encoding="utf-8")
+    path = tmp_path / "no_masses.toml"
+    path.write_text(text + "\n[forces]\ndelta = 0.1\n", encoding="utf-8")
+    assert main(["machine", str(path), "--forces"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("cams machine: error: forces.links: the linkage has no inertia") and err.count("\n") == 1
