@@ -370,7 +370,8 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
     if not pressure.ok and R0 < 1e-6 * travel and method == "exact":
         raise vanishing
     if R0 <= f.roller_radius:
-        notes.append(f"R0 = {R0:.6g} is not larger than the roller radius {f.roller_radius:g}: choose a floor")
+        notes.append(f"not buildable: R0 = {R0:.6g} is not larger than the roller radius {f.roller_radius:g} (the "
+                     "working profile would have no base circle); set limits.min_base_radius or a smaller roller")
     return SolveResult(
         design=design,
         centre=np.asarray(centre, float),

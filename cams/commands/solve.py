@@ -153,7 +153,10 @@ def run(args) -> int:
         return _run_flat(args, design)
     result = solve(design, method=args.method, objective=design.extra.get("objective", "R0"))
     rep = result.to_dict()
-    ok = result.verified
+    # a roller centre's base circle no larger than the roller leaves no cam to make: a failed check
+    buildable = result.R0 > design.follower.roller_radius
+    rep["buildable"] = bool(buildable)
+    ok = result.verified and buildable
     forces = None
     if "dynamics" in design.extra:
         from cams.camforces import design_forces, impact_note

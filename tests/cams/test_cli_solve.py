@@ -81,3 +81,20 @@ def test_tiny_design_prints_its_digits(tmp_path, capsys):
     R0 = solve(load_design(path)).R0
     shown = float(out.split("R0      = ")[1].split()[0])
     assert shown == pytest.approx(R0, rel=1e-5) and R0 < 1e-6
+
+
+def test_unbuildable_minimum_fails_with_exit_1(tmp_path, capsys):
+    """A minimum R0 below the roller radius is reported (it is the answer) but the command fails: no cam to make."""
+    path = tmp_path / "nodwell.toml"
+    path.write_text('[follower]\nkind = "rocker"\narm = 125.0\nswing = 15.0\nroller_radius = 10.0\n'
+                    '[[motion]]\nphase = "rise"\nlaw = "cycloidal"\nangle = 180\n'
+                    '[[motion]]\nphase = "return"\nlaw = "cycloidal"\nangle = 180\n'
+                    '[limits]\npressure_angle = 45\n', encoding="utf-8")
+    assert main(["solve", str(path), "--json"]) == 1
+    rep = json.loads(capsys.readouterr().out)
+    assert rep["R0"] < 10.0 and rep["verified"] and rep["buildable"] is False
+    assert any(n.startswith("not buildable") for n in rep["notes"])
+    # with a floor above the roller it is buildable and passes
+    path.write_text(path.read_text(encoding="utf-8") + "min_base_radius = 20.0\n", encoding="utf-8")
+    assert main(["solve", str(path), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["buildable"] is True

@@ -77,7 +77,9 @@ def test_infeasible_file_exit_2_one_line(name, capsys, tmp_path):
 def test_feasible_file_strict_json(name, capsys, tmp_path):
     rc, out, err = _run(capsys, tmp_path, FEASIBLE[name], "--json")
     rep = _strict_json(out)
-    assert rc == 0, err
+    # a minimum below the roller radius is the right answer but no cam to make: exit 1 (a failed check)
+    assert rc == (0 if rep["buildable"] else 1), err
+    assert rep["buildable"] == (rep["R0"] > FEASIBLE[name]["follower"].get("roller_radius", 0.0))
     assert rep["verified"] is True and rep["R0"] > 0
     assert rep["max_pressure_angle"]["rise"] <= rep["limits"]["rise"] + 1e-6
 
@@ -95,7 +97,7 @@ def test_limit_89_9_strict_json(capsys, tmp_path):
     """Regression (fixed in f69e9ce): exit 1 and '"rise": NaN' in the JSON."""
     rc, out, _ = _run(capsys, tmp_path, design_dict("rocker", limits={"pressure_angle": 89.9}), "--json")
     rep = _strict_json(out)
-    assert rc == 0 and rep["verified"] is True
+    assert rc == (0 if rep["buildable"] else 1) and rep["verified"] is True
 
 
 def test_real_command_line(tmp_path):
