@@ -132,7 +132,9 @@ def register(sub) -> None:
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--csv", metavar="OUT", help="write phi_deg,pitch_x,pitch_y,work_x,work_y[,outer_x,outer_y] "
                    "(flat face: phi_deg,work_x,work_y)")
-    q.add_argument("--dxf", metavar="OUT", help="write a DXF drawing (layers PROFILE, PITCH, BASE, BORE)")
+    q.add_argument("--dxf", metavar="OUT", help="write a DXF drawing: layers PROFILE (working profile), OUTER (a "
+                   "groove's outer wall), PITCH (roller-centre path), BASE (circle of radius R0, the pitch curve's base "
+                   "circle), BORE")
     q.add_argument("--svg", metavar="OUT", help="write an SVG drawing to scale")
     q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
