@@ -114,7 +114,8 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
     ax.set_xlabel("x, mm")
     ax.set_ylabel("y, mm")
     ax.set_title(f"{d.name}: allowable-centre zone")
-    ax.legend(fontsize=7, loc="best")
+    # beside the drawing, not over it: the zone and the centre can lie anywhere in the box
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     ax.grid(True, lw=0.3)
     return fig
 
