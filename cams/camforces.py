@@ -64,8 +64,9 @@ of them, and its report gives the unbounded values as such (``inf``, with
 the finite values between the impacts under ``between_impacts``).
 :func:`jump_speed` returns 0 rpm at a jump down.
 
-Units: the design's lengths are in its file's unit (``length_unit`` metres
-each, 1e-3 for mm); forces in N, masses in kg, time in s.
+Units: the design's lengths are in mm, the files' only length unit
+(``length_unit``: metres per design unit, 1e-3); forces in N, masses in kg,
+time in s.
 """
 
 from __future__ import annotations
@@ -104,8 +105,8 @@ __all__ = [
 ]
 
 TWO_PI = 2.0 * np.pi
-LENGTH_UNITS = {"mm": 1e-3, "cm": 1e-2, "m": 1.0, "in": 0.0254}
-"""Metres per length unit of a design file."""
+LENGTH_UNITS = {"mm": 1e-3}
+"""Metres per length unit of a design or machine file: mm, the only unit the files take."""
 DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "journal_radius", "margin", "max_spring_force")
 """Keys of a design file's optional ``[dynamics]`` table."""
 
@@ -157,7 +158,8 @@ class FollowerDynamics:
         mu >= 0: in the translating follower's guide, or in the rocker's pivot.
     journal_radius : float, optional
         Radius of the rocker's pivot journal, design length unit (friction
-        moment ``mu r_j N``); ignored for a translating follower.
+        moment ``mu r_j N``); not used by a translating follower (whose
+        friction is in its guide); a file refuses it there.
     length_unit : float, optional
         Metres per design length unit (1e-3: mm).
     max_spring_force : float or None
@@ -752,15 +754,25 @@ class DynamicsSpec:
         return spring_for_contact(design, self.dynamics, rpm=rpm, margin=self.margin, rate=self.rate)
 
 
-def dynamics_from_dict(table: dict, units: str = "mm") -> DynamicsSpec:
+def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None = None) -> DynamicsSpec:
     """A design file's ``[dynamics]`` table.
 
-    Keys (SI units except ``journal_radius``, in the file's length unit):
+    Keys (SI units except ``journal_radius``, in mm):
     ``mass`` (kg; kg m^2 for a rocker), ``load`` (N; N m), ``spring_rate``
-    (N/m; N m/rad), ``preload`` (N; N m), ``friction``, ``journal_radius``,
-    ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N; N m). A spring
-    is set when ``spring_rate`` and ``preload`` are both given; with only the
-    rate, the preload is left to :func:`spring_for_contact`.
+    (N/m; N m/rad), ``preload`` (N; N m), ``friction``, ``journal_radius``
+    (rocker only), ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N;
+    N m). A spring is set when ``spring_rate`` and ``preload`` are both
+    given; with only the rate, the preload is left to
+    :func:`spring_for_contact`.
+
+    Parameters
+    ----------
+    table : dict
+    units : str
+        The file's length unit: ``"mm"`` only.
+    follower : {"rocker", "translating"} or None
+        The follower's kind; ``"translating"`` refuses ``journal_radius``
+        (a translating follower's friction is in its guide). None: not checked.
 
     Returns
     -------
@@ -769,7 +781,8 @@ def dynamics_from_dict(table: dict, units: str = "mm") -> DynamicsSpec:
     Raises
     ------
     InputError
-        Unknown keys, a missing mass, invalid values, or an unknown length unit.
+        Unknown keys, a missing mass, invalid values, a unit other than mm,
+        ``journal_radius`` for a translating follower.
 
     Examples
     --------
@@ -783,7 +796,11 @@ def dynamics_from_dict(table: dict, units: str = "mm") -> DynamicsSpec:
     if unknown:
         raise InputError("dynamics", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(DYNAMICS_KEYS)}")
     if units not in LENGTH_UNITS:
-        raise InputError("units", f"{units!r} is not a length unit the forces know, must be one of {', '.join(map(repr, LENGTH_UNITS))}")
+        raise InputError("units", f"{show_value(units)} is not supported: the files are in mm (the [dynamics] table's "
+                         "journal_radius too; its other values are SI)")
+    if follower == "translating" and "journal_radius" in table:
+        raise InputError("dynamics.journal_radius", "applies to a rocker's pivot journal (friction moment mu r N); a "
+                         "translating follower's friction is in its guide (dynamics.friction alone): remove it")
     if "mass" not in table:
         raise InputError("dynamics.mass", "is required (kg, or kg m^2 about the pivot for a rocker)")
     v = {k: _num(f"dynamics.{k}", table[k]) for k in table}

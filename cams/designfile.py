@@ -167,8 +167,8 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     """
     _check_keys(d, "", "")
     if d.get("units", "mm") != "mm":
-        raise InputError("units", f"{d['units']!r} is not supported: design files are in mm (lengths of the "
-                         "[dynamics] table are SI as documented)")
+        raise InputError("units", f"{d['units']!r} is not supported: design files are in mm (the "
+                         "[dynamics] table's journal_radius too; its other values are SI)")
     _check_length_range(d)
     fo = _table(d, "follower")
     kind = check_option("follower.kind", fo.get("kind", "rocker"), ("rocker", "translating"))
@@ -239,7 +239,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=name,
         method=so.get("method", "exact"), samples=samples,
         extra={"objective": objective, "raw": d,
-               **_dynamics(d)},
+               **_dynamics(d, kind)},
     )
     # [profile] and the bore are checked on loading, so cams solve refuses what cams check would
     from cams.profile import profile_options
@@ -393,14 +393,14 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
     )
 
 
-def _dynamics(d: dict) -> dict:
-    """The optional [dynamics] table, as ``{"dynamics": DynamicsSpec}`` or ``{}``."""
+def _dynamics(d: dict, kind: str) -> dict:
+    """The optional [dynamics] table, as ``{"dynamics": DynamicsSpec}`` or ``{}`` (``kind``: the follower's)."""
     if "dynamics" not in d:
         return {}
     from cams.camforces import dynamics_from_dict
 
     units = d.get("units", "mm")
-    return {"dynamics": dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm")}
+    return {"dynamics": dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm", follower=kind)}
 
 
 def load_design(path: str | Path) -> CamDesign | FlatFaceDesign:

@@ -96,6 +96,9 @@ __all__ = [
     "LINKS",
     "JOINTS",
     "WINDOWS",
+    "PINNED",
+    "cycle_turns",
+    "GUIDED",
 ]
 
 TWO_PI = 2.0 * np.pi
@@ -119,6 +122,17 @@ JOINTS = {
 
 WINDOWS = ("cut", "working", "always")
 
+PINNED = ("block", "pin_block", "tool", "slider", "piston", "piston3", "piston5")
+"""Links whose centre of mass is their pin: they slide (and a block turns with its guide), so ``cg`` does not apply."""
+
+GUIDED = {
+    "slotting": ("block", "tool"),
+    "crank_slider": ("slider",),
+    "opposed_twin": ("piston3", "piston5"),
+    "slotted_lever_pump": ("block", "pin_block", "piston"),
+}
+"""Links of each machine kind that slide on a guide (the first link of a prismatic pair): the bodies a load can act on."""
+
 
 # --------------------------------------------------------------------------- inputs
 @dataclass(frozen=True)
@@ -136,7 +150,8 @@ class LinkMass:
         machine length unit (crank: from its centre; bar/lever: from its pivot
         toward B/C; rod: from its first pin). ``None``: the centre of rotation
         for the crank, the middle for bars, levers and rods (or the machine's
-        ``rod_cg``), the pin for blocks, sliders and pistons.
+        ``rod_cg``). Blocks, sliders and pistons (:data:`PINNED`) have their
+        centre of mass at their pin and refuse a ``cg`` (:func:`build_model`).
     """
 
     mass: float = 0.0
@@ -158,8 +173,8 @@ class Friction:
     coefficient : float
         mu >= 0 (seed 004 takes 1.3 f for a revolute pair with clearance).
     radius : float
-        Journal radius of a revolute pair, machine length unit (ignored for a
-        prismatic pair).
+        Journal radius of a revolute pair, machine length unit (not used by a
+        prismatic pair; a machine file refuses it there).
     """
 
     coefficient: float
@@ -205,7 +220,10 @@ class GasPressure:
         The piston (``"slider"``, ``"piston3"``, ``"piston5"``).
     angles : sequence of float
         Crank rotation (degrees, in the crank's sense) from the frame angle
-        ``start``, from 0 to ``period`` inclusive.
+        ``start``, from 0 to ``period`` inclusive. The table's angle 0 is the
+        first time the crank passes ``start`` at or after the first crank
+        angle analysed (a machine's position 1); with ``period`` 360 that is
+        every time it passes ``start``.
     pressure : sequence of float
         Gauge pressure at those angles, Pa (negative: below the outside).
     bore : float
@@ -213,8 +231,9 @@ class GasPressure:
     start : float
         Frame crank angle (degrees) where the table's angle 0 is.
     period : float
-        360 (one turn per cycle) or 720 (a four-stroke cycle: give crank
-        angles over two turns, and ``cycle_deg=720`` to the flywheel).
+        360 (one turn per cycle) or 720 (a four-stroke cycle: the model's
+        default crank angles then cover two turns; give ``cycle_deg=720`` to
+        the flywheel).
     """
 
     body: str
@@ -247,9 +266,11 @@ class Resistance:
         ``approach`` and ``overrun``, as :class:`cams.machine.CuttingZone`);
         "working": the whole working stroke; "always": the whole cycle.
     approach, overrun : float
-        Fractions of the stroke before and after the cut (window "cut").
+        Fractions of the stroke before and after the cut, in [0, 1) with a sum
+        < 1; window "cut" only (other windows refuse non-zero values).
     working : {"slow", "fast", "forward", "backward"}
-        Which stroke works (:func:`cams.linkage.analyse`).
+        Which stroke works (:func:`cams.linkage.analyse`); not used by window
+        "always".
 
     The windows "cut" and "working" follow the machine's working member
     (its ``output``: the tool, the slider, piston 3, the pump's piston).
@@ -263,8 +284,22 @@ class Resistance:
     working: str = "slow"
 
     def __post_init__(self):
+        from cams.linkage.analysis import WORKING
+
         _num("forces.loads.force", self.force, lo=0.0)
         check_option("forces.loads.window", self.window, WINDOWS)
+        for name in ("approach", "overrun"):
+            v = getattr(self, name)
+            if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) or not np.isfinite(v) \
+                    or not 0 <= v < 1:
+                raise InputError(f"forces.loads.{name}", f"must be a fraction of the stroke in [0, 1), got {show_value(v)}")
+            if self.window != "cut" and v != 0:
+                raise InputError(f"forces.loads.{name}", f"applies to window = 'cut' only (the part of the working stroke "
+                                 f"in the work); window = {self.window!r} does not use it")
+        if self.approach + self.overrun >= 1:
+            raise InputError("forces.loads.overrun", f"approach + overrun must be < 1 (a part of the stroke is cut), "
+                             f"got {self.approach + self.overrun:g}")
+        check_option("forces.loads.working", self.working, WORKING)
 
 
 @dataclass(frozen=True)
@@ -362,7 +397,11 @@ class AppliedLoad:
 
 @dataclass(frozen=True, eq=False)
 class Model:
-    """Bodies, joints and loads of a linkage at crank angles ``phi`` (SI)."""
+    """Bodies, joints and loads of a linkage at crank angles ``phi`` (SI).
+
+    ``cycle``: the crank rotation of one cycle of the loads, radians (4 pi
+    with a gas table of period 720, else 2 pi).
+    """
 
     kind: str
     phi: np.ndarray
@@ -375,6 +414,7 @@ class Model:
     output: str
     sense: int
     machine: object = None
+    cycle: float = TWO_PI
 
     def index(self, name: str) -> int:
         """Index of a body by name."""
@@ -500,6 +540,12 @@ def _bodies_joints(machine, spec: ForceSpec, phi: np.ndarray, omega: float):
     raise InputError("linkage.type", f"forces are not available for {type(machine).__name__}")
 
 
+def _message(e: InputError) -> str:
+    """The message of an :class:`InputError` without its field."""
+    text = str(e)
+    return text[len(e.field) + 2:] if e.field and text.startswith(e.field + ": ") else text
+
+
 def _guide(model: Model, name: str) -> np.ndarray:
     """The guide direction of a slider body (from its prismatic pair with ground)."""
     k = model.index(name)
@@ -529,12 +575,17 @@ def _external_loads(model: Model, spec: ForceSpec) -> list[AppliedLoad]:
     out = []
     u = spec.length_unit
     for i, ld in enumerate(spec.loads):
-        k = model.index(ld.body)
+        try:
+            k = model.index(ld.body)
+            axis = _guide(model, ld.body)
+        except InputError as e:
+            raise InputError(f"forces.loads[{i}].body", _message(e)) from None
         b = model.bodies[k]
-        axis = _guide(model, ld.body)
         if isinstance(ld, GasPressure):
             a, p = _check_table(f"forces.loads[{i}].angles", ld.angles, ld.pressure, float(ld.period))
-            rot = np.degrees(model.sense * (model.phi - np.radians(ld.start)))
+            # the table's angle 0: the first time the crank passes `start` at or after phi[0]
+            first = np.mod(model.sense * (np.radians(ld.start) - model.phi[0]), TWO_PI)
+            rot = np.degrees(model.sense * (model.phi - model.phi[0]) - first)
             pp = np.interp(np.mod(rot, ld.period), a, p)
             area = np.pi * (ld.bore * u) ** 2 / 4
             toward = -np.sign(np.real(np.conj(axis) * b.cg.pos))  # along the axis toward the crank centre
@@ -548,6 +599,17 @@ def _external_loads(model: Model, spec: ForceSpec) -> list[AppliedLoad]:
     return out
 
 
+def cycle_turns(spec: ForceSpec) -> int:
+    """Crank turns in one cycle of the loads: 2 with a gas table of period 720, else 1."""
+    return 2 if any(isinstance(ld, GasPressure) and float(ld.period) == 720.0 for ld in spec.loads) else 1
+
+
+def _pinned_cg(name: str, kind: str) -> str:
+    turning = ", ".join(repr(n) for n in LINKS.get(kind, ()) if n not in PINNED)
+    return (f"does not apply to the {name}: a sliding body's centre of mass is taken at its pin and moves with it; "
+            f"cg applies to the links that turn about a joint ({turning})")
+
+
 def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: float | None = None) -> Model:
     """The rigid-body model of a machine of :mod:`cams.linkage.machines` at crank angles ``phi``.
 
@@ -556,8 +618,10 @@ def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
     machine : SlottingMachine, CrankSlider, OpposedTwin or SlottedLeverPump
     spec : ForceSpec
     phi : array_like, optional
-        Frame crank angles, radians; default ``samples`` angles over one turn.
+        Frame crank angles, radians; default ``samples`` angles a turn over one
+        cycle of the loads (two turns with a gas table of period 720).
     samples : int
+        Crank angles per turn (ignored with ``phi``).
     rpm : float, optional
         Crank speed, rev/min; default the machine's.
 
@@ -568,7 +632,8 @@ def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
     Raises
     ------
     InputError
-        No crank speed, unknown link or pair names, a load on a link that does
+        No crank speed, unknown link or pair names, a ``cg`` of a link whose
+        centre of mass is its pin (:data:`PINNED`), a load on a link that does
         not slide, a load table that does not cover the cycle.
     """
     n = machine.rpm if rpm is None else rpm
@@ -576,16 +641,19 @@ def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
         raise InputError("linkage.rpm", "the forces need the crank's speed; give linkage.rpm")
     n = _num("linkage.rpm", n, lo=0.0, strict=True)
     omega = machine.crank_sense * rpm_to_omega(n)
+    turns = cycle_turns(spec)
     if phi is None:
         if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 4:
             raise InputError("forces.samples", f"must be an integer >= 4, got {show_value(samples)}")
-        phi = np.linspace(0.0, TWO_PI, int(samples), endpoint=False)
+        phi = np.linspace(0.0, TWO_PI * turns, int(samples) * turns, endpoint=False)
     phi = np.atleast_1d(np.asarray(phi, dtype=float))
     kind = machine.kind
     names = LINKS[kind]
-    for k in spec.links:
+    for k, lm in spec.links.items():
         if k not in names:
             raise InputError(f"forces.links.{k}", f"is not a link of a {kind} linkage, must be one of {', '.join(map(repr, names))}")
+        if k in PINNED and lm.cg is not None:
+            raise InputError(f"forces.links.{k}.cg", _pinned_cg(k, kind))
     for k in spec.friction:
         if k not in JOINTS[kind]:
             raise InputError(f"forces.friction.{k}", f"is not a pair of a {kind} linkage, must be one of {', '.join(map(repr, JOINTS[kind]))}")
@@ -602,9 +670,11 @@ def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
             fr = Friction(fr.coefficient, fr.radius * u)
         js.append(Joint(nm, kind_, idx[a], -1 if b is None else idx[b], np.asarray(P) * u,
                         None if axis is None else np.asarray(axis, dtype=complex), fr))
-    model = Model(kind, phi, float(omega), bodies, tuple(js), (), 0, float(spec.gravity), output, machine.crank_sense, machine)
+    model = Model(kind, phi, float(omega), bodies, tuple(js), (), 0, float(spec.gravity), output, machine.crank_sense, machine,
+                  TWO_PI * turns)
     loads = tuple(_external_loads(model, spec))
-    return Model(kind, phi, float(omega), bodies, tuple(js), loads, 0, float(spec.gravity), output, machine.crank_sense, machine)
+    return Model(kind, phi, float(omega), bodies, tuple(js), loads, 0, float(spec.gravity), output, machine.crank_sense, machine,
+                 TWO_PI * turns)
 
 
 # --------------------------------------------------------------------------- solution
@@ -732,8 +802,11 @@ class ForceResult:
 
     @property
     def rotation(self) -> np.ndarray:
-        """The crank's rotation in its own sense from the first crank angle, radians in [0, 2 pi)."""
-        return np.mod(self.model.sense * (self.phi - self.phi[0]), TWO_PI)
+        """The crank's rotation in its own sense from the first crank angle, radians in [0, 2 pi).
+
+        In [0, 4 pi) when the loads' cycle is two turns (a gas table of period 720).
+        """
+        return np.mod(self.model.sense * (self.phi - self.phi[0]), self.model.cycle)
 
     @property
     def angle_reference(self) -> str:
@@ -929,7 +1002,8 @@ class ForceResult:
         cols = min(4, len(joints))
         rows = -(-len(joints) // cols)
         fig, axes = plt.subplots(rows, cols, figsize=(3.2 * cols, 3.2 * rows), squeeze=False)
-        at = [int(np.argmin(np.abs(np.angle(np.exp(1j * (c - TWO_PI * k / marks)))))) for k in range(marks)]
+        cyc = self.model.cycle
+        at = [int(np.argmin(np.abs(np.mod(c - cyc * k / marks + cyc / 2, cyc) - cyc / 2))) for k in range(marks)]
         for ax, j in zip(axes.ravel(), joints):
             R = self.reactions[j.name]
             ax.plot(np.real(R)[o], np.imag(R)[o], lw=1.2)
@@ -945,7 +1019,8 @@ class ForceResult:
             ax.set_ylabel("R_y, N", fontsize=8)
         for ax in axes.ravel()[len(joints):]:
             ax.set_visible(False)
-        fig.suptitle(f"{title}\npoints 1..{marks} every {360 / marks:g} deg of {self.angle_reference}, point 1 at 0 deg",
+        fig.suptitle(f"{title}\npoints 1..{marks} every {np.degrees(cyc) / marks:g} deg of {self.angle_reference}, "
+                     "point 1 at 0 deg",
                      fontsize=10)
         fig.tight_layout()
         fig.savefig(path)
@@ -1055,12 +1130,19 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
         [forces]            gravity (m/s^2, default 9.80665), samples (360), passes (2 | "iterate"),
                             delta (flywheel), interpolation ("linear" | "spline")
         [forces.links.NAME] mass, inertia, cg           NAME: see cams.kinetostatics.LINKS
+                            (cg: links that turn only; PINNED links refuse it)
         [forces.friction]   revolute = {coefficient, radius}, prismatic = {coefficient},
-                            PAIR = {coefficient, radius} (overrides; PAIR: see JOINTS)
+                            PAIR = {coefficient, radius} (overrides; PAIR: see JOINTS;
+                            radius refused for a prismatic pair)
         [[forces.loads]]    kind = "resistance": body, force, window ("cut" | "working" | "always"),
-                                                 approach, overrun, working (default: [cutting])
+                                                 approach, overrun (window "cut" only),
+                                                 working (not with "always"); default: [cutting]
                             kind = "gas": body, angles, pressure, bore, start, period
                             kind = "constant_friction": body, force
+                            body: a link that slides on a guide (GUIDED)
+
+    Every value is checked here, with the load's index in the field
+    (``forces.loads[1].approach``), not only when the forces are computed.
 
     Parameters
     ----------
@@ -1068,7 +1150,7 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
     kind : str
         The linkage's kind (:data:`LINKS`).
     units : str
-        The file's length unit (see :data:`cams.camforces.LENGTH_UNITS`).
+        The file's length unit: ``"mm"`` only (:data:`cams.camforces.LENGTH_UNITS`).
     cutting : cams.machine.CuttingZone or None
         Defaults of a "resistance" load's window.
 
@@ -1087,11 +1169,13 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
 
     t = _keys(table, FORCES_KEYS, "forces")
     if units not in LENGTH_UNITS:
-        raise InputError("units", f"{units!r} is not a length unit the forces know, must be one of {', '.join(map(repr, LENGTH_UNITS))}")
+        raise InputError("units", f"{units!r} is not supported: machine files are in mm")
     names, pairs = LINKS[kind], JOINTS[kind]
     links = {}
     for nm, lt in _keys(t.get("links", {}), names, "forces.links").items():
         lt = _keys(lt, {"mass", "inertia", "cg"}, f"forces.links.{nm}")
+        if "cg" in lt and nm in PINNED:
+            raise InputError(f"forces.links.{nm}.cg", _pinned_cg(nm, kind))
         vals = {k: _num(f"forces.links.{nm}.{k}", v) for k, v in lt.items()}
         for k in ("mass", "inertia"):
             if vals.get(k, 0.0) < 0:
@@ -1099,22 +1183,31 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
         links[nm] = LinkMass(vals.get("mass", 0.0), vals.get("inertia", 0.0), vals.get("cg"))
     fr = _keys(t.get("friction", {}), {"revolute", "prismatic", *pairs}, "forces.friction")
 
-    def fric(v, f):
+    def is_prismatic(p):
+        return p.endswith(("_slot", "_guide")) or p == "E"
+
+    entries = {}
+    for name, v in fr.items():  # every entry checked, also one that every pair's own entry overrides
+        f = f"forces.friction.{name}"
         v = _keys(v, {"coefficient", "radius"}, f)
         if "coefficient" not in v:
             raise InputError(f"{f}.coefficient", "is required")
+        if "radius" in v and (name == "prismatic" or (name != "revolute" and is_prismatic(name))):
+            raise InputError(f"{f}.radius", "applies to a revolute pair's journal (friction moment mu r R); a prismatic "
+                             "pair's friction is the force mu N along its guide and has no radius: remove it")
         c = _num(f"{f}.coefficient", v["coefficient"], lo=0.0)
-        return Friction(c, _num(f"{f}.radius", v.get("radius", 0.0), lo=0.0))
+        entries[name] = Friction(c, _num(f"{f}.radius", v.get("radius", 0.0), lo=0.0))
 
     friction = {}
     for p in pairs:
-        prismatic = p.endswith(("_slot", "_guide")) or p == "E"
-        if p in fr:
-            friction[p] = fric(fr[p], f"forces.friction.{p}")
-        elif prismatic and "prismatic" in fr:
-            friction[p] = fric(fr["prismatic"], "forces.friction.prismatic")
-        elif not prismatic and "revolute" in fr:
-            friction[p] = fric(fr["revolute"], "forces.friction.revolute")
+        prismatic = is_prismatic(p)
+        if p in entries:
+            friction[p] = entries[p]
+        elif prismatic and "prismatic" in entries:
+            friction[p] = entries["prismatic"]
+        elif not prismatic and "revolute" in entries:
+            friction[p] = entries["revolute"]
+    guided = GUIDED[kind]
     loads = []
     raw = t.get("loads", [])
     if not isinstance(raw, list):
@@ -1129,7 +1222,11 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
             raise InputError(f"{f}.body", "is required")
         body = ld["body"]
         if body not in names:
-            raise InputError(f"{f}.body", f"{body!r} is not a link of a {kind} linkage, must be one of {', '.join(map(repr, names))}")
+            raise InputError(f"{f}.body", f"{show_value(body)} is not a link of a {kind} linkage; a load acts on a link "
+                             f"that slides on a guide: {', '.join(map(repr, guided))}")
+        if body not in guided:
+            raise InputError(f"{f}.body", f"{body!r} does not slide on a guide; a load acts along a guide, on one of "
+                             f"{', '.join(map(repr, guided))}")
         try:
             if k == "gas":
                 for key in ("angles", "pressure", "bore"):
@@ -1148,16 +1245,23 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
                     loads.append(ConstantFriction(body, F))
                 else:
                     cz = cutting
-                    loads.append(Resistance(
-                        body, F, window=ld.get("window", "cut"),
-                        approach=ld.get("approach", 0.0 if cz is None else cz.approach),
-                        overrun=ld.get("overrun", 0.0 if cz is None else cz.overrun),
-                        working=ld.get("working", "slow" if cz is None else cz.working)))
+                    window = check_option(f"{f}.window", ld.get("window", "cut"), WINDOWS)
+                    if window != "cut":
+                        for key in ("approach", "overrun"):
+                            if key in ld:
+                                raise InputError(f"{f}.{key}", f"applies to window = 'cut' only (the part of the working "
+                                                 f"stroke in the work); window = {window!r} does not use it: remove it")
+                    if window == "always" and "working" in ld:
+                        raise InputError(f"{f}.working", "applies to windows 'cut' and 'working'; window = 'always' acts "
+                                         "over the whole cycle whichever stroke works: remove it")
+                    frac = {key: ld.get(key, 0.0 if cz is None or window != "cut" else getattr(cz, key))
+                            for key in ("approach", "overrun")}
+                    loads.append(Resistance(body, F, window=window, **frac,
+                                            working=ld.get("working", "slow" if cz is None else cz.working)))
         except InputError as e:
             # name the load in the field: forces.loads.angles -> forces.loads[i].angles
             fld = e.field.replace("forces.loads.", f"{f}.") if e.field.startswith("forces.loads.") else e.field
-            msg = str(e).split(": ", 1)[1] if ": " in str(e) else str(e)
-            raise InputError(fld, msg) from None
+            raise InputError(fld, _message(e)) from None
     samples = t.get("samples", 360)
     if isinstance(samples, bool) or not isinstance(samples, int) or samples < 12:
         raise InputError("forces.samples", f"must be an integer >= 12, got {show_value(samples)}")
@@ -1348,10 +1452,11 @@ def machine_forces(spec, centre=None) -> MachineForces:
     Returns
     -------
     MachineForces
-        The linkage's forces sampled at ``opt.samples`` equal steps of the
-        cycle angle from position 1 (:class:`cams.machine.Windows`), so that
-        their angles (``rotation``, ``to_dict``'s ``at_deg``, the plots) and
-        the flywheel's are cycle angles, as the machine's windows; the cam's
+        The linkage's forces sampled at ``opt.samples`` equal steps a turn of
+        the cycle angle from position 1 (:class:`cams.machine.Windows`), so
+        that their angles (``rotation``, ``to_dict``'s ``at_deg``, the plots)
+        and the flywheel's are cycle angles, as the machine's windows; over
+        two turns (0 to 720 degrees) with a gas table of period 720; the cam's
         timing (:class:`cams.machine.CamTiming`) to map the cam's angles to
         cycle angles.
     """
@@ -1366,15 +1471,20 @@ def machine_forces(spec, centre=None) -> MachineForces:
     forces = spec.extra.get("forces")
     if forces is not None:
         fs, opt = forces
-        c = np.linspace(0.0, TWO_PI, opt.samples, endpoint=False)
+        turns = cycle_turns(fs)
+        c = np.linspace(0.0, TWO_PI * turns, opt.samples * turns, endpoint=False)
         lk = analyse_forces(spec.linkage, fs, phi=win.frame_angle(c), passes=opt.passes)
         lk = replace(lk, reference=CYCLE_ANGLE)
+        if turns == 2:
+            notes.append("a gas table of period 720 deg: the linkage's forces and the flywheel cover two crank turns, "
+                         "cycle angles 0 to 720 deg from position 1 (the table's angle 0 where the crank first passes "
+                         "its start)")
         if opt.delta is not None:
             if np.any(lk.reduced_inertia <= 0):
                 raise InputError("forces.links", "the linkage has no inertia at some crank angle, so no flywheel can be "
                                  "sized for forces.delta: give the links' masses and the crank's moment of inertia "
                                  "([forces.links.crank] inertia)")
-            fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation)
+            fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation, cycle_deg=360 * turns)
     else:
         notes.append("no [forces] table: no linkage forces")
     if spec.cam.extra.get("dynamics") is not None and centre is None:

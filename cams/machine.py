@@ -55,6 +55,7 @@ __all__ = [
     "MachineResult",
     "windows",
     "place_cam",
+    "check_follower_direction",
     "cycle_diagram",
     "design_machine",
     "PLACEMENTS",
@@ -172,9 +173,9 @@ class Timing:
         after the cut) or to its end (right before the next cut), less the margin.
     follower_direction : float or None
         Direction (frame angle, radians) from the cam centre to the roller
-        centre at the start of the cam's program; with it and a cam on the
-        crank's shaft the report gives the key angle between the crank and
-        the cam's start radius.
+        centre at the start of the cam's program; the report then gives the
+        key angle between the crank and the cam's start radius. Only for a
+        cam that turns with the crank (:func:`check_follower_direction`).
     """
 
     margin: float = 0.0
@@ -332,6 +333,31 @@ class CamTiming:
         }
 
 
+def check_follower_direction(timing: Timing, drive: Drive) -> None:
+    """Refuse ``timing.follower_direction`` unless the cam turns with the crank (same speed, same sense).
+
+    The key angle it gives (the crank to the cam's start radius) stays the
+    same only then: on the crank's shaft, or through equal gears meshing
+    internally. A cam at another speed, or turning against the crank, has no
+    such fixed angle.
+
+    Raises
+    ------
+    InputError
+        On ``timing.follower_direction``, saying why.
+    """
+    if timing.follower_direction is None or (drive.ratio == 1 and drive.sense == 1):
+        return
+    gears = "" if drive.teeth is None else f"gears {drive.teeth[0]}/{drive.teeth[1]}: "
+    if drive.ratio != 1:
+        why = f"{gears}the cam turns {drive.ratio:g} times per crank turn, so the angle between them changes from turn to turn"
+    else:
+        why = f"{gears}with an external mesh the cam turns against the crank, so the angle between them changes as they turn"
+    raise InputError("timing.follower_direction",
+                     f"gives the key angle between the crank and the cam's start radius, fixed only when the cam turns "
+                     f"with the crank ([drive] kind = 'shaft', or equal gears with mesh = 'internal'); {why}: remove it")
+
+
 def _rise_intervals(program: Program) -> list[tuple[float, float]]:
     st = program.starts
     return [(float(st[i]), float(st[i + 1])) for i, p in enumerate(program.phases) if p.kind == "rise"]
@@ -362,7 +388,11 @@ def place_cam(win: Windows, program: Program, drive: Drive, timing: Timing) -> C
     InfeasibleError
         The rises do not fit: the message gives the window, what the rises
         need and the largest rise angle that would fit.
+    InputError
+        ``timing.follower_direction`` with a cam that does not turn with the
+        crank (:func:`check_follower_direction`).
     """
+    check_follower_direction(timing, drive)
     i = drive.ratio
     m = timing.margin
     w0, w1 = win.out_of_work
@@ -412,7 +442,7 @@ def place_cam(win: Windows, program: Program, drive: Drive, timing: Timing) -> C
             placed.append((float(s), float(s + c1 - c0)))
     mount_frame = float(win.frame_angle(mount))
     key = None
-    if timing.follower_direction is not None and i == 1:
+    if timing.follower_direction is not None:
         key = float(timing.follower_direction - mount_frame)
     return CamTiming(
         mount=float(mount),
@@ -584,7 +614,12 @@ class MachineSpec:
 
 @dataclass(frozen=True)
 class MachineResult:
-    """Everything :func:`design_machine` finds."""
+    """Everything :func:`design_machine` finds.
+
+    ``bore``: with ``[cam] bore_radius``, the profile check of the bore:
+    ``{"bore_radius", "min_work_radius", "clear"}`` (lengths in the file's
+    unit; ``clear``: the working profile's smallest radius exceeds the bore's).
+    """
 
     spec: MachineSpec
     stroke: StrokeReport
@@ -592,6 +627,7 @@ class MachineResult:
     timing: CamTiming
     solve: object  # optimize.solve.SolveResult
     diagram: CycleDiagram
+    bore: dict | None = None
 
     @property
     def overlap(self) -> bool:
@@ -600,8 +636,17 @@ class MachineResult:
 
     @property
     def notes(self) -> list[str]:
-        """Remarks that do not fail the check."""
+        """Remarks: the bore check's outcome (a bore the profile cuts into fails :attr:`ok`) and those that do not fail."""
         out = []
+        b = self.bore
+        if b is not None:
+            u = self.spec.units
+            if b["clear"]:
+                out.append(f"bore radius {b['bore_radius']:g} {u}: the working profile's smallest radius "
+                           f"{b['min_work_radius']:.4f} {u} clears it")
+            else:
+                out.append(f"bore radius {b['bore_radius']:g} {u} is NOT clear of the working profile, whose smallest "
+                           f"radius is {b['min_work_radius']:.4f} {u}: choose a smaller bore (cam.bore_radius)")
         if self.diagram.return_overlap:
             out.append("the follower's return overlaps the cut (no feed then with a ratchet drive); "
                        "placement = 'early' or a shorter return keeps it out")
@@ -609,8 +654,8 @@ class MachineResult:
 
     @property
     def ok(self) -> bool:
-        """No overlap and the cam's pressure angle verified."""
-        return not self.overlap and bool(self.solve.verified)
+        """No overlap, the cam's pressure angle verified and the bore (if given) clear of the profile."""
+        return not self.overlap and bool(self.solve.verified) and (self.bore is None or bool(self.bore["clear"]))
 
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the file's unit, angles in degrees."""
@@ -627,6 +672,7 @@ class MachineResult:
             "timing": {**self.timing.to_dict(), "margin_deg": _deg(self.spec.timing.margin), "placement": self.spec.timing.placement},
             "cam": self.solve.to_dict(),
             "overlap": self.overlap,
+            "bore": self.bore,
             "notes": self.notes,
             "diagram": self.diagram.to_dict(),
         }
@@ -644,6 +690,8 @@ def design_machine(spec: MachineSpec, *, method: str | None = None) -> MachineRe
     Returns
     -------
     MachineResult
+        With ``[cam] bore_radius`` its ``bore`` compares the bore with the
+        sized cam's working profile (as ``cams check`` does).
     """
     from optimize.solve import solve
 
@@ -653,4 +701,15 @@ def design_machine(spec: MachineSpec, *, method: str | None = None) -> MachineRe
     res = solve(design, objective=design.extra.get("objective", "R0"))
     unit = "rad" if isinstance(spec.cam.follower, Rocker) else spec.units
     dia = cycle_diagram(spec.linkage, win, spec.cutting, spec.cam.program, tm, follower_unit=unit)
-    return MachineResult(spec, win.stroke, win, tm, res, dia)
+    return MachineResult(spec, win.stroke, win, tm, res, dia, _bore(design, res.centre))
+
+
+def _bore(design: CamDesign, centre) -> dict | None:
+    """The profile check of ``[cam] bore_radius`` (None without one): the working profile's smallest radius vs the bore."""
+    from cams.profile import build_profile, profile_options
+
+    opts = profile_options(design)
+    if opts.bore_radius is None:
+        return None
+    rmin = build_profile(design, centre, tolerance=opts.tolerance).min_work_radius
+    return {"bore_radius": float(opts.bore_radius), "min_work_radius": float(rmin), "clear": bool(rmin > opts.bore_radius)}

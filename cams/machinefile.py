@@ -24,9 +24,12 @@ Schema (see ``examples/machines/``)::
     [cutting]   approach, overrun (fractions of the stroke), working ("slow" | "fast" | "forward" | "backward")
     [drive]     kind ("shaft" | "gears"), z_crank, z_cam, mesh ("external" | "internal")
     [timing]    margin (degrees of crank angle), placement ("centre" | "early" | "late"),
-                follower_direction (degrees, frame; optional)
-    [follower], [[motion]], [limits], [solve], [dynamics]   as in a design file (cams/designfile.py)
-    [cam]       bore_radius only: rotation and rpm follow from the crank and the drive
+                follower_direction (degrees, frame; optional; only for a cam turning with the
+                crank: kind = "shaft" or equal gears meshing internally)
+    [follower], [[motion]], [limits], [solve], [dynamics]   as in a design file (cams/designfile.py);
+                [dynamics] journal_radius for a rocker only
+    [cam]       bore_radius only (checked against the sized cam's working profile by
+                cams.machine.design_machine): rotation and rpm follow from the crank and the drive
     [forces]    optional: masses, loads, friction and the flywheel's delta of the linkage
                 (cams.kinetostatics.force_spec_from_dict); parsed into ``spec.extra["forces"]``
 """
@@ -41,7 +44,7 @@ from cams.designfile import design_from_dict
 from cams.files import check_keys, read_toml
 from cams.files import toml_number as _num
 from cams.files import toml_table as _table
-from cams.machine import CuttingZone, Drive, MachineSpec, Timing
+from cams.machine import CuttingZone, Drive, MachineSpec, Timing, check_follower_direction
 from cams.linkage.machines import CrankSlider, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError, check_option
 
@@ -205,6 +208,7 @@ def machine_from_dict(d: dict) -> MachineSpec:
         placement=ti.get("placement", "centre"),
         follower_direction=None if fd is None else float(np.radians(fd)),
     )
+    check_follower_direction(timing, drive)
     cam = _table(d, "cam")
     for k in ("rotation", "rpm"):
         if k in cam:
@@ -221,6 +225,10 @@ def machine_from_dict(d: dict) -> MachineSpec:
     if getattr(design, "face", "roller") == "flat":
         raise InputError("follower.face", "a machine's feed cam is sized for roller followers only; size a "
                          "flat-faced follower's cam on its own with cams solve")
+    if "dynamics" in d:
+        from cams.camforces import dynamics_from_dict
+
+        dynamics_from_dict(d["dynamics"], units, follower=design.follower.kind)  # journal_radius: a rocker's only
     extra = {"raw": d}
     if "forces" in d:
         from cams.kinetostatics import force_spec_from_dict

@@ -128,17 +128,52 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
     df = cam.forces if "dynamics" in d.extra else None
     if df is not None:
-        fo = df.to_dict()
-        sections.append(("Forces at the cam", [
-            ("closing spring", f"rate {fo['spring']['rate']:.6g}, preload {fo['spring']['preload']:.6g} (SI)"),
-            ("cam speed", f"{fo['rpm']:.6g} rpm"),
-            ("largest contact force", f"{fo['max_contact_force']:.6g} N at {fo['max_contact_at_deg']:.2f}°"),
-            ("smallest contact force", f"{fo['min_contact_force']:.6g} N"),
-            ("largest camshaft torque", f"{fo['max_torque']:.6g} N m at {fo['max_torque_at_deg']:.2f}°"),
-            ("jump speed", f"{fo['jump_rpm']:.6g} rpm (first at {fo['jump_at_deg']:.2f}°)"),
-            ("contact lost / jammed", f"{'yes' if fo['contact_lost'] else 'no'} / {'yes' if fo['jammed'] else 'no'}"),
-        ]))
+        sections.append(("Forces at the cam", _force_rows(df)))
     return sections
+
+
+def _force_rows(df) -> list[tuple[str, str]]:
+    """The rows of the forces page (a :class:`cams.camforces.DesignForces`).
+
+    At a rigid impact (a velocity jump, e.g. a linear law) a force is not a
+    number: it is said to be unbounded there, as ``cams solve`` does, with
+    the finite values between the impacts on their own row.
+    """
+    from cams.camforces import impact_note
+
+    fo = df.to_dict()
+    up = [i for i in fo["impacts"] if i["effect"] == "impulse"]
+    down = [i for i in fo["impacts"] if i["effect"] == "separation"]
+
+    def at_impact(imps, what=""):
+        return f"unbounded{what} (rigid impact at {imps[0]['cam_angle_deg']:.2f}°)"
+
+    largest = at_impact(up) if up else f"{fo['max_contact_force']:.6g} N at {fo['max_contact_at_deg']:.2f}°"
+    smallest = at_impact(down, " negative: contact lost") if down else f"{fo['min_contact_force']:.6g} N"
+    torque = at_impact(up) if up else f"{fo['max_torque']:.6g} N m at {fo['max_torque_at_deg']:.2f}°"
+    if fo["jump_at_impact"]:
+        jump = f"any speed: the follower leaves the cam at its velocity drop (rigid impact at {fo['jump_at_deg']:.2f}°)"
+    else:
+        jump = f"{fo['jump_rpm']:.6g} rpm (first at {fo['jump_at_deg']:.2f}°)"
+    rows = [
+        ("closing spring", f"rate {fo['spring']['rate']:.6g}, preload {fo['spring']['preload']:.6g} (SI)"),
+        ("cam speed", f"{fo['rpm']:.6g} rpm"),
+        ("largest contact force", largest),
+        ("smallest contact force", smallest),
+        ("largest camshaft torque", torque),
+        ("jump speed", jump),
+    ]
+    bi = fo.get("between_impacts")
+    if bi:
+        rows.append(("between the rigid impacts",
+                     f"contact force max {bi['max_contact_force']:.6g} N at {bi['max_contact_at_deg']:.2f}°, min "
+                     f"{bi['min_contact_force']:.6g} N; camshaft torque max {bi['max_torque']:.6g} N m at "
+                     f"{bi['max_torque_at_deg']:.2f}°; jump speed {bi['jump_rpm']:.6g} rpm"))
+    rows.append(("contact lost / jammed", f"{'yes' if fo['contact_lost'] else 'no'} / {'yes' if fo['jammed'] else 'no'}"))
+    note = impact_note(df.forces)
+    if note:
+        rows.append(("note", note))
+    return rows
 
 
 def _figures(cam):

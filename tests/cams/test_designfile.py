@@ -183,3 +183,13 @@ def test_objective_L_is_refused_for_a_translating_follower_on_loading():
         design_from_dict(translating_dict(solve={"objective": "L"}))
     assert str(e.value).startswith("solve.objective: 'L' (least centre distance) applies to rocker followers")
     assert design_from_dict(rocker_dict(solve={"objective": "L"})).extra["objective"] == "L"
+
+
+def test_journal_radius_refused_for_a_translating_follower_in_design_files():
+    from tests.stress.helpers import translating_dict
+
+    with pytest.raises(InputError) as e:
+        design_from_dict(translating_dict(dynamics={"mass": 0.5, "journal_radius": 5.0}))
+    assert str(e.value).startswith("dynamics.journal_radius: applies to a rocker's pivot journal")
+    d = design_from_dict(rocker_dict(dynamics={"mass": 0.003, "journal_radius": 5.0}))
+    assert "dynamics" in d.extra

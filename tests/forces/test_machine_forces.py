@@ -121,7 +121,7 @@ def test_without_forces_flag_no_forces(capsys):
         ("delta = 0.05", "delta = 0.0", "forces.delta", "(0, 1)"),
         ("delta = 0.05", "delta = -0.05", "forces.delta", "(0, 1)"),
         ("[forces.links.tool]", "[forces.links.wheel]", "forces.links", "unknown key"),
-        ("body = \"tool\"", "body = \"bar\"", "forces.loads.body", "does not slide"),
+        ("body = \"tool\"", "body = \"bar\"", "forces.loads[0].body", "does not slide"),
         ("force = 1000.0", "force = -1000.0", "forces.loads[0].force", ">= 0"),
         ("passes = 2", "passes = 0", "forces.passes", ">= 1"),
         ("spring_rate = 3.0", "spring_rate = -3.0", "dynamics.spring_rate", ">= 0"),
