@@ -62,7 +62,7 @@ moments of inertia in kg m^2, the crank's speed from the machine's rpm.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -400,7 +400,9 @@ class Model:
     """Bodies, joints and loads of a linkage at crank angles ``phi`` (SI).
 
     ``cycle``: the crank rotation of one cycle of the loads, radians (4 pi
-    with a gas table of period 720, else 2 pi).
+    with a gas table of period 720, else 2 pi). ``origin``: the frame crank
+    angle the cycle is counted from (a gas table's angle 0 is the first pass
+    of its ``start`` at or after it), radians.
     """
 
     kind: str
@@ -415,6 +417,7 @@ class Model:
     sense: int
     machine: object = None
     cycle: float = TWO_PI
+    origin: float = 0.0
 
     def index(self, name: str) -> int:
         """Index of a body by name."""
@@ -583,9 +586,10 @@ def _external_loads(model: Model, spec: ForceSpec) -> list[AppliedLoad]:
         b = model.bodies[k]
         if isinstance(ld, GasPressure):
             a, p = _check_table(f"forces.loads[{i}].angles", ld.angles, ld.pressure, float(ld.period))
-            # the table's angle 0: the first time the crank passes `start` at or after phi[0]
-            first = np.mod(model.sense * (np.radians(ld.start) - model.phi[0]), TWO_PI)
-            rot = np.degrees(model.sense * (model.phi - model.phi[0]) - first)
+            # the table's angle 0: the first time the crank passes `start` at or after the model's origin
+            # (a property of the crank position, not of the angles asked for)
+            first = np.mod(model.sense * (np.radians(ld.start) - model.origin), TWO_PI)
+            rot = np.degrees(model.sense * (model.phi - model.origin) - first)
             pp = np.interp(np.mod(rot, ld.period), a, p)
             area = np.pi * (ld.bore * u) ** 2 / 4
             toward = -np.sign(np.real(np.conj(axis) * b.cg.pos))  # along the axis toward the crank centre
@@ -610,7 +614,8 @@ def _pinned_cg(name: str, kind: str) -> str:
             f"cg applies to the links that turn about a joint ({turning})")
 
 
-def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: float | None = None) -> Model:
+def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: float | None = None,
+                origin: float = 0.0) -> Model:
     """The rigid-body model of a machine of :mod:`cams.linkage.machines` at crank angles ``phi``.
 
     Parameters
@@ -624,6 +629,11 @@ def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
         Crank angles per turn (ignored with ``phi``).
     rpm : float, optional
         Crank speed, rev/min; default the machine's.
+    origin : float
+        Frame crank angle (radians) the load cycle is counted from: a gas
+        table's angle 0 is the first pass of its ``start`` at or after it
+        (matters for a table of period 720 only). ``cams machine`` passes
+        position 1's angle.
 
     Returns
     -------
@@ -671,10 +681,9 @@ def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
         js.append(Joint(nm, kind_, idx[a], -1 if b is None else idx[b], np.asarray(P) * u,
                         None if axis is None else np.asarray(axis, dtype=complex), fr))
     model = Model(kind, phi, float(omega), bodies, tuple(js), (), 0, float(spec.gravity), output, machine.crank_sense, machine,
-                  TWO_PI * turns)
+                  TWO_PI * turns, float(origin))
     loads = tuple(_external_loads(model, spec))
-    return Model(kind, phi, float(omega), bodies, tuple(js), loads, 0, float(spec.gravity), output, machine.crank_sense, machine,
-                 TWO_PI * turns)
+    return replace(model, loads=loads)
 
 
 # --------------------------------------------------------------------------- solution
@@ -1063,7 +1072,8 @@ def solve_model(model: Model, *, passes: int = 2, tol: float = 1e-9, max_passes:
     return ForceResult(model, R, Mb, tuple(fl), n, change)
 
 
-def analyse_forces(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: float | None = None, passes: int = 2) -> ForceResult:
+def analyse_forces(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: float | None = None, passes: int = 2,
+                   origin: float = 0.0) -> ForceResult:
     """Kinetostatics of a machine over its cycle: :func:`build_model` then :func:`solve_model`.
 
     Examples
@@ -1077,7 +1087,7 @@ def analyse_forces(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rp
     >>> bool(np.allclose(r.balancing_moment, r.virtual_moment, atol=1e-9))
     True
     """
-    return solve_model(build_model(machine, spec, phi=phi, samples=samples, rpm=rpm), passes=passes)
+    return solve_model(build_model(machine, spec, phi=phi, samples=samples, rpm=rpm, origin=origin), passes=passes)
 
 
 # --------------------------------------------------------------------------- machine files
@@ -1460,7 +1470,6 @@ def machine_forces(spec, centre=None) -> MachineForces:
         timing (:class:`cams.machine.CamTiming`) to map the cam's angles to
         cycle angles.
     """
-    from dataclasses import replace
 
     from cams.camforces import design_forces
     from cams.machine import place_cam, windows
@@ -1473,18 +1482,22 @@ def machine_forces(spec, centre=None) -> MachineForces:
         fs, opt = forces
         turns = cycle_turns(fs)
         c = np.linspace(0.0, TWO_PI * turns, opt.samples * turns, endpoint=False)
-        lk = analyse_forces(spec.linkage, fs, phi=win.frame_angle(c), passes=opt.passes)
+        lk = analyse_forces(spec.linkage, fs, phi=win.frame_angle(c), passes=opt.passes, origin=win.origin)
         lk = replace(lk, reference=CYCLE_ANGLE)
         if turns == 2:
             notes.append("a gas table of period 720 deg: the linkage's forces and the flywheel cover two crank turns, "
                          "cycle angles 0 to 720 deg from position 1 (the table's angle 0 where the crank first passes "
                          "its start)")
         if opt.delta is not None:
-            if np.any(lk.reduced_inertia <= 0):
-                raise InputError("forces.links", "the linkage has no inertia at some crank angle, so no flywheel can be "
-                                 "sized for forces.delta: give the links' masses and the crank's moment of inertia "
-                                 "([forces.links.crank] inertia)")
-            fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation, cycle_deg=360 * turns)
+            try:
+                fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation, cycle_deg=360 * turns)
+            except InputError as e:
+                if e.field != "flywheel.inertia":
+                    raise
+                # nothing keeps the crank turning where neither the linkage nor a flywheel has inertia
+                raise InputError("forces.links", "the machine has no inertia at some crank angle, so no flywheel can "
+                                 "be sized for forces.delta: give the links' masses and the crank's moment of inertia "
+                                 "([forces.links.crank] inertia)") from None
     else:
         notes.append("no [forces] table: no linkage forces")
     if spec.cam.extra.get("dynamics") is not None and centre is None:

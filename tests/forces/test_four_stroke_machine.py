@@ -131,3 +131,22 @@ def test_api_default_angles_cover_the_cycle():
     assert r.phi.size == 72 and np.degrees(r.rotation).max() == pytest.approx(710.0)
     assert r.flywheel(delta=0.05, cycle_deg=720).achieved_delta == pytest.approx(0.05, rel=1e-9)
     assert json.dumps(r.to_dict())
+
+
+def test_gas_load_depends_on_the_crank_position_not_on_the_angles_asked():
+    """A 720-degree table's phase is tied to the model's origin: the load at 10 deg is the same whatever other
+    angles are asked for, and differs from the load at 370 deg (the other turn)."""
+    from cams.kinetostatics import build_model
+
+    m = CrankSlider(crank=48.0, rod=192.0, rod_cg=64.0, rpm=3000)
+    gas = GasPressure("slider", tuple(ANGLES), tuple(PRESSURE), bore=80.0, start=START, period=720.0)
+    spec = ForceSpec(links={"slider": LinkMass(1.0)}, loads=(gas,))
+    at = {}
+    for name, phi in (("pair", [0.0, 10.0]), ("alone", [10.0]), ("after", [10.0, 200.0, 500.0]), ("other", [370.0])):
+        model = build_model(m, spec, phi=np.radians(phi))
+        at[name] = model.loads[0].force[list(phi).index(10.0 if name != "other" else 370.0)]
+    assert at["pair"] == at["alone"] == at["after"]
+    assert at["other"] != at["pair"]
+    # the documented phase: the table's angle 0 at the first pass of `start` at or after the origin (0 here)
+    table_deg = (10.0 - START) % 720.0
+    assert np.real(at["alone"]) == pytest.approx(-np.interp(table_deg, ANGLES, PRESSURE) * np.pi * 0.08**2 / 4)

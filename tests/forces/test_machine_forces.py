@@ -177,4 +177,15 @@ def test_flywheel_without_inertia_is_one_line(tmp_path, capsys):
     path.write_text(text + "\n[forces]\ndelta = 0.1\n", encoding="utf-8")
     assert main(["machine", str(path), "--forces"]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("cams machine: error: forces.links: the linkage has no inertia") and err.count("\n") == 1
+    assert err.startswith("cams machine: error: forces.links: the machine has no inertia") and err.count("\n") == 1
+
+
+def test_flywheel_without_link_masses_but_with_loads_is_sized(tmp_path, capsys):
+    """Massless links with a cutting load: the flywheel alone carries the inertia, and it can be sized."""
+    text = SLOTTING.read_text(encoding="utf-8")
+    path = tmp_path / "loads_only.toml"
+    path.write_text(text + '\n[forces]\ndelta = 0.05\n[[forces.loads]]\nkind = "resistance"\nbody = "tool"\n'
+                    'force = 1000.0\n', encoding="utf-8")
+    assert main(["machine", str(path), "--forces", "--json"]) == 0
+    fw = json.loads(capsys.readouterr().out)["forces"]["flywheel"]
+    assert fw["flywheel_inertia"] > 0
