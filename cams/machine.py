@@ -654,8 +654,10 @@ class MachineResult:
 
     @property
     def ok(self) -> bool:
-        """No overlap, the cam's pressure angle verified and the bore (if given) clear of the profile."""
-        return not self.overlap and bool(self.solve.verified) and (self.bore is None or bool(self.bore["clear"]))
+        """No overlap, the cam's pressure angle verified, a cam to make (R0 above the roller radius) and the bore
+        (if given) clear of the profile."""
+        return (not self.overlap and bool(self.solve.verified) and self.solve.buildable
+                and (self.bore is None or bool(self.bore["clear"])))
 
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the file's unit, angles in degrees."""

@@ -32,7 +32,7 @@ MAX_WORKERS_PER_CPU = 4
 
 #: Result columns after the varied keys.
 COLUMNS = ("R0", "L", "offset", "centre_x", "centre_y", "max_pressure_rise", "max_pressure_return",
-           "verified", "error_bound", "error")
+           "verified", "buildable", "error_bound", "error")
 
 
 def parse_vary(spec: str) -> tuple[str, np.ndarray]:
@@ -150,7 +150,7 @@ def _solve_one(args) -> dict:
         row.update(R0=r.R0, L=r.L, offset=r.offset, centre_x=float(r.centre[0]), centre_y=float(r.centre[1]),
                    max_pressure_rise=rep["max_pressure_angle"]["rise"],
                    max_pressure_return=rep["max_pressure_angle"]["return"],
-                   verified=r.verified, error_bound=r.error_bound)
+                   verified=r.verified, buildable=r.buildable, error_bound=r.error_bound)
     except CamsError as e:
         row["error"] = str(e)
     return row

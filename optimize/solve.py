@@ -80,6 +80,11 @@ class SolveResult:
         """True when the independent check finds every limit respected."""
         return self.pressure.ok
 
+    @property
+    def buildable(self) -> bool:
+        """True when the roller centre's base circle is larger than the roller (a working profile exists)."""
+        return bool(self.R0 > self.design.follower.roller_radius)
+
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the design's unit, angles in degrees.
 
@@ -105,6 +110,7 @@ class SolveResult:
             "pressure_angle_at": {"rise": deg(p.rise_at), "return": deg(p.ret_at)},
             "limits": {"rise": deg(p.rise_limit), "return": deg(p.return_limit)},
             "verified": bool(self.verified),
+            "buildable": self.buildable,
             "binding": [
                 {"phi": float(np.degrees(b.phi)), "phase": b.phase, "line": "t-t" if b.side == 0 else "t1-t1"}
                 for b in self.binding

@@ -154,9 +154,7 @@ def run(args) -> int:
     result = solve(design, method=args.method, objective=design.extra.get("objective", "R0"))
     rep = result.to_dict()
     # a roller centre's base circle no larger than the roller leaves no cam to make: a failed check
-    buildable = result.R0 > design.follower.roller_radius
-    rep["buildable"] = bool(buildable)
-    ok = result.verified and buildable
+    ok = result.verified and result.buildable
     forces = None
     if "dynamics" in design.extra:
         from cams.camforces import design_forces, impact_note

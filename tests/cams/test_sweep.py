@@ -34,6 +34,7 @@ def test_sweep_equals_one_by_one(workers):
                                          follower={"arm": row["follower.arm"]}))
         assert row["R0"] == pytest.approx(solve(d).R0, rel=1e-12)
         assert row["verified"] is True and row["error"] is None
+        assert row["buildable"] is (row["R0"] > 10.0)  # the example's roller radius
 
 
 def test_infeasible_rows_are_recorded_not_fatal():

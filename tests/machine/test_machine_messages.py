@@ -79,3 +79,19 @@ def test_plot_into_an_existing_file_names_the_option(tmp_path, capsys):
     err = _err(capsys)
     assert "--plot" in err, err
     assert afile.read_text(encoding="utf-8") == "x"
+
+
+def test_machine_with_an_unbuildable_cam_fails(tmp_path, capsys):
+    """The same rule as cams solve: a minimum R0 not larger than the roller radius is a failed check (exit 1)."""
+    from pathlib import Path
+
+    from cams.cli import main
+
+    src = Path(__file__).resolve().parents[2] / "examples" / "machines" / "slotting_machine.toml"
+    path = tmp_path / "big_roller.toml"
+    path.write_text(src.read_text(encoding="utf-8").replace("roller_radius = 15.0", "roller_radius = 45.0"), encoding="utf-8")
+    assert main(["machine", str(path), "--json"]) == 1
+    import json
+
+    cam = json.loads(capsys.readouterr().out)["cam"]
+    assert cam["buildable"] is False and cam["verified"] is True and cam["R0"] < 45.0
