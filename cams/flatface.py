@@ -554,8 +554,14 @@ def min_base_radius_oscillating(program: Program, *, centre_distance: float, fac
         raise InputError("follower.rise_direction", f"rise_sense must be +1 (ccw) or -1 (cw), got {rise_sense!r}")
     hi = f + L * np.cos(program.lift)
     lo = max(f - L, 0.0)
-    if hi <= lo:
-        raise InputError("centre_distance", f"L = {L:g} is too short for a swing of {np.degrees(program.lift):g} degrees")
+    if hi <= lo + 1e-12 * L:
+        # the face's far position must stay on the cam's side of the centre: f + L cos(swing) > 0 (f < L here)
+        largest = np.degrees(np.arccos(np.clip(-f / L, -1.0, 1.0)))
+        need = -L * np.cos(program.lift)
+        need = 0.0 if abs(need) < 1e-9 * L else need
+        raise InputError("swing", f"a flat face at {f:g} from the pivot with L = {L:g} turns at most {largest:.6g} "
+                         f"degrees before its line passes the cam centre (swing {np.degrees(program.lift):g}); reduce "
+                         f"the swing or give a face_offset above {need:.6g}")
     grid = lo + (hi - lo) * (np.arange(1, scan + 1) / (scan + 1))
     a_mid = _oscillating_setup(program, L, grid[scan // 2], f, rise_sense)
     cusps = _oscillating_cusps(program, L, rise_sense, eps, a_mid)
@@ -652,7 +658,8 @@ class FlatRocker:
 
 #: Names the design file gives the API's fields, for error messages.
 _FILE_FIELDS = {"centre_distance": "follower.centre_distance", "face_offset": "follower.face_offset",
-                "min_radius": "limits.min_radius", "follower.offset": "follower.offset"}
+                "min_radius": "limits.min_radius", "follower.offset": "follower.offset", "swing": "follower.swing",
+                "base_radius": "cam.base_radius"}
 
 
 def _renamed(e: InputError, field: str | None = None) -> InputError:

@@ -283,3 +283,17 @@ def test_api_refuses_flat_faces_where_only_rollers_apply(tmp_path):
                     'rise_direction = "cw"\n' + tail, encoding="utf-8")
     with pytest.raises(InputError, match="follower.face"):
         load_machine(path)
+
+
+@pytest.mark.parametrize("swing, offset, words", [(90.0, 0.0, "face_offset above 0"), (120.0, 0.0, "face_offset above 60"),
+                                                   (15.0, -150.0, "face_offset above -115.911")])
+def test_flat_rocker_swing_past_the_cam_centre_names_the_swing(tmp_path, capsys, swing, offset, words):
+    """The face line would pass the cam centre: the error names follower.swing and the face offset that would fit
+    (f + L cos(swing) > 0 with L = 120), not a key the file does not have."""
+    text = ROCKER.read_text(encoding="utf-8")
+    lines = [("swing = %r" % swing) if ln.startswith("swing =") else ("face_offset = %r" % offset)
+             if ln.startswith("face_offset =") else ln for ln in text.splitlines()]
+    path = tmp_path / "r.toml"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    rc, _, err = _run(capsys, "solve", str(path))
+    assert rc == 2 and err.startswith("cams solve: error: follower.swing: ") and words in err, err
