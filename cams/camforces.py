@@ -77,7 +77,7 @@ import numpy as np
 
 from cams.design import CamDesign
 from cams.follower import Rocker
-from cams.linkage.messages import show_value
+from laws.errors import show_value
 from laws.errors import InputError
 from laws.errors import check_number as _num
 from laws.units import omega_to_rpm, rpm_to_omega

@@ -59,7 +59,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from cams.linkage.messages import show_value
+from laws.errors import show_value
 from laws.errors import InputError, check_option
 from laws.units import omega_to_rpm, rpm_to_omega  # rpm_to_omega re-exported (cams.flywheel.rpm_to_omega)
 

@@ -68,7 +68,7 @@ import numpy as np
 
 from cams.linkage.primitives import Angle, Point, on_link
 from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
-from cams.linkage.messages import show_value
+from laws.errors import show_value
 from laws.errors import InputError, check_option
 from laws.errors import check_number as _num
 from laws.units import omega_to_rpm, rpm_to_omega

@@ -40,7 +40,7 @@ from scipy.optimize import brentq
 from cams.design import CamDesign
 from cams.follower import Rocker
 from cams.linkage.analysis import WORKING, Machine, StrokeReport, analyse
-from cams.linkage.messages import show_value
+from laws.errors import show_value
 from laws.errors import InfeasibleError, InputError, check_option
 from laws.program import Program
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["CamsError", "InputError", "InfeasibleError", "check_option", "check_number"]
+__all__ = ["CamsError", "InputError", "InfeasibleError", "check_option", "check_number", "show_value"]
 
 
 class CamsError(ValueError):
@@ -83,8 +83,27 @@ def check_number(field: str, value: object, *, lo: float | None = None, strict: 
     if value is None and allow_none:
         return None
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)) or not np.isfinite(value):
-        raise InputError(field, f"must be a finite number, got {value!r}")
+        raise InputError(field, f"must be a finite number, got {show_value(value)}")
     value = float(value)
     if lo is not None and (value <= lo if strict else value < lo):
-        raise InputError(field, f"must be {'>' if strict else '>='} {lo:g}, got {value!r}")
+        raise InputError(field, f"must be {'>' if strict else '>='} {lo:g}, got {show_value(value)}")
     return value
+
+
+def show_value(v) -> str:
+    """``v`` for a message: a number as Python writes it (``-5.0``, ``3``, ``nan``; a NumPy scalar as its
+    Python value), a list, tuple or array element-wise, anything else as its repr.
+
+    >>> import numpy as np
+    >>> show_value(np.float64(-5.0)), show_value([1, np.float64(2.5)]), show_value("abc")
+    ('-5.0', '[1, 2.5]', "'abc'")
+    """
+    if isinstance(v, (np.integer, int)) and not isinstance(v, bool):
+        return str(int(v))
+    if isinstance(v, (np.floating, float)):
+        return repr(float(v))
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(show_value(x) for x in v) + "]"
+    if isinstance(v, np.ndarray):
+        return show_value(v.tolist())
+    return repr(v)

@@ -48,7 +48,7 @@ from cams.linkage.primitives import (
     rrp,
 )
 from cams.linkage.analysis import analyse
-from cams.linkage.messages import show_value as _show
+from laws.errors import show_value as _show
 from cams.linkage.synthesis import (
     MAX_TIME_RATIO,
     SlottedLeverSynthesis,

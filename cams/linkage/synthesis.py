@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from cams.linkage.messages import show_value as _show
+from laws.errors import show_value as _show
 from laws.errors import InfeasibleError, InputError
 
 __all__ = [

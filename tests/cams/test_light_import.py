@@ -34,7 +34,8 @@ def test_cli_and_minimum_r0_solve_do_not_load_scipy_solvers():
     """``cams solve`` on a minimum-R0 design runs without scipy.optimize or scipy.interpolate."""
     slow = ("scipy.optimize", "scipy.interpolate")
     assert _loaded_after("import cams, laws, optimize, cams.cli", slow) == []
-    code = (f"import contextlib, io\nfrom cams.cli import main\n"
-            f"with contextlib.redirect_stdout(io.StringIO()):\n"
-            f"    assert main(['solve', {str(EXAMPLES / 'rocker_force.toml')!r}]) in (0, None)")
-    assert _loaded_after(code, slow) == []
+    for example in ("rocker_force.toml", "slotting_feed_cam.toml"):  # the second with [dynamics]: cam forces too
+        code = (f"import contextlib, io\nfrom cams.cli import main\n"
+                f"with contextlib.redirect_stdout(io.StringIO()):\n"
+                f"    assert main(['solve', {str(EXAMPLES / example)!r}]) in (0, None)")
+        assert _loaded_after(code, slow) == [], example
