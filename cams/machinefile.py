@@ -221,14 +221,11 @@ def machine_from_dict(d: dict) -> MachineSpec:
     dd = {k: d[k] for k in ("follower", "motion", "limits", "solve", "units", "dynamics") if k in d}
     dd["cam"] = cam_table
     dd["name"] = f"{name}: cam"
-    design = design_from_dict(dd)
-    if getattr(design, "face", "roller") == "flat":
+    fo = d.get("follower")
+    if isinstance(fo, dict) and fo.get("face") == "flat":  # before the follower's own keys are checked
         raise InputError("follower.face", "a machine's feed cam is sized for roller followers only; size a "
                          "flat-faced follower's cam on its own with cams solve")
-    if "dynamics" in d:
-        from cams.camforces import dynamics_from_dict
-
-        dynamics_from_dict(d["dynamics"], units, follower=design.follower.kind)  # journal_radius: a rocker's only
+    design = design_from_dict(dd)  # checks [dynamics] too (journal_radius: a rocker's only)
     extra = {"raw": d}
     if "forces" in d:
         from cams.kinetostatics import force_spec_from_dict

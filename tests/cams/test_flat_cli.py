@@ -297,3 +297,13 @@ def test_flat_rocker_swing_past_the_cam_centre_names_the_swing(tmp_path, capsys,
     path.write_text("\n".join(lines) + "\n", encoding="utf-8")
     rc, _, err = _run(capsys, "solve", str(path))
     assert rc == 2 and err.startswith("cams solve: error: follower.swing: ") and words in err, err
+
+
+def test_machine_refuses_a_flat_face_first(tmp_path, capsys):
+    """A machine file whose follower says face = "flat" (the rest a roller's keys) is told flat faces are not for
+    machines, not sent fixing arm or pressure_angle first."""
+    machine = (EXAMPLES / "machines" / "slotting_machine.toml").read_text(encoding="utf-8")
+    path = tmp_path / "m.toml"
+    path.write_text(machine.replace("[follower]\n", '[follower]\nface = "flat"\n', 1), encoding="utf-8")
+    rc, _, err = _run(capsys, "machine", str(path))
+    assert rc == 2 and err.startswith("cams machine: error: follower.face: a machine's feed cam is sized for roller"), err
