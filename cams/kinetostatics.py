@@ -919,17 +919,20 @@ class ForceResult:
         out[:, m.driver, 2] += self.balancing_moment
         return out
 
-    def flywheel(self, *, delta: float, interpolation: str = "linear", friction: bool = True, cycle_deg: float = 360.0):
+    def flywheel(self, *, delta: float, interpolation: str = "linear", friction: bool = True,
+                 cycle_deg: float | None = None):
         """The flywheel for this machine (:func:`cams.flywheel.flywheel`) from its reduced moments and inertia.
 
         The crank angles become the cycle's angles in the crank's sense from
         the first one. ``friction`` adds the pairs' friction to the resisting
-        moment. A four-stroke cycle (gas tables of period 720) needs
-        ``cycle_deg=720`` and crank angles over two turns.
+        moment. ``cycle_deg``: the cycle, degrees; default the loads' own
+        (:attr:`Model.cycle`: 720 with a gas table of period 720, which needs
+        crank angles over two turns).
         """
         from cams.flywheel import flywheel
 
-        cycle = np.radians(cycle_deg)
+        cycle = self.model.cycle if cycle_deg is None else np.radians(cycle_deg)
+        cycle_deg = float(np.degrees(cycle))
         c = np.mod(self.model.sense * (self.phi - self.phi[0]), cycle)
         order = np.argsort(c)
         Mr = self.reduced_resisting + (self.reduced_friction if friction else 0.0)

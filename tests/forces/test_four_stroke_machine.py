@@ -150,3 +150,14 @@ def test_gas_load_depends_on_the_crank_position_not_on_the_angles_asked():
     # the documented phase: the table's angle 0 at the first pass of `start` at or after the origin (0 here)
     table_deg = (10.0 - START) % 720.0
     assert np.real(at["alone"]) == pytest.approx(-np.interp(table_deg, ANGLES, PRESSURE) * np.pi * 0.08**2 / 4)
+
+
+def test_flywheel_defaults_to_the_models_cycle():
+    """A 720-degree model's flywheel needs no cycle_deg: it takes the loads' cycle (was 'angles must increase')."""
+    m = CrankSlider(crank=48.0, rod=192.0, rod_cg=64.0, rpm=3000)
+    gas = GasPressure("slider", tuple(ANGLES), tuple(PRESSURE), bore=80.0, start=START, period=720.0)
+    r = analyse_forces(m, ForceSpec(links={"crank": LinkMass(2.0, inertia=0.01), "slider": LinkMass(1.0)}, loads=(gas,)),
+                       samples=90)
+    a, b = r.flywheel(delta=0.05), r.flywheel(delta=0.05, cycle_deg=720.0)
+    assert a.phi[-1] - a.phi[0] == pytest.approx(4 * np.pi)
+    assert a.flywheel_inertia == b.flywheel_inertia and a.excess_work == b.excess_work

@@ -296,4 +296,4 @@ def test_four_stroke_cycle():
     assert fw.achieved_delta == pytest.approx(0.02, rel=1e-9)
     assert fw.driving_moment == pytest.approx(np.mean(r.balancing_moment), rel=1e-3)
     with pytest.raises(InputError, match="flywheel.phi"):
-        r.flywheel(delta=0.02)  # two turns are not one 360-degree cycle
+        r.flywheel(delta=0.02, cycle_deg=360)  # two turns are not one 360-degree cycle
