@@ -263,6 +263,14 @@ class RigidImpact:
                 "unit": self.unit, "effect": self.effect}
 
 
+def jump_text(rpm, digits: int = 6) -> str:
+    """A jump speed for reports: ``"168.6 rpm"``, or ``"none ..."`` when nothing pulls the follower off the cam
+    (no deceleration: the speed is infinite, or None from JSON)."""
+    if rpm is None or not np.isfinite(rpm):
+        return "none (no deceleration pulls the follower off the cam)"
+    return f"{rpm:.{digits}g} rpm"
+
+
 def rigid_impacts(design: CamDesign) -> tuple[RigidImpact, ...]:
     """The program's velocity jumps (:func:`laws.diagnostics.find_impacts`, hard ones), sorted by cam angle.
 

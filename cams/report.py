@@ -139,7 +139,7 @@ def _force_rows(df) -> list[tuple[str, str]]:
     number: it is said to be unbounded there, as ``cams solve`` does, with
     the finite values between the impacts on their own row.
     """
-    from cams.camforces import impact_note
+    from cams.camforces import impact_note, jump_text
 
     fo = df.to_dict()
     up = [i for i in fo["impacts"] if i["effect"] == "impulse"]
@@ -154,7 +154,8 @@ def _force_rows(df) -> list[tuple[str, str]]:
     if fo["jump_at_impact"]:
         jump = f"any speed: the follower leaves the cam at its velocity drop (rigid impact at {fo['jump_at_deg']:.2f}°)"
     else:
-        jump = f"{fo['jump_rpm']:.6g} rpm (first at {fo['jump_at_deg']:.2f}°)"
+        jump = jump_text(fo["jump_rpm"]) if fo["jump_at_deg"] is None or fo["jump_rpm"] is None or not np.isfinite(
+            fo["jump_rpm"]) else f"{jump_text(fo['jump_rpm'])} (first at {fo['jump_at_deg']:.2f}°)"
     rows = [
         ("closing spring", f"rate {fo['spring']['rate']:.6g}, preload {fo['spring']['preload']:.6g} (SI)"),
         ("cam speed", f"{fo['rpm']:.6g} rpm"),

@@ -61,6 +61,10 @@ def print_machine(rep: dict) -> None:
 
 def print_forces(rep: dict) -> None:
     """Readable summary of a forces report (as from ``MachineForces.to_dict``)."""
+    import math
+
+    from cams.camforces import jump_text
+
     lk = rep.get("linkage")
     if lk is not None:
         mb = lk["balancing_moment"]
@@ -102,13 +106,13 @@ def print_forces(rep: dict) -> None:
         bi = cam.get("between_impacts")
         if bi:
             print(f"    between the rigid impacts: max contact force {bi['max_contact_force']:.4g} N, max camshaft torque "
-                  f"{bi['max_torque']:.4g} N m, jump speed {bi['jump_rpm']:.4g} rpm")
-        if cam["jump_rpm"] is None:
-            jump = "none"
+                  f"{bi['max_torque']:.4g} N m, jump speed {jump_text(bi['jump_rpm'], 4)}")
+        if cam["jump_rpm"] is None or not math.isfinite(cam["jump_rpm"]):
+            jump = jump_text(None)
         elif cam.get("jump_at_impact"):
             jump = f"0 rpm: the follower leaves the cam at any speed at its velocity drop (at {at('jump_at')})"
         else:
-            jump = f"{cam['jump_rpm']:.4g} rpm (at {at('jump_at')})"
+            jump = f"{jump_text(cam['jump_rpm'], 4)} (at {at('jump_at')})"
         print(f"    jump speed {jump}; jamming limit {cam['jamming_limit_deg']:.2f} deg; contact lost: "
               f"{'YES' if cam['contact_lost'] else 'no'}; jammed: {'YES' if cam['jammed'] else 'no'}")
     for n in rep.get("notes", []):

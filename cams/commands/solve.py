@@ -70,6 +70,8 @@ def print_cam_forces(fo: dict, indent: str = "  ") -> None:
     With rigid impacts the unbounded values are said so, the finite ones
     between the impacts follow, and the jump speed is "any speed".
     """
+    from cams.camforces import jump_text
+
     sp = fo["spring"]
     print(f"{indent}spring: rate {sp['rate']:.6g}, preload {sp['preload']:.6g} (SI: N/m and N, or N m/rad and N m)")
     print(f"{indent}contact force: max {_g(fo['max_contact_force'])} at {fo['max_contact_at_deg']:.2f} deg, "
@@ -79,11 +81,11 @@ def print_cam_forces(fo: dict, indent: str = "  ") -> None:
     if bi:
         print(f"{indent}  between the rigid impacts: contact force max {bi['max_contact_force']:.6g} at "
               f"{bi['max_contact_at_deg']:.2f} deg, min {bi['min_contact_force']:.6g}; camshaft torque max "
-              f"{bi['max_torque']:.6g} N m at {bi['max_torque_at_deg']:.2f} deg; jump speed {bi['jump_rpm']:.6g} rpm")
+              f"{bi['max_torque']:.6g} N m at {bi['max_torque_at_deg']:.2f} deg; jump speed {jump_text(bi['jump_rpm'])}")
     if fo.get("jump_at_impact"):
         jump = f"follower leaves the cam at any speed (velocity drop at {fo['jump_at_deg']:.2f} deg)"
     else:
-        jump = f"follower jumps above {fo['jump_rpm']:.6g} rpm"
+        jump = f"follower jumps above {jump_text(fo['jump_rpm'])}"
     print(f"{indent}{jump}; contact lost: {'YES' if fo['contact_lost'] else 'no'}; "
           f"jammed: {'YES' if fo['jammed'] else 'no'} (jamming limit {fo['jamming_limit_deg']:.2f} deg)")
 

@@ -115,3 +115,17 @@ def test_cams_machine_forces_with_a_linear_rise(tmp_path, capsys):
     assert main(["machine", str(f), "--forces"]) == 1
     out = capsys.readouterr().out
     assert "max contact force UNBOUNDED" in out and "contact lost: YES" in out and "rigid impacts" in out
+
+
+def test_no_deceleration_means_no_jump_speed_in_words(tmp_path, capsys):
+    """An all-linear program has no deceleration between its impacts: the jump speed there is 'none', not 'inf rpm'."""
+    from cams.cli import main
+    from pathlib import Path
+
+    src = Path(__file__).resolve().parents[2] / "examples" / "slotting_feed_cam.toml"
+    text = src.read_text(encoding="utf-8").replace('law = "parabolic"', 'law = "linear"').replace('law = "harmonic"', 'law = "linear"')
+    path = tmp_path / "alllin.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["solve", str(path)]) == 1
+    out = capsys.readouterr().out
+    assert "jump speed none (no deceleration" in out and "inf rpm" not in out
