@@ -82,8 +82,8 @@ def run(args) -> int:
     which = _only(args.only)
     cam = Cam.from_file(args.file)
     face = "flat" if cam.flat else "roller"
-    if which is None:
-        which = FLAT_PICTURES + ("zone",) if cam.flat else PICTURES
+    if which is None:  # everything that applies: no note for what the user did not ask for
+        which = FLAT_PICTURES if cam.flat else PICTURES
     for w in which:
         if (face, w) in _SKIP:
             print(f"cams plot: note: {w}: {_SKIP[face, w]}", file=sys.stderr)

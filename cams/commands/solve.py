@@ -104,29 +104,30 @@ def pressure_text(rep: dict) -> str:
 def print_flat_summary(rep: dict) -> None:
     """Short readable summary of a flat-face solve report (as from ``FlatFaceSolution.to_dict``)."""
     unit = "mm"
+    f = length_format(max(abs(rep["R0"]), abs(rep["L"] or 0.0), abs(rep["face_width"] or 0.0)))
     print(f"{rep['name']}: {rep['follower']} follower, flat face, sized by convexity")
     src = {"convexity": "the smallest with radius of curvature >= limits.min_radius",
            "limits.min_base_radius": "raised to limits.min_base_radius",
            "cam.base_radius": "given by cam.base_radius"}[rep["R0_source"]]
-    print(f"  R0      = {rep['R0']:.6f} {unit}  ({src})")
+    print(f"  R0      = {rep['R0']:{f}} {unit}  ({src})")
     if rep["R0_source"] != "convexity" and rep["R0_min"] is not None:
-        print(f"  R0 min  = {rep['R0_min']:.6f} {unit}  (convexity, binding at {rep['binding_deg']:.4f} deg)")
+        print(f"  R0 min  = {rep['R0_min']:{f}} {unit}  (convexity, binding at {rep['binding_deg']:.4f} deg)")
     elif rep["binding_deg"] is not None and rep["R0_source"] == "convexity":
         print(f"  binding: smallest radius of curvature at {rep['binding_deg']:.4f} deg")
-    print(f"  radius of curvature >= {rep['min_rho']:.6f} {unit} at {rep['min_rho_at_deg']:.4f} deg "
+    print(f"  radius of curvature >= {rep['min_rho']:{f}} {unit} at {rep['min_rho_at_deg']:.4f} deg "
           f"(limit {rep['min_radius']:g} {unit})")
     if rep["L"] is not None:
-        print(f"  L       = {rep['L']:.6f} {unit}, face offset {rep['face_offset']:g} {unit}")
+        print(f"  L       = {rep['L']:{f}} {unit}, face offset {rep['face_offset']:g} {unit}")
     else:
-        print(f"  offset  = {rep['offset']:.6f} {unit}")
+        print(f"  offset  = {rep['offset']:{f}} {unit}")
     c = rep["centre"]
-    print(f"  centre  = ({c['x']:.6f}, {c['y']:.6f}) {unit}")
+    print(f"  centre  = ({c['x']:{f}}, {c['y']:{f}}) {unit}")
     fr = rep["face_range"]
     where = "of the follower axis" if rep["follower"] == "translating" else "along the face from the pivot's foot"
-    print(f"  face: contact from {fr['from']:.6f} to {fr['to']:.6f} {unit} {where} "
-          f"(at {fr['from_at_deg']:.2f} and {fr['to_at_deg']:.2f} deg): width {rep['face_width']:.6f} {unit}")
+    print(f"  face: contact from {fr['from']:{f}} to {fr['to']:{f}} {unit} {where} "
+          f"(at {fr['from_at_deg']:.2f} and {fr['to_at_deg']:.2f} deg): width {rep['face_width']:{f}} {unit}")
     if rep["face_width_centred"] is not None:
-        print(f"        a face centred on the axis needs {rep['face_width_centred']:.6f} {unit} (no margins)")
+        print(f"        a face centred on the axis needs {rep['face_width_centred']:{f}} {unit} (no margins)")
     print(f"  pressure angle: {pressure_text(rep)}")
     print(f"  verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
     for n in rep["notes"]:
