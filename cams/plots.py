@@ -271,18 +271,17 @@ def plot_curvature(solution, *, n: int = 721):
     return fig
 
 
-def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
-    """Cam-frame points turned to cam angle ``phi`` and placed at the cam centre (fixed frame)."""
-    a = profile.cam_sense * phi
-    c, s = np.cos(a), np.sin(a)
-    R = np.array([[c, -s], [s, c]])
-    return profile.centre + pts @ R.T
-
-
 def _turned(centre, sense: int, pts: np.ndarray, phi: float) -> np.ndarray:
+    """Cam-frame points turned by the cam angle ``phi`` in the cam's ``sense`` and placed at the cam centre
+    (the follower's fixed frame)."""
     a = sense * phi
     c, s = np.cos(a), np.sin(a)
     return np.asarray(centre) + pts @ np.array([[c, -s], [s, c]]).T
+
+
+def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
+    """:func:`_turned` for a roller cam's profile (its centre and sense)."""
+    return _turned(profile.centre, profile.cam_sense, pts, phi)
 
 
 def _draw_flat_mechanism(ax, cam, profile, phi: float):
