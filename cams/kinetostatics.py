@@ -994,14 +994,24 @@ class ForceResult:
         return path
 
     def plot_hodographs(self, path, *, title: str = "hodographs", marks: int = 12):
-        """Hodographs of the reactions: the tip of each pair's reaction vector over the cycle, to ``path``.
+        """Hodographs of the reactions (:meth:`hodograph_figure`) written to ``path``; returns the path."""
+        import matplotlib.pyplot as plt
 
-        One panel a pair: ``R_x`` against ``R_y`` in N (frame axes), the
-        reaction on the pair's first body from its second, as stored in
-        :attr:`reactions`. ``marks`` positions equally spaced in crank
+        fig = self.hodograph_figure(title=title, marks=marks)
+        fig.savefig(path)
+        plt.close(fig)
+        return path
+
+    def hodograph_figure(self, *, title: str = "hodographs", marks: int = 12):
+        """Hodographs of the reactions: the tip of each pair's reaction vector over the cycle (a matplotlib figure).
+
+        One panel a pair, in the order of the model's joints: ``R_x`` against
+        ``R_y`` in N (frame axes), the reaction on the pair's first body from
+        its second, as stored in :attr:`reactions` (the panel's first line,
+        in crank-rotation order). ``marks`` positions equally spaced in crank
         rotation from the first crank angle are numbered 1, 2, ... as in the
         seeds' plans (position 1 at the first crank angle); the figure's
-        subtitle names the angle (:attr:`angle_reference`). Returns the path.
+        subtitle names the angle (:attr:`angle_reference`).
         """
         import matplotlib
 
@@ -1035,9 +1045,7 @@ class ForceResult:
                      "point 1 at 0 deg",
                      fontsize=10)
         fig.tight_layout()
-        fig.savefig(path)
-        plt.close(fig)
-        return path
+        return fig
 
 
 def solve_model(model: Model, *, passes: int = 2, tol: float = 1e-9, max_passes: int = 50) -> ForceResult:
