@@ -12,6 +12,7 @@ cutting into it.
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 import pytest
@@ -72,15 +73,20 @@ def _face_lines(design, R0, phi):
     return a - eps * phi, f - L * np.cos(a)
 
 
-def _brute_rho(design, R0, n=200_000):
-    """Smallest radius of curvature of the envelope of n face lines (vertices of consecutive lines)."""
-    phi = np.linspace(0, 2 * np.pi, n, endpoint=False)
-    th, p = _face_lines(design, R0, phi)
+def _vertices(th, p):
+    """Vertex k of the envelope: the intersection of line k (normal angle th, distance p) with line k + 1."""
     n1 = np.stack([np.cos(th), np.sin(th)], axis=1)
     n2 = np.roll(n1, -1, axis=0)
     p2 = np.roll(p, -1)
     det = n1[:, 0] * n2[:, 1] - n1[:, 1] * n2[:, 0]
-    W = np.stack([(p * n2[:, 1] - p2 * n1[:, 1]) / det, (n1[:, 0] * p2 - n2[:, 0] * p) / det], axis=1)
+    return np.stack([(p * n2[:, 1] - p2 * n1[:, 1]) / det, (n1[:, 0] * p2 - n2[:, 0] * p) / det], axis=1)
+
+
+def _brute_rho(design, R0, n=200_000):
+    """Smallest radius of curvature of the envelope of n face lines (vertices of consecutive lines)."""
+    phi = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    th, p = _face_lines(design, R0, phi)
+    W = _vertices(th, p)
     edge = W - np.roll(W, 1, axis=0)  # on line k, from its vertex with line k-1 to the one with line k+1
     t = np.stack([-np.sin(th), np.cos(th)], axis=1)
     dth = np.angle(np.exp(1j * (np.roll(th, -1) - np.roll(th, 1)))) / 2
@@ -217,3 +223,132 @@ def test_a_velocity_drop_is_a_cusp_whatever_the_size(tmp_path, capsys):
     assert len(err.splitlines()) == 1 and "motion[1]" in err and "cusp" in err and "120" in err
     d = load_design(f)
     assert _brute_rho(d, 1000.0, n=7200)[0] < -1e3  # swallowtail at the end of the rise, even for a huge cam
+
+
+# -- every sense and offset: cam rotation, the rocker's rise direction, face and axis offsets ----------------
+
+SENSE = {"ccw": 1, "cw": -1}
+ROCKER_CASES = [(rot, rise, f) for rot in ("ccw", "cw") for rise in ("cw", "ccw") for f in (0.0, 20.0, -20.0)]
+TRANSLATING_CASES = [(rot, e) for rot in ("ccw", "cw") for e in (0.0, 5.0, -5.0)]
+
+
+def _variant(path, tmp_path, **keys) -> str:
+    """A copy of a design file with its ``key = value`` lines replaced (each key must be there once)."""
+    text = path.read_text(encoding="utf-8")
+    for key, value in keys.items():
+        text, n = re.subn(rf"(?m)^{key}\s*=.*$", f"{key} = {value}", text)
+        assert n == 1, key
+    out = tmp_path / f"{path.stem}_variant.toml"
+    out.write_text(text, encoding="utf-8")
+    return str(out)
+
+
+def _brute_contact(design, R0, n):
+    """Contact points of the envelope of n face lines, in the fixed frame.
+
+    The contact on line k is the middle of its edge (its vertices with lines
+    k - 1 and k + 1), turned back from the cam frame to the fixed frame
+    (a cam-frame vector w is R(eps phi) w there) and placed at the cam centre
+    O: (-e, -R0) translating, (L, 0) rocker. Returns the cam angles, the
+    contact points X, the face normals m (fixed frame), the cam centre and the
+    face's fixed-frame normal angle a = theta + eps phi.
+    """
+    phi = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    th, p = _face_lines(design, R0, phi)
+    W = _vertices(th, p)
+    M = 0.5 * (W + np.roll(W, 1, axis=0))  # on line k
+    eps = design.cam_sense
+    c, s = np.cos(eps * phi), np.sin(eps * phi)
+    f_ = design.follower
+    O = np.array([-f_.offset, -R0]) if f_.kind == "translating" else np.array([f_.centre_distance, 0.0])
+    X = O + np.stack([c * M[:, 0] - s * M[:, 1], s * M[:, 0] + c * M[:, 1]], axis=1)
+    a = th + eps * phi
+    m = np.stack([np.cos(a), np.sin(a)], axis=1)
+    return phi, X, m, O, a
+
+
+def _angle_diff_deg(x, y) -> float:
+    return abs((x - y + 180.0) % 360.0 - 180.0)
+
+
+def _check_sizing(rep, d, n):
+    """R0 is the brute force's minimum: rho_min = min_radius there, below it a little smaller; the binding angle."""
+    R0, rmin = rep["R0"], rep["min_radius"]
+    at_min, where = _brute_rho(d, R0, n)
+    assert at_min == pytest.approx(rmin, rel=1e-4)
+    assert _angle_diff_deg(np.degrees(where), rep["binding_deg"]) < 0.1
+    assert rep["min_rho"] == pytest.approx(rmin, abs=1e-9)
+    assert _angle_diff_deg(rep["min_rho_at_deg"], rep["binding_deg"]) < 1e-6
+    assert _brute_rho(d, R0 - 0.02 * rmin, n)[0] < rmin - 0.005 * rmin  # slightly smaller: not convex enough
+    assert _brute_rho(d, R0 + 0.02 * rmin, n)[0] > rmin
+
+
+@pytest.mark.parametrize(("rotation", "offset"), TRANSLATING_CASES,
+                         ids=[f"cam_{r}-e{e:+g}" for r, e in TRANSLATING_CASES])
+def test_translating_senses_and_offsets_against_the_brute_force(tmp_path, capsys, rotation, offset):
+    file = _variant(TRANSLATING, tmp_path, rotation=f'"{rotation}"', offset=repr(offset))
+    rc, rep = _json(capsys, "solve", file)
+    assert rc == 0 and rep["verified"] and rep["R0_source"] == "convexity"
+    d = load_design(file)
+    assert d.cam_sense == SENSE[rotation] and d.follower.offset == offset
+    assert rep["offset"] == offset
+    _check_sizing(rep, d, 40_000)
+
+    # the contact travels along the face: its x in the follower's frame (the axis at x = 0)
+    phi, X, m, O, _ = _brute_contact(d, rep["R0"], 40_000)
+    s = d.program.evaluate(phi).s
+    assert np.max(np.abs(X[:, 1] - s)) < 1e-6  # the brute force's contact lies on the face y = s
+    fr = rep["face_range"]
+    assert fr["from"] == pytest.approx(X[:, 0].min(), abs=1e-4)
+    assert fr["to"] == pytest.approx(X[:, 0].max(), abs=1e-4)
+    assert rep["face_width"] == pytest.approx(X[:, 0].max() - X[:, 0].min(), abs=2e-4)
+    assert rep["face_width_centred"] == pytest.approx(2 * np.max(np.abs(X[:, 0])), abs=2e-4)
+    assert _angle_diff_deg(np.degrees(phi[np.argmin(X[:, 0])]), fr["from_at_deg"]) < 0.1
+    assert _angle_diff_deg(np.degrees(phi[np.argmax(X[:, 0])]), fr["to_at_deg"]) < 0.1
+    # the face's normal is the follower's direction of motion: no pressure angle
+    assert rep["pressure_angle"]["min"] == 0.0 and rep["pressure_angle"]["max"] == 0.0
+
+
+@pytest.mark.parametrize(("rotation", "rise", "face_offset"), ROCKER_CASES,
+                         ids=[f"cam_{r}-rise_{s}-f{f:+g}" for r, s, f in ROCKER_CASES])
+def test_rocker_senses_and_face_offsets_against_the_brute_force(tmp_path, capsys, rotation, rise, face_offset):
+    file = _variant(ROCKER, tmp_path, rotation=f'"{rotation}"', rise_direction=f'"{rise}"',
+                    face_offset=repr(face_offset))
+    rc, rep = _json(capsys, "solve", file)
+    assert rc == 0 and rep["verified"] and rep["R0_source"] == "convexity"
+    d = load_design(file)
+    f_ = d.follower
+    assert d.cam_sense == SENSE[rotation] and f_.sense == SENSE[rise] and f_.face_offset == face_offset
+    assert rep["face_offset"] == face_offset
+    _check_sizing(rep, d, 40_000)
+
+    phi, X, m, O, a = _brute_contact(d, rep["R0"], 40_000)
+    f = face_offset
+    assert np.max(np.abs(np.sum(X * m, axis=1) - f)) < 1e-6  # on the face line m . X = f
+    # the face range: along the face from the pivot's foot f m, positive towards the cam (the side of the face
+    # on which the cam centre's foot lies)
+    Jm = np.stack([-m[:, 1], m[:, 0]], axis=1)
+    towards = np.sign(Jm @ O)
+    assert np.all(towards == towards[0])
+    along = towards * np.sum((X - f * m) * Jm, axis=1)
+    fr = rep["face_range"]
+    assert fr["from"] == pytest.approx(along.min(), abs=1e-4)
+    assert fr["to"] == pytest.approx(along.max(), abs=1e-4)
+    assert rep["face_width"] == pytest.approx(along.max() - along.min(), abs=2e-4)
+    assert _angle_diff_deg(np.degrees(phi[np.argmin(along)]), fr["from_at_deg"]) < 0.1
+    assert _angle_diff_deg(np.degrees(phi[np.argmax(along)]), fr["to_at_deg"]) < 0.1
+
+    # the pressure angle: between the face normal and the contact point's velocity v = omega x r, the rocker
+    # turning about its pivot (the origin) at omega = da/dt (a: the face's normal angle in the fixed frame;
+    # per unit cam speed, a central difference). Where the rocker rests (omega = 0) the velocity has no
+    # direction; the moving positions come arbitrarily close to those, so the range is the same.
+    h = phi[1] - phi[0]
+    omega = (np.roll(a, -1) - np.roll(a, 1)) / (2 * h)
+    v = omega[:, None] * np.stack([-X[:, 1], X[:, 0]], axis=1)
+    speed = np.linalg.norm(v, axis=1)
+    moving = np.abs(omega) > 1e-9
+    cosg = np.abs(np.sum(v * m, axis=1))[moving] / speed[moving]
+    gamma = np.degrees(np.arccos(np.clip(cosg, 0.0, 1.0)))
+    pa = rep["pressure_angle"]
+    assert pa["min"] == pytest.approx(gamma.min(), abs=1e-3)
+    assert pa["max"] == pytest.approx(gamma.max(), abs=1e-3)
