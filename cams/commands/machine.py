@@ -63,7 +63,7 @@ def print_forces(rep: dict) -> None:
     """Readable summary of a forces report (as from ``MachineForces.to_dict``)."""
     import math
 
-    from cams.camforces import jump_text
+    from cams.camforces import force_text, jump_text
 
     lk = rep.get("linkage")
     if lk is not None:
@@ -98,7 +98,7 @@ def print_forces(rep: dict) -> None:
             return where
 
         def g(x):
-            return "UNBOUNDED" if x is None or x == float("inf") else f"{x:.4g}"
+            return force_text(x, 4)
 
         print(f"  cam forces at {cam['rpm']:.4g} rpm: spring rate {sp['rate']:.4g}, preload {sp['preload']:.4g}; "
               f"max contact force {g(cam['max_contact_force'])} N at {at('max_contact_at')}; "

@@ -55,21 +55,13 @@ def print_summary(rep: dict) -> None:
         print(f"  note: {n}")
 
 
-def _g(x) -> str:
-    """A force for the text: ``inf`` (unbounded) and None (from JSON) as words."""
-    if x is None or x == float("inf"):
-        return "UNBOUNDED"
-    if x == float("-inf"):
-        return "-UNBOUNDED"
-    return f"{x:.6g}"
-
-
 def print_cam_forces(fo: dict, indent: str = "  ") -> None:
     """The [dynamics] part of a report (from ``DesignForces.to_dict``): spring, contact force, torque, jump speed.
 
     With rigid impacts the unbounded values are said so, the finite ones
     between the impacts follow, and the jump speed is "any speed".
     """
+    from cams.camforces import force_text as _g
     from cams.camforces import jump_text
 
     sp = fo["spring"]
