@@ -341,6 +341,17 @@ def _check_tolerance(tol, field: str) -> float:
     return float(tol)
 
 
+def resolve_tolerance(from_file, override=None) -> tuple[float, str]:
+    """The chord tolerance to use and the field a bad one is reported under.
+
+    ``override`` (the command line's ``--tolerance``) wins over ``from_file``
+    (``[profile] tolerance``). Returns ``(tolerance, field)``; raises
+    :class:`InputError` naming that field unless the tolerance is a number > 0.
+    """
+    field = "profile.tolerance" if override is None else "--tolerance"
+    return _check_tolerance(from_file if override is None else override, field), field
+
+
 def profile_options(design: CamDesign, *, tolerance: float | None = None) -> ProfileOptions:
     """Read ``[profile]`` (tolerance, min_curvature_radius) and ``[cam]`` bore_radius.
 
@@ -364,9 +375,8 @@ def profile_options(design: CamDesign, *, tolerance: float | None = None) -> Pro
     if unknown:
         raise InputError("profile", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(PROFILE_KEYS)}")
     cam = raw.get("cam", {}) if isinstance(raw.get("cam", {}), dict) else {}
-    tol = pt.get("tolerance", DEFAULT_TOLERANCE) if tolerance is None else tolerance
-    _check_tolerance(tol, "--tolerance" if tolerance is not None else "profile.tolerance")
-    return ProfileOptions(float(tol), pt.get("min_curvature_radius"), cam.get("bore_radius"))
+    tol, _ = resolve_tolerance(pt.get("tolerance", DEFAULT_TOLERANCE), tolerance)
+    return ProfileOptions(tol, pt.get("min_curvature_radius"), cam.get("bore_radius"))
 
 
 @dataclass(frozen=True, eq=False)

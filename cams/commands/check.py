@@ -34,12 +34,10 @@ def print_checks(rep: dict) -> None:
 
 def _check_flat(args, design):
     from cams.flatface import check_flat_face, flat_face_profile, size_flat_face
-    from cams.profile import _check_tolerance
+    from cams.profile import resolve_tolerance
 
     refuse_method(args.method)
-    tol = design.tolerance if args.tolerance is None else args.tolerance
-    field = "profile.tolerance" if args.tolerance is None else "--tolerance"
-    _check_tolerance(tol, field)  # bad options fail before sizing
+    tol, field = resolve_tolerance(design.tolerance, args.tolerance)  # bad options fail before sizing
     solution = size_flat_face(design)
     return check_flat_face(design, solution, flat_face_profile(design, solution.R0, tolerance=tol, field=field))
 

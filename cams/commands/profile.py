@@ -36,12 +36,10 @@ def _write(args, prof, bore) -> list[str]:
 
 def _run_flat(args, design) -> int:
     from cams.flatface import flat_face_profile, size_flat_face
-    from cams.profile import _check_tolerance, default_bore_radius
+    from cams.profile import default_bore_radius, resolve_tolerance
 
     refuse_method(args.method)
-    tol = design.tolerance if args.tolerance is None else args.tolerance
-    field = "profile.tolerance" if args.tolerance is None else "--tolerance"
-    _check_tolerance(tol, field)
+    tol, field = resolve_tolerance(design.tolerance, args.tolerance)
     _check_outputs(args)  # fail before sizing, and before writing any file
     sol = size_flat_face(design)
     prof = flat_face_profile(design, sol.R0, tolerance=tol, field=field)
