@@ -1459,7 +1459,7 @@ class _Picked:
         return v[self._o] if isinstance(v, np.ndarray) and v.shape == self._cf.phi.shape else v
 
 
-def machine_forces(spec, centre=None) -> MachineForces:
+def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
     """Forces of a machine file's machine (:class:`cams.machine.MachineSpec`).
 
     Parameters
@@ -1469,6 +1469,10 @@ def machine_forces(spec, centre=None) -> MachineForces:
         ``spec.cam.extra["dynamics"]`` (from ``[dynamics]``) the follower's.
     centre : array_like or None
         The cam's centre (``SolveResult.centre``); needed for the cam's forces.
+    found : cams.machine.MachineResult, optional
+        What :func:`cams.machine.design_machine` found for ``spec``: its
+        windows, cam timing and (without ``centre``) the cam's centre are
+        used, not found again.
 
     Returns
     -------
@@ -1487,7 +1491,11 @@ def machine_forces(spec, centre=None) -> MachineForces:
 
     notes = []
     lk = fw = cf = spring = jump = None
-    win = windows(spec.linkage, spec.cutting)
+    if found is not None:
+        win = found.windows
+        centre = found.solve.centre if centre is None else centre
+    else:
+        win = windows(spec.linkage, spec.cutting)
     forces = spec.extra.get("forces")
     if forces is not None:
         fs, opt = forces
@@ -1524,5 +1532,7 @@ def machine_forces(spec, centre=None) -> MachineForces:
             note = impact_note(cf)
             if note:
                 notes.append(note)
-    timing = place_cam(win, spec.cam.program, spec.drive, spec.timing) if cf is not None else None
+    timing = None
+    if cf is not None:
+        timing = found.timing if found is not None else place_cam(win, spec.cam.program, spec.drive, spec.timing)
     return MachineForces(lk, fw, cf, spring, jump, tuple(notes), timing)

@@ -146,7 +146,7 @@ def run(args) -> int:
     if args.forces:
         from cams.kinetostatics import machine_forces
 
-        forces = machine_forces(spec, res.solve.centre)
+        forces = machine_forces(spec, found=res)  # the windows and timing design_machine found
         rep["forces"] = forces.to_dict()
     if args.plot is not None:
         from cams.files import ensure_folder

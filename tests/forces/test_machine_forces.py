@@ -219,3 +219,33 @@ def test_hodographs_draw_the_reactions():
             assert np.allclose(marks[0].get_xydata()[0], [np.real(R[0]), np.imag(R[0])])
     finally:
         plt.close(fig)
+
+
+def test_forces_reuse_what_the_machine_design_found(monkeypatch):
+    """Given design_machine's result, machine_forces finds neither the machine's windows nor the cam's timing
+    again (a resistance load still finds its own window: its approach and overrun are its own), and gives the
+    same forces as when it finds them itself."""
+    import cams.machine as machine_mod
+    from cams.kinetostatics import machine_forces
+    from cams.machine import design_machine
+    from cams.machinefile import load_machine
+
+    spec = load_machine(DATA)
+    res = design_machine(spec)
+    calls = {"windows": 0, "place_cam": 0}
+    for name in calls:
+        real = getattr(machine_mod, name)
+
+        def counted(*a, _real=real, _name=name, **k):
+            calls[_name] += 1
+            return _real(*a, **k)
+
+        monkeypatch.setattr(machine_mod, name, counted)
+    alone = machine_forces(spec, res.solve.centre)
+    by_itself = dict(calls)
+    reused = machine_forces(spec, found=res)
+    again = {k: calls[k] - by_itself[k] for k in calls}
+    assert again["place_cam"] == 0 and by_itself["place_cam"] == 1
+    assert again["windows"] == by_itself["windows"] - 1
+    assert np.array_equal(reused.linkage.balancing_moment, alone.linkage.balancing_moment)
+    assert reused.to_dict() == alone.to_dict()
