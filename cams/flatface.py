@@ -569,9 +569,13 @@ def min_base_radius_oscillating(program: Program, *, centre_distance: float, fac
         raise _cusp_error(program, cusps)
 
     def margin(R0):
-        cam = oscillating_flat_face(program, centre_distance=L, base_radius=R0, face_offset=f,
-                                    rise_sense=rise_sense, cam_sense=eps, samples=64)
-        return cam.min_rho - rmin, cam.min_rho_at
+        # the smallest radius of curvature at R0, as oscillating_flat_face finds it, without building the profile
+        a0 = _oscillating_setup(program, L, R0, f, rise_sense)
+        cusps = _oscillating_cusps(program, L, rise_sense, eps, a0)
+        if cusps:
+            return -np.inf, cusps[0][0]
+        lo, at = _phase_min(_oscillating_parts(program, L, f, rise_sense, eps, a0)[0], program)
+        return lo - rmin, at
 
     # the grid minimum is at least the true one: the first R0 admissible on the grid is where to start
     for k, coarse in _oscillating_scan(program, L, f, rise_sense, eps, grid):
