@@ -250,3 +250,23 @@ def test_second_load_is_named_by_its_index():
     d["forces"]["loads"].append({"kind": "resistance", "body": "tool", "force": 5.0, "approach": 2.0})
     e = refused(d)
     assert e.field == "forces.loads[1].approach"
+
+
+def test_bore_figure_against_the_pitch_curve():
+    """The profile's smallest radius the bore check prints, against the mechanism: the working profile's nearest
+    point to the cam centre lies on the radius through the pitch curve's nearest point, one roller radius in, so
+    min |work| = min |pitch| - r, the pitch curve by kinematic inversion from the motion program on a dense grid.
+    The check measures the exported polyline, whose chords lie inside the curve by at most the chord tolerance."""
+    d = raw(SLOTTING)
+    d["cam"] = {"bore_radius": 10.0}
+    res = design_machine(machine_from_dict(d))
+    design, O = res.solve.design, res.solve.centre
+    f = design.follower
+    phi = np.linspace(0.0, 2 * np.pi, 200_001)
+    s = design.program.evaluate(phi).s
+    th = f.sense * s                                  # the rocker's angle from the near dwell (pivot at the origin)
+    A = f.arm * np.stack([np.cos(th), np.sin(th)], axis=-1)
+    pitch_radius = np.hypot(A[:, 0] - O[0], A[:, 1] - O[1])   # a rotation about O keeps the distance
+    expected = pitch_radius.min() - f.roller_radius
+    tol = 1e-3  # the default chord tolerance, mm
+    assert expected - tol <= res.bore["min_work_radius"] <= expected + 1e-9 * f.arm
