@@ -36,3 +36,13 @@ def rocker_dict(**over) -> dict:
 @pytest.fixture
 def examples_dir() -> Path:
     return EXAMPLES
+
+
+@pytest.fixture
+def linear_feed(tmp_path):
+    """examples/slotting_feed_cam.toml with its parabolic rise made linear: velocity jumps (rigid impacts)."""
+    text = (EXAMPLES / "slotting_feed_cam.toml").read_text(encoding="utf-8")
+    assert 'law = "parabolic"' in text
+    f = tmp_path / "linear_feed.toml"
+    f.write_text(text.replace('law = "parabolic"', 'law = "linear"', 1), encoding="utf-8")
+    return f

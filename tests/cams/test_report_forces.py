@@ -16,15 +16,6 @@ def forces_page(cam) -> dict:
     return dict(rows)
 
 
-@pytest.fixture
-def linear_feed(tmp_path):
-    text = FEED.read_text(encoding="utf-8")
-    assert 'law = "parabolic"' in text
-    f = tmp_path / "linear_feed.toml"
-    f.write_text(text.replace('law = "parabolic"', 'law = "linear"', 1), encoding="utf-8")
-    return f
-
-
 def test_linear_law_forces_are_unbounded_not_inf(linear_feed):
     cam = Cam.from_file(linear_feed)
     page = forces_page(cam)

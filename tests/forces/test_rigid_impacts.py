@@ -27,15 +27,6 @@ def _strict(text: str):
     return json.loads(text, parse_constant=refuse)
 
 
-@pytest.fixture
-def linear_feed(tmp_path):
-    text = FEED.read_text(encoding="utf-8")
-    assert 'law = "parabolic"' in text
-    f = tmp_path / "linear_feed.toml"
-    f.write_text(text.replace('law = "parabolic"', 'law = "linear"', 1), encoding="utf-8")
-    return f
-
-
 def test_linear_rise_has_unbounded_force_and_loses_contact(linear_feed):
     design = load_design(linear_feed)
     imps = rigid_impacts(design)
