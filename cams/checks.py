@@ -111,8 +111,25 @@ def _finite(x):
     return None if x is None or not np.isfinite(x) else float(x)
 
 
+class ChecksMixin:
+    """``passed`` and lookup by name for a report holding ``checks`` (a tuple of :class:`Check`)."""
+
+    checks: tuple
+
+    @property
+    def passed(self) -> bool:
+        """True when every check passed."""
+        return all(c.passed for c in self.checks)
+
+    def __getitem__(self, name: str) -> Check:
+        for c in self.checks:
+            if c.name == name:
+                return c
+        raise KeyError(name)
+
+
 @dataclass(frozen=True, eq=False)
-class CheckReport:
+class CheckReport(ChecksMixin):
     """The checks of one profile.
 
     Attributes
@@ -139,17 +156,6 @@ class CheckReport:
     recommended_roller_radius: float
     bore_radius: float
     extra: dict = field(default_factory=dict, compare=False)
-
-    @property
-    def passed(self) -> bool:
-        """True when every check passed."""
-        return all(c.passed for c in self.checks)
-
-    def __getitem__(self, name: str) -> Check:
-        for c in self.checks:
-            if c.name == name:
-                return c
-        raise KeyError(name)
 
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the design's unit, angles in degrees."""

@@ -60,6 +60,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from cams.checks import ChecksMixin
 from laws.errors import InputError
 from laws.program import Program
 
@@ -947,7 +948,7 @@ def size_flat_face(design) -> FlatFaceSolution:
 
 
 @dataclass(frozen=True, eq=False)
-class FlatCheckReport:
+class FlatCheckReport(ChecksMixin):
     """The checks of a flat-face cam: convexity, a valid closed profile, the bore.
 
     Attributes
@@ -967,17 +968,6 @@ class FlatCheckReport:
     profile: FlatFaceProfile
     bore_radius: float
     min_radius: float
-
-    @property
-    def passed(self) -> bool:
-        """True when every check passed."""
-        return all(c.passed for c in self.checks)
-
-    def __getitem__(self, name: str):
-        for c in self.checks:
-            if c.name == name:
-                return c
-        raise KeyError(name)
 
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the design's unit, angles in degrees."""
