@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from cams.follower import Follower, Rocker, Translating
-from laws.errors import InputError, check_option
+from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
 __all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES"]
@@ -53,8 +53,11 @@ class Limits:
             if v is None:
                 continue
             if not (np.isfinite(v) and 0 < v < np.pi / 2):
-                raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {np.degrees(v)!r}")
+                raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {show_value(np.degrees(v))}")
         check_option("limits.closure", self.closure, CLOSURES)
+        if self.closure == "force" and self.return_pressure_angle is not None:
+            raise InputError("limits.return_pressure_angle", 'applies to form closure (closure = "form"); under force '
+                             "closure the spring drives the return and its pressure angle is not limited: remove it")
         if not (np.isfinite(self.safety_factor) and self.safety_factor >= 1):
             raise InputError("limits.safety_factor", f"K_C must be >= 1, got {self.safety_factor!r}")
         for name in ("centre_distance", "min_base_radius"):

@@ -212,10 +212,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     for name, v in (("pressure_angle", pa), ("return_pressure_angle", rpa)):
         if v is not None and not 0 < v < 90:
             raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {v!r}")
-    closure = check_option("limits.closure", li.get("closure", "force"), ("force", "form"))
-    if closure == "force" and rpa is not None:
-        raise InputError("limits.return_pressure_angle", 'applies to form closure (closure = "form"); under force '
-                         "closure the spring drives the return and its pressure angle is not limited: remove it")
+    closure = li.get("closure", "force")  # checked with the return limit by Limits
     limits = Limits(
         pressure_angle=np.radians(pa),
         return_pressure_angle=None if rpa is None else np.radians(rpa),

@@ -193,3 +193,13 @@ def test_journal_radius_refused_for_a_translating_follower_in_design_files():
     assert str(e.value).startswith("dynamics.journal_radius: applies to a rocker's pivot journal")
     d = design_from_dict(rocker_dict(dynamics={"mass": 0.003, "journal_radius": 5.0}))
     assert "dynamics" in d.extra
+
+
+def test_limits_refuse_a_return_limit_under_force_closure_in_the_api():
+    """The rule lives in Limits, so designs built in Python obey it as files do."""
+    from cams.design import Limits
+
+    with pytest.raises(InputError) as e:
+        Limits(np.radians(45), return_pressure_angle=np.radians(40))
+    assert str(e.value).startswith("limits.return_pressure_angle: applies to form closure")
+    assert Limits(np.radians(45), return_pressure_angle=np.radians(40), closure="form").return_limit == pytest.approx(np.radians(40))
