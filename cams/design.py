@@ -90,6 +90,13 @@ class CamDesign:
     method : {"exact", "convex", "exhaustive"}
     samples : int
         Steps per phase for the sampled methods (N + 1 positions per phase).
+    base_radius : float or None
+        A chosen R0 (length): the cam is checked, not sized. Its centre is
+        fixed with ``limits.centre_distance`` (rocker) or ``follower.offset``
+        (translating); see :meth:`chosen_centres`.
+    centre : (float, float) or None
+        A chosen cam centre in the follower's fixed frame (length,
+        :mod:`cams.follower`): the cam is checked, not sized.
     """
 
     follower: Follower
@@ -100,12 +107,15 @@ class CamDesign:
     name: str = "cam"
     method: str = "exact"
     samples: int = 360
+    base_radius: float | None = None
+    centre: tuple[float, float] | None = None
     extra: dict = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self):
         if self.cam_sense not in (1, -1):
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         check_option("solve.method", self.method, METHODS)
+        self._check_chosen()
         if not (isinstance(self.samples, (int, np.integer)) and self.samples >= 2):
             raise InputError("solve.samples", f"must be an integer >= 2, got {self.samples!r}")
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
@@ -129,6 +139,98 @@ class CamDesign:
     def scale(self) -> float:
         """Characteristic length for relative tolerances (arm or stroke)."""
         return self.follower.scale
+
+    @property
+    def chosen(self) -> bool:
+        """True when the designer chose the cam (``base_radius`` or ``centre``): it is checked, not sized."""
+        return self.base_radius is not None or self.centre is not None
+
+    def _check_chosen(self) -> None:
+        """Refuse chosen-cam keys that are incomplete, contradictory or admit no centre (one line each)."""
+        if not self.chosen:
+            return
+        f, lim = self.follower, self.limits
+        rocker = isinstance(f, Rocker)
+        key = "cam.centre" if self.centre is not None else "cam.base_radius"
+        if self.base_radius is not None and self.centre is not None:
+            raise InputError("cam.centre", "give either cam.centre or cam.base_radius (with "
+                             f"{'limits.centre_distance' if rocker else 'follower.offset'}), not both")
+        if lim.min_base_radius is not None:
+            raise InputError(key, "fixes the cam: a floor on R0 (limits.min_base_radius) has nothing to size; "
+                             "remove one of them")
+        if self.extra.get("objective", "R0") != "R0":
+            raise InputError("solve.objective", f"nothing is minimized for a cam chosen by {key}; remove it")
+        if self.centre is not None:
+            c = self.centre
+            if len(c) != 2 or not all(isinstance(v, (int, float, np.floating)) and not isinstance(v, bool)
+                                      and np.isfinite(v) for v in c):
+                raise InputError("cam.centre", f"must be two numbers [x, y] (mm), got {list(c)!r}")
+            if rocker and lim.centre_distance is not None:
+                raise InputError("cam.centre", "fixes L already: remove limits.centre_distance")
+            if not rocker and f.offset is not None:
+                raise InputError("cam.centre", "fixes the offset already (e = -x): remove follower.offset")
+            c = np.asarray(c, float)
+            if np.linalg.norm(c - f.position(0.0)) <= 1e-12 * self.scale:
+                raise InputError("cam.centre", "is the roller centre at the near dwell (R0 = 0); the cam centre "
+                                 "must lie away from it")
+            if rocker and np.linalg.norm(c) <= 1e-12 * self.scale:
+                raise InputError("cam.centre", "is the rocker's pivot (L = 0)")
+            return
+        R0 = self.base_radius
+        if isinstance(R0, bool) or not isinstance(R0, (int, float, np.floating)) or not (np.isfinite(R0) and R0 > 0):
+            raise InputError("cam.base_radius", f"must be a number > 0 (mm), got {R0!r}")
+        if rocker:
+            L = lim.centre_distance
+            if L is None:
+                raise InputError("cam.base_radius", "a rocker's cam centre needs limits.centre_distance (L) too, "
+                                 "or give cam.centre = [x, y] instead")
+            lo, hi = abs(L - f.arm), L + f.arm
+            if not lo * (1 - 1e-12) <= R0 <= hi * (1 + 1e-12):
+                raise InputError("cam.base_radius", f"R0 = {R0:g} mm admits no cam centre at L = {L:g} mm with "
+                                 f"arm {f.arm:g} mm: R0 must lie in [{lo:g}, {hi:g}] mm (|L - arm| to L + arm)")
+        else:
+            if f.offset is None:
+                raise InputError("cam.base_radius", "a translating follower's cam centre needs follower.offset too "
+                                 "(0 for a centric follower), or give cam.centre = [x, y] instead")
+            if not R0 > abs(f.offset):
+                raise InputError("cam.base_radius", f"R0 = {R0:g} mm must be larger than |follower.offset| = "
+                                 f"{abs(f.offset):g} mm (the cam centre lies on the follower's axis offset by e)")
+
+    def chosen_centres(self) -> tuple[np.ndarray, ...]:
+        """The cam centres the chosen keys admit, in the follower's fixed frame (length).
+
+        Returns
+        -------
+        tuple of ndarray, shape (2,)
+            ``(centre,)`` for ``cam.centre``; for ``base_radius`` the points at
+            distance R0 from the roller centre A0 at the near dwell and at
+            distance L from the pivot (rocker: two centres mirrored about the
+            line pivot-A0, one where the circles touch), or on the follower's
+            axis offset by ``e`` (translating: ``x = -e``, ``y = -sqrt(R0^2 -
+            e^2)``, the centre on the -Y side of the roller, which the rise
+            carries away from it: on the +Y side the cam would have to pull
+            the follower up); empty when not chosen.
+        """
+        if self.centre is not None:
+            return (np.asarray(self.centre, float),)
+        if self.base_radius is None:
+            return ()
+        f, R0 = self.follower, float(self.base_radius)
+        A0 = f.position(0.0)
+        if isinstance(f, Rocker):
+            # crossings of |O - pivot| = L and |O - A0| = R0 (pivot at the origin, A0 on +X)
+            L, d = float(self.limits.centre_distance), float(np.linalg.norm(A0))
+            a = (L**2 - R0**2 + d**2) / (2 * d)
+            h = np.sqrt(max(L**2 - a**2, 0.0))
+            u = A0 / d
+            v = np.array([-u[1], u[0]])
+            base = a * u
+        else:
+            e = float(f.offset)
+            return (np.array([-e, -np.sqrt(R0**2 - e**2)]) + A0,)
+        if h <= 1e-12 * self.scale:
+            return (base,)
+        return (base + h * v, base - h * v)
 
     def constrained_phases(self) -> list[tuple[int, float]]:
         """Indices of the phases whose pressure angle is limited, with their limits (rad)."""
@@ -211,10 +313,9 @@ class FlatFaceDesign:
                 continue
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not (np.isfinite(v) and v > 0):
                 raise InputError(fld, f"must be a number > 0, got {v!r}")
-        floor = self.min_base_radius
-        if self.base_radius is not None and floor is not None and self.base_radius < floor:
-            raise InputError("cam.base_radius", f"{self.base_radius:g} is below limits.min_base_radius = "
-                             f"{self.min_base_radius:g}")
+        if self.base_radius is not None and self.min_base_radius is not None:  # as for a roller follower
+            raise InputError("cam.base_radius", "fixes the cam: a floor on R0 (limits.min_base_radius) has nothing "
+                             "to size; remove one of them")
 
     @property
     def scale(self) -> float:

@@ -6,7 +6,9 @@ Schema (see ``examples/``)::
     units = "mm"  (the only length unit)
     [follower]   kind, face ("roller" default | "flat"), arm, swing (rocker) | stroke, offset
                  (translating), roller_radius, rise_direction ("cw" | "ccw", rocker)
-    [cam]        rotation ("cw" | "ccw"), rpm (optional), bore_radius (optional)
+    [cam]        rotation ("cw" | "ccw"), rpm (optional), bore_radius (optional),
+                 base_radius (a chosen R0, with follower.offset or limits.centre_distance)
+                 or centre ([x, y] in the follower's fixed frame): a chosen cam, checked not sized
     [[motion]]   phase ("rise" | "dwell" | "return"), law, angle (degrees),
                  height (optional, part of the lift); one dwell may omit angle
     [limits]     pressure_angle, return_pressure_angle, closure ("force" | "form"),
@@ -59,7 +61,7 @@ __all__ = ["load_design", "design_from_dict"]
 _KEYS = {
     "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics"},
     "follower": {"kind", "face", "arm", "swing", "stroke", "offset", "roller_radius", "rise_direction"},
-    "cam": {"rotation", "rpm", "bore_radius"},
+    "cam": {"rotation", "rpm", "bore_radius", "base_radius", "centre"},
     "motion": {"phase", "law", "angle", "height"},
     "limits": {"pressure_angle", "return_pressure_angle", "closure", "safety_factor",
                "centre_distance", "min_base_radius"},
@@ -94,8 +96,6 @@ _ONLY_FLAT = {
     "follower.centre_distance": "applies to flat-faced rockers (face = \"flat\"); a roller rocker's fixed centre "
                                 "distance is limits.centre_distance",
     "follower.face_offset": "applies to flat-faced rockers (face = \"flat\")",
-    "cam.base_radius": "applies to flat-faced followers (face = \"flat\"); a roller cam's R0 is solved "
-                       "(a floor: limits.min_base_radius)",
     "limits.min_radius": "applies to flat-faced followers (face = \"flat\"); for a roller cam use [profile] "
                          "min_curvature_radius",
 }
@@ -202,6 +202,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     _check_keys(cam, "cam", "cam")
     cam_sense = sense_of("cam.rotation", cam.get("rotation", "ccw"))
     rpm = _num(cam, "rpm", "cam.rpm", required=False)
+    base_radius, centre = _chosen(cam)
     program = _program(d, kind, lift)
 
     li = _table(d, "limits")
@@ -234,7 +235,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     name = _name(d)
     design = CamDesign(
         follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=name,
-        method=so.get("method", "exact"), samples=samples,
+        method=so.get("method", "exact"), samples=samples, base_radius=base_radius, centre=centre,
         extra={"objective": objective, "raw": d,
                **_dynamics(d, kind)},
     )
@@ -243,6 +244,21 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
 
     profile_options(design)
     return design
+
+
+def _chosen(cam: dict) -> tuple[float | None, tuple[float, float] | None]:
+    """``[cam] base_radius`` and ``[cam] centre`` (a chosen cam, checked by :class:`CamDesign`), or None."""
+    base_radius = _num(cam, "base_radius", "cam.base_radius", required=False)
+    centre = cam.get("centre")
+    if centre is None:
+        return base_radius, None
+    if not isinstance(centre, list) or len(centre) != 2:
+        raise InputError("cam.centre", f"must be [x, y] in mm (the follower's fixed frame), got {centre!r}")
+    xy = tuple(_num({"v": v}, "v", f"cam.centre[{i}]") for i, v in enumerate(centre))
+    lo, hi = LENGTH_RANGE
+    if not max(abs(v) for v in xy) <= hi:
+        raise InputError("cam.centre", f"{list(xy)!r} mm is outside the lengths a design may use (up to {hi:g} mm)")
+    return base_radius, xy
 
 
 def _name(d: dict) -> str:

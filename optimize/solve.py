@@ -9,7 +9,9 @@
   misses the zone, :class:`InfeasibleError` gives the admissible range of L;
 * a constructive floor on R0 larger than the minimum: the centre on the circle
   of radius R0_floor about A0 with the largest margin to the zone's edges;
-* a fixed offset (translating): the nearest point on the offset's line.
+* a fixed offset (translating): the nearest point on the offset's line;
+* a cam the designer chose (``[cam] base_radius`` with L or the offset, or
+  ``[cam] centre``): nothing is sized, that cam is checked (mode ``"chosen"``).
 
 Every result is verified by :func:`cams.pressure.check_pressure`, which
 recomputes the pressure angle over the whole cycle by kinematic inversion
@@ -29,7 +31,7 @@ from cams.pressure import PressureReport, check_pressure
 from laws.errors import InfeasibleError, InputError, check_option
 from optimize.result import Binding, CentreSolution
 
-__all__ = ["SolveResult", "solve", "nearest", "admissible_L_range"]
+__all__ = ["SolveResult", "solve", "nearest", "admissible_L_range", "excess", "pressure_failures"]
 
 OBJECTIVES = ("R0", "L")
 
@@ -52,7 +54,9 @@ class SolveResult:
         lies on the +X side (translating only).
     mode : str
         ``"min_R0"``, ``"min_L"``, ``"fixed_L"``, ``"fixed_L_and_R0"``,
-        ``"floor_R0"`` or ``"fixed_offset"``.
+        ``"floor_R0"``, ``"fixed_offset"`` or ``"chosen"`` (the designer's cam,
+        ``[cam] base_radius`` or ``centre``: checked, not sized; ``method`` is
+        then None).
     pressure : PressureReport
         The independent check of the pressure angle.
     margin : float
@@ -65,7 +69,7 @@ class SolveResult:
     R0: float
     L: float | None
     offset: float | None
-    method: str
+    method: str | None
     samples: int | None
     mode: str
     binding: tuple[Binding, ...]
@@ -242,24 +246,123 @@ def admissible_L_range(design: CamDesign) -> tuple[float, float]:
     return lo, _lmax(design)
 
 
-def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0") -> SolveResult:
-    """Size the cam of ``design`` and verify it.
+#: Two candidate centres whose largest pressure-angle excesses differ by less than this (radians) are a tie.
+TIE = 1e-9
+
+
+def excess(pressure: PressureReport) -> float:
+    """Largest excess of the pressure angle over its limit (radians; <= 0 when every limit holds).
+
+    The rise against ``rise_limit``; the return against ``return_limit``
+    when it is limited (form closure). ``-inf`` when no phase is limited.
+    """
+    out = [-np.inf]
+    if pressure.rise is not None:
+        out.append(pressure.rise - pressure.rise_limit)
+    if pressure.ret is not None and pressure.return_limit is not None:
+        out.append(pressure.ret - pressure.return_limit)
+    return float(max(out))
+
+
+def pressure_failures(pressure: PressureReport) -> list[str]:
+    """One line per limited phase kind whose pressure angle exceeds its limit: by how much and where (degrees)."""
+    out = []
+    for kind, g, at, lim in (("rise", pressure.rise, pressure.rise_at, pressure.rise_limit),
+                             ("return", pressure.ret, pressure.ret_at, pressure.return_limit)):
+        if g is None or lim is None or not g > lim + 1e-7:
+            continue
+        d = np.degrees
+        out.append(f"{kind} pressure angle {d(g):.4f} deg exceeds the limit {d(lim):.4f} deg by {d(g - lim):.4f} deg "
+                   f"at cam angle {d(at) % 360:.4f} deg")
+    return out
+
+
+def _solve_chosen(design: CamDesign) -> SolveResult:
+    """Check the cam the designer chose (``design.base_radius`` or ``design.centre``): nothing is sized.
+
+    Where R0 with L (rocker) admits two centres, the one whose largest pressure-angle excess over its limit
+    (:func:`excess`, from the independent check) is smaller is taken and a
+    note names both; a tie (within :data:`TIE` radians) is refused, naming both.
+    """
+    f = design.follower
+    t0 = time.perf_counter()
+    cands = design.chosen_centres()
+    checked = [(c, check_pressure(design, c)) for c in cands]
+    notes: list[str] = []
+    centre, pressure = checked[0]
+    if len(checked) == 2:
+        (c1, p1), (c2, p2) = checked
+        e1, e2 = excess(p1), excess(p2)
+        other = "limits.centre_distance"
+        both = (f"({c1[0]:.6g}, {c1[1]:.6g}) mm (largest pressure angle {np.degrees(e1):+.4f} deg from its limit) "
+                f"and ({c2[0]:.6g}, {c2[1]:.6g}) mm ({np.degrees(e2):+.4f} deg)")
+        if abs(e1 - e2) <= TIE:
+            raise InputError("cam.base_radius", f"with {other} admits two cam centres, equally good: {both}; "
+                             "give cam.centre = [x, y] instead")
+        centre, pressure = checked[0] if e1 < e2 else checked[1]
+        notes.append(f"cam.base_radius with {other} admits two cam centres, {both}: the one with the smaller "
+                     f"pressure angle against its limit is taken, ({centre[0]:.6g}, {centre[1]:.6g}) mm; give "
+                     "cam.centre to take the other")
+    from optimize.circle import violation_function
+
+    margin = -violation_function(design, None)(centre)
+    A0 = f.position(0.0)
+    R0 = float(np.linalg.norm(centre - A0))
+    notes += pressure_failures(pressure)
+    if R0 <= f.roller_radius:
+        notes.append(f"not buildable: R0 = {R0:.6g} mm is not larger than the roller radius {f.roller_radius:g} mm "
+                     "(the working profile would have no base circle); choose a larger cam or a smaller roller")
+    return SolveResult(
+        design=design,
+        centre=np.asarray(centre, float),
+        R0=R0,
+        L=float(np.linalg.norm(centre - f.pivot)) if isinstance(f, Rocker) else None,
+        offset=_offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
+        method=None,
+        samples=None,
+        mode="chosen",
+        binding=(),
+        error_bound=None,
+        seconds=time.perf_counter() - t0,
+        pressure=pressure,
+        margin=float(margin),
+        notes=tuple(notes),
+    )
+
+
+def _solve_flat(design, method: str | None, objective: str | None):
+    """A flat face's cam (:func:`cams.flatface.size_flat_face`); it has no zone solver nor objective to choose."""
+    if method is not None:
+        raise InputError("method", "does not apply to a flat-faced follower: its base radius follows from "
+                         "convexity directly")
+    if objective not in (None, "R0"):
+        raise InputError("objective", "a flat-faced follower's cam is sized by R0 (convexity); only 'R0'")
+    from cams.flatface import size_flat_face
+
+    return size_flat_face(design)
+
+
+def solve(design, *, method: str | None = None, objective: str | None = None):
+    """Size the cam of ``design`` and verify it: the one entry point for every follower.
 
     Parameters
     ----------
-    design : CamDesign
+    design : CamDesign or FlatFaceDesign
         Lengths in its unit, angles in radians; ``design.limits`` may fix the
         centre distance L (rocker) or a floor on R0, the follower a fixed
-        offset (translating).
+        offset (translating). A flat-faced follower's design is sized by
+        convexity (:func:`cams.flatface.size_flat_face`).
     method : {"exact", "convex", "exhaustive"}, optional
-        Overrides ``design.method``.
-    objective : {"R0", "L"}
+        Overrides ``design.method`` (roller followers; refused for a flat face).
+    objective : {"R0", "L"}, optional
         What to minimize when neither L nor a floor on R0 is fixed; ``"L"``
-        applies to rockers only.
+        applies to rockers only. Default: the design file's ``[solve]
+        objective`` (``design.extra["objective"]``), else ``"R0"``.
 
     Returns
     -------
-    SolveResult
+    SolveResult or cams.flatface.FlatFaceSolution
+        For a flat face, the latter (what ``cams solve`` prints for it); else
         The cam centre in the follower's fixed frame (:mod:`cams.follower`),
         ``R0 = |O - A0|`` (A0 the roller centre at the near dwell), ``L = |O|``
         for a rocker (pivot at the origin), the offset ``e = -x_O`` for a
@@ -277,9 +380,18 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
         An unknown method or objective; ``objective="L"`` for a translating
         follower.
     """
+    if getattr(design, "face", "roller") == "flat":
+        return _solve_flat(design, method, objective)
+    if objective is None:
+        objective = design.extra.get("objective", "R0")
     method = check_option("solve.method", method or design.method, METHODS)
     check_option("solve.objective", objective, OBJECTIVES)
     design = design.with_(method=method) if method != design.method else design
+    if design.chosen:
+        if objective != "R0":
+            raise InputError("solve.objective", "nothing is minimized for a chosen cam (cam.base_radius or "
+                             "cam.centre); only 'R0'")
+        return _solve_chosen(design)
     f = design.follower
     lim = design.limits
     A0 = f.position(0.0)

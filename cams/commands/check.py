@@ -7,7 +7,7 @@ import json
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
 
-__all__ = ["register", "print_checks"]
+__all__ = ["register", "print_checks", "failure_text"]
 
 
 def _fmt(x, unit: str) -> str:
@@ -18,13 +18,27 @@ def _fmt(x, unit: str) -> str:
     return f"{x:.4f} {unit}".rstrip()
 
 
+def _by(c: dict) -> str:
+    """How far a failed check's worst value is on the wrong side of its limit, with its unit ("" when unknown)."""
+    if c["passed"] or c["worst"] is None or c["limit"] is None:
+        return ""
+    return f": off by {_fmt(abs(c['worst'] - c['limit']), c['unit'])}"
+
+
+def failure_text(c: dict) -> str:
+    """One line for a failed check (from ``Check.to_dict``): its value, limit, where and by how much."""
+    at = "" if c["at_deg"] is None else f" at cam angle {c['at_deg']:.4f} deg"
+    lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'])})"
+    return f"check {c['name']} fails: {_fmt(c['worst'], c['unit'])}{at}{lim}{_by(c)}"
+
+
 def print_checks(rep: dict) -> None:
     """Readable table of a check report (as from ``CheckReport.to_dict``)."""
     print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, R0 = {rep['R0']:.6f} mm")
     for c in rep["checks"]:
         at = "" if c["at_deg"] is None else f" at {c['at_deg']:.4f} deg"
         lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'])})"
-        print(f"  {'pass' if c['passed'] else 'FAIL'}  {c['name']:<22} {_fmt(c['worst'], c['unit'])}{at}{lim}")
+        print(f"  {'pass' if c['passed'] else 'FAIL'}  {c['name']:<22} {_fmt(c['worst'], c['unit'])}{at}{lim}{_by(c)}")
     lr = rep.get("largest_roller_radius")
     if lr is not None:
         print(f"  roller radius {rep['roller_radius']:g} mm; largest without undercut {lr:.4f} mm, "
@@ -47,15 +61,29 @@ def run(args) -> int:
     from cams.designfile import load_design
 
     design = load_design(args.file)
+    notes: list[str] = []
     if is_flat(design):
         report = _check_flat(args, design)
+    elif design.chosen:  # the designer's cam: checked as it is, with how its centre was found
+        from cams.checks import check_solution
+        from cams.profile import profile_options
+        from optimize.solve import solve
+
+        opts = profile_options(design, tolerance=args.tolerance)  # bad options fail before anything else
+        result = solve(design, method=args.method)
+        report = check_solution(result, options=opts)
+        notes = [n for n in result.notes if not n.startswith(("rise pressure", "return pressure"))]
     else:
         report = check_design(design, tolerance=args.tolerance, method=args.method)
     rep = report.to_dict()
+    if notes:
+        rep["notes"] = notes
     if args.json:
         print(json.dumps(rep, indent=2))
     else:
         print_checks(rep)
+        for n in notes:
+            print(f"  note: {n}")
     return EXIT_OK if report.passed else EXIT_CHECK_FAILED
 
 

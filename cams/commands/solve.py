@@ -32,7 +32,10 @@ def print_summary(rep: dict) -> None:
     """Short readable summary of a solve report (as from ``SolveResult.to_dict``)."""
     unit = "mm"
     f = length_format(max(abs(rep["R0"]), abs(rep["L"] or 0.0), abs(rep["offset"] or 0.0)))
-    print(f"{rep['name']}: {rep['follower']} follower, method {rep['method']}, {rep['mode']}")
+    if rep["mode"] == "chosen":
+        print(f"{rep['name']}: {rep['follower']} follower, the chosen cam (checked, not sized)")
+    else:
+        print(f"{rep['name']}: {rep['follower']} follower, method {rep['method']}, {rep['mode']}")
     print(f"  R0      = {rep['R0']:{f}} {unit}")
     if rep["L"] is not None:
         print(f"  L       = {rep['L']:{f}} {unit}")
@@ -46,8 +49,9 @@ def print_summary(rep: dict) -> None:
     if rep["binding"]:
         print("  binding: " + ", ".join(f"{b['line']} at {b['phi']:.4f} deg" for b in rep["binding"]))
     eb = rep["error_bound"]
-    print(f"  error bound: {'not stated by this method' if eb is None else f'{eb:.3g} {unit}'}; "
-          f"verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    bound = "" if rep["mode"] == "chosen" else \
+        f"error bound: {'not stated by this method' if eb is None else f'{eb:.3g} {unit}'}; "
+    print(f"  {bound}verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
     fo = rep.get("forces")
     if fo:
         print_cam_forces(fo)
@@ -139,6 +143,16 @@ def _run_flat(args, design) -> int:
     return EXIT_OK if result.verified else EXIT_CHECK_FAILED
 
 
+def _check_chosen(result, rep: dict) -> bool:
+    """A chosen cam is checked whole, as ``cams check`` does: its profile's failing checks as notes; True if none."""
+    from cams.checks import check_solution
+    from cams.commands.check import failure_text
+
+    report = check_solution(result)
+    rep["notes"] += [failure_text(c.to_dict()) for c in report.checks if not c.passed and not c.name.startswith("jamming")]
+    return report.passed
+
+
 def run(args) -> int:
     from cams.designfile import load_design
     from optimize.solve import solve
@@ -163,6 +177,8 @@ def run(args) -> int:
             note = impact_note(df.forces)
             if note:
                 rep["notes"].append(note)
+    if result.mode == "chosen":
+        ok = _check_chosen(result, rep) and ok
     rep["forces"] = forces
     if args.json:
         if forces is not None:

@@ -190,7 +190,10 @@ def test_check_fails_on_a_bore_too_large(tmp_path, capsys):
     ({"follower": {"swing": 10.0}}, "follower.swing", "applies to rocker followers"),
     ({"follower": {"colour": "red"}}, "follower", "unknown key(s) colour"),
     ({"cam": {"base_radius": -1.0}}, "cam.base_radius", "must be a number > 0"),
-    ({"cam": {"base_radius": 20.0}, "limits": {"min_base_radius": 30.0}}, "cam.base_radius", "below"),
+    ({"cam": {"base_radius": 20.0}, "limits": {"min_base_radius": 30.0}}, "cam.base_radius",
+     "a floor on R0 (limits.min_base_radius) has nothing to size"),
+    ({"cam": {"base_radius": 40.0}, "limits": {"min_base_radius": 30.0}}, "cam.base_radius",
+     "a floor on R0 (limits.min_base_radius) has nothing to size"),
     ({"solve": {"method": "exact"}}, "solve.method", "does not apply to a flat-faced follower"),
     ({"profile": {"min_curvature_radius": 2.0}}, "profile.min_curvature_radius", "limits.min_radius"),
     ({"dynamics": {"mass": 1.0}}, "dynamics", "roller followers only"),
@@ -223,8 +226,7 @@ def test_bad_rocker_input_is_one_line(tmp_path, capsys, over, field, words):
 
 
 @pytest.mark.parametrize("key, table, value", [
-    ("centre_distance", "follower", 120.0), ("face_offset", "follower", 0.0), ("base_radius", "cam", 30.0),
-    ("min_radius", "limits", 5.0),
+    ("centre_distance", "follower", 120.0), ("face_offset", "follower", 0.0), ("min_radius", "limits", 5.0),
 ])
 def test_flat_only_keys_on_a_roller_design_say_so(tmp_path, capsys, key, table, value):
     from tests.conftest import rocker_dict
