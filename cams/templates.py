@@ -17,6 +17,9 @@ rise_direction = "cw"        # the rocker's sense of rotation during the rise
 [cam]
 rotation = "ccw"             # the cam's sense of rotation ("cw" | "ccw")
 rpm = 60                     # optional: time derivatives in the motion diagrams
+# To check a cam you chose instead of sizing the smallest (no min_base_radius then):
+# base_radius = 18.0         # R0, with limits.centre_distance (L) below; or
+# centre = [133.0, 13.0]     # the cam centre in the rocker's frame (pivot at the origin, X along the arm)
 
 # Phases in order over one turn; one dwell may omit its angle (the rest of 360).
 # Laws: linear, parabolic, harmonic, cycloidal, poly345, poly4567,
@@ -62,6 +65,9 @@ roller_radius = 8.0          # 0 = knife edge
 
 [cam]
 rotation = "ccw"
+# To check a cam you chose instead of sizing the smallest (no min_base_radius then):
+# base_radius = 26.0         # R0, with follower.offset above; or
+# centre = [-8.0, -16.0]     # the cam centre (origin at the roller centre at the bottom, Y along the rise)
 
 [[motion]]
 phase = "rise"

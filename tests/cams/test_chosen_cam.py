@@ -285,3 +285,19 @@ def test_a_translating_chosen_cam_lies_below_the_roller():
     res = solve(design_from_dict(d))
     assert res.centre == pytest.approx([14.0, -np.sqrt(50.0**2 - 14.0**2)], rel=1e-12)
     assert res.offset == pytest.approx(-14.0) and res.R0 == pytest.approx(50.0, rel=1e-12)
+
+
+@pytest.mark.parametrize("kind, fixes", [("rocker", "# centre_distance = 130.0"), ("translating", "# offset = 0.0")])
+@pytest.mark.parametrize("form", ["base_radius", "centre"])
+def test_the_templates_chosen_cam_lines_uncommented_check_and_pass(tmp_path, capsys, kind, fixes, form):
+    from cams.templates import TEMPLATES
+
+    lines = TEMPLATES[kind].splitlines()
+    assert any(ln.startswith(f"# {form} = ") for ln in lines)
+    on = [ln[2:] if ln.startswith(f"# {form} = ") or (form == "base_radius" and ln.startswith(fixes)) else ln
+          for ln in lines]
+    f = tmp_path / "t.toml"
+    f.write_text("\n".join(on) + "\n", encoding="utf-8")
+    code, out, err = _run(capsys, "solve", str(f), "--json")
+    assert code == 0, err
+    assert json.loads(out)["mode"] == "chosen"
