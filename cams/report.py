@@ -110,8 +110,13 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         inputs.append(("fixed centre distance L", f"{lim.centre_distance:g} mm"))
     if lim.min_base_radius is not None:
         inputs.append(("constructive floor on R0", f"{lim.min_base_radius:g} mm"))
+    if d.base_radius is not None:
+        inputs.append(("chosen base radius R0", f"{d.base_radius:g} mm"))
+    if d.centre is not None:
+        inputs.append(("chosen cam centre (x, y)", f"({d.centre[0]:g}, {d.centre[1]:g}) mm"))
     r = cam.solution.to_dict()
-    results = [("method", f"{r['method']} ({r['mode']})"), ("base radius R0", f"{r['R0']:.6f} mm")]
+    method = "none: the chosen cam is checked, not sized" if r["mode"] == "chosen" else f"{r['method']} ({r['mode']})"
+    results = [("method", method), ("base radius R0", f"{r['R0']:.6f} mm")]
     if r["L"] is not None:
         results.append(("centre distance L", f"{r['L']:.6f} mm"))
     if r["offset"] is not None:

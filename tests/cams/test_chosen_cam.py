@@ -186,7 +186,10 @@ def test_report_of_a_failing_chosen_cam_exits_1(tmp_path, capsys):
     d, res = _minimum("translating_force.toml")
     small = _chosen(d, R0=0.95 * res.R0, offset=res.offset)
     code, _, _ = _run(capsys, "report", str(_file(tmp_path, small)), "--out", str(tmp_path / "rep"))
-    assert code == 1 and (tmp_path / "rep" / "report.html").exists()
+    assert code == 1
+    page = (tmp_path / "rep" / "report.html").read_text(encoding="utf-8")
+    assert "the chosen cam is checked, not sized" in page and "chosen base radius R0" in page
+    assert re.search(r"rise pressure angle [\d.]+ deg exceeds the limit 30.0000 deg by [\d.]+ deg", page)
 
 
 # -- two centres of (R0, L) -----------------------------------------------------------------------------------
