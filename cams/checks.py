@@ -606,8 +606,21 @@ def check_solution(result, *, tolerance: float | None = None, options: ProfileOp
 
 
 def check_design(design: CamDesign, *, tolerance: float | None = None, method: str | None = None) -> CheckReport:
-    """Solve ``design`` (:func:`optimize.solve.solve`) and check the profile of the solved centre."""
+    """Solve ``design`` (:func:`optimize.solve.solve`) and check the profile of the solved centre.
+
+    A flat-faced follower's design (:class:`cams.design.FlatFaceDesign`) is
+    sized by convexity and checked by :func:`cams.flatface.check_flat_face`
+    (a :class:`cams.flatface.FlatCheckReport`); it takes no ``method``.
+    """
     from optimize.solve import solve
+
+    if getattr(design, "face", "roller") == "flat":
+        from cams.flatface import check_flat_face, flat_face_profile
+        from cams.profile import resolve_tolerance
+
+        tol, field = resolve_tolerance(design.tolerance, tolerance)  # bad options fail before sizing
+        solution = solve(design, method=method)
+        return check_flat_face(design, solution, flat_face_profile(design, solution.R0, tolerance=tol, field=field))
 
     opts = profile_options(design, tolerance=tolerance)  # bad options fail before solving
     result = solve(design, method=method, objective=design.extra.get("objective", "R0"))

@@ -47,13 +47,10 @@ def print_checks(rep: dict) -> None:
 
 
 def _check_flat(args, design):
-    from cams.flatface import check_flat_face, flat_face_profile, size_flat_face
-    from cams.profile import resolve_tolerance
+    from cams.checks import check_design
 
     refuse_method(args.method)
-    tol, field = resolve_tolerance(design.tolerance, args.tolerance)  # bad options fail before sizing
-    solution = size_flat_face(design)
-    return check_flat_face(design, solution, flat_face_profile(design, solution.R0, tolerance=tol, field=field))
+    return check_design(design, tolerance=args.tolerance)
 
 
 def run(args) -> int:

@@ -76,3 +76,15 @@ def test_flat_face_refuses_a_method():
 
     with pytest.raises(InputError, match="method"):
         solve(load_design(EXAMPLES / "translating_flat.toml"), method="convex")
+
+
+@pytest.mark.parametrize("name", FILES)
+def test_check_design_api_equals_cams_check_json(capsys, name):
+    """``cams.checks.check_design(load_design(f))`` is what ``cams check f --json`` prints, flat faces included."""
+    from cams.checks import check_design
+
+    code = main(["check", str(EXAMPLES / name), "--json"])
+    cli = json.loads(capsys.readouterr().out)
+    report = check_design(load_design(EXAMPLES / name))
+    assert json.loads(json.dumps(report.to_dict())) == cli
+    assert code == (0 if report.passed else 1)
