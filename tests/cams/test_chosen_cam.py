@@ -304,3 +304,17 @@ def test_the_templates_chosen_cam_lines_uncommented_check_and_pass(tmp_path, cap
     code, out, err = _run(capsys, "solve", str(f), "--json")
     assert code == 0, err
     assert json.loads(out)["mode"] == "chosen"
+
+
+def test_a_chosen_cam_gets_its_forces_from_dynamics(tmp_path, capsys):
+    """[dynamics] is evaluated on the chosen cam: at the solved centre, the forces of the sized cam."""
+    d, res = _minimum("slotting_feed_cam.toml")
+    assert "dynamics" in d
+    code_sized, out, _ = _run(capsys, "solve", str(EXAMPLES / "slotting_feed_cam.toml"), "--json")
+    sized = json.loads(out)
+    code, out, _ = _run(capsys, "solve", str(_file(tmp_path, _chosen(d, centre=res.centre))), "--json")
+    chosen = json.loads(out)
+    assert chosen["mode"] == "chosen" and chosen["forces"] is not None
+    assert code == code_sized
+    for k in ("max_contact_force", "max_torque", "jump_rpm"):
+        assert chosen["forces"][k] == pytest.approx(sized["forces"][k], rel=1e-9), k
