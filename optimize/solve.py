@@ -487,6 +487,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
     pressure = check_pressure(design, centre)
     if not pressure.ok and R0 < 1e-6 * travel and method == "exact":
         raise vanishing
+    notes += pressure_failures(pressure)  # a sized cam that fails the independent check says by how much, too
     if R0 <= f.roller_radius:
         notes.append(f"not buildable: R0 = {R0:.6g} is not larger than the roller radius {f.roller_radius:g} (the "
                      "working profile would have no base circle); set limits.min_base_radius or a smaller roller")

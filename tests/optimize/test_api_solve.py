@@ -88,3 +88,18 @@ def test_check_design_api_equals_cams_check_json(capsys, name):
     report = check_design(load_design(EXAMPLES / name))
     assert json.loads(json.dumps(report.to_dict())) == cli
     assert code == (0 if report.passed else 1)
+
+
+def test_a_sized_cam_that_fails_the_check_says_by_how_much():
+    """The sampled methods can exceed the limit between samples: the note gives the excess an inversion finds."""
+    import re
+
+    from tests.cams.test_chosen_cam import _largest_rise_pressure_angle
+
+    d = _rocker_force_with(method="exhaustive", samples=12)
+    res = solve(design_from_dict(d))
+    assert not res.verified
+    note = next(n for n in res.notes if n.startswith("rise pressure angle"))
+    m = re.match(r"rise pressure angle ([\d.]+) deg exceeds the limit 45.0000 deg by ([\d.]+) deg", note)
+    ref = _largest_rise_pressure_angle(d, res.centre)[0]
+    assert float(m.group(1)) == pytest.approx(ref, abs=2e-4) and float(m.group(2)) == pytest.approx(ref - 45, abs=2e-4)
