@@ -255,7 +255,7 @@ def _chosen(cam: dict) -> tuple[float | None, tuple[float, float] | None]:
     if not isinstance(centre, list) or len(centre) != 2:
         raise InputError("cam.centre", f"must be [x, y] in mm (the follower's fixed frame), got {centre!r}")
     xy = tuple(_num({"v": v}, "v", f"cam.centre[{i}]") for i, v in enumerate(centre))
-    lo, hi = LENGTH_RANGE
+    hi = LENGTH_RANGE[1]
     if not max(abs(v) for v in xy) <= hi:
         raise InputError("cam.centre", f"{list(xy)!r} mm is outside the lengths a design may use (up to {hi:g} mm)")
     return base_radius, xy
