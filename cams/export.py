@@ -14,6 +14,13 @@ Layers (DXF) and groups (SVG):
 * ``BASE``: the base circle of radius R0 (the pitch curve's, the project's R0);
 * ``BORE``: the bore circle.
 
+A cam that fails a check (:mod:`cams.assess`) is exported only when asked for
+(``cams profile --allow-failed``) and then marked: the DXF gets a layer
+``FAILED`` holding a text with the reasons and a header property
+``CAMS_STATUS`` (``FAILED: ...``), the SVG's ``<title>`` begins with
+``FAILED`` and a ``<desc>`` gives the reasons. A CSV is not marked: its
+columns stay numbers only.
+
 A flat-faced follower's cam (:class:`cams.flatface.FlatFaceProfile`) has no
 pitch curve: its files hold the profile (``PROFILE``, the envelope of the face
 lines, CSV columns ``phi_deg,work_x,work_y``), the base circle (R0, the
@@ -102,7 +109,7 @@ def _bore(profile: Profile, bore_radius: float | None) -> float:
 
 
 def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float | None = None,
-              field: str = "--dxf") -> Path:
+              field: str = "--dxf", failing: str = "") -> Path:
     """Write the profile as a DXF drawing (R2010, millimetres).
 
     The working profile (layer ``PROFILE``), the groove's outer wall
@@ -119,6 +126,9 @@ def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
         Length unit; default :func:`cams.profile.default_bore_radius`.
     field : str
         Name of the option for error messages.
+    failing : str, optional
+        Why the cam fails its checks; non-empty marks the drawing as failing
+        (layer ``FAILED`` with this text, header property ``CAMS_STATUS``).
     """
     import ezdxf
     from ezdxf import units
@@ -139,6 +149,12 @@ def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
         msp.add_lwpolyline(profile.pitch.tolist(), format="xy", close=True, dxfattribs={"layer": "PITCH"})
     msp.add_circle((0.0, 0.0), profile.R0, dxfattribs={"layer": "BASE"})
     msp.add_circle((0.0, 0.0), bore, dxfattribs={"layer": "BORE"})
+    if failing:
+        doc.header.custom_vars.append("CAMS_STATUS", f"FAILED: {failing}")
+        doc.layers.add("FAILED", color=1)
+        ext = max(float(np.max(np.abs(profile.work))), profile.R0)
+        msp.add_text(f"FAILED CHECKS - NOT FOR MANUFACTURE: {failing}", height=0.05 * ext,
+                     dxfattribs={"layer": "FAILED"}).set_placement((-ext, 1.15 * ext))
 
     def write(tmp: str) -> None:
         doc.saveas(tmp)
@@ -153,7 +169,7 @@ def _path_d(pts: np.ndarray) -> str:
 
 
 def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float | None = None,
-              field: str = "--svg") -> Path:
+              field: str = "--svg", failing: str = "") -> Path:
     """Write the profile as an SVG drawing to scale (1 user unit = 1 mm).
 
     The ``viewBox`` is in millimetres and the ``width``/``height`` carry the
@@ -169,6 +185,9 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
         Length unit; default :func:`cams.profile.default_bore_radius`.
     field : str
         Name of the option for error messages.
+    failing : str, optional
+        Why the cam fails its checks; non-empty marks the drawing as failing
+        (``<title>`` beginning with ``FAILED``, the reasons in ``<desc>``).
     """
     from xml.sax.saxutils import escape
 
@@ -192,8 +211,11 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
         '<?xml version="1.0" encoding="UTF-8"?>',
         f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="{size:.4f}mm" height="{size:.4f}mm" '
         f'viewBox="{lo:.4f} {lo:.4f} {size:.4f} {size:.4f}">',
-        f"<title>{escape(profile.name)}: cam profile, cam frame, mm</title>",
+        f"<title>{'FAILED CHECKS, not for manufacture: ' if failing else ''}{escape(profile.name)}: cam profile, "
+        "cam frame, mm</title>",
     ]
+    if failing:
+        lines.append(f"<desc>FAILED: {escape(failing)}</desc>")
     for name in LAYERS:
         if body[name] is None:
             continue

@@ -20,7 +20,7 @@ import numpy as np
 from laws.units import rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
-           "animate_profile", "save", "A4_WIDTH_IN"]
+           "animate_profile", "save", "mark_failing", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
 A4_WIDTH_IN = 7.5
@@ -42,6 +42,16 @@ def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> li
         target = stem.with_suffix(f".{ext}")
         out.append(atomic_write(target, "--out", lambda tmp, ext=ext: fig.savefig(tmp, format=ext, dpi=150)))
     return out
+
+
+def mark_failing(fig, title: str):
+    """Title ``fig`` as a failing cam's picture (``title`` from :meth:`cams.assess.Assessment.title`); "" leaves it.
+
+    The title goes above the figure's own titles, in red; returns ``fig``.
+    """
+    if title:
+        fig.suptitle(title, color="#c00000", fontsize="medium", weight="bold")
+    return fig
 
 
 def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
