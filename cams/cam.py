@@ -81,8 +81,12 @@ class Cam:
 
             from cams.profile import resolve_tolerance
 
-            tol, _ = resolve_tolerance(self.design.tolerance, self.tolerance)
-            return ProfileOptions(tol, None, self.design.bore_radius)
+            raw = self.design.extra.get("raw", {}) if isinstance(self.design.extra, dict) else {}
+            given = raw.get("profile", {}).get("tolerance") if isinstance(raw.get("profile"), dict) else None
+            if not raw:  # a design built in Python: its own tolerance
+                given = self.design.tolerance
+            tol, field = resolve_tolerance(given, self.tolerance)
+            return ProfileOptions(tol, None, self.design.bore_radius, tolerance_field=field)
         from cams.profile import profile_options
 
         return profile_options(self.design, tolerance=self.tolerance)
@@ -93,13 +97,13 @@ class Cam:
         if self.flat:
             from cams.flatface import flat_face_profile
 
-            from cams.profile import resolve_tolerance
-
-            tol, field = resolve_tolerance(self.design.tolerance, self.tolerance)
-            return flat_face_profile(self.design, self.solution.R0, tolerance=tol, field=field)
+            opts = self.options
+            return flat_face_profile(self.design, self.solution.R0, tolerance=opts.tolerance,
+                                     field=opts.tolerance_field)
         from cams.profile import build_profile
 
-        return build_profile(self.design, self.solution.centre, tolerance=self.options.tolerance)
+        return build_profile(self.design, self.solution.centre, tolerance=self.options.tolerance,
+                             field=self.options.tolerance_field)
 
     @cached_property
     def checks(self):

@@ -38,7 +38,10 @@ from cams.files import atomic_write, check_output_path
 from cams.profile import Profile, default_bore_radius
 from laws.errors import InputError
 
-__all__ = ["write_csv", "write_dxf", "write_svg", "csv_header", "LAYERS"]
+__all__ = ["write_csv", "write_dxf", "write_svg", "csv_header", "length_decimals", "LAYERS", "SIGNIFICANT_DIGITS"]
+
+#: Significant digits of the cam's size kept by every coordinate written as text (CSV, SVG).
+SIGNIFICANT_DIGITS = 12
 
 #: Layer names of the drawings, in drawing order.
 LAYERS = ("PROFILE", "OUTER", "PITCH", "BASE", "BORE")
@@ -50,6 +53,28 @@ _SVG_STYLE = {
     "BASE": 'stroke="#008000" stroke-dasharray="{d} {d}"',
     "BORE": 'stroke="#0000c0"',
 }
+
+
+def length_decimals(size: float, digits: int = SIGNIFICANT_DIGITS) -> int:
+    """Decimals that keep ``digits`` significant digits of a length of magnitude ``size`` (fixed-point).
+
+    A cam 20 mm across gets 10 decimals, one of 2e-6 mm 17, one of 1e7 mm 4:
+    every coordinate is written to the same absolute resolution, ``digits``
+    significant digits of the cam's size. At least 0, at most 30.
+
+    >>> length_decimals(20.0), length_decimals(2e-6), length_decimals(1e7)
+    (10, 17, 4)
+    """
+    import math
+
+    if not (size > 0 and math.isfinite(size)):
+        return 9
+    return min(30, max(0, digits - 1 - math.floor(math.log10(size))))
+
+
+def _size(profile: Profile) -> float:
+    """The cam's size: the largest coordinate of its curves (length)."""
+    return max(float(np.max(np.abs(c))) for c in (profile.work, profile.pitch, profile.outer) if c is not None)
 
 
 def csv_header(profile: Profile) -> str:
@@ -69,7 +94,10 @@ def write_csv(profile: Profile, path: str | os.PathLike, *, field: str = "--csv"
     for a groove; ``phi_deg,work_x,work_y`` for a flat-faced follower's cam):
     cam angle in degrees, coordinates in the cam frame, length unit; rows in
     cam-angle order, the first at ``phi = 0``. The curves are closed: the last
-    row joins the first.
+    row joins the first. Numbers are fixed-point: the angle with 9 decimals,
+    the coordinates with :data:`SIGNIFICANT_DIGITS` significant digits of the
+    cam's size (:func:`length_decimals`), so a micrometre cam keeps them too.
+    The file holds the header and the numbers only (no comment line).
 
     Parameters
     ----------
@@ -91,11 +119,12 @@ def write_csv(profile: Profile, path: str | os.PathLike, *, field: str = "--csv"
     if profile.outer is not None:
         cols += [profile.outer[:, 0], profile.outer[:, 1]]
     data = np.column_stack(cols)
+    fmt = ["%.9f"] + [f"%.{length_decimals(_size(profile))}f"] * (data.shape[1] - 1)
 
     def write(tmp: str) -> None:
         with open(tmp, "w", encoding="utf-8", newline="\n") as fh:
             fh.write(csv_header(profile) + "\n")
-            np.savetxt(fh, data, fmt="%.9f", delimiter=",")
+            np.savetxt(fh, data, fmt=fmt, delimiter=",")
 
     return atomic_write(path, field, write)
 
@@ -162,9 +191,9 @@ def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     return atomic_write(path, field, write)
 
 
-def _path_d(pts: np.ndarray) -> str:
+def _path_d(pts: np.ndarray, decimals: int) -> str:
     """SVG path data of a closed polyline, y turned downwards (SVG's convention)."""
-    xy = [f"{x:.6f},{-y:.6f}" for x, y in pts]
+    xy = [f"{x:.{decimals}f},{-y:.{decimals}f}" for x, y in pts]
     return "M" + " L".join(xy) + " Z"
 
 
@@ -198,19 +227,20 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     margin = 0.05 * ext
     lo = -ext - margin
     size = 2 * (ext + margin)
-    sw = max(size / 1000.0, 0.05)
-    dash = f"{2 * sw:.4f}"
+    k = length_decimals(ext)  # every number to the same resolution, whatever the cam's size
+    sw = min(max(size / 1000.0, 0.05), size / 200.0)  # a visible line, thinner than the cam
+    dash = f"{2 * sw:.{k}f}"
     body = {
-        "PROFILE": f'<path d="{_path_d(profile.work)}"/>',
-        "OUTER": f'<path d="{_path_d(profile.outer)}"/>' if profile.outer is not None else None,
-        "PITCH": f'<path d="{_path_d(profile.pitch)}"/>' if profile.pitch is not None else None,
-        "BASE": f'<circle cx="0" cy="0" r="{profile.R0:.6f}"/>',
-        "BORE": f'<circle cx="0" cy="0" r="{bore:.6f}"/>',
+        "PROFILE": f'<path d="{_path_d(profile.work, k)}"/>',
+        "OUTER": f'<path d="{_path_d(profile.outer, k)}"/>' if profile.outer is not None else None,
+        "PITCH": f'<path d="{_path_d(profile.pitch, k)}"/>' if profile.pitch is not None else None,
+        "BASE": f'<circle cx="0" cy="0" r="{profile.R0:.{k}f}"/>',
+        "BORE": f'<circle cx="0" cy="0" r="{bore:.{k}f}"/>',
     }
     lines = [
         '<?xml version="1.0" encoding="UTF-8"?>',
-        f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="{size:.4f}mm" height="{size:.4f}mm" '
-        f'viewBox="{lo:.4f} {lo:.4f} {size:.4f} {size:.4f}">',
+        f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="{size:.{k}f}mm" height="{size:.{k}f}mm" '
+        f'viewBox="{lo:.{k}f} {lo:.{k}f} {size:.{k}f} {size:.{k}f}">',
         f"<title>{'FAILED CHECKS, not for manufacture: ' if failing else ''}{escape(profile.name)}: cam profile, "
         "cam frame, mm</title>",
     ]
@@ -220,10 +250,11 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
         if body[name] is None:
             continue
         style = _SVG_STYLE[name].format(d=dash)
-        lines.append(f'<g id="{name}" fill="none" {style} stroke-width="{sw:.4f}">{body[name]}</g>')
+        lines.append(f'<g id="{name}" fill="none" {style} stroke-width="{sw:.{k}f}">{body[name]}</g>')
     c = 0.03 * ext
-    lines.append(f'<g id="CENTRE" stroke="#000000" stroke-width="{sw / 2:.4f}">'
-                 f'<line x1="{-c:.4f}" y1="0" x2="{c:.4f}" y2="0"/><line x1="0" y1="{-c:.4f}" x2="0" y2="{c:.4f}"/></g>')
+    lines.append(f'<g id="CENTRE" stroke="#000000" stroke-width="{sw / 2:.{k}f}">'
+                 f'<line x1="{-c:.{k}f}" y1="0" x2="{c:.{k}f}" y2="0"/><line x1="0" y1="{-c:.{k}f}" x2="0" '
+                 f'y2="{c:.{k}f}"/></g>')
     lines.append("</svg>")
     text = "\n".join(lines) + "\n"
 

@@ -207,3 +207,20 @@ def test_sweep_output_through_a_link(tmp_path, capsys):
                "--jobs", "1", "--quiet"])
     capsys.readouterr()
     assert rc == 0 and link.is_symlink() and target.read_text().startswith("follower.arm,")
+
+
+def test_new_to_standard_output_prints_the_template_only(tmp_path):
+    _guard_descriptor("-")
+    r = _cli("new", "rocker", "--out", "-")
+    assert r.returncode == 0, r.stderr
+    text = r.stdout.decode()
+    assert text.startswith("#") and text.rstrip().splitlines()[-1] != "-"  # no "-" printed after the file
+    # to a FIFO: streamed, not "exists; use --force"
+    fifo = tmp_path / "t.toml"
+    os.mkfifo(fifo)
+    got = []
+    reader = threading.Thread(target=lambda: got.append(fifo.read_text()))
+    reader.start()
+    assert main(["new", "rocker", "--out", str(fifo)]) == 0
+    reader.join(timeout=60)
+    assert got == [text]
