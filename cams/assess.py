@@ -154,4 +154,6 @@ def assess(design, solution, *, checks=None, forces=None) -> Assessment:
 def assess_cam(cam) -> Assessment:
     """Assess a :class:`cams.cam.Cam`: its solution, the checks of its profile, its ``[dynamics]`` forces."""
     checks = None if knife_in_groove(cam.design) else cam.checks
-    return assess(cam.design, cam.solution, checks=checks, forces=cam.forces)
+    extra = getattr(cam.design, "extra", None)
+    has_dynamics = isinstance(extra, dict) and "dynamics" in extra  # else no forces module to import
+    return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None)
