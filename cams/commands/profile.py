@@ -103,16 +103,19 @@ def run(args) -> int:
     if args.json:
         print(json.dumps(rep, indent=2), file=out)
     else:
+        from cams.commands.solve import length_format
+
+        f = length_format(rep["R0"])  # enough digits for the cam's size
         if prof is None:
-            print(f"{rep['name']}: no profile: R0 = {rep['R0']:.6f} mm", file=out)
+            print(f"{rep['name']}: no profile: R0 = {rep['R0']:{f}} mm", file=out)
         elif flat:
             print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-                  f"R0 = {rep['R0']:.6f} mm, profile radius >= {rep['min_work_radius']:.6f} mm, "
-                  f"radius of curvature >= {rep['min_rho']:.6f} mm, bore {bore:.4f} mm", file=out)
+                  f"R0 = {rep['R0']:{f}} mm, profile radius >= {rep['min_work_radius']:{f}} mm, "
+                  f"radius of curvature >= {rep['min_rho']:{f}} mm, bore {bore:{f}} mm", file=out)
         else:
             print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-                  f"R0 = {rep['R0']:.6f} mm, working profile radius >= {rep['min_work_radius']:.6f} mm, "
-                  f"bore {bore:.4f} mm", file=out)
+                  f"R0 = {rep['R0']:{f}} mm, working profile radius >= {rep['min_work_radius']:{f}} mm, "
+                  f"bore {bore:{f}} mm", file=out)
         print(f"  verified: {'yes' if a.verified else 'NO'}", file=out)
         print_assessment(rep, file=out)
         for w in written:

@@ -109,3 +109,13 @@ def test_flat_face_tolerance_is_capped_too(tmp_path, capsys):
     assert rc == 2 and err.startswith("cams profile: error: --tolerance: ")
     largest = float(re.search(r"the largest accepted is ([0-9.e+-]+) mm", err).group(1))
     assert largest == pytest.approx(cap, rel=1e-4)
+
+
+def test_profile_summary_prints_the_digits_of_a_micrometre_cam(tmp_path, capsys):
+    f = _scaled(tmp_path, 1e-6)
+    rc, rep = _json(capsys, "profile", f)
+    assert main(["profile", str(f)]) == 0
+    out = capsys.readouterr().out
+    for key, label in (("R0", "R0 = "), ("min_work_radius", "radius >= "), ("bore_radius", "bore ")):
+        printed = float(re.search(re.escape(label) + r"([0-9.e+-]+) mm", out).group(1))
+        assert printed == pytest.approx(rep[key], rel=1e-6), key
