@@ -393,12 +393,15 @@ def plot_profile(cam, *, phi: float | None = None):
     return fig
 
 
-def animate_profile(cam, path, *, frames: int = 72, fps: int = 12) -> Path:
-    """One turn of the cam with its follower as an animated GIF (Pillow writer)."""
+def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = "") -> Path:
+    """One turn of the cam with its follower as an animated GIF (Pillow writer).
+
+    ``title`` (:meth:`cams.assess.Assessment.title`) marks a failing cam's animation.
+    """
     from matplotlib.animation import FuncAnimation, PillowWriter
 
     profile = cam.profile
-    fig = _figure(w=5.0, h=5.0)
+    fig = mark_failing(_figure(w=5.0, h=5.0), title)
     ax = fig.add_subplot()
     span = np.max(np.abs(profile.work)) + profile.roller_radius
     if getattr(cam, "flat", False):

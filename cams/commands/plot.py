@@ -98,17 +98,21 @@ def run(args) -> int:
             print(f"cams plot: note: {w}: {_SKIP[face, w]}", file=sys.stderr)
     # one rule for every command (cams.assess): a failing cam's pictures are drawn, titled as failing, exit 1;
     # the motion diagrams alone need no solution, so they alone assess nothing
-    a = None if set(which) <= {"motion"} else cam.assessment
+    a = None if set(which) <= {"motion"} and not args.animate else cam.assessment
     # every picture is drawn to a temporary file; they are moved into place together only when all succeeded,
     # so a failure (a design that cannot be solved for the zone ...) leaves none of them behind
     with all_or_nothing():
         out = ensure_folder(args.out, "--out")
         written = draw(cam, which, out, title="" if a is None else a.title())
-        if args.animate:
+        if args.animate and not cam.flat and knife_in_groove(cam.design):
+            print("cams plot: note: --animate: a knife edge cannot run in a groove, there is no profile to turn; "
+                  "skipped", file=sys.stderr)
+        elif args.animate:
             from cams.plots import animate_profile
 
+            title = a.title()
             written.append(atomic_write(out / f"{_slug(cam.design.name)}_turn.gif", "--out",
-                                        lambda tmp: animate_profile(cam, tmp), suffix=".gif"))
+                                        lambda tmp: animate_profile(cam, tmp, title=title), suffix=".gif"))
     for p in written:
         print(p)
     if a is not None and not a.usable:

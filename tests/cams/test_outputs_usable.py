@@ -238,3 +238,19 @@ def test_report_reports_buildable_and_exits_1(designs, capsys, tmp_path):
     rc = main(["report", str(designs["knife_groove"]), "--out", str(tmp_path / "rep")])
     assert rc == 1 and "buildable: NO" in capsys.readouterr().out
     assert (tmp_path / "rep" / "report.pdf").exists()
+
+
+def test_plot_animation_of_a_failing_cam_is_titled(designs, capsys, tmp_path, monkeypatch):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from cams import plots
+
+    titles = []
+    real = plots.mark_failing
+    monkeypatch.setattr(plots, "mark_failing", lambda fig, title: titles.append(title) or real(fig, title))
+    monkeypatch.setattr(plots.animate_profile, "__kwdefaults__", {"frames": 2, "fps": 12, "title": ""})
+    rc = main(["plot", str(designs["bore"]), "--out", str(tmp_path / "a"), "--only", "motion", "--animate"])
+    capsys.readouterr()
+    assert rc == 1 and len(list((tmp_path / "a").glob("*_turn.gif"))) == 1
+    assert titles and all(t == "FAILS: bore" for t in titles)
