@@ -522,14 +522,12 @@ def _stream(tmp: str, path: str | os.PathLike, field: str) -> None:
             return
         fd = os.open(where, os.O_WRONLY | getattr(os, "O_NOCTTY", 0))  # never created nor truncated
         try:
-            if not stat.S_ISREG(os.fstat(fd).st_mode):
-                _write_all(fd, tmp)
-            else:  # it became a regular file since it was checked: whole or nothing after all
-                raise IsADirectoryError  # replaced below by the rename path
+            if stat.S_ISREG(os.fstat(fd).st_mode):  # replaced by a file since it was checked: not overwritten
+                raise InputError(field, f"cannot write {str(path)!r}: it changed from a device or FIFO to a file "
+                                 "while the command ran")
+            _write_all(fd, tmp)
         finally:
             os.close(fd)
-    except IsADirectoryError:
-        os.replace(tmp, os.path.realpath(where))
     except OSError as e:
         raise InputError(field, f"cannot write {str(path)!r}: {e.strerror or e}") from None
 
