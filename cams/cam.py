@@ -28,11 +28,18 @@ class Cam:
     design : CamDesign or FlatFaceDesign
     objective : {"R0", "L"}, optional
         What to minimize; default from the design file's ``[solve] objective``.
+    method : {"exact", "convex", "exhaustive"}, optional
+        Overrides the design's ``[solve] method`` (roller followers).
+    tolerance : float, optional
+        Chord tolerance of the profile (length), overriding ``[profile] tolerance``.
     """
 
-    def __init__(self, design: CamDesign, *, objective: str | None = None):
+    def __init__(self, design: CamDesign, *, objective: str | None = None, method: str | None = None,
+                 tolerance: float | None = None):
         self.design = design
         self.objective = objective or design.extra.get("objective", "R0")
+        self.method = method
+        self.tolerance = tolerance
 
     @property
     def flat(self) -> bool:
@@ -55,7 +62,7 @@ class Cam:
             return size_flat_face(self.design)
         from optimize.solve import solve
 
-        return solve(self.design, objective=self.objective)
+        return solve(self.design, method=self.method, objective=self.objective)
 
     @cached_property
     def tradeoff(self):
@@ -72,10 +79,17 @@ class Cam:
         if self.flat:
             from cams.profile import ProfileOptions
 
-            return ProfileOptions(self.design.tolerance, None, self.design.bore_radius)
+            from cams.profile import resolve_tolerance
+
+            raw = self.design.extra.get("raw", {}) if isinstance(self.design.extra, dict) else {}
+            given = raw.get("profile", {}).get("tolerance") if isinstance(raw.get("profile"), dict) else None
+            if not raw:  # a design built in Python: its own tolerance
+                given = self.design.tolerance
+            tol, field = resolve_tolerance(given, self.tolerance)
+            return ProfileOptions(tol, None, self.design.bore_radius, tolerance_field=field)
         from cams.profile import profile_options
 
-        return profile_options(self.design)
+        return profile_options(self.design, tolerance=self.tolerance)
 
     @cached_property
     def profile(self):
@@ -83,10 +97,13 @@ class Cam:
         if self.flat:
             from cams.flatface import flat_face_profile
 
-            return flat_face_profile(self.design, self.solution.R0, tolerance=self.options.tolerance)
+            opts = self.options
+            return flat_face_profile(self.design, self.solution.R0, tolerance=opts.tolerance,
+                                     field=opts.tolerance_field)
         from cams.profile import build_profile
 
-        return build_profile(self.design, self.solution.centre, tolerance=self.options.tolerance)
+        return build_profile(self.design, self.solution.centre, tolerance=self.options.tolerance,
+                             field=self.options.tolerance_field)
 
     @cached_property
     def checks(self):
@@ -111,6 +128,13 @@ class Cam:
         from cams.camforces import design_forces
 
         return design_forces(self.design, self.solution.centre)[0]
+
+    @cached_property
+    def assessment(self):
+        """Verified and buildable, with the reasons (:func:`cams.assess.assess_cam`)."""
+        from cams.assess import assess_cam
+
+        return assess_cam(self)
 
     def motion(self, phi):
         """Displacement and derivatives at cam angles ``phi`` (radians); no solve."""

@@ -532,7 +532,8 @@ def check_profile(
     """
     opts = options if options is not None else profile_options(design)
     centre = np.asarray(centre, dtype=float)
-    prof = profile if profile is not None else build_profile(design, centre, tolerance=opts.tolerance)
+    prof = profile if profile is not None else build_profile(design, centre, tolerance=opts.tolerance,
+                                                             field=opts.tolerance_field)
     r = prof.roller_radius
     checks: list[Check] = []
 

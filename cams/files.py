@@ -11,6 +11,19 @@ does so inside :func:`all_or_nothing`: every file is rendered to its temporary
 first and they are all renamed into place only when every one succeeded, so a
 failure leaves none of them. :func:`check_output_paths` checks all the output
 options of a command at once, before any computation.
+
+What an output path names decides how it is written (:func:`output_kind`):
+
+* a regular file, or a name not yet taken: whole or nothing, by rename; a
+  symbolic link is followed, so the file it points to is replaced and the
+  link kept (a dangling link creates its target);
+* ``-`` (standard output), ``/dev/stdout``, ``/dev/stderr``, ``/dev/fd/N``:
+  the content is streamed to that open descriptor;
+* a character device (``/dev/null``, a terminal) or a FIFO: the content is
+  streamed into it (a FIFO waits for its reader); a write error there (no
+  space left on ``/dev/full``, a closed pipe) is an :class:`InputError`, never
+  a success;
+* a block device or a socket: refused.
 """
 
 from __future__ import annotations
@@ -18,6 +31,9 @@ from __future__ import annotations
 import contextlib
 import contextvars
 import os
+import re
+import stat
+import sys
 import tempfile
 from pathlib import Path
 from typing import Callable, Iterable, Iterator
@@ -27,7 +43,10 @@ import numpy as np
 from laws.errors import InputError
 
 __all__ = ["atomic_write", "all_or_nothing", "check_output_path", "check_output_paths", "ensure_folder", "read_toml",
-           "toml_table", "toml_number", "check_keys"]
+           "toml_table", "toml_number", "check_keys", "output_kind", "writes_stdout", "STDOUT"]
+
+#: The output name for standard output.
+STDOUT = "-"
 
 
 def read_toml(path: str | os.PathLike) -> dict:
@@ -195,13 +214,81 @@ def ensure_folder(path: str | os.PathLike, field: str) -> Path:
     return p
 
 
-def check_output_path(path: str | os.PathLike, field: str) -> Path:
-    """Raise :class:`InputError` unless ``path`` can be created (its folder exists, it is no folder).
+#: Names of open descriptors: the content is written to descriptor N itself (shared offset, no new open).
+_FD_NAMES = re.compile(r"^/(?:dev/fd|proc/self/fd)/(\d+)$")
+_STD_NAMES = {"/dev/stdin": 0, "/dev/stdout": 1, "/dev/stderr": 2}
+
+
+def _descriptor(path: str) -> int | None:
+    """The descriptor number an output name stands for (``-`` is 1), else None."""
+    if path == STDOUT:
+        return 1
+    if path in _STD_NAMES:
+        return _STD_NAMES[path]
+    m = _FD_NAMES.match(path)
+    return int(m.group(1)) if m else None
+
+
+def output_kind(path: str | os.PathLike) -> tuple[str, Path | int]:
+    """How an output name is written, and where.
 
     Parameters
     ----------
     path : path-like
-        The file to be written.
+        An output name; ``-`` is standard output.
+
+    Returns
+    -------
+    (kind, where)
+        ``("descriptor", n)``: stream to open descriptor ``n`` (``-``,
+        ``/dev/stdout``, ``/dev/fd/N``); ``("stream", path)``: stream to a
+        character device or FIFO (opened for writing, never created nor
+        replaced); ``("file", target)``: whole or nothing by rename, ``target``
+        the regular file ``path`` names once symbolic links are followed;
+        ``("refused", why)`` for a block device or a socket; ``("folder",
+        path)`` for a folder.
+    """
+    s = str(path)
+    fd = _descriptor(s)
+    if fd is not None:
+        return "descriptor", fd
+    p = Path(s)
+    try:
+        mode = os.stat(p).st_mode  # follows links
+    except FileNotFoundError:
+        mode = None  # not there yet (or a dangling link): a new file at the link's target
+    if mode is None or stat.S_ISREG(mode):
+        return "file", Path(os.path.realpath(p))
+    if stat.S_ISDIR(mode):
+        return "folder", p
+    if stat.S_ISCHR(mode) or stat.S_ISFIFO(mode):
+        return "stream", p
+    what = "a block device" if stat.S_ISBLK(mode) else "a socket" if stat.S_ISSOCK(mode) else "a special file"
+    return "refused", what
+
+
+def writes_stdout(path: str | os.PathLike | None) -> bool:
+    """Whether output ``path`` goes to standard output (``-``, ``/dev/stdout`` or what descriptor 1 is)."""
+    if path is None:
+        return False
+    kind, where = output_kind(path)
+    if kind == "descriptor":
+        return where == 1
+    if kind == "stream":
+        try:
+            return os.path.samestat(os.stat(where), os.fstat(1))
+        except OSError:
+            return False
+    return False
+
+
+def check_output_path(path: str | os.PathLike, field: str) -> Path:
+    """Raise :class:`InputError` unless ``path`` can be written (see :func:`output_kind`).
+
+    Parameters
+    ----------
+    path : path-like
+        The file to be written; ``-`` is standard output.
     field : str
         Name of the option for the message (e.g. ``"--csv"``).
 
@@ -213,23 +300,35 @@ def check_output_path(path: str | os.PathLike, field: str) -> Path:
     Raises
     ------
     InputError
-        ``path`` is empty, the folder does not exist or is not writable, or
-        ``path`` is a folder.
+        ``path`` is empty; it is a folder, a block device or a socket; the
+        folder of the file it names (after links) does not exist or is not
+        writable; a device or FIFO is not writable.
     """
     if not str(path).strip():
         raise InputError(field, "must name a file, got an empty path")
     p = Path(path)
-    folder = _folder(p)
-    if not folder.is_dir():
-        raise InputError(field, f"cannot write {str(p)!r}: folder {str(folder)!r} does not exist")
     try:
-        os.stat(p)
-    except FileNotFoundError:
-        pass
+        kind, where = output_kind(path)
     except OSError as e:  # a name too long, a loop of links ...
         raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
-    if p.is_dir():
+    if kind == "descriptor":
+        try:
+            os.fstat(where)
+        except OSError:
+            raise InputError(field, f"cannot write {str(p)!r}: descriptor {where} is not open") from None
+        return p
+    if kind == "folder":
         raise InputError(field, f"cannot write {str(p)!r}: it is a folder")
+    if kind == "refused":
+        raise InputError(field, f"cannot write {str(p)!r}: it is {where}; give a regular file, a character device, "
+                         f"a FIFO or - (standard output)")
+    if kind == "stream":
+        if not os.access(p, os.W_OK):
+            raise InputError(field, f"cannot write {str(p)!r}: permission denied")
+        return p
+    folder = _folder(where)
+    if not folder.is_dir():
+        raise InputError(field, f"cannot write {str(p)!r}: folder {str(folder)!r} does not exist")
     if not os.access(folder, os.W_OK):
         raise InputError(field, f"cannot write {str(p)!r}: folder {str(folder)!r} is not writable")
     return p
@@ -292,7 +391,8 @@ class _Transaction:
     """The temporaries written inside :func:`all_or_nothing`, and the folders it created."""
 
     def __init__(self):
-        self.files: list[tuple[str, Path, str]] = []  # (temporary, target, field)
+        self.files: list[tuple[str, Path, str]] = []  # (temporary, target, field): renamed into place
+        self.streams: list[tuple[str, str | os.PathLike, str]] = []  # (temporary, output name, field): streamed
         self.folders: list[Path] = []
 
     def add(self, tmp: str, target: Path, field: str) -> None:
@@ -301,21 +401,31 @@ class _Transaction:
                 raise InputError(field, f"cannot write {str(target)!r}: it is written twice by one command")
         self.files.append((tmp, target, field))
 
+    def add_stream(self, tmp: str, path: str | os.PathLike, field: str) -> None:
+        self.streams.append((tmp, path, field))
+
     def discard(self) -> None:
-        for tmp, _, _ in self.files:
+        for tmp, _, _ in self.files + self.streams:
             with contextlib.suppress(OSError):
                 os.unlink(tmp)
         self.files = []
+        self.streams = []
         for f in self.folders:  # deepest first; only empty ones go
             with contextlib.suppress(OSError):
                 f.rmdir()
         self.folders = []
 
     def commit(self) -> None:
-        """Rename every temporary into place; when one rename fails, put back what the others replaced."""
+        """Stream to the special files first (what fails most), then rename every temporary into place.
+
+        When one rename fails, what the others replaced is put back; what a
+        device or pipe received cannot be taken back.
+        """
         for _, target, field in self.files:  # what would fail, before anything moves
             if target.is_dir():
                 raise InputError(field, f"cannot write {str(target)!r}: it is a folder")
+        for tmp, path, field in self.streams:
+            _stream(tmp, path, field)
         done: list[tuple[Path, str | None, bool]] = []  # (target, hard link to the file it replaced, existed)
         try:
             for tmp, target, field in self.files:
@@ -359,11 +469,12 @@ def all_or_nothing() -> Iterator[None]:
 
     Inside the block :func:`atomic_write` writes each file whole to a
     temporary next to its target and keeps it; when the block ends normally
-    the temporaries are renamed into place, one after the other. When the
-    block raises (any exception, Ctrl-C included) the temporaries are removed,
-    and so are the folders :func:`ensure_folder` created in the block if they
-    are still empty: no file of the block is left. A block inside another one
-    joins it.
+    the outputs that are devices, FIFOs or standard output receive their
+    content, then the temporaries are renamed into place, one after the other.
+    When the block raises (any exception, Ctrl-C included) the temporaries are
+    removed, and so are the folders :func:`ensure_folder` created in the block
+    if they are still empty: no file of the block is left. A block inside
+    another one joins it.
     """
     if _PENDING.get() is not None:
         yield
@@ -383,15 +494,58 @@ def all_or_nothing() -> Iterator[None]:
         t.discard()  # what a failed rename left
 
 
-def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None], *, suffix: str = ".tmp") -> Path:
-    """Call ``write(tmp)`` for a temporary file next to ``path``, then move it to ``path``.
+def _write_all(fd: int, tmp: str) -> None:
+    """Copy the file ``tmp`` to open descriptor ``fd`` (every byte, or ``OSError``)."""
+    with open(tmp, "rb") as src:
+        while chunk := src.read(1 << 16):
+            view = memoryview(chunk)
+            while view:
+                n = os.write(fd, view)
+                view = view[n:]
 
-    Inside :func:`all_or_nothing` the move waits for the end of the block.
+
+def _stream(tmp: str, path: str | os.PathLike, field: str) -> None:
+    """Send the content of ``tmp`` to the descriptor, device or FIFO ``path`` names.
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: the target cannot be opened, did not take every byte
+        (no space left, a closed pipe) or failed when closed.
+    """
+    kind, where = output_kind(path)
+    try:
+        if kind == "descriptor":
+            if where in (1, 2):  # what Python buffered for that stream goes first
+                (sys.stdout if where == 1 else sys.stderr).flush()
+            _write_all(where, tmp)
+            return
+        fd = os.open(where, os.O_WRONLY | getattr(os, "O_NOCTTY", 0))  # never created nor truncated
+        try:
+            if stat.S_ISREG(os.fstat(fd).st_mode):  # replaced by a file since it was checked: not overwritten
+                raise InputError(field, f"cannot write {str(path)!r}: it changed from a device or FIFO to a file "
+                                 "while the command ran")
+            _write_all(fd, tmp)
+        finally:
+            os.close(fd)
+    except OSError as e:
+        raise InputError(field, f"cannot write {str(path)!r}: {e.strerror or e}") from None
+
+
+def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None], *, suffix: str = ".tmp") -> Path:
+    """Call ``write(tmp)`` for a temporary file, then move it to ``path`` (or stream it there).
+
+    A regular file (or a new name) is replaced by rename: whole or nothing. A
+    symbolic link is followed: the file it points to is replaced and the link
+    kept. Standard output (``-``, ``/dev/stdout``), a character device or a
+    FIFO receives the content written to the temporary (see
+    :func:`output_kind`). Inside :func:`all_or_nothing` the move waits for the
+    end of the block.
 
     Parameters
     ----------
     path : path-like
-        The file to create or replace.
+        The file to create or replace; ``-`` for standard output.
     field : str
         Name of the option for error messages (e.g. ``"--csv"``).
     write : callable
@@ -408,27 +562,37 @@ def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], Non
     Raises
     ------
     InputError
-        The folder does not exist or the file cannot be written; no file is
-        left behind.
+        The folder does not exist, the file cannot be written or the device or
+        pipe did not take the whole content; no file is left behind.
     """
-    if not str(path).strip():
-        raise InputError(field, "must name a file, got an empty path")
-    p = Path(path)
-    folder = _folder(p)
+    p = check_output_path(path, field)
+    kind, where = output_kind(path)
+    target = where if kind == "file" else None
+    folder = _folder(target) if target is not None else None  # a stream's temporary goes to the system's folder
     try:
-        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{p.name}.", suffix=suffix)
+        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{p.name or 'out'}.", suffix=suffix)
     except OSError as e:
         raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
     os.close(fd)
     pending = _PENDING.get()
     try:
         write(tmp)
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual permissions
+        if target is not None:
+            try:  # a replaced file keeps its permissions; a new one gets the usual ones (mkstemp makes 0600)
+                mode = stat.S_IMODE(os.stat(target).st_mode)
+            except OSError:
+                mode = 0o666 & ~_umask()
+            os.chmod(tmp, mode)
         if pending is not None:
-            pending.add(tmp, p, field)
+            if target is not None:
+                pending.add(tmp, target, field)
+            else:
+                pending.add_stream(tmp, path, field)
             tmp = None  # the transaction owns it now
+        elif target is not None:
+            os.replace(tmp, target)
         else:
-            os.replace(tmp, p)
+            _stream(tmp, path, field)
     except OSError as e:
         raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
     finally:

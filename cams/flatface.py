@@ -703,18 +703,20 @@ def flat_face_cam(design, base_radius: float, *, samples: int = 1440) -> FlatFac
 MIN_SAMPLES, MAX_SAMPLES = 360, 2_000_000
 
 
-def flat_face_profile(design, base_radius: float, *, tolerance: float = 1e-3,
+def flat_face_profile(design, base_radius: float, *, tolerance: float | None = None,
                       field: str = "profile.tolerance") -> FlatFaceProfile:
     """The cam sampled uniformly in cam angle, every chord within ``tolerance`` of the profile.
 
     A chord spanning a turn ``dtheta`` of the face's normal on an arc of
     radius rho is ``rho dtheta**2 / 8`` from it; the number of samples makes
     the largest such sagitta (estimated on 720 samples) at most ``tolerance``.
-    Straight edges (where the follower's velocity jumps up) are exact.
+    Straight edges (where the follower's velocity jumps up) are exact. The
+    tolerance is at most 5 % of the base radius (:func:`cams.profile.cap_tolerance`;
+    None: 1e-3, 0.1 % of the base radius when that is under 1 mm).
     """
-    from cams.profile import _check_tolerance
+    from cams.profile import cap_tolerance
 
-    tolerance = _check_tolerance(tolerance, field)
+    tolerance = cap_tolerance(tolerance, base_radius, field)
     coarse = flat_face_cam(design, base_radius, samples=720)
     dtheta = np.ones_like(coarse.phi)
     if design.follower.kind == "rocker":

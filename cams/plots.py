@@ -20,7 +20,7 @@ import numpy as np
 from laws.units import rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
-           "animate_profile", "save", "A4_WIDTH_IN"]
+           "animate_profile", "save", "mark_failing", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
 A4_WIDTH_IN = 7.5
@@ -42,6 +42,16 @@ def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> li
         target = stem.with_suffix(f".{ext}")
         out.append(atomic_write(target, "--out", lambda tmp, ext=ext: fig.savefig(tmp, format=ext, dpi=150)))
     return out
+
+
+def mark_failing(fig, title: str):
+    """Title ``fig`` as a failing cam's picture (``title`` from :meth:`cams.assess.Assessment.title`); "" leaves it.
+
+    The title goes above the figure's own titles, in red; returns ``fig``.
+    """
+    if title:
+        fig.suptitle(title, color="#c00000", fontsize="medium", weight="bold")
+    return fig
 
 
 def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
@@ -383,12 +393,15 @@ def plot_profile(cam, *, phi: float | None = None):
     return fig
 
 
-def animate_profile(cam, path, *, frames: int = 72, fps: int = 12) -> Path:
-    """One turn of the cam with its follower as an animated GIF (Pillow writer)."""
+def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = "") -> Path:
+    """One turn of the cam with its follower as an animated GIF (Pillow writer).
+
+    ``title`` (:meth:`cams.assess.Assessment.title`) marks a failing cam's animation.
+    """
     from matplotlib.animation import FuncAnimation, PillowWriter
 
     profile = cam.profile
-    fig = _figure(w=5.0, h=5.0)
+    fig = mark_failing(_figure(w=5.0, h=5.0), title)
     ax = fig.add_subplot()
     span = np.max(np.abs(profile.work)) + profile.roller_radius
     if getattr(cam, "flat", False):

@@ -62,10 +62,17 @@ __all__ = [
     "default_bore_radius",
     "DEFAULT_TOLERANCE",
     "PROFILE_KEYS",
+    "MAX_TOLERANCE_FRACTION",
+    "cap_tolerance",
+    "smallest_radius",
 ]
 
 #: Default chord tolerance (sagitta), length unit: 1 micrometre for mm.
 DEFAULT_TOLERANCE = 1e-3
+#: Largest chord tolerance accepted, as a fraction of the cam's smallest radius (:func:`cap_tolerance`).
+MAX_TOLERANCE_FRACTION = 0.05
+#: The default tolerance is at most this fraction of the cam's smallest radius (below 1 mm: finer than 1 um).
+DEFAULT_TOLERANCE_FRACTION = 1e-3
 #: Keys the ``[profile]`` table of a design file may hold.
 PROFILE_KEYS = ("tolerance", "min_curvature_radius")
 #: Largest number of samples of one profile (guards against endless refinement).
@@ -315,20 +322,26 @@ class ProfileOptions:
 
     Attributes
     ----------
-    tolerance : float
-        Chord tolerance (largest sagitta between samples and curve), length.
+    tolerance : float or None
+        Chord tolerance (largest sagitta between samples and curve), length;
+        None: the default for the cam's size (:func:`cap_tolerance`).
     min_curvature_radius : float or None
         User minimum of the working profile's radius of curvature (length).
     bore_radius : float or None
         Bore radius of the cam (length); ``None``: :func:`default_bore_radius`.
+    tolerance_field : str
+        Where the tolerance was given (``"profile.tolerance"`` or
+        ``"--tolerance"``), for the messages.
     """
 
-    tolerance: float = DEFAULT_TOLERANCE
+    tolerance: float | None = None
     min_curvature_radius: float | None = None
     bore_radius: float | None = None
+    tolerance_field: str = "profile.tolerance"
 
     def __post_init__(self):
-        _check_tolerance(self.tolerance, "profile.tolerance")
+        if self.tolerance is not None:
+            _check_tolerance(self.tolerance, self.tolerance_field)
         for name, field in (("min_curvature_radius", "profile.min_curvature_radius"), ("bore_radius", "cam.bore_radius")):
             v = getattr(self, name)
             if v is not None and not (isinstance(v, (int, float)) and not isinstance(v, bool) and np.isfinite(v) and v > 0):
@@ -341,15 +354,65 @@ def _check_tolerance(tol, field: str) -> float:
     return float(tol)
 
 
-def resolve_tolerance(from_file, override=None) -> tuple[float, str]:
+def resolve_tolerance(from_file, override=None) -> tuple[float | None, str]:
     """The chord tolerance to use and the field a bad one is reported under.
 
     ``override`` (the command line's ``--tolerance``) wins over ``from_file``
-    (``[profile] tolerance``). Returns ``(tolerance, field)``; raises
+    (``[profile] tolerance``); both None give None: the default for the
+    cam's size (:func:`cap_tolerance`). Returns ``(tolerance, field)``; raises
     :class:`InputError` naming that field unless the tolerance is a number > 0.
     """
     field = "profile.tolerance" if override is None else "--tolerance"
-    return _check_tolerance(from_file if override is None else override, field), field
+    tol = from_file if override is None else override
+    return (None if tol is None else _check_tolerance(tol, field)), field
+
+
+def smallest_radius(R0: float, roller_radius: float = 0.0) -> float:
+    """The cam's smallest radius (length): its working profile's least distance from the centre.
+
+    ``R0 - r`` for a roller follower (the base circle of the pitch curve less
+    the roller; a lower bound, reached on the base circle), ``R0`` for a knife
+    edge or a flat face (their profile's base radius). When ``R0 <= r`` there
+    is no working profile (not buildable); the curves drawn then are the size
+    of the roller, and ``max(R0, r)`` sets their sampling.
+    """
+    return R0 - roller_radius if R0 > roller_radius else max(R0, roller_radius)
+
+
+def cap_tolerance(tolerance: float | None, smallest: float, field: str) -> float:
+    """The chord tolerance for a cam whose smallest radius is ``smallest``, refusing one too coarse for it.
+
+    Parameters
+    ----------
+    tolerance : float or None
+        The tolerance given (length); None: ``min(DEFAULT_TOLERANCE,
+        DEFAULT_TOLERANCE_FRACTION * smallest)``, so a cam whose smallest
+        radius is under a millimetre is sampled as finely for its size.
+    smallest : float
+        The cam's smallest radius (:func:`smallest_radius`), length.
+    field : str
+        Where the tolerance was given, for the message.
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: not a number > 0, or above
+        ``MAX_TOLERANCE_FRACTION`` (5 %) of ``smallest``; the message gives the
+        largest accepted value.
+    """
+    cap = MAX_TOLERANCE_FRACTION * smallest
+    if tolerance is None:
+        return float(min(DEFAULT_TOLERANCE, DEFAULT_TOLERANCE_FRACTION * smallest)) if smallest > 0 \
+            else DEFAULT_TOLERANCE
+    tol = _check_tolerance(tolerance, field)
+    if cap > 0 and tol > cap:
+        raise InputError(field, f"chord tolerance {tol:g} mm is more than {100 * MAX_TOLERANCE_FRACTION:g} % of the "
+                         f"cam's smallest radius {smallest:.6g} mm; the largest accepted is {cap:.6g} mm")
+    return tol
 
 
 def profile_options(design: CamDesign, *, tolerance: float | None = None) -> ProfileOptions:
@@ -375,8 +438,8 @@ def profile_options(design: CamDesign, *, tolerance: float | None = None) -> Pro
     if unknown:
         raise InputError("profile", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(PROFILE_KEYS)}")
     cam = raw.get("cam", {}) if isinstance(raw.get("cam", {}), dict) else {}
-    tol, _ = resolve_tolerance(pt.get("tolerance", DEFAULT_TOLERANCE), tolerance)
-    return ProfileOptions(tol, pt.get("min_curvature_radius"), cam.get("bore_radius"))
+    tol, field = resolve_tolerance(pt.get("tolerance"), tolerance)
+    return ProfileOptions(tol, pt.get("min_curvature_radius"), cam.get("bore_radius"), tolerance_field=field)
 
 
 @dataclass(frozen=True, eq=False)
@@ -586,8 +649,9 @@ def build_profile(
     design: CamDesign,
     centre: np.ndarray,
     *,
-    tolerance: float = DEFAULT_TOLERANCE,
+    tolerance: float | None = None,
     groove: bool | None = None,
+    field: str = "tolerance",
 ) -> Profile:
     """Sample the pitch curve and working profile(s) of a sized cam.
 
@@ -601,10 +665,14 @@ def build_profile(
     design : CamDesign
     centre : array_like, shape (2,)
         Cam centre O in the fixed frame (``SolveResult.centre``), length unit.
-    tolerance : float
-        Chord tolerance, length unit (default 1e-3: 1 micrometre in mm).
+    tolerance : float, optional
+        Chord tolerance, length unit, at most 5 % of the cam's smallest radius
+        (:func:`cap_tolerance`); default 1e-3 (1 micrometre in mm), 0.1 % of
+        the smallest radius when that is under 1 mm.
     groove : bool, optional
         Add the outer wall of a groove; default: ``True`` for form closure.
+    field : str, optional
+        Where the tolerance was given, for the messages.
 
     Returns
     -------
@@ -613,16 +681,18 @@ def build_profile(
     Raises
     ------
     InputError
-        ``tolerance <= 0``; a groove with a knife edge (roller radius 0).
+        ``tolerance <= 0`` or above 5 % of the cam's smallest radius; a groove
+        with a knife edge (roller radius 0).
     """
-    tol = _check_tolerance(tolerance, "--tolerance")
     f = design.follower
     r = float(f.roller_radius)
+    centre = np.asarray(centre, dtype=float)
+    R0 = float(np.linalg.norm(f.position(0.0) - centre))
+    tol = cap_tolerance(tolerance, smallest_radius(R0, r), field)
     if groove is None:
         groove = design.limits.closure == "form"
     if groove and r <= 0:
         raise InputError("follower.roller_radius", "a groove cam (form closure) needs a roller radius > 0")
-    centre = np.asarray(centre, dtype=float)
     prog = design.program
     nph = len(prog.phases)
     blocks: list[dict] = []
@@ -646,7 +716,7 @@ def build_profile(
         tolerance=tol,
         centre=centre.copy(),
         cam_sense=design.cam_sense,
-        R0=float(np.linalg.norm(f.position(0.0) - centre)),
+        R0=R0,
         name=design.name,
     )
 

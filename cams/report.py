@@ -65,11 +65,24 @@ def _flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         results.append(("face centred on the axis", f"{r['face_width_centred']:.6f} mm"))
     results += [("pressure angle", pressure_text(r)),
                 ("verified (radius of curvature >= limit)", "yes" if r["verified"] else "NO")]
+    results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"]]
     return [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
 
 
+def _assessment_rows(cam) -> list[tuple[str, str]]:
+    """Buildable beside verified, and what fails (:mod:`cams.assess`)."""
+    a = cam.assessment
+    rows = [("buildable (working profile, undercut, profile, bore, dynamics)", "yes" if a.buildable else "NO"),
+            ("usable (verified and buildable)", "yes" if a.usable else "NO")]
+    return rows + [("fails", f) for f in a.failures]
+
+
 def _check_rows(cam) -> list[tuple[str, str]]:
+    from cams.assess import knife_in_groove
+
+    if knife_in_groove(cam.design):
+        return [("profile", "none: a knife edge cannot run in a groove (form closure needs a roller)")]
     checks = []
     for c in cam.checks.checks:
         cd = c.to_dict()
@@ -129,6 +142,7 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         ("error bound", "not stated by this method" if r["error_bound"] is None else f"{r['error_bound']:.3g} mm"),
         ("verified (independent pressure-angle check)", "yes" if r["verified"] else "NO"),
     ]
+    results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"]]
     sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
     df = cam.forces if "dynamics" in d.extra else None
@@ -183,18 +197,23 @@ def _force_rows(df) -> list[tuple[str, str]]:
 
 
 def _figures(cam):
+    """The pictures, each titled as failing when the cam is not usable (:mod:`cams.assess`)."""
     from cams import plots
+    from cams.assess import knife_in_groove
 
     if getattr(cam, "flat", False):
-        return [("Motion diagrams", plots.plot_motion(cam.design)),
+        figs = [("Motion diagrams", plots.plot_motion(cam.design)),
                 ("Pressure angle", plots.plot_flat_pressure(cam.solution)),
                 ("Radius of curvature and contact on the face", plots.plot_curvature(cam.solution)),
                 ("Cam profile", plots.plot_profile(cam))]
-    figs = [("Allowable-centre zone", plots.plot_zone(cam.solution, tradeoff=cam.tradeoff)),
-            ("Motion diagrams", plots.plot_motion(cam.design)),
-            ("Pressure angle", plots.plot_pressure(cam.solution)),
-            ("Cam profile", plots.plot_profile(cam))]
-    return figs
+    else:
+        figs = [("Allowable-centre zone", plots.plot_zone(cam.solution, tradeoff=cam.tradeoff)),
+                ("Motion diagrams", plots.plot_motion(cam.design)),
+                ("Pressure angle", plots.plot_pressure(cam.solution))]
+        if not knife_in_groove(cam.design):  # a knife edge in a groove has no profile to draw
+            figs.append(("Cam profile", plots.plot_profile(cam)))
+    title = cam.assessment.title()
+    return [(name, plots.mark_failing(fig, title)) for name, fig in figs]
 
 
 def write_report(cam, out: str | Path) -> tuple[Path, Path]:

@@ -2,8 +2,11 @@
 
 A sweep varies dotted design-file keys (``limits.pressure_angle``,
 ``follower.arm``, ``motion.0.angle`` or ``motion[0].angle`` ...) over ranges
-and solves every combination. Infeasible combinations are rows with an
-``error`` and no sizes, not failures of the batch; a base design that is wrong
+and solves every combination. Each row says whether the cam is ``verified``
+and ``buildable`` (:mod:`cams.assess`: the checks of the finished profile and
+the ``[dynamics]`` table included, as every command), and ``failures`` lists
+why not. Infeasible combinations are rows with an ``error`` and no sizes, not
+failures of the batch; a base design that is wrong
 whatever the varied keys are (a required key missing, an unknown table) is an
 :class:`~laws.errors.InputError` before anything is solved.
 """
@@ -32,7 +35,7 @@ MAX_WORKERS_PER_CPU = 4
 
 #: Result columns after the varied keys.
 COLUMNS = ("R0", "L", "offset", "centre_x", "centre_y", "max_pressure_rise", "max_pressure_return",
-           "verified", "buildable", "error_bound", "error")
+           "verified", "buildable", "error_bound", "failures", "error")
 
 
 def parse_vary(spec: str) -> tuple[str, np.ndarray]:
@@ -135,8 +138,8 @@ def _number(v) -> int | float:
 
 def _solve_one(args) -> dict:
     base, keys, values, method = args
+    from cams.cam import Cam
     from cams.designfile import design_from_dict
-    from optimize.solve import solve
 
     d = copy.deepcopy(base)
     for k, v in zip(keys, values):
@@ -145,12 +148,15 @@ def _solve_one(args) -> dict:
     row.update({c: None for c in COLUMNS})
     try:
         design = design_from_dict(d)
-        r = solve(design, method=method, objective=design.extra.get("objective", "R0"))
+        cam = Cam(design, method=method)
+        r = cam.solution
         rep = r.to_dict()
+        a = cam.assessment  # one rule for every command: the profile's checks and [dynamics] too
         row.update(R0=r.R0, L=r.L, offset=r.offset, centre_x=float(r.centre[0]), centre_y=float(r.centre[1]),
                    max_pressure_rise=rep["max_pressure_angle"]["rise"],
                    max_pressure_return=rep["max_pressure_angle"]["return"],
-                   verified=r.verified, buildable=r.buildable, error_bound=r.error_bound)
+                   verified=a.verified, buildable=a.buildable, error_bound=r.error_bound,
+                   failures="; ".join(a.failures) or None)
     except CamsError as e:
         row["error"] = str(e)
     return row
@@ -164,6 +170,11 @@ class SweepResult:
     rows: list
     seconds: float
     workers: int
+
+    @property
+    def failed(self) -> int:
+        """Rows that are not usable: no solution (an ``error``), not verified or not buildable."""
+        return sum(1 for r in self.rows if r["error"] or not (r["verified"] and r["buildable"]))
 
     @property
     def per_second(self) -> float:

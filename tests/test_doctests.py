@@ -44,6 +44,7 @@ DOCTEST_MODULES = [
     # profiles
     "cams.flatface",
     "cams.profile",
+    "cams.export",
 ]
 
 #: Modules checked for a complete ``__all__``.

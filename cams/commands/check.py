@@ -46,42 +46,44 @@ def print_checks(rep: dict) -> None:
     print(f"  bore radius {rep['bore_radius']:.4f} mm; {'all checks pass' if rep['passed'] else 'a check FAILS'}")
 
 
-def _check_flat(args, design):
-    from cams.checks import check_design
-
-    refuse_method(args.method)
-    return check_design(design, tolerance=args.tolerance)
-
-
 def run(args) -> int:
-    from cams.checks import check_design
+    from cams.assess import knife_in_groove
+    from cams.cam import Cam
+    from cams.commands.solve import print_assessment
     from cams.designfile import load_design
 
     design = load_design(args.file)
-    notes: list[str] = []
     if is_flat(design):
-        report = _check_flat(args, design)
-    elif design.chosen:  # the designer's cam: checked as it is, with how its centre was found
-        from cams.checks import check_solution
-        from cams.profile import profile_options
-        from optimize.solve import solve
-
-        opts = profile_options(design, tolerance=args.tolerance)  # bad options fail before anything else
-        result = solve(design, method=args.method)
-        report = check_solution(result, options=opts)
-        notes = [n for n in result.notes if not n.startswith(("rise pressure", "return pressure"))]
+        refuse_method(args.method)
+    cam = Cam(design, method=None if is_flat(design) else args.method, tolerance=args.tolerance)
+    cam.options  # bad options fail before solving
+    if knife_in_groove(design):  # no profile to check: the assessment says why
+        report = None
+        rep = {"name": design.name, "passed": False, "checks": []}
     else:
-        report = check_design(design, tolerance=args.tolerance, method=args.method)
-    rep = report.to_dict()
+        report = cam.checks
+        rep = report.to_dict()
+    a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
+    rep.update(a.to_dict())
+    passed = a.usable and report is not None and report.passed
+    rep["passed"] = passed
+    notes: list[str] = []
+    if getattr(design, "chosen", False) and not is_flat(design):  # how the chosen cam's centre was found
+        notes = [n for n in cam.solution.notes if not n.startswith(("rise pressure", "return pressure"))]
     if notes:
         rep["notes"] = notes
     if args.json:
         print(json.dumps(rep, indent=2))
     else:
-        print_checks(rep)
+        if report is not None:
+            print_checks(report.to_dict())
+        else:
+            print(f"{design.name}: no profile to check")
+        print(f"  verified: {'yes' if a.verified else 'NO'}")
+        print_assessment(rep)
         for n in notes:
             print(f"  note: {n}")
-    return EXIT_OK if report.passed else EXIT_CHECK_FAILED
+    return EXIT_OK if passed else EXIT_CHECK_FAILED
 
 
 def register(sub) -> None:
@@ -90,7 +92,8 @@ def register(sub) -> None:
         "check",
         help="solve, then check the profile: jamming, undercut, polygon, bore",
         description="Solve a design file and check the finished profile: pressure angle recomputed from the "
-                    "pitch curve, undercut and sharp points, a valid closed working profile, the bore. "
+                    "pitch curve, undercut and sharp points, a valid closed working profile, the bore, the [dynamics] "
+                    "table when given. "
                     "A flat-faced follower: convexity (radius of curvature >= limits.min_radius), a valid "
                     "closed profile, the bore. Exit code 0: all pass, 1: a check fails, 2: bad input.",
         epilog="example: cams check examples/rocker_force.toml --json",

@@ -16,10 +16,11 @@ def run(args) -> int:
     if args.out is None:
         print(text, end="")
         return EXIT_OK
-    from cams.files import atomic_write, check_output_path
+    from cams.files import atomic_write, check_output_path, output_kind, writes_stdout
 
     path = check_output_path(args.out, "--out")
-    if path.exists() and not args.force:
+    kind, target = output_kind(path)
+    if kind == "file" and target.exists() and not args.force:  # a device, a FIFO or - is written to, not replaced
         from laws.errors import InputError
 
         raise InputError("--out", f"{str(path)!r} exists; use --force to overwrite")
@@ -28,7 +29,10 @@ def run(args) -> int:
         with open(tmp, "w", encoding="utf-8") as fh:
             fh.write(text)
 
-    print(atomic_write(path, "--out", write))
+    to_stdout = writes_stdout(path)
+    atomic_write(path, "--out", write)
+    if not to_stdout:
+        print(path)
     return EXIT_OK
 
 

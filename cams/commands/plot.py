@@ -7,7 +7,7 @@ from pathlib import Path
 
 import sys
 
-from cams.commands.common import EXIT_OK
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
 from laws.errors import InputError
 
 __all__ = ["register", "run", "PICTURES", "FLAT_PICTURES"]
@@ -28,8 +28,11 @@ _SKIP = {
 }
 
 
-def draw(cam, which: tuple[str, ...], out: Path) -> list[Path]:
-    """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``."""
+def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Path]:
+    """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.
+
+    ``title`` (:meth:`cams.assess.Assessment.title`) marks every picture of a failing cam.
+    """
     import matplotlib
 
     matplotlib.use("Agg", force=False)
@@ -51,7 +54,7 @@ def draw(cam, which: tuple[str, ...], out: Path) -> list[Path]:
             fig = plots.plot_curvature(cam.solution)
         else:
             fig = plots.plot_profile(cam)
-        written += plots.save(fig, f"{stem}_{name}")
+        written += plots.save(plots.mark_failing(fig, title), f"{stem}_{name}")
     return written
 
 
@@ -84,21 +87,40 @@ def run(args) -> int:
     face = "flat" if cam.flat else "roller"
     if which is None:  # everything that applies: no note for what the user did not ask for
         which = FLAT_PICTURES if cam.flat else PICTURES
+    from cams.assess import knife_in_groove
+
+    if not cam.flat and knife_in_groove(cam.design) and "profile" in which:
+        which = tuple(w for w in which if w != "profile")
+        print("cams plot: note: profile: a knife edge cannot run in a groove, there is no profile to draw; skipped",
+              file=sys.stderr)
     for w in which:
         if (face, w) in _SKIP:
             print(f"cams plot: note: {w}: {_SKIP[face, w]}", file=sys.stderr)
+    # one rule for every command (cams.assess): a failing cam's pictures are drawn, titled as failing, exit 1;
+    # the motion diagrams alone need no solution, so they alone assess nothing
+    a = None if set(which) <= {"motion"} and not args.animate else cam.assessment
     # every picture is drawn to a temporary file; they are moved into place together only when all succeeded,
     # so a failure (a design that cannot be solved for the zone ...) leaves none of them behind
     with all_or_nothing():
         out = ensure_folder(args.out, "--out")
-        written = draw(cam, which, out)
-        if args.animate:
+        written = draw(cam, which, out, title="" if a is None else a.title())
+        if args.animate and not cam.flat and knife_in_groove(cam.design):
+            print("cams plot: note: --animate: a knife edge cannot run in a groove, there is no profile to turn; "
+                  "skipped", file=sys.stderr)
+        elif args.animate:
             from cams.plots import animate_profile
 
+            title = a.title()
             written.append(atomic_write(out / f"{_slug(cam.design.name)}_turn.gif", "--out",
-                                        lambda tmp: animate_profile(cam, tmp), suffix=".gif"))
+                                        lambda tmp: animate_profile(cam, tmp, title=title), suffix=".gif"))
     for p in written:
         print(p)
+    if a is not None and not a.usable:
+        from cams.commands.solve import print_assessment
+
+        print(f"verified: {'yes' if a.verified else 'NO'}")
+        print_assessment(a.to_dict(), indent="")
+        return EXIT_CHECK_FAILED
     return EXIT_OK
 
 
@@ -109,7 +131,8 @@ def register(sub) -> None:
         help="pictures: zone, motion diagrams, pressure angle, profile (PNG and SVG)",
         description="Draw the pictures of a design file; only what is asked for is computed. A flat-faced "
                     "follower has no zone (skipped with a note) and a curvature picture instead: the radius of "
-                    "curvature against its limit and the contact's travel on the face.",
+                    "curvature against its limit and the contact's travel on the face. A cam that fails a check "
+                    "(not verified or not buildable) is drawn with the pictures titled as failing, exit code 1.",
         epilog="example: cams plot examples/rocker_force.toml --out pictures --only zone,motion",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from cams.commands.common import EXIT_OK, is_flat, refuse_method
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
 
 __all__ = ["register"]
 
@@ -18,102 +18,111 @@ def _check_outputs(args) -> None:
                        inputs=[("FILE", args.file)])
 
 
-def _write(args, prof, bore) -> list[str]:
-    """Write the outputs asked for, all of them or none (each rendered to a temporary first)."""
+def _write(args, prof, bore, failing: str = "") -> list[str]:
+    """Write the outputs asked for, all of them or none (each rendered to a temporary first).
+
+    ``failing`` (the reasons a failing cam fails) marks the DXF and SVG as failing; a CSV is never marked.
+    """
     from cams.export import write_csv, write_dxf, write_svg
-    from cams.files import all_or_nothing
+    from cams.files import STDOUT, all_or_nothing
 
     written = []
     with all_or_nothing():
         if args.csv is not None:
             written.append(str(write_csv(prof, args.csv)))
         if args.dxf is not None:
-            written.append(str(write_dxf(prof, args.dxf, bore_radius=bore)))
+            written.append(str(write_dxf(prof, args.dxf, bore_radius=bore, failing=failing)))
         if args.svg is not None:
-            written.append(str(write_svg(prof, args.svg, bore_radius=bore)))
-    return written
+            written.append(str(write_svg(prof, args.svg, bore_radius=bore, failing=failing)))
+    return [f"{w} (standard output)" if w == STDOUT else w for w in written]
 
 
-def _run_flat(args, design) -> int:
-    from cams.flatface import flat_face_profile, size_flat_face
-    from cams.profile import default_bore_radius, resolve_tolerance
+def _summary_stream(args):
+    """Where the summary goes: stderr when a file is written to standard output, so the two do not mix."""
+    import sys
 
-    refuse_method(args.method)
-    tol, field = resolve_tolerance(design.tolerance, args.tolerance)
-    _check_outputs(args)  # fail before sizing, and before writing any file
-    sol = size_flat_face(design)
-    prof = flat_face_profile(design, sol.R0, tolerance=tol, field=field)
-    bore = design.bore_radius if design.bore_radius is not None else default_bore_radius(prof)
-    written = _write(args, prof, bore)
-    rep = {
-        "name": design.name,
-        "face": "flat",
-        "points": len(prof),
-        "tolerance": prof.tolerance,
-        "R0": prof.R0,
-        "centre": {"x": float(sol.centre[0]), "y": float(sol.centre[1])},
-        "min_work_radius": prof.min_work_radius,
-        "min_rho": sol.min_rho,
-        "min_radius": design.min_radius,
-        "bore_radius": bore,
-        "columns": "phi_deg,work_x,work_y",
-        "written": written,
-    }
-    if args.json:
-        print(json.dumps(rep, indent=2))
+    from cams.files import writes_stdout
+
+    return sys.stderr if any(writes_stdout(getattr(args, o)) for o in ("csv", "dxf", "svg")) else sys.stdout
+
+
+def _report(cam, prof, bore) -> dict:
+    """The summary of the exported profile (lengths mm), without the assessment and the files written."""
+    design, sol = cam.design, cam.solution
+    if prof is None:  # a knife edge in a groove: no profile
+        return {"name": design.name, "R0": float(sol.R0),
+                "centre": {"x": float(sol.centre[0]), "y": float(sol.centre[1])}}
+    rep = {"name": design.name}
+    if cam.flat:
+        rep["face"] = "flat"
+    rep.update({"points": len(prof), "tolerance": prof.tolerance, "R0": prof.R0,
+                "centre": {"x": float(sol.centre[0]), "y": float(sol.centre[1])}})
+    if cam.flat:
+        rep.update({"min_work_radius": prof.min_work_radius, "min_rho": sol.min_rho, "min_radius": design.min_radius,
+                    "bore_radius": bore, "columns": "phi_deg,work_x,work_y"})
     else:
-        print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-              f"R0 = {rep['R0']:.6f} mm, profile radius >= {rep['min_work_radius']:.6f} mm, "
-              f"radius of curvature >= {sol.min_rho:.6f} mm, bore {bore:.4f} mm")
-        if not sol.verified:
-            print(f"  warning: radius of curvature {sol.min_rho:.6g} mm < limits.min_radius {design.min_radius:g} mm "
-                  "(run cams check)")
-        for w in written:
-            print(f"  wrote {w}")
-    return EXIT_OK
+        rep.update({"roller_radius": prof.roller_radius, "min_work_radius": prof.min_work_radius, "bore_radius": bore,
+                    "largest_roller_radius": cam.checks.largest_roller_radius, "groove": prof.groove})
+    return rep
 
 
 def run(args) -> int:
-    from cams.checks import curvature_extremes
+    import sys
+
+    from cams.assess import knife_in_groove
+    from cams.cam import Cam
+    from cams.commands.solve import print_assessment
     from cams.designfile import load_design
-    from cams.profile import build_profile, default_bore_radius, profile_options
-    from optimize.solve import solve
+    from cams.profile import default_bore_radius
 
     design = load_design(args.file)
-    if is_flat(design):
-        return _run_flat(args, design)
-    opts = profile_options(design, tolerance=args.tolerance)
+    flat = is_flat(design)
+    if flat:
+        refuse_method(args.method)
+    cam = Cam(design, method=None if flat else args.method, tolerance=args.tolerance)
+    opts = cam.options  # bad options fail before solving
     _check_outputs(args)  # fail before solving, and before writing any file
-    result = solve(design, method=args.method, objective=design.extra.get("objective", "R0"))
-    prof = build_profile(result.design, result.centre, tolerance=opts.tolerance)
-    bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
-    ext = curvature_extremes(result.design, result.centre)  # all that can fail, before writing
-    written = _write(args, prof, bore)
-    rep = {
-        "name": design.name,
-        "points": len(prof),
-        "tolerance": prof.tolerance,
-        "R0": prof.R0,
-        "centre": {"x": float(result.centre[0]), "y": float(result.centre[1])},
-        "roller_radius": prof.roller_radius,
-        "min_work_radius": prof.min_work_radius,
-        "bore_radius": bore,
-        "largest_roller_radius": ext.convex if prof.outer is None else min(ext.convex, ext.concave),
-        "groove": prof.groove,
-        "written": written,
-    }
+    out = _summary_stream(args)
+    a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
+    prof = None if knife_in_groove(design) else cam.profile
+    bore = None
+    if prof is not None:
+        bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
+    rep = _report(cam, prof, bore)
+    rep.update(a.to_dict())
+    asked = any(getattr(args, o) is not None for o in ("csv", "dxf", "svg"))
+    refused = ""
+    written: list[str] = []
+    if asked and prof is None:
+        refused = "no profile to write"
+    elif asked and not a.usable and not args.allow_failed:
+        refused = "the cam fails (" + ", ".join(a.short) + "); --allow-failed writes them, marked as failing"
+    elif asked:
+        written = _write(args, prof, bore, failing="" if a.usable else "; ".join(a.failures))
+    rep["written"] = written
     if args.json:
-        print(json.dumps(rep, indent=2))
+        print(json.dumps(rep, indent=2), file=out)
     else:
-        print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-              f"R0 = {rep['R0']:.6f} mm, working profile radius >= {rep['min_work_radius']:.6f} mm, "
-              f"bore {bore:.4f} mm")
-        if rep["largest_roller_radius"] <= prof.roller_radius:
-            print(f"  warning: undercut: roller radius {prof.roller_radius:g} mm >= largest allowed "
-                  f"{rep['largest_roller_radius']:.4f} mm (run cams check)")
+        from cams.commands.solve import length_format
+
+        f = length_format(rep["R0"])  # enough digits for the cam's size
+        if prof is None:
+            print(f"{rep['name']}: no profile: R0 = {rep['R0']:{f}} mm", file=out)
+        elif flat:
+            print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
+                  f"R0 = {rep['R0']:{f}} mm, profile radius >= {rep['min_work_radius']:{f}} mm, "
+                  f"radius of curvature >= {rep['min_rho']:{f}} mm, bore {bore:{f}} mm", file=out)
+        else:
+            print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
+                  f"R0 = {rep['R0']:{f}} mm, working profile radius >= {rep['min_work_radius']:{f}} mm, "
+                  f"bore {bore:{f}} mm", file=out)
+        print(f"  verified: {'yes' if a.verified else 'NO'}", file=out)
+        print_assessment(rep, file=out)
         for w in written:
-            print(f"  wrote {w}")
-    return EXIT_OK
+            print(f"  wrote {w}{'' if a.usable else ' (marked as failing where the format allows)'}", file=out)
+    if refused:
+        print(f"cams profile: no file written: {refused}", file=sys.stderr)
+    return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
 
 def register(sub) -> None:
@@ -123,7 +132,9 @@ def register(sub) -> None:
         help="solve, then export the cam profile as CSV, DXF or SVG",
         description="Solve a design file and write its profile in the cam frame (mm): pitch curve, working "
                     "profile (and outer groove wall), sampled within a chord tolerance. A flat-faced follower's cam "
-                    "has no pitch curve: CSV columns phi_deg,work_x,work_y.",
+                    "has no pitch curve: CSV columns phi_deg,work_x,work_y. The files of a cam that fails a check (not verified, "
+                    "or not buildable: no working profile, undercut, an invalid profile, the bore, [dynamics]) are "
+                    "written only with --allow-failed. Exit code 0: usable, 1: a check fails, 2: bad input.",
         epilog="example: cams profile examples/rocker_force.toml --csv cam.csv --dxf cam.dxf --svg cam.svg",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -137,5 +148,7 @@ def register(sub) -> None:
     q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
                    help="override [solve] method (roller followers)")
+    q.add_argument("--allow-failed", action="store_true", help="write the files even when the cam fails a check "
+                   "(not verified or not buildable); the DXF and SVG are then marked as failing (exit code 1)")
     q.add_argument("--json", action="store_true", help="print the summary as JSON")
     q.set_defaults(func=run)

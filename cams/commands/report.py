@@ -24,10 +24,15 @@ def run(args) -> int:
                            inputs=[("FILE", args.file)])
     with all_or_nothing():  # report.html and report.pdf appear together or not at all
         written = write_report(cam, args.out)
-        passed = cam.checks.passed and cam.solution.verified
+        a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
     for p in written:
         print(p)
-    return EXIT_OK if passed else EXIT_CHECK_FAILED
+    if not a.usable:
+        from cams.commands.solve import print_assessment
+
+        print(f"verified: {'yes' if a.verified else 'NO'}")
+        print_assessment(a.to_dict(), indent="")
+    return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
 
 def register(sub) -> None:

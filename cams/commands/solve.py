@@ -7,7 +7,7 @@ import json
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
 
-__all__ = ["register", "print_summary", "print_flat_summary", "print_cam_forces"]
+__all__ = ["register", "print_summary", "print_flat_summary", "print_cam_forces", "print_assessment"]
 
 
 def _fmt_deg(x) -> str:
@@ -130,56 +130,64 @@ def print_flat_summary(rep: dict) -> None:
         print(f"  note: {n}")
 
 
-def _run_flat(args, design) -> int:
-    from cams.flatface import size_flat_face
+def print_assessment(a: dict, indent: str = "  ", file=None) -> None:
+    """The buildable line beside verified (from ``Assessment.to_dict``), with what fails."""
+    print(f"{indent}buildable: {'yes' if a['buildable'] else 'NO'}; usable: "
+          f"{'yes' if a['verified'] and a['buildable'] else 'NO'}", file=file)
+    for f in a["failures"]:
+        print(f"{indent}FAIL: {f}", file=file)
 
+
+def _run_flat(args, cam) -> int:
     refuse_method(args.method)
-    result = size_flat_face(design)
-    rep = result.to_dict()
+    rep = cam.solution.to_dict()
+    a = cam.assessment
+    rep.update(a.to_dict())
     if args.json:
         print(json.dumps(rep, indent=2))
     else:
         print_flat_summary(rep)
-    return EXIT_OK if result.verified else EXIT_CHECK_FAILED
+        print_assessment(rep)
+    return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
 
-def _check_chosen(result, rep: dict) -> bool:
-    """A chosen cam is checked whole, as ``cams check`` does: its profile's failing checks as notes; True if none."""
-    from cams.checks import check_solution
+def _chosen_notes(report, rep: dict) -> None:
+    """A chosen cam's failing profile checks (as ``cams check`` finds them) as notes saying by how much."""
     from cams.commands.check import failure_text
 
-    report = check_solution(result)
     rep["notes"] += [failure_text(c.to_dict()) for c in report.checks if not c.passed and not c.name.startswith("jamming")]
-    return report.passed
 
 
 def run(args) -> int:
+    from cams.assess import knife_in_groove
+    from cams.cam import Cam
     from cams.designfile import load_design
-    from optimize.solve import solve
 
     design = load_design(args.file)
+    cam = Cam(design, method=None if is_flat(design) else args.method)
     if is_flat(design):
-        return _run_flat(args, design)
-    result = solve(design, method=args.method, objective=design.extra.get("objective", "R0"))
+        return _run_flat(args, cam)
+    result = cam.solution
     rep = result.to_dict()
-    # a roller centre's base circle no larger than the roller leaves no cam to make: a failed check
-    ok = result.verified and result.buildable
     forces = None
     if "dynamics" in design.extra:
         from cams.camforces import design_forces, impact_note
 
         df, note = design_forces(design, result.centre)
+        cam.__dict__["forces"] = df  # computed once: the assessment reads it
         if note:
             rep["notes"].append(note)
         if df is not None:
             forces = df.to_dict()
-            ok = ok and df.forces.ok
             note = impact_note(df.forces)
             if note:
                 rep["notes"].append(note)
-    if result.mode == "chosen":
-        ok = _check_chosen(result, rep) and ok
+    if result.mode == "chosen" and not knife_in_groove(design):
+        _chosen_notes(cam.checks, rep)
     rep["forces"] = forces
+    # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
+    a = cam.assessment
+    rep.update(a.to_dict())
     if args.json:
         if forces is not None:
             from cams.camforces import json_safe
@@ -188,8 +196,8 @@ def run(args) -> int:
         print(json.dumps(rep, indent=2))
     else:
         print_summary(rep)
-    return EXIT_OK if ok else EXIT_CHECK_FAILED
-
+        print_assessment(rep)
+    return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
 
 def register(sub) -> None:

@@ -6,7 +6,7 @@ import argparse
 import csv
 import sys
 
-from cams.commands.common import EXIT_INTERRUPTED, EXIT_OK
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from laws.errors import InputError
 
 __all__ = ["register", "run"]
@@ -43,10 +43,12 @@ def _run(args) -> int:
                 w.writerow({k: ("" if v is None else v) for k, v in r.items()})
 
     atomic_write(out, "--out", write)
-    bad = sum(1 for r in res.rows if r["error"])
-    print(f"{out}: {len(res.rows)} designs ({bad} infeasible) in {res.seconds:.2f} s, "
+    # one rule for every command (cams.assess): a row without a solution, not verified or not buildable fails
+    none = sum(1 for r in res.rows if r["error"])
+    print(f"{out}: {len(res.rows)} designs ({res.failed} infeasible: {none} without a solution, "
+          f"{res.failed - none} not verified or not buildable) in {res.seconds:.2f} s, "
           f"{res.per_second:.1f} designs/s on {res.workers} process(es)", file=sys.stderr)
-    return EXIT_OK
+    return EXIT_OK if res.failed == 0 else EXIT_CHECK_FAILED
 
 
 def register(sub) -> None:
@@ -54,7 +56,9 @@ def register(sub) -> None:
     q = sub.add_parser(
         "sweep",
         help="solve a grid of designs varying design-file keys; write a CSV table",
-        description="Solve every combination of the varied keys of a design file and write a CSV table.",
+        description="Solve every combination of the varied keys of a design file and write a CSV table: each "
+                    "row's sizes, verified and buildable (the profile's checks and [dynamics] included) and why "
+                    "not. Exit code 0: every row usable, 1: a row has no solution or fails, 2: bad input.",
         epilog="example: cams sweep examples/rocker_force.toml --vary limits.pressure_angle=30:50:5 "
         "--vary follower.arm=100:200:3 --out sweep.csv",
     )

@@ -18,7 +18,7 @@ ROCKER = EXAMPLES / "rocker_flat.toml"
 
 SOLVE_KEYS = {"name", "follower", "face", "R0", "R0_min", "R0_source", "binding_deg", "min_radius", "min_rho",
               "min_rho_at_deg", "L", "face_offset", "offset", "centre", "face_range", "face_width",
-              "face_width_centred", "pressure_angle", "verified", "seconds", "notes"}
+              "face_width_centred", "pressure_angle", "verified", "buildable", "failures", "seconds", "notes"}
 
 
 def _flat(kind="translating", **over) -> dict:

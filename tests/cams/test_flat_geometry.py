@@ -109,9 +109,15 @@ def _circumradius(P) -> np.ndarray:
     return ab * bc * ca / (2 * cross)
 
 
-def _export(tmp_path, capsys, file, name="cam.csv", *, tolerance):
+def _export(tmp_path, capsys, file, name="cam.csv", *, tolerance, failing=False):
+    """The exported profile; a failing cam's is refused (exit 1, no file) unless asked for with --allow-failed."""
     out = tmp_path / name
-    assert main(["profile", str(file), "--csv", str(out), "--tolerance", tolerance]) == 0
+    argv = ["profile", str(file), "--csv", str(out), "--tolerance", tolerance]
+    if failing:
+        assert main(argv) == 1 and not out.exists()
+        assert main([*argv, "--allow-failed"]) == 1
+    else:
+        assert main(argv) == 0
     capsys.readouterr()
     return _csv(out)
 
@@ -203,7 +209,7 @@ def test_a_smaller_chosen_base_radius_fails_the_check(tmp_path, capsys, file):
     assert rc == 1 and not sol["verified"] and sol["R0"] == pytest.approx(R0 - 0.02 * rmin)
     assert sol["R0_source"] == "cam.base_radius" and sol["R0_min"] == pytest.approx(R0, abs=1e-9)
     # the exported profile of the smaller cam: its points' radii of curvature go below the limit
-    phi, P = _export(tmp_path, capsys, small, "small.csv", tolerance="1e-4")
+    phi, P = _export(tmp_path, capsys, small, "small.csv", tolerance="1e-4", failing=True)
     rho = -load_design(small).cam_sense * _circumradius(P)
     assert rho.min() < rmin - 0.005 * rmin
     assert rho.min() == pytest.approx(conv["worst"], rel=3e-4)

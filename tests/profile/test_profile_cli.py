@@ -61,11 +61,13 @@ def test_check_bad_profile_table_exit_2(tmp_path, capsys):
     assert "colour" in capsys.readouterr().err
 
 
-def test_groove_with_knife_edge_is_bad_input(tmp_path, capsys):
+def test_groove_with_knife_edge_is_not_buildable(tmp_path, capsys):
+    """A knife edge cannot run in a groove: not buildable (exit 1, naming the key), as in every command."""
     f = tmp_path / "knife_groove.toml"
     f.write_text((EXAMPLES / "rocker_form.toml").read_text().replace("roller_radius = 10.0", "roller_radius = 0.0"))
-    assert main(["check", str(f)]) == 2
-    assert "follower.roller_radius" in capsys.readouterr().err
+    assert main(["check", str(f)]) == 1
+    out = capsys.readouterr().out
+    assert "buildable: NO" in out and "follower.roller_radius" in out
 
 
 def test_profile_writes_all_three(tmp_path, capsys):

@@ -77,9 +77,14 @@ def test_infeasible_file_exit_2_one_line(name, capsys, tmp_path):
 def test_feasible_file_strict_json(name, capsys, tmp_path):
     rc, out, err = _run(capsys, tmp_path, FEASIBLE[name], "--json")
     rep = _strict_json(out)
-    # a minimum below the roller radius is the right answer but no cam to make: exit 1 (a failed check)
+    # a minimum below the roller radius is the right answer but no cam to make: exit 1 (a failed check);
+    # so is an undercut or self-crossing profile (cams.assess)
     assert rc == (0 if rep["buildable"] else 1), err
-    assert rep["buildable"] == (rep["R0"] > FEASIBLE[name]["follower"].get("roller_radius", 0.0))
+    no_profile = not rep["R0"] > FEASIBLE[name]["follower"].get("roller_radius", 0.0)
+    assert no_profile == any(f.startswith("no working profile") for f in rep["failures"])
+    assert rep["buildable"] == (not rep["failures"])
+    if no_profile:
+        assert rep["buildable"] is False
     assert rep["verified"] is True and rep["R0"] > 0
     assert rep["max_pressure_angle"]["rise"] <= rep["limits"]["rise"] + 1e-6
 

@@ -1,0 +1,159 @@
+"""One definition of a usable cam, shared by every command: verified and buildable.
+
+``verified`` keeps its meaning: the independent pressure-angle check of the
+solver's answer (:func:`cams.pressure.check_pressure`; for a flat face, its
+radius of curvature against ``limits.min_radius``). ``buildable`` says a cam
+can be made and run as designed; it is false when any of these fails:
+
+* a working profile exists: the pitch curve's base radius R0 is larger than
+  the roller radius (else the working profile lies outside the pitch curve);
+* form closure has a roller: a knife edge (roller radius 0) cannot run in a
+  groove;
+* every check of the finished profile except those of the verified side
+  (:func:`cams.checks.check_profile`; flat face
+  :func:`cams.flatface.check_flat_face`): no undercut or sharp point, the
+  groove's outer wall, the user's least radius of curvature, a valid closed
+  profile round the cam centre, the bore given by ``[cam] bore_radius``
+  inside the cam;
+* the ``[dynamics]`` table, when given: the follower keeps contact, does not
+  jam and meets no rigid impact (:attr:`cams.camforces.CamForces.ok`).
+
+A design is usable when it is both; every command exits 1 otherwise.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Assessment", "assess", "assess_cam", "knife_in_groove", "PRESSURE_CHECKS"]
+
+#: The checks of a profile that repeat the verified side (the pressure angle; a flat face's radius of
+#: curvature against limits.min_radius), not buildability.
+PRESSURE_CHECKS = ("jamming_rise", "jamming_return", "convexity")
+
+
+@dataclass(frozen=True)
+class Assessment:
+    """Whether a sized cam is verified and buildable, and why not.
+
+    Attributes
+    ----------
+    verified : bool
+        The independent check of the answer (pressure angle; flat face: radius
+        of curvature) passes, and so do the same limits recomputed from the
+        finished profile (:data:`PRESSURE_CHECKS`).
+    buildable : bool
+        Every condition of buildability passes (see the module).
+    failures : tuple of str
+        One readable line per failed condition, the not verified one first;
+        empty when the cam is usable.
+    short : tuple of str
+        The same failures in a word or two each (for titles of pictures).
+    """
+
+    verified: bool
+    buildable: bool
+    failures: tuple[str, ...] = ()
+    short: tuple[str, ...] = ()
+
+    @property
+    def usable(self) -> bool:
+        """Verified and buildable: what every command's exit code 0 means."""
+        return self.verified and self.buildable
+
+    def title(self) -> str:
+        """A picture's title line for a failing cam, e.g. ``"FAILS: undercut, bore"`` ("" when usable)."""
+        return "" if self.usable else "FAILS: " + ", ".join(self.short)
+
+    def to_dict(self) -> dict:
+        """JSON-ready ``{verified, buildable, failures}``."""
+        return {"verified": bool(self.verified), "buildable": bool(self.buildable), "failures": list(self.failures)}
+
+
+def knife_in_groove(design) -> bool:
+    """True for a roller design with form closure (a groove) and roller radius 0 (a knife edge)."""
+    if getattr(design, "face", "roller") == "flat":
+        return False
+    return design.limits.closure == "form" and not design.follower.roller_radius > 0
+
+
+def _dynamics_failure(forces) -> str | None:
+    """Why the cam forces (:class:`cams.camforces.CamForces`) fail, or None."""
+    if forces.ok:
+        return None
+    why = []
+    if forces.contact_lost:
+        why.append("the follower loses contact with the cam")
+    if bool(np.any(forces.jammed)):
+        why.append("the follower jams (pressure angle above the jamming limit)")
+    if forces.impacts:
+        why.append("rigid impacts (velocity jumps)")
+    return "dynamics: " + "; ".join(why or ["the forces fail"])
+
+
+def assess(design, solution, *, checks=None, forces=None) -> Assessment:
+    """Assess a sized cam from its parts.
+
+    Parameters
+    ----------
+    design : CamDesign or FlatFaceDesign
+    solution : optimize.solve.SolveResult or cams.flatface.FlatFaceSolution
+        Its ``verified`` is the verified side.
+    checks : CheckReport or FlatCheckReport, optional
+        The checks of the finished profile; None only when no profile can be
+        built (a knife edge in a groove).
+    forces : cams.camforces.DesignForces, optional
+        The ``[dynamics]`` results (None without a ``[dynamics]`` table or where
+        it does not apply).
+
+    Returns
+    -------
+    Assessment
+    """
+    failures: list[tuple[str, str]] = []  # (short, line)
+    verified = bool(solution.verified)
+    if not verified:
+        failures.append(("not verified", "not verified: the independent check finds a limit exceeded"))
+    buildable = True
+
+    def fail(short: str, line: str) -> None:
+        nonlocal buildable
+        buildable = False
+        failures.append((short, line))
+
+    flat = getattr(design, "face", "roller") == "flat"
+    if not flat:
+        r = float(design.follower.roller_radius)
+        if not solution.R0 > r:
+            fail("no working profile", f"no working profile: R0 = {solution.R0:.6g} mm is not larger than the "
+                 f"roller radius {r:g} mm")
+        if knife_in_groove(design):
+            fail("knife edge in a groove", "a knife edge cannot run in a groove: form closure needs "
+                 "follower.roller_radius > 0")
+    if checks is not None:
+        for c in checks.checks:
+            if c.passed:
+                continue
+            if c.name in PRESSURE_CHECKS:  # the same limits recomputed from the profile: the verified side
+                if verified:
+                    verified = False
+                    failures.insert(0, ("not verified", f"not verified: {c.name}: {c.message}"))
+            else:
+                fail(c.name, f"{c.name}: {c.message}" if c.message else c.name)
+    elif not flat and not knife_in_groove(design):
+        raise ValueError("assess: the profile checks are required")
+    if forces is not None:
+        why = _dynamics_failure(forces.forces)
+        if why is not None:
+            fail("dynamics", why)
+    return Assessment(verified, buildable, tuple(f for _, f in failures), tuple(s for s, _ in failures))
+
+
+def assess_cam(cam) -> Assessment:
+    """Assess a :class:`cams.cam.Cam`: its solution, the checks of its profile, its ``[dynamics]`` forces."""
+    checks = None if knife_in_groove(cam.design) else cam.checks
+    extra = getattr(cam.design, "extra", None)
+    has_dynamics = isinstance(extra, dict) and "dynamics" in extra  # else no forces module to import
+    return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None)
