@@ -171,22 +171,34 @@ def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None,
     Raises
     ------
     InfeasibleError
-        The zone (with ``extra``) is empty.
+        The zone (with ``extra``) is empty: the message names the limit that
+        binds and its nearest feasible value, the others held
+        (:func:`optimize.diagnose.explain_infeasible`).
     InputError
         An unknown method; an all-pairs run that would need too much memory.
     """
     method = check_option("solve.method", method or design.method, METHODS)
-    if method == "exact":
-        from optimize.exact import nearest_exact
+    try:
+        if method == "exact":
+            from optimize.exact import nearest_exact
 
-        return nearest_exact(design, target, extra=extra)
-    if method == "convex":
-        from optimize.convex import nearest_convex
+            return nearest_exact(design, target, extra=extra)
+        if method == "convex":
+            from optimize.convex import nearest_convex
 
-        return nearest_convex(design, target, samples=design.samples, extra=extra)
-    from optimize.exhaustive import nearest_exhaustive
+            return nearest_convex(design, target, samples=design.samples, extra=extra)
+        from optimize.exhaustive import nearest_exhaustive
 
-    return nearest_exhaustive(design, target, samples=design.samples, extra=extra)
+        return nearest_exhaustive(design, target, samples=design.samples, extra=extra)
+    except InfeasibleError as e:
+        if e.field not in ("limits.pressure_angle", "follower.offset"):
+            raise
+        from optimize.diagnose import explain_infeasible
+
+        why = explain_infeasible(design, extra)  # the limit that binds and its nearest feasible value
+        if why is None:
+            raise
+        raise why from e
 
 
 def _lmax(design: CamDesign) -> float:

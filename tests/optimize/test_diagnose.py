@@ -1,0 +1,134 @@
+"""When no cam centre is admissible: the binding limit and its nearest feasible value (issue 12, item 12).
+
+Independent references:
+
+* geometry: a rocker's wedges turn with it through the swing psi, so they share
+  a direction to infinity only when the limit exceeds psi / 2; below it the
+  zones of these designs are empty, above it they reach infinity, and the least
+  R0 grows without bound as the limit falls to psi / 2 (an infimum, not
+  attained);
+* brute force: a grid of centres judged by the validation reference
+  (``tests.validation.reference.ReferenceZone``: kinematic inversion, no zone
+  formulas), each admissible one confirmed by :func:`cams.pressure.check_pressure`:
+  none is admissible just below the reported value, some are just above it.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from cams.cli import main
+from cams.designfile import design_from_dict
+from cams.pressure import check_pressure
+from laws.errors import InfeasibleError
+from optimize.diagnose import _attained, explain_infeasible, relaxations
+from optimize.solve import solve
+from tests.conftest import EXAMPLES, rocker_dict
+from tests.validation.reference import ReferenceZone
+
+FORCE_7 = rocker_dict(limits={"pressure_angle": 7})  # swing 15 deg
+FORM_RETURN_5 = rocker_dict(limits={"closure": "form", "pressure_angle": 45, "return_pressure_angle": 5,
+                                    "safety_factor": 1.1})
+
+
+def _error(dct) -> InfeasibleError:
+    with pytest.raises(InfeasibleError) as info:
+        solve(design_from_dict(dct))
+    return info.value
+
+
+def _value(msg: str, word: str) -> float:
+    return float(re.search(word + r" is ([0-9.]+) deg", msg).group(1))
+
+
+def _grid_admissible(design, half: float = 3000.0, step: float = 15.0) -> np.ndarray:
+    """Centres of a grid about the pivot that the reference finds admissible (200 steps a phase)."""
+    x = np.arange(-half, half + step, step)
+    X, Y = np.meshgrid(x, x)
+    P = np.stack([X.ravel(), Y.ravel()], axis=1)
+    return P[ReferenceZone(design, 200).admissible(P)]
+
+
+def _brute_force_brackets(dct, key: str, value_deg: float):
+    """Nothing admissible 0.1 deg below the value; something 0.5 deg above, confirmed by check_pressure."""
+    below = design_from_dict(dct).with_(limits=replace(design_from_dict(dct).limits, **{key: np.radians(value_deg - 0.1)}))
+    above = design_from_dict(dct).with_(limits=replace(design_from_dict(dct).limits, **{key: np.radians(value_deg + 0.5)}))
+    assert len(_grid_admissible(below)) == 0
+    found = _grid_admissible(above)
+    assert len(found) > 0
+    assert check_pressure(above, found[len(found) // 2]).ok
+
+
+def test_force_rocker_7_deg_names_the_rise_limit_and_its_infimum():
+    """Before: "limits.pressure_angle: no cam centre satisfies the pressure-angle limits" (bare)."""
+    e = _error(FORCE_7)
+    msg = str(e)
+    assert e.field == "limits.pressure_angle" and "\n" not in msg
+    assert "7 deg on the rise" in msg and "other limits held" in msg
+    inf = _value(msg, "infimum")
+    assert inf == pytest.approx(15.0 / 2, abs=2e-4)  # psi / 2
+    assert "not attained" in msg
+    _brute_force_brackets(FORCE_7, "pressure_angle", inf)
+    # the least R0 grows without bound towards the infimum
+    d = design_from_dict(FORCE_7)
+    r0 = [solve(d.with_(limits=replace(d.limits, pressure_angle=np.radians(inf + dg)))).R0 for dg in (1.0, 0.1)]
+    assert r0[1] > 2 * r0[0]
+
+
+def test_form_return_limit_is_reported_against_the_return_field():
+    """Before: the return limit of 5 deg was reported against limits.pressure_angle."""
+    e = _error(FORM_RETURN_5)
+    assert e.field == "limits.return_pressure_angle"
+    assert "5 deg on the return" in str(e)
+    inf = _value(str(e), "infimum")
+    assert inf == pytest.approx(7.5, abs=2e-4)
+    _brute_force_brackets(FORM_RETURN_5, "return_pressure_angle", inf)
+
+
+def test_both_limits_too_small_relaxed_together():
+    dct = rocker_dict(limits={"closure": "form", "pressure_angle": 5, "return_pressure_angle": 6})
+    e = _error(dct)
+    assert e.field == "limits.pressure_angle"
+    assert "no limit relaxed alone is enough" in str(e)
+    assert _value(str(e), "infimum") == pytest.approx(7.5, abs=2e-4)
+
+
+def test_safety_factor_is_not_offered_when_it_cannot_help():
+    """Below psi / 2 the zone is empty at K_C = 1 too: K_C is not named as a fix, the rise limit is."""
+    d = design_from_dict(rocker_dict(limits={"pressure_angle": 7, "safety_factor": 1.3}))
+    found = relaxations(d)
+    assert [r.field for r in found] == ["limits.pressure_angle"]
+
+
+def test_fixed_L_with_an_empty_zone_names_the_limit(capsys, tmp_path):
+    """A fixed L (whose range needs a non-empty zone) on the command line: one line, exit 2, the rise limit."""
+    text = (EXAMPLES / "rocker_force.toml").read_text()
+    text = re.sub(r"pressure_angle = [0-9.]+", "pressure_angle = 7", text)
+    text = text.replace("[limits]", "[limits]\ncentre_distance = 100")
+    f = tmp_path / "d.toml"
+    f.write_text(text)
+    assert main(["solve", str(f)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert "limits.pressure_angle" in err and "infimum is 7.5000 deg" in err
+
+
+@pytest.mark.parametrize("method", ["convex", "exhaustive"])
+def test_sampled_methods_give_the_same_diagnosis(method):
+    dd = {**FORCE_7, "solve": {"method": method, "samples": 60}}
+    e = _error(dd)
+    assert e.field == "limits.pressure_angle" and _value(str(e), "infimum") == pytest.approx(7.5, abs=2e-4)
+
+
+def test_feasible_design_is_not_diagnosed():
+    assert explain_infeasible(design_from_dict(rocker_dict())) is None
+
+
+def test_attained_or_not():
+    """A least R0 converging to a finite value: attained; growing like a power of the distance: not."""
+    assert _attained(lambda v: 100.0 + v, 7.5, 1.0)
+    assert not _attained(lambda v: (v - 7.5) ** (-1 / 3), 7.5, 1.0)
