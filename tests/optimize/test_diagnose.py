@@ -132,3 +132,18 @@ def test_attained_or_not():
     """A least R0 converging to a finite value: attained; growing like a power of the distance: not."""
     assert _attained(lambda v: 100.0 + v, 7.5, 1.0)
     assert not _attained(lambda v: (v - 7.5) ** (-1 / 3), 7.5, 1.0)
+
+
+@pytest.mark.parametrize("closure", ["force", "form"])
+@pytest.mark.parametrize("offset", [-150.0, 150.0])
+def test_translating_fixed_offset_never_empties_the_zone(closure, offset):
+    """Why the diagnosis has no offset case: every wedge widens downwards, so any offset is admissible far enough down.
+
+    Offsets of 5 strokes either side: the exact method sizes a cam on that line, verified independently.
+    """
+    from tests.stress.helpers import translating_dict
+
+    d = design_from_dict(translating_dict(follower={"offset": offset}, limits={"closure": closure,
+                                                                              "pressure_angle": 20}))
+    r = solve(d)
+    assert r.pressure.ok and r.offset == pytest.approx(offset)
