@@ -2,8 +2,10 @@
 
 When the allowable-centre zone is empty, :func:`explain_infeasible` changes
 one limit at a time, the others held, and finds by bisection on the zone's
-emptiness (decided by :func:`optimize.exact.nearest_exact`, every cam angle) the
-value where the zone stops being empty:
+emptiness the value where the zone stops being empty. Emptiness is decided by
+the sign of the zone's largest inscribed margin (:func:`zone_margin`, every
+cam angle), a quantity that varies continuously with the limits, rather than
+by a solver's feasibility tolerance:
 
 * ``limits.pressure_angle`` (the rise; also the return under form closure when
   no return limit is given) and ``limits.return_pressure_angle`` (form
@@ -17,11 +19,12 @@ contains the half-line from its apex along -Y widening at its half-angle, so
 the zone reaches every offset far enough down; a fixed L misses a non-empty
 zone, and :func:`optimize.solve.admissible_L_range` gives its admissible range.
 
-The value printed is rounded towards the feasible side, so that it is feasible
-itself. The bound of the feasible set is an infimum (a supremum for K_C): it is
-attained when the zone there is a point or a segment; when the zone runs off to
-infinity as the limit approaches it (the least R0 grows without bound), the
-message says it is not attained.
+The bound of the feasible set is an infimum (a supremum for K_C). When it is
+attained (the zone there a point or a segment) the value printed is rounded
+towards the feasible side, so that it is feasible itself. When the zone runs
+off to infinity as the limit approaches it (the least R0 grows without bound,
+:func:`_attained`; a rocker's limit falling to half its swing), the message
+says it is not attained and prints the bound rounded to the nearest.
 """
 
 from __future__ import annotations
@@ -45,7 +48,7 @@ ANGLE_TOL_DEG = 1e-6
 K_TOL = 1e-9
 #: The least R0 growing by more than this factor while the limit approaches its bound 100-fold closer
 #: means the zone runs off to infinity: the bound is not attained (:func:`_attained`).
-GROWTH = 3.0
+GROWTH = 2.0
 
 
 @dataclass(frozen=True)
@@ -137,7 +140,10 @@ def zone_margin(design: CamDesign, extra=None, *, box: float = 1e6, iters: int =
 
 
 def zone_empty(design: CamDesign, extra=None) -> bool:
-    """True unless :func:`zone_margin` shows a centre inside the continuous zone (``upper <= 0``)."""
+    """True unless :func:`zone_margin` shows a centre inside the continuous zone (``upper <= 0``).
+
+    A margin left undecided after its iterations counts as empty.
+    """
     return bool(zone_margin(design, extra)[1] > 0)
 
 
@@ -171,12 +177,14 @@ def _bisect(empty: Callable[[float], bool], good: float, bad: float, tol: float)
 def _attained(R0_at: Callable[[float], float | None], bound: float, span: float) -> bool:
     """False when the least R0 grows without bound as the limit approaches ``bound``.
 
-    The least R0 at ``bound + span * 1e-1`` and ``bound + span * 1e-3`` (``span``
-    signed towards the feasible side): growth by more than :data:`GROWTH`
-    over a 100-fold approach means the zone runs off to infinity (near an
-    attained bound the least R0 converges to a finite value).
+    The least R0 at ``bound + 1e-2 span`` and nearer, at ``bound + 1e-4 span``
+    (``span`` signed towards the feasible side; ``3e-4`` and ``1e-3`` are tried
+    when the solver fails there): growth by more than :data:`GROWTH` means the
+    zone runs off to infinity (near an attained bound the least R0 converges
+    to a finite value).
     """
-    far, near = R0_at(bound + 1e-1 * span), R0_at(bound + 1e-3 * span)
+    far = R0_at(bound + 1e-2 * span)
+    near = next((r for k in (1e-4, 3e-4, 1e-3) if (r := R0_at(bound + k * span)) is not None), None)
     if far is None or near is None:
         return True
     return near <= GROWTH * far

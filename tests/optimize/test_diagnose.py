@@ -53,12 +53,13 @@ def _grid_admissible(design, half: float = 3000.0, step: float = 15.0) -> np.nda
     return P[ReferenceZone(design, 200).admissible(P)]
 
 
-def _brute_force_brackets(dct, key: str, value_deg: float):
+def _brute_force_brackets(dct, key: str, value_deg: float, **grid):
     """Nothing admissible 0.1 deg below the value; something 0.5 deg above, confirmed by check_pressure."""
-    below = design_from_dict(dct).with_(limits=replace(design_from_dict(dct).limits, **{key: np.radians(value_deg - 0.1)}))
-    above = design_from_dict(dct).with_(limits=replace(design_from_dict(dct).limits, **{key: np.radians(value_deg + 0.5)}))
-    assert len(_grid_admissible(below)) == 0
-    found = _grid_admissible(above)
+    d = design_from_dict(dct)
+    below = d.with_(limits=replace(d.limits, **{key: np.radians(value_deg - 0.1)}))
+    above = d.with_(limits=replace(d.limits, **{key: np.radians(value_deg + 0.5)}))
+    assert len(_grid_admissible(below, **grid)) == 0
+    found = _grid_admissible(above, **grid)
     assert len(found) > 0
     assert check_pressure(above, found[len(found) // 2]).ok
 
@@ -77,6 +78,35 @@ def test_force_rocker_7_deg_names_the_rise_limit_and_its_infimum():
     d = design_from_dict(FORCE_7)
     r0 = [solve(d.with_(limits=replace(d.limits, pressure_angle=np.radians(inf + dg)))).R0 for dg in (1.0, 0.1)]
     assert r0[1] > 2 * r0[0]
+
+
+#: Two rises (the second one linear) of a rocker: the zone is bounded near its least limit (a design of
+#: the random campaign).
+TWO_RISES = {
+    "name": "two rises", "cam": {"rotation": "ccw"},
+    "follower": {"kind": "rocker", "arm": 289.7011484176052, "swing": 42.148368567828854,
+                 "roller_radius": 14.485057420880262, "rise_direction": "ccw"},
+    "motion": [{"phase": "rise", "law": "cycloidal", "angle": 60.0, "height": 8.723812952238216},
+               {"phase": "dwell", "angle": 20.0},
+               {"phase": "rise", "law": "linear", "angle": 60.0, "height": 33.424555615590634},
+               {"phase": "dwell", "angle": 20.0}, {"phase": "return", "law": "cycloidal", "angle": 100.0},
+               {"phase": "dwell"}],
+    "limits": {"pressure_angle": 10, "closure": "force"},
+}
+
+
+def test_attained_least_value_of_a_bounded_zone():
+    """A bounded zone shrinking to a segment: "the least feasible is ..." (attained), bracketed by brute force."""
+    e = _error(TWO_RISES)
+    msg = str(e)
+    assert e.field == "limits.pressure_angle" and "10 deg on the rise" in msg and "not attained" not in msg
+    least = _value(msg, "least feasible")
+    assert least == pytest.approx(16.7123, abs=2e-4)  # regression value of this module (bisection, 1e-6 deg)
+    assert least < 42.148368567828854 / 2  # below psi / 2: a bounded zone, not one reaching infinity
+    _brute_force_brackets(TWO_RISES, "pressure_angle", least, half=1000.0, step=4.0)
+    # the printed value, rounded up, is itself feasible
+    d = design_from_dict(TWO_RISES)
+    assert solve(d.with_(limits=replace(d.limits, pressure_angle=np.radians(least)))).pressure.ok
 
 
 def test_form_return_limit_is_reported_against_the_return_field():
