@@ -29,6 +29,7 @@ says it is not attained and prints the bound rounded to the nearest.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, replace
 from typing import Callable
@@ -38,8 +39,9 @@ import numpy as np
 from cams.design import CamDesign
 from cams.follower import Rocker
 from laws.errors import InfeasibleError
+from optimize.result import CentreSolution
 
-__all__ = ["explain_infeasible", "Relaxation", "relaxations", "zone_margin", "zone_empty", "least_R0"]
+__all__ = ["diagnosed", "explain_infeasible", "Relaxation", "relaxations", "zone_margin", "zone_empty", "least_R0"]
 
 #: Loosest allowable pressure angle tried (degrees; the limits must stay below 90).
 LOOSEST_DEG = 89.99
@@ -317,3 +319,28 @@ def explain_infeasible(design: CamDesign, extra=None) -> InfeasibleError | None:
     for o in found[1:]:
         msg += f"; or {o.field}: {_sentence(o)}"
     return InfeasibleError(r.field, msg)
+
+
+def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolution]:
+    """Wrap a nearest-centre solver ``solver(design, target, *, extra=None, ...)``: explain an empty zone.
+
+    An :class:`InfeasibleError` of an empty zone (field ``limits.pressure_angle``
+    or ``follower.offset``) is replaced by :func:`explain_infeasible`'s, which
+    names the limit that binds and its nearest feasible value; it passes
+    unchanged when the continuous zone is not empty after all, and every other
+    error passes unchanged.
+    """
+
+    @functools.wraps(solver)
+    def wrapper(design: CamDesign, target: np.ndarray, *args, extra=None, **kw):
+        try:
+            return solver(design, target, *args, extra=extra, **kw)
+        except InfeasibleError as e:
+            if e.field not in ("limits.pressure_angle", "follower.offset"):
+                raise
+            why = explain_infeasible(design, extra)
+            if why is None:
+                raise
+            raise why from e
+
+    return wrapper

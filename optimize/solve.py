@@ -27,6 +27,7 @@ from cams.design import CamDesign, METHODS
 from cams.follower import Rocker, Translating
 from cams.pressure import PressureReport, check_pressure
 from laws.errors import InfeasibleError, InputError, check_option
+from optimize.diagnose import diagnosed
 from optimize.result import Binding, CentreSolution
 
 __all__ = ["SolveResult", "solve", "nearest", "admissible_L_range"]
@@ -146,6 +147,7 @@ def _offset_line(design: CamDesign):
     return None
 
 
+@diagnosed
 def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None, extra=None) -> CentreSolution:
     """Admissible centre nearest to ``target`` by the design's (or the given) method.
 
@@ -173,32 +175,22 @@ def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None,
     InfeasibleError
         The zone (with ``extra``) is empty: the message names the limit that
         binds and its nearest feasible value, the others held
-        (:func:`optimize.diagnose.explain_infeasible`).
+        (:func:`optimize.diagnose.diagnosed`).
     InputError
         An unknown method; an all-pairs run that would need too much memory.
     """
     method = check_option("solve.method", method or design.method, METHODS)
-    try:
-        if method == "exact":
-            from optimize.exact import nearest_exact
+    if method == "exact":
+        from optimize.exact import nearest_exact
 
-            return nearest_exact(design, target, extra=extra)
-        if method == "convex":
-            from optimize.convex import nearest_convex
+        return nearest_exact(design, target, extra=extra)
+    if method == "convex":
+        from optimize.convex import nearest_convex
 
-            return nearest_convex(design, target, samples=design.samples, extra=extra)
-        from optimize.exhaustive import nearest_exhaustive
+        return nearest_convex(design, target, samples=design.samples, extra=extra)
+    from optimize.exhaustive import nearest_exhaustive
 
-        return nearest_exhaustive(design, target, samples=design.samples, extra=extra)
-    except InfeasibleError as e:
-        if e.field not in ("limits.pressure_angle", "follower.offset"):
-            raise
-        from optimize.diagnose import explain_infeasible
-
-        why = explain_infeasible(design, extra)  # the limit that binds and its nearest feasible value
-        if why is None:
-            raise
-        raise why from e
+    return nearest_exhaustive(design, target, samples=design.samples, extra=extra)
 
 
 def _lmax(design: CamDesign) -> float:
