@@ -326,9 +326,11 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
 
     An :class:`InfeasibleError` of an empty zone (field ``limits.pressure_angle``
     or ``follower.offset``) is replaced by :func:`explain_infeasible`'s, which
-    names the limit that binds and its nearest feasible value; it passes
-    unchanged when the continuous zone is not empty after all, and every other
-    error passes unchanged.
+    names the limit that binds and its nearest feasible value. When the
+    continuous zone is not empty after all (a centre inside it, confirmed by
+    :func:`cams.pressure.check_pressure`), the solver failed: the error says so
+    (field ``solve.method``) and gives that centre's R0. Every other error
+    passes unchanged.
     """
 
     @functools.wraps(solver)
@@ -340,7 +342,22 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
                 raise
             why = explain_infeasible(design, extra)
             if why is None:
+                why = _solver_failed(design, extra, e)
+            if why is None:
                 raise
             raise why from e
 
     return wrapper
+
+
+def _solver_failed(design: CamDesign, extra, err: InfeasibleError) -> InfeasibleError | None:
+    """The error of a solver that found no centre in a zone that is not empty, or None if unconfirmed."""
+    from cams.pressure import check_pressure
+
+    lower, upper, O = zone_margin(design, extra)
+    if upper > 0 or not check_pressure(design, O).ok:
+        return None
+    R0 = float(np.linalg.norm(O - design.follower.position(0.0)))
+    return InfeasibleError("solve.method", f"the {design.method} method found no admissible cam centre ({err}), but "
+                           f"the zone is not empty: a centre at R0 = {R0:.6g} mm satisfies every limit; try "
+                           "another method")

@@ -25,7 +25,7 @@ from cams.cli import main
 from cams.designfile import design_from_dict
 from cams.pressure import check_pressure
 from laws.errors import InfeasibleError
-from optimize.diagnose import _attained, explain_infeasible, relaxations
+from optimize.diagnose import _attained, diagnosed, explain_infeasible, relaxations
 from optimize.solve import solve
 from tests.conftest import EXAMPLES, rocker_dict
 from tests.validation.reference import ReferenceZone
@@ -177,3 +177,18 @@ def test_translating_fixed_offset_never_empties_the_zone(closure, offset):
                                                                               "pressure_angle": 20}))
     r = solve(d)
     assert r.pressure.ok and r.offset == pytest.approx(offset)
+
+
+def test_a_solver_that_fails_on_a_non_empty_zone_is_not_reported_as_infeasible_limits():
+    """A solver refusing a feasible design: the error blames the solver and gives a centre checked independently."""
+
+    @diagnosed
+    def refuses(design, target, *, extra=None):
+        raise InfeasibleError("limits.pressure_angle", "no cam centre satisfies the pressure-angle limits")
+
+    d = design_from_dict(rocker_dict())
+    with pytest.raises(InfeasibleError) as info:
+        refuses(d, d.follower.position(0.0))
+    assert info.value.field == "solve.method" and "the zone is not empty" in str(info.value)
+    R0 = float(re.search(r"R0 = ([0-9.e+]+) mm", str(info.value)).group(1))
+    assert R0 >= solve(d).R0 * (1 - 1e-9)  # no centre nearer than the least R0
