@@ -48,9 +48,9 @@ LOOSEST_DEG = 89.99
 #: Bisection stops when the bracket is narrower than this (degrees for angles, absolute for K_C).
 ANGLE_TOL_DEG = 1e-6
 K_TOL = 1e-9
-#: The least R0 growing by more than this factor while the limit approaches its bound 100-fold closer
-#: means the zone runs off to infinity: the bound is not attained (:func:`_attained`).
-GROWTH = 2.0
+#: Ratio of the least R0's successive steps, one decade closer to the bound each, at and above which it
+#: grows without bound: the bound is not attained (:func:`_attained`).
+GROWTH = 0.9
 
 
 @dataclass(frozen=True)
@@ -179,17 +179,20 @@ def _bisect(empty: Callable[[float], bool], good: float, bad: float, tol: float)
 def _attained(R0_at: Callable[[float], float | None], bound: float, span: float) -> bool:
     """False when the least R0 grows without bound as the limit approaches ``bound``.
 
-    The least R0 at ``bound + 1e-2 span`` and nearer, at ``bound + 1e-4 span``
-    (``span`` signed towards the feasible side; ``3e-4`` and ``1e-3`` are tried
-    when the solver fails there): growth by more than :data:`GROWTH` means the
-    zone runs off to infinity (near an attained bound the least R0 converges
-    to a finite value).
+    The least R0 at ``bound + k span`` for ``k = 1e-2, 1e-3, 1e-4`` (``span``
+    signed towards the feasible side; ten times farther when the solver fails
+    there): near an attained bound it converges to a finite value, so its
+    steps from one decade to the next shrink; when the zone runs off to
+    infinity they do not (a power or a logarithm of the distance). Not attained
+    when the last step is positive and at least :data:`GROWTH` times the one
+    before.
     """
-    far = R0_at(bound + 1e-2 * span)
-    near = next((r for k in (1e-4, 3e-4, 1e-3) if (r := R0_at(bound + k * span)) is not None), None)
-    if far is None or near is None:
-        return True
-    return near <= GROWTH * far
+    for ks in ((1e-2, 1e-3, 1e-4), (1e-1, 1e-2, 1e-3)):
+        r = [R0_at(bound + k * span) for k in ks]
+        if None not in r:
+            d1, d2 = r[1] - r[0], r[2] - r[1]
+            return not (d2 > 0 and d2 >= GROWTH * d1)
+    return True
 
 
 def relaxations(design: CamDesign, extra=None) -> list[Relaxation]:

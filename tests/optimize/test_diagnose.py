@@ -192,3 +192,45 @@ def test_a_solver_that_fails_on_a_non_empty_zone_is_not_reported_as_infeasible_l
     assert info.value.field == "solve.method" and "the zone is not empty" in str(info.value)
     R0 = float(re.search(r"R0 = ([0-9.e+]+) mm", str(info.value)).group(1))
     assert R0 >= solve(d).R0 * (1 - 1e-9)  # no centre nearer than the least R0
+
+
+def test_attained_when_the_least_R0_converges_slowly():
+    """R0* - c d^0.4 (steps shrink 2.5-fold a decade) is attained; c log(1/d) (equal steps) is not."""
+    assert _attained(lambda v: 8400.0 - 3000.0 * (v - 15.0) ** 0.4, 15.0, 75.0)
+    assert not _attained(lambda v: 500.0 * np.log(1.0 / (v - 15.0)), 15.0, 75.0)
+
+
+def test_random_rockers_infimum_is_half_the_swing_or_attained_below():
+    """Random rockers with small limits (both closures, any law, multi-rise programs, K_C, any scale).
+
+    Geometry: the zone reaches infinity exactly when the limit exceeds psi / 2,
+    so a bound that is not attained is psi / 2, and an attained one lies at or
+    below it (a bounded zone). Every message is one line naming a limit.
+    """
+    import random
+
+    from tests.stress.test_stress_properties import random_design
+
+    rng = random.Random(11)
+    seen = {"attained": 0, "not": 0}
+    while sum(seen.values()) < 12:
+        dd = random_design(rng)
+        dd["limits"]["pressure_angle"] = rng.uniform(1, 25)
+        if "return_pressure_angle" in dd["limits"]:
+            dd["limits"]["return_pressure_angle"] = rng.uniform(1, 40)
+        if dd["follower"]["kind"] != "rocker":
+            continue
+        try:
+            solve(design_from_dict(dd))
+            continue
+        except InfeasibleError as e:
+            msg, field = str(e), e.field
+        assert "\n" not in msg and field in ("limits.pressure_angle", "limits.return_pressure_angle"), msg
+        half = dd["follower"]["swing"] / 2
+        if "not attained" in msg:
+            assert _value(msg, "infimum") == pytest.approx(half, abs=1e-3), msg
+            seen["not"] += 1
+        else:
+            assert _value(msg, "least feasible") <= half + 1e-3, msg
+            seen["attained"] += 1
+    assert seen["not"] >= 6  # the attained case: also test_attained_least_value_of_a_bounded_zone
