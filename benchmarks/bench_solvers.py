@@ -62,8 +62,9 @@ CONVEX_STEPS = (10, 30, 100, 300, 1000)
 ALLPAIRS_STEPS = (10, 30, 100, 300, 1000, 3000, 10000)
 #: Steps per phase of both sampled methods with ``--quick``.
 QUICK_STEPS = (10, 100)
-#: Peak bytes per crossing of the all-pairs method, measured with tracemalloc (65.0 at 1,000 and 3,000 steps).
-ALLPAIRS_BYTES_PER_PAIR = 65.0
+#: Peak bytes per pair of sampled positions of the all-pairs method (two candidates a pair: the t-t x t1-t1
+#: crossing, and a same-side crossing or a foot), measured with tracemalloc (80 per candidate at 240-960 steps).
+ALLPAIRS_BYTES_PER_PAIR = 160.0
 #: Largest steps per phase of the all-pairs method: by the number of constrained phases, and for
 #: the designs that go further (the run time grows about as the cube of the steps: 10,000 steps
 #: take 7 to 20 minutes on one design, the harmonic law being among the quickest).

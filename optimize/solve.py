@@ -29,6 +29,7 @@ from cams.design import CamDesign, METHODS
 from cams.follower import Rocker, Translating
 from cams.pressure import PressureReport, check_pressure
 from laws.errors import InfeasibleError, InputError, check_option
+from optimize.diagnose import diagnosed
 from optimize.result import Binding, CentreSolution
 
 __all__ = ["SolveResult", "solve", "nearest", "admissible_L_range", "excess", "pressure_failures"]
@@ -150,6 +151,7 @@ def _offset_line(design: CamDesign):
     return None
 
 
+@diagnosed
 def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None, extra=None) -> CentreSolution:
     """Admissible centre nearest to ``target`` by the design's (or the given) method.
 
@@ -175,7 +177,9 @@ def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None,
     Raises
     ------
     InfeasibleError
-        The zone (with ``extra``) is empty.
+        The zone (with ``extra``) is empty: the message names the limit that
+        binds and its nearest feasible value, the others held
+        (:func:`optimize.diagnose.diagnosed`).
     InputError
         An unknown method; an all-pairs run that would need too much memory.
     """

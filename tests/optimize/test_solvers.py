@@ -30,12 +30,29 @@ def test_exhaustive_and_convex_give_the_same_apex(dct):
 
 
 def test_nearest_point_on_an_edge_beats_the_seed_apex():
-    """Same senses, force closure: the nearest admissible point lies on one line (DOMAIN.md)."""
+    """Same senses, force closure: the nearest admissible point lies on one line (DOMAIN.md).
+
+    The seed's candidates alone (every t-t line crossed with every t1-t1
+    line, the nearest admissible one: computed here with the planar
+    primitives) miss it; the exhaustive method, completed with the feet of the
+    perpendicular, finds the convex method's point on the edge.
+    """
+    from optimize.planar import feasible_mask, line_crossings
+    from optimize.zone import sample_wedges
+
     d = _d(SAME_SENSE_FORCE, samples=120)
     ex = solve(d, method="exhaustive")
     cv = solve(d, method="convex")
     exact = solve(d, method="exact")
-    assert cv.R0 < ex.R0 - 1e-3
+    W = sample_wedges(d, 120)
+    P, ok = line_crossings(W.normals[:, 0], W.offsets[:, 0], W.normals[:, 1], W.offsets[:, 1])
+    P = P[ok]
+    N, c = W.lines()
+    A0 = d.follower.position(0.0)
+    seed_apex = np.min(np.linalg.norm(P[feasible_mask(P, N, c, 1e-9 * 125)] - A0, axis=1))
+    assert cv.R0 < seed_apex - 1e-3
+    assert ex.R0 == pytest.approx(cv.R0, rel=1e-10)
+    assert len(ex.binding) == 1
     assert len(exact.binding) == 1
     assert cv.R0 <= exact.R0 + 1e-12
     assert exact.pressure.ok

@@ -1,0 +1,366 @@
+"""Why no cam centre is admissible: the limit that binds and the nearest value of it that is feasible.
+
+When the allowable-centre zone is empty, :func:`explain_infeasible` changes
+one limit at a time, the others held, and finds by bisection on the zone's
+emptiness the value where the zone stops being empty. Emptiness is decided by
+the sign of the zone's largest inscribed margin (:func:`zone_margin`, every
+cam angle), a quantity that varies continuously with the limits, rather than
+by a solver's feasibility tolerance:
+
+* ``limits.pressure_angle`` (the rise; also the return under form closure when
+  no return limit is given) and ``limits.return_pressure_angle`` (form
+  closure): the least feasible allowable angle (larger is looser);
+* ``limits.safety_factor`` (K_C of seed formula 3.26, rockers): the largest
+  feasible K_C (larger is stricter, 1 the loosest);
+* both pressure angles together, when neither alone is enough.
+
+A fixed offset of a translating follower never empties the zone: every wedge
+contains the half-line from its apex along -Y widening at its half-angle, so
+the zone reaches every offset far enough down; a fixed L misses a non-empty
+zone, and :func:`optimize.solve.admissible_L_range` gives its admissible range.
+
+The bound of the feasible set is an infimum (a supremum for K_C). When it is
+attained (the zone there a point or a segment) the value printed is rounded
+towards the feasible side, so that it is feasible itself. When the zone runs
+off to infinity as the limit approaches it (the least R0 grows without bound,
+:func:`_attained`; a rocker's limit falling to half its swing), the message
+says it is not attained and prints the bound rounded to the nearest.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, replace
+from typing import Callable
+
+import numpy as np
+
+from cams.design import CamDesign
+from cams.follower import Rocker
+from laws.errors import InfeasibleError
+from optimize.result import CentreSolution
+
+__all__ = ["diagnosed", "explain_infeasible", "Relaxation", "relaxations", "zone_margin", "zone_empty", "least_R0"]
+
+#: Loosest allowable pressure angle tried (degrees; the limits must stay below 90).
+LOOSEST_DEG = 89.99
+#: Bisection stops when the bracket is narrower than this (degrees for angles, absolute for K_C).
+ANGLE_TOL_DEG = 1e-6
+K_TOL = 1e-9
+#: Ratio of the least R0's successive steps, one decade closer to the bound each, at and above which it
+#: grows without bound: the bound is not attained (:func:`_attained`).
+GROWTH = 0.9
+
+
+@dataclass(frozen=True)
+class Relaxation:
+    """The nearest feasible value of one limit, the others held.
+
+    Attributes
+    ----------
+    field : str
+        Dotted name of the limit, e.g. ``"limits.return_pressure_angle"``.
+    given : float
+        Its value in the design (radians for angles, K_C plain).
+    bound : float
+        The infimum of the feasible values (the supremum for K_C), same unit;
+        the upper (lower) end of the final bisection bracket, feasible.
+    attained : bool
+        False when the zone runs off to infinity as the limit approaches ``bound``.
+    joint : bool
+        The rise's and the return's limits changed together (form closure).
+    """
+
+    field: str
+    given: float
+    bound: float
+    attained: bool
+    joint: bool = False
+
+    @property
+    def change(self) -> float:
+        """Relative change the relaxation asks for, ``|bound - given| / given``."""
+        return abs(self.bound - self.given) / abs(self.given)
+
+
+def zone_margin(design: CamDesign, extra=None, *, box: float = 1e6, iters: int = 40) -> tuple[float, float, np.ndarray]:
+    """Bounds on the zone's largest inscribed margin: ``min over O of max signed distance outside``.
+
+    The continuous function ``G(O)`` (:func:`optimize.zone.max_violation`,
+    every cam angle, length unit) is convex; its minimum is <= 0 exactly when
+    the zone is not empty, and varies continuously with the limits, so the
+    sign is a robust test of emptiness (no feasibility tolerance). Found by
+    cutting planes: a linear program ``min t`` with ``N O - c <= t`` over the
+    lines sampled at 64 steps per phase and the worst lines of the continuum
+    added at each step (scipy's HiGHS), centres within ``box`` times the
+    design's scale of the roller's start point A0.
+
+    Parameters
+    ----------
+    extra : (N, c), optional
+        Half-planes held exactly (the line of a fixed offset).
+
+    Returns
+    -------
+    lower, upper : float
+        ``lower <= min G <= upper`` (length unit): ``lower > 0`` proves the zone
+        empty (within the box), ``upper <= 0`` proves it not empty.
+    centre : ndarray, shape (2,)
+        The centre where ``G = upper`` (the follower's fixed frame).
+    """
+    from scipy.optimize import linprog
+
+    from optimize.zone import sample_wedges, scan_peaks, zone_table
+
+    scale = design.scale
+    A0 = design.follower.position(0.0)
+    N, c = sample_wedges(design, 64).lines()
+    eN = np.zeros((0, 2)) if extra is None else np.asarray(extra[0], float)
+    ec = np.zeros(0) if extra is None else np.asarray(extra[1], float)
+    bounds = [(A0[0] - box * scale, A0[0] + box * scale), (A0[1] - box * scale, A0[1] + box * scale), (None, None)]
+    t = zone_table(design)
+    lower, upper, best = -np.inf, np.inf, A0
+    for _ in range(iters):
+        A = np.vstack([np.hstack([N, -np.ones((len(N), 1))]), np.hstack([eN, np.zeros((len(eN), 1))])])
+        res = linprog([0.0, 0.0, 1.0], A_ub=A, b_ub=np.concatenate([c, ec]), bounds=bounds, method="highs")
+        if res.status == 2:  # the held lines miss the box
+            return np.inf, np.inf, A0
+        if res.status != 0:
+            break
+        O, lower = res.x[:2], float(res.x[2])
+        pk = scan_peaks(t, O)
+        g = float(np.max(pk.value))
+        if g < upper:
+            upper, best = g, O
+        if upper - lower <= 1e-9 * scale or lower > 0 or upper <= 0:
+            break
+        bad = pk.value > lower
+        N = np.vstack([N, np.stack([pk.nx[bad], pk.ny[bad]], axis=1)])
+        c = np.concatenate([c, pk.offset[bad]])
+    return lower, upper, best
+
+
+def zone_empty(design: CamDesign, extra=None) -> bool:
+    """True unless :func:`zone_margin` shows a centre inside the continuous zone (``upper <= 0``).
+
+    A margin left undecided after its iterations counts as empty.
+    """
+    return bool(zone_margin(design, extra)[1] > 0)
+
+
+def least_R0(design: CamDesign) -> float | None:
+    """Least R0 of the continuous zone by :func:`optimize.exact.nearest_exact` (length), None if it fails."""
+    from optimize.exact import nearest_exact
+
+    try:
+        return nearest_exact(design, design.follower.position(0.0)).objective
+    except InfeasibleError:
+        return None
+
+
+def _bisect(empty: Callable[[float], bool], good: float, bad: float, tol: float) -> float:
+    """The boundary between a feasible ``good`` and an infeasible ``bad`` value: the last feasible value.
+
+    ``empty(v)`` tells whether the zone is empty at ``v``; the bracket is
+    halved until narrower than ``tol``.
+    """
+    while abs(good - bad) > tol:
+        mid = 0.5 * (good + bad)
+        if mid in (good, bad):
+            break
+        if empty(mid):
+            bad = mid
+        else:
+            good = mid
+    return good
+
+
+def _attained(R0_at: Callable[[float], float | None], bound: float, span: float) -> bool:
+    """False when the least R0 grows without bound as the limit approaches ``bound``.
+
+    The least R0 at ``bound + k span`` for ``k = 1e-2, 1e-3, 1e-4`` (``span``
+    signed towards the feasible side; ten times farther when the solver fails
+    there): near an attained bound it converges to a finite value, so its
+    steps from one decade to the next shrink; when the zone runs off to
+    infinity they do not (a power or a logarithm of the distance). Not attained
+    when the last step is positive and at least :data:`GROWTH` times the one
+    before.
+    """
+    for ks in ((1e-2, 1e-3, 1e-4), (1e-1, 1e-2, 1e-3)):
+        r = [R0_at(bound + k * span) for k in ks]
+        if None not in r:
+            d1, d2 = r[1] - r[0], r[2] - r[1]
+            return not (d2 > 0 and d2 >= GROWTH * d1)
+    return True
+
+
+def relaxations(design: CamDesign, extra=None) -> list[Relaxation]:
+    """Every limit that alone can make the empty zone non-empty, with its nearest feasible value.
+
+    Parameters
+    ----------
+    design : CamDesign
+        A design whose zone (with ``extra``) is empty.
+    extra : (N, c), optional
+        Additional half-planes held (the line of a fixed offset).
+
+    Returns
+    -------
+    list of Relaxation
+        Sorted by the relative change they ask for, the smallest first.
+    """
+    lim = design.limits
+    out = []
+    loose = math.radians(LOOSEST_DEG)
+    fields = ["limits.pressure_angle"]
+    if lim.closure == "form" and any(p.kind == "return" for p in design.program.phases):
+        fields.append("limits.return_pressure_angle")
+    for name in fields:
+        key = name.split(".")[1]
+        given = lim.pressure_angle if key == "pressure_angle" else lim.return_limit
+        if given >= loose:
+            continue
+
+        def with_value(v, key=key):
+            return design.with_(limits=replace(lim, **{key: v}))
+
+        if zone_empty(with_value(loose), extra):
+            continue
+        bound = _bisect(lambda v: zone_empty(with_value(v), extra), loose, given, math.radians(ANGLE_TOL_DEG))
+        attained = extra is not None or _attained(lambda v: least_R0(with_value(v)), bound, loose - bound)
+        out.append(Relaxation(name, given, bound, attained))
+    if not out and len(fields) == 2:
+        def both(v):
+            return design.with_(limits=replace(lim, pressure_angle=v, return_pressure_angle=v))
+
+        given = max(lim.pressure_angle, lim.return_limit)
+        if given < loose and not zone_empty(both(loose), extra):
+            bound = _bisect(lambda v: zone_empty(both(v), extra), loose, given, math.radians(ANGLE_TOL_DEG))
+            attained = _attained(lambda v: least_R0(both(v)), bound, loose - bound)
+            out.append(Relaxation("limits.pressure_angle", given, bound, attained, joint=True))
+    if isinstance(design.follower, Rocker) and lim.safety_factor > 1.0:
+        def with_k(v):
+            return design.with_(limits=replace(lim, safety_factor=v))
+
+        if not zone_empty(with_k(1.0), extra):
+            bound = _bisect(lambda v: zone_empty(with_k(v), extra), 1.0, lim.safety_factor, K_TOL)
+            attained = extra is not None or _attained(lambda v: least_R0(with_k(v)), bound, 1.0 - bound)
+            out.append(Relaxation("limits.safety_factor", lim.safety_factor, bound, attained))
+    return sorted(out, key=lambda x: x.change)
+
+
+def _deg(v: float, up: bool) -> str:
+    """Degrees rounded to 4 decimals towards the feasible side (``up``: a larger value is feasible)."""
+    d = math.degrees(v)
+    r = (math.ceil if up else math.floor)(d * 1e4) / 1e4
+    return f"{r:.4f} deg"
+
+
+def _show(r: Relaxation, v: float) -> str:
+    """A value of ``r``'s limit, rounded towards the feasible side: degrees, or K_C down to 6 decimals."""
+    if r.field == "limits.safety_factor":
+        return f"{math.floor(v * 1e6) / 1e6:.6f}"
+    return _deg(v, up=True)
+
+
+def _sentence(r: Relaxation) -> str:
+    """What is feasible of ``r``'s limit, the others held."""
+    kind = "largest" if r.field == "limits.safety_factor" else "least"
+    if r.attained:
+        return f"the {kind} feasible is {_show(r, r.bound)}"
+    inf, more = ("supremum", "smaller") if kind == "largest" else ("infimum", "larger")
+    near = f"{r.bound:.6f}" if r.field == "limits.safety_factor" else f"{math.degrees(r.bound):.4f} deg"
+    return (f"the {inf} is {near}, not attained: every {more} value is feasible, with a cam that "
+            "grows without bound as the limit approaches it")
+
+
+def _where(design: CamDesign, r: Relaxation) -> str:
+    """Where the limit ``r`` applies, for the message."""
+    field = r.field
+    if field == "limits.return_pressure_angle":
+        return "on the return"
+    if field == "limits.safety_factor":
+        return "as K_C"
+    both = design.limits.closure == "form" and design.limits.return_pressure_angle is None
+    return "on the rise and the return" if both else "on the rise"
+
+
+def explain_infeasible(design: CamDesign, extra=None) -> InfeasibleError | None:
+    """One-line error naming the limit that binds and its nearest feasible value, the others held.
+
+    Parameters
+    ----------
+    design : CamDesign
+        A design for which a solver found no admissible centre.
+    extra : (N, c), optional
+        The half-planes of a fixed offset (``optimize.solve._offset_line``).
+
+    Returns
+    -------
+    InfeasibleError or None
+        None when the continuous zone (with ``extra``) is not empty after all
+        (the caller keeps its own error). The field is the limit whose
+        feasible value is the smallest relative change; the others that alone
+        would do are listed after it.
+    """
+    if not zone_empty(design, extra):
+        return None
+    found = relaxations(design, extra)
+    if not found:
+        return InfeasibleError("limits.pressure_angle", "no cam centre satisfies the limits, and no limit relaxed "
+                               f"(pressure angles up to {LOOSEST_DEG:g} deg, K_C down to 1) makes one admissible")
+    r = found[0]
+    if r.joint:
+        lim = design.limits
+        return InfeasibleError(r.field, f"no cam centre satisfies {math.degrees(lim.pressure_angle):.6g} deg on the "
+                               f"rise and {math.degrees(lim.return_limit):.6g} deg on the return, and no limit relaxed "
+                               "alone is enough; with limits.return_pressure_angle equal to it, "
+                               f"{_sentence(r)} (other limits held)")
+    given = f"{r.given:g}" if r.field == "limits.safety_factor" else f"{math.degrees(r.given):.6g} deg"
+    msg = f"no cam centre satisfies {given} {_where(design, r)}; {_sentence(r)} (other limits held)"
+    for o in found[1:]:
+        msg += f"; or {o.field}: {_sentence(o)}"
+    return InfeasibleError(r.field, msg)
+
+
+def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolution]:
+    """Wrap a nearest-centre solver ``solver(design, target, *, extra=None, ...)``: explain an empty zone.
+
+    An :class:`InfeasibleError` of an empty zone (field ``limits.pressure_angle``
+    or ``follower.offset``) is replaced by :func:`explain_infeasible`'s, which
+    names the limit that binds and its nearest feasible value. When the
+    continuous zone is not empty after all (a centre inside it, confirmed by
+    :func:`cams.pressure.check_pressure`), the solver failed: the error says so
+    (field ``solve.method``) and gives that centre's R0. Every other error
+    passes unchanged.
+    """
+
+    @functools.wraps(solver)
+    def wrapper(design: CamDesign, target: np.ndarray, *args, extra=None, **kw):
+        try:
+            return solver(design, target, *args, extra=extra, **kw)
+        except InfeasibleError as e:
+            if e.field not in ("limits.pressure_angle", "follower.offset"):
+                raise
+            why = explain_infeasible(design, extra)
+            if why is None:
+                why = _solver_failed(design, extra, e)
+            if why is None:
+                raise
+            raise why from e
+
+    return wrapper
+
+
+def _solver_failed(design: CamDesign, extra, err: InfeasibleError) -> InfeasibleError | None:
+    """The error of a solver that found no centre in a zone that is not empty, or None if unconfirmed."""
+    from cams.pressure import check_pressure
+
+    lower, upper, O = zone_margin(design, extra)
+    if upper > 0 or not check_pressure(design, O).ok:
+        return None
+    R0 = float(np.linalg.norm(O - design.follower.position(0.0)))
+    return InfeasibleError("solve.method", f"the {design.method} method found no admissible cam centre ({err}), but "
+                           f"the zone is not empty: a centre at R0 = {R0:.6g} mm satisfies every limit; try "
+                           "another method")
