@@ -45,16 +45,16 @@ from pathlib import Path
 import numpy as np
 
 from cams.design import CamDesign, FlatFaceDesign, Limits
-from cams.files import check_keys, read_toml
+from cams.files import check_document, check_keys, read_toml, toml_integer
 from cams.files import toml_number as _num
 from cams.files import toml_table as _table
 from cams.flatface import FlatRocker, FlatTranslating
 from cams.follower import Rocker, Translating, sense_of
-from laws.errors import InputError, check_option
+from laws.errors import InputError, check_option, show_value
 from laws.program import Phase, Program
 from laws.registry import get_law
 
-__all__ = ["load_design", "design_from_dict"]
+__all__ = ["load_design", "design_from_dict", "MAX_SAMPLES"]
 
 _KEYS = {
     "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics"},
@@ -113,6 +113,10 @@ def _check_keys(table: dict, where: str, field: str) -> None:
     check_keys(table, _KEYS[where], field or "design")
 
 
+#: The most steps per phase of the sampled methods (``[solve] samples``): memory and time grow with the
+#: samples (about 1 kB a sample for the convex method), and the exact method needs none.
+MAX_SAMPLES = 100_000
+
 #: Lengths (mm) a design may use: from a picometre to 1000 km; outside, round-off or overflow would
 #: make the answers meaningless (the solvers work to 1e-12 of the design's scale).
 LENGTH_RANGE = (1e-9, 1e9)
@@ -133,9 +137,9 @@ def _check_length_range(d: dict) -> None:
             continue
         for k in keys:
             v = t.get(k)
-            if isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) and v != 0 \
-                    and not lo <= abs(v) <= hi:
-                raise InputError(f"{table}.{k}", f"{v:g} mm is outside the lengths a design may use "
+            if isinstance(v, (int, float)) and not isinstance(v, bool) and not (isinstance(v, float) and math.isnan(v)) \
+                    and v != 0 and not lo <= abs(v) <= hi:  # ints of any size; inf is outside too
+                raise InputError(f"{table}.{k}", f"{show_value(v)} mm is outside the lengths a design may use "
                                  f"({lo:g} to {hi:g} mm in size)")
 
 
@@ -165,11 +169,20 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         Unknown keys, missing or invalid values, units other than mm; the
         field is named (e.g. ``"motion[2].angle"``).
     """
+    if not isinstance(d, dict):
+        raise InputError("design", f"must be a dict of the file's tables, got {type(d).__name__}")
+    _check_length_range(d)  # before the general check: the lengths' own range is the clearer message
+    check_document(d)
+    if "linkage" in d:
+        raise InputError("linkage", "the file has a [linkage] table: it is a machine file, to be run with "
+                         "`cams machine`; a design file describes the cam alone (see examples/)")
+    if "follower" not in d:
+        raise InputError("follower", "the file has no [follower] table; a design file needs [follower], [[motion]] "
+                         "and [limits] (see examples/ or `cams new`)")
     _check_keys(d, "", "")
     if d.get("units", "mm") != "mm":
         raise InputError("units", f"{d['units']!r} is not supported: design files are in mm (the "
                          "[dynamics] table's journal_radius too; its other values are SI)")
-    _check_length_range(d)
     fo = _table(d, "follower")
     kind = check_option("follower.kind", fo.get("kind", "rocker"), ("rocker", "translating"))
     if check_option("follower.face", fo.get("face", "roller"), ("roller", "flat")) == "flat":
@@ -224,9 +237,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     _check_keys(_table(d, "profile"), "profile", "profile")
     so = _table(d, "solve")
     _check_keys(so, "solve", "solve")
-    samples = so.get("samples", 360)
-    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 2:
-        raise InputError("solve.samples", f"must be an integer >= 2, got {samples!r}")
+    samples = toml_integer(so, "samples", "solve.samples", default=360, lo=2, hi=MAX_SAMPLES)
     objective = check_option("solve.objective", so.get("objective", "R0"), ("R0", "L"))
     if objective == "L" and kind != "rocker":
         raise InputError("solve.objective", "'L' (least centre distance) applies to rocker followers; a translating "
@@ -248,7 +259,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
 def _name(d: dict) -> str:
     name = d.get("name", "cam")
     if not isinstance(name, str):
-        raise InputError("name", "must be a string")
+        raise InputError("name", f"must be a string, got {show_value(name)}")
     return name
 
 

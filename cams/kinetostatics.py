@@ -1256,6 +1256,8 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
                 for key in ("angles", "pressure"):
                     if not isinstance(ld[key], list):
                         raise InputError(f"{f}.{key}", f"must be a list of numbers, got {show_value(ld[key])}")
+                    for j, x in enumerate(ld[key]):  # each element: no booleans, strings or arrays
+                        _num(f"{f}.{key}[{j}]", x)
                 loads.append(GasPressure(body, tuple(ld["angles"]), tuple(ld["pressure"]), _num(f"{f}.bore", ld["bore"]),
                                          start=_num(f"{f}.start", ld.get("start", 0.0)), period=ld.get("period", 360.0)))
             else:

@@ -92,14 +92,16 @@ def check_number(field: str, value: object, *, lo: float | None = None, strict: 
 
 def show_value(v) -> str:
     """``v`` for a message: a number as Python writes it (``-5.0``, ``3``, ``nan``; a NumPy scalar as its
-    Python value), a list, tuple or array element-wise, anything else as its repr.
+    Python value; an integer of more than 30 digits in scientific notation, its leading digits kept), a list,
+    tuple or array element-wise, anything else as its repr.
 
     >>> import numpy as np
     >>> show_value(np.float64(-5.0)), show_value([1, np.float64(2.5)]), show_value("abc")
     ('-5.0', '[1, 2.5]', "'abc'")
     """
     if isinstance(v, (np.integer, int)) and not isinstance(v, bool):
-        return str(int(v))
+        digits = str(abs(int(v)))
+        return str(int(v)) if len(digits) <= 30 else f"{'-' if v < 0 else ''}{digits[0]}.{digits[1:6]}e+{len(digits) - 1}"
     if isinstance(v, (np.floating, float)):
         return repr(float(v))
     if isinstance(v, (list, tuple)):
