@@ -286,6 +286,12 @@ def ensure_folder(path: str | os.PathLike, field: str) -> Path:
     -------
     Path
         ``path``.
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: the path is empty, the folder cannot be created or
+        is not writable.
     """
     p = Path(path)
     if not str(path).strip():
@@ -299,6 +305,8 @@ def ensure_folder(path: str | os.PathLike, field: str) -> Path:
         p.mkdir(parents=True, exist_ok=True)
     except OSError as e:
         raise InputError(field, f"cannot create {str(p)!r}: {e.strerror or e}") from None
+    if not os.access(p, os.W_OK | os.X_OK):  # an existing read-only folder: say so now, naming the option
+        raise InputError(field, f"cannot write into {str(p)!r}: the folder is not writable")
     t = _PENDING.get()
     if t is not None:
         t.folders += missing
