@@ -113,6 +113,10 @@ def _check_keys(table: dict, where: str, field: str) -> None:
     check_keys(table, _KEYS[where], field or "design")
 
 
+#: The smallest phase angle (degrees): the phase angles' sum is checked against 360 to this, so a shorter phase
+#: would be lost in that round-off.
+MIN_PHASE_ANGLE = 1e-6
+
 #: The most steps per phase of the sampled methods (``[solve] samples``): memory and time grow with the
 #: samples (about 1 kB a sample for the convex method), and the exact method needs none.
 MAX_SAMPLES = 100_000
@@ -177,8 +181,8 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         raise InputError("linkage", "the file has a [linkage] table: it is a machine file, to be run with "
                          "`cams machine`; a design file describes the cam alone (see examples/)")
     if "follower" not in d:
-        raise InputError("follower", "the file has no [follower] table; a design file needs [follower], [[motion]] "
-                         "and [limits] (see examples/ or `cams new`)")
+        raise InputError("follower", "the file has no [follower] table; a cam needs its [follower], [[motion]] "
+                         "and [limits] tables (see examples/ or `cams new`)")
     _check_keys(d, "", "")
     if d.get("units", "mm") != "mm":
         raise InputError("units", f"{d['units']!r} is not supported: design files are in mm (the "
@@ -267,7 +271,8 @@ def _program(d: dict, kind: str, lift: float) -> Program:
     """The ``[[motion]]`` phases as a :class:`Program` (heights of a rocker in degrees in the file)."""
     motion = d.get("motion")
     if not isinstance(motion, list) or not motion:
-        raise InputError("motion", "needs a list of phases ([[motion]] tables)")
+        raise InputError("motion", "needs a list of phases ([[motion]] tables)"
+                         + ("" if motion is None else f", got {show_value(motion)}"))
     # the lift as the file gives it, for messages: a rocker's swing in degrees, a stroke in the length unit
     shown_lift, unit, lift_name = (np.degrees(lift), "degrees", "swing") if kind == "rocker" else (lift, "mm", "stroke")
     specs = []
@@ -275,7 +280,7 @@ def _program(d: dict, kind: str, lift: float) -> Program:
     for i, m in enumerate(motion):
         f = f"motion[{i}]"
         if not isinstance(m, dict):
-            raise InputError(f, "must be a table")
+            raise InputError(f, f"must be a table ([[motion]] with phase, law, angle), got {show_value(m)}")
         _check_keys(m, "motion", f)
         ph = check_option(f"{f}.phase", m.get("phase"), ("rise", "dwell", "return"))
         ang = _num(m, "angle", f"{f}.angle", required=False)
@@ -285,6 +290,9 @@ def _program(d: dict, kind: str, lift: float) -> Program:
             missing.append(i)
         elif ang <= 0:
             raise InputError(f"{f}.angle", f"must be > 0 degrees, got {ang!r}")
+        elif ang < MIN_PHASE_ANGLE:
+            raise InputError(f"{f}.angle", f"must be at least {MIN_PHASE_ANGLE:g} degrees (the angles' sum is "
+                             f"checked to that), got {ang:g}")
         law = None
         if ph != "dwell":
             if "law" not in m:
@@ -303,10 +311,10 @@ def _program(d: dict, kind: str, lift: float) -> Program:
     total = sum(s[1] for s in specs if s[1] is not None)
     if missing:
         rest = 360.0 - total
-        if rest <= 1e-9:
+        if rest < MIN_PHASE_ANGLE:
             raise InputError(f"motion[{missing[0]}].angle", f"the other phases take {total:g} degrees, nothing is left")
         specs[missing[0]][1] = rest
-    elif abs(total - 360.0) > 1e-6:
+    elif abs(total - 360.0) > MIN_PHASE_ANGLE:
         raise InputError("motion", f"phase angles sum to {total:.10g} degrees, must sum to 360 (or leave one dwell's "
                          "angle out: it takes the rest)")
     # rises and returns must balance and reach the lift (checked here in the file's units)

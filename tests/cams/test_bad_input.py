@@ -312,3 +312,73 @@ def test_api_refuses_huge_integers_too():
     """design_from_dict (the API, no file) goes through the same check as the files."""
     with pytest.raises(InputError, match=r"^limits\.pressure_angle: .* too large"):
         design_from_dict(_set(ROCKER_FORM, "limits.pressure_angle", HUGE))
+
+
+def test_phase_angles_below_the_sum_tolerance_are_refused(tmp_path, capsys):
+    """A phase of 1e-300 degrees gave divide-by-zero warnings and "did not converge"; it is refused in one line,
+    and the smallest accepted phase (1e-6 degrees, the tolerance of the 360-degree sum) still solves."""
+    tiny = _set(_set(TRANSLATING, "motion[0].angle", 1e-300), "motion[3].angle", 90.0 + 120.0 - 1e-300)
+    rc, err = _run(tmp_path, tiny, capsys)
+    assert rc == 2 and err.count("\n") == 1 and "motion[0].angle: must be at least 1e-06 degrees" in err
+    smallest = _set(_set(TRANSLATING, "motion[0].angle", 1e-6), "motion[3].angle", 210.0 - 1e-6)
+    rc, err = _run(tmp_path, smallest, capsys)
+    assert rc == 0, err
+
+
+def _truncated(doc: dict, before: str) -> str:
+    """``doc`` as TOML cut in the middle of the key ``before``."""
+    return to_toml(doc).split(before)[0] + before[:3]
+
+
+#: malformed files of every kind met in a sample of 600: garbage types, missing tables, wrong table kinds, arrays
+#: where numbers go, unknown phases, truncated text; each with the field its one-line message must name
+MALFORMED = [
+    ({**ROCKER_FORM, "follower": [1, 2]}, "follower: must be a table"),
+    ({**ROCKER_FORM, "motion": {"phase": "rise"}}, "motion: needs a list of phases"),
+    ({**ROCKER_FORM, "motion": [1, 2]}, "motion[0]: must be a table"),
+    ({**ROCKER_FORM, "limits": "x"}, "limits: must be a table"),
+    ({k: v for k, v in ROCKER_FORM.items() if k != "limits"}, "limits.pressure_angle: is required"),
+    ({k: v for k, v in ROCKER_FORM.items() if k != "motion"}, "motion: needs a list of phases"),
+    (_set(ROCKER_FORM, "motion[1].phase", "hold"), "motion[1].phase: 'hold' is not a valid option"),
+    (_set(ROCKER_FORM, "motion[0].law", ["cycloidal"]), "motion[0].law: unknown law"),
+    (_set(ROCKER_FORM, "follower.arm", [125.0, 125.0]), "follower.arm: must be a number, got an array"),
+    (_set(ROCKER_FORM, "cam.rpm", {"a": 1}), "cam.rpm: must be a number, got a table"),
+    (_set(ROCKER_FORCE, "dynamics.mass", [1, 2]), "dynamics.mass: must be a finite number"),
+    (_set(ROCKER_FORM, "name", 3), "name: must be a string"),
+    (_truncated(ROCKER_FORM, "swing"), "FILE: "),
+    ("[follower\nkind = 1", "FILE: "),
+]
+
+
+@pytest.mark.parametrize("command", ["solve", "check", "profile", "plot", "report", "sweep"])
+def test_malformed_design_files_one_line_in_every_command(command, tmp_path, capsys):
+    for doc, expected in MALFORMED:
+        f = tmp_path / "bad.toml"
+        f.write_text(doc if isinstance(doc, str) else to_toml(doc), encoding="utf-8")
+        argv = [command, str(f)] + {"sweep": ["--vary", "profile.tolerance=0.001:0.002:2", "--out", str(tmp_path / "s.csv")],
+                                    "profile": ["--csv", str(tmp_path / "p.csv")],
+                                    "plot": ["--out", str(tmp_path / "pl")],
+                                    "report": ["--out", str(tmp_path / "rp")]}.get(command, [])
+        capsys.readouterr()
+        assert main(argv) == 2, (command, expected)
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and f"cams {command}: error: {expected}" in err, (command, err)
+    assert not (tmp_path / "s.csv").exists() and not (tmp_path / "p.csv").exists()
+
+
+@pytest.mark.parametrize("doc, expected", [
+    ({**SLOTTING, "linkage": [1]}, "linkage: must be a table"),
+    ({**SLOTTING, "forces": {**SLOTTING["forces"], "loads": [1]}}, "forces.loads[0]: must be a table"),
+    (_set(SLOTTING, "forces.links.bar.mass", [1, 2]), "forces.links.bar.mass: must be a finite number"),
+    (_set(SLOTTING, "timing.placement", 3), "timing.placement: 3 is not a valid option"),
+    (_set(CRANK_SLIDER, "forces.loads[0].angles", 3), "forces.loads[0].angles: must be a list of numbers"),
+    (_set(SLOTTING, "motion[0].phase", "hold"), "motion[0].phase: 'hold' is not a valid option"),
+    ({k: v for k, v in SLOTTING.items() if k != "follower"}, "follower: the file has no [follower] table"),
+])
+def test_malformed_machine_files_one_line(doc, expected, tmp_path, capsys):
+    f = tmp_path / "in.toml"
+    f.write_text(to_toml(doc), encoding="utf-8")
+    for forces in ([], ["--forces"]):
+        capsys.readouterr()
+        rc, err = main(["machine", str(f), *forces]), capsys.readouterr().err
+        assert rc == 2 and err.count("\n") == 1 and f"cams machine: error: {expected}" in err, err

@@ -136,11 +136,14 @@ def _wait_for_numpy(pid: int, timeout: float = 60.0) -> None:
     raise AssertionError("the command never loaded NumPy")
 
 
-@pytest.mark.parametrize("delay", [0.0, 0.01, 0.03, 0.1, 0.2, 0.5])
+@pytest.mark.parametrize("delay", [0.0, 0.01, 0.03, 0.1, 0.2, 0.5, 1.0])
 def test_ctrl_c_while_the_imports_run_is_one_line_and_exit_130(delay, tmp_path):
-    """SIGINT while the imports run (from the moment NumPy begins to load, then a little later) ends `cams solve`
-    with exit 130 and at most one line on stderr. (Before ``main`` runs only the interpreter's own start-up and
-    the standard library are loaded: ``import cams.cli`` loads nothing else, see the next test.)"""
+    """SIGINT while the imports run and after (from the moment NumPy begins to load, then at delays up to a second
+    into the solve) ends the installed `cams solve` with exit 130 and at most one line on stderr.
+
+    The delays count from NumPy's first mapping, not from the process's start: before it only the interpreter's
+    own start-up runs (its ``site`` module, whose Ctrl-C no program can take; a loaded machine can make it last
+    longer than any fixed delay), then ``import cams.cli``, which loads only the standard library (next test)."""
     cmd = _cams_command() + ["solve", str(_slow_design(tmp_path))]
     p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
     _wait_for_numpy(p.pid)
@@ -150,18 +153,6 @@ def test_ctrl_c_while_the_imports_run_is_one_line_and_exit_130(delay, tmp_path):
     assert p.returncode == 130, (delay, p.returncode, err)
     assert err.count("\n") <= 1 and "Traceback" not in err, (delay, err)
     assert err in ("", "cams: interrupted\n", "cams solve: interrupted\n")
-
-
-@pytest.mark.parametrize("delay", [0.2, 0.5, 1.0])
-def test_ctrl_c_after_start_is_one_line_and_exit_130(delay, tmp_path):
-    """The same at fixed delays after the start (the user's Ctrl-C), through the installed `cams` script."""
-    cmd = _cams_command() + ["solve", str(_slow_design(tmp_path))]
-    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
-    time.sleep(delay)
-    p.send_signal(signal.SIGINT)
-    out, err = p.communicate(timeout=120)
-    assert p.returncode == 130, (delay, p.returncode, err)
-    assert err.count("\n") <= 1 and "Traceback" not in err, (delay, err)
 
 
 def test_import_cams_loads_nothing_and_takes_no_signal():
