@@ -1286,8 +1286,9 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
             fld = e.field.replace("forces.loads.", f"{f}.") if e.field.startswith("forces.loads.") else e.field
             raise InputError(fld, _message(e)) from None
     samples = t.get("samples", 360)
-    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 12:
-        raise InputError("forces.samples", f"must be an integer >= 12, got {show_value(samples)}")
+    if isinstance(samples, bool) or not isinstance(samples, int) or not 12 <= samples <= 100_000:
+        # the bound keeps memory near 0.5 GB (about 4 kB a crank angle)
+        raise InputError("forces.samples", f"must be an integer from 12 to 100000, got {show_value(samples)}")
     passes = t.get("passes", 2)
     if passes == "iterate":
         passes = None

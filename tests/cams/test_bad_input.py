@@ -382,3 +382,10 @@ def test_malformed_machine_files_one_line(doc, expected, tmp_path, capsys):
         capsys.readouterr()
         rc, err = main(["machine", str(f), *forces]), capsys.readouterr().err
         assert rc == 2 and err.count("\n") == 1 and f"cams machine: error: {expected}" in err, err
+
+
+@pytest.mark.parametrize("samples", [100_001, 10 ** 9, 11])
+def test_forces_samples_has_an_upper_bound(samples, tmp_path, capsys):
+    """[forces] samples = 1e9 would need some 4 TB; the bound is in the message (100000: about 0.4 GB)."""
+    rc, err = _run(tmp_path, _set(SLOTTING, "forces.samples", samples), capsys)
+    assert rc == 2 and err.count("\n") == 1 and "forces.samples: must be an integer from 12 to 100000" in err
