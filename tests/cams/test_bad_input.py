@@ -389,3 +389,12 @@ def test_forces_samples_has_an_upper_bound(samples, tmp_path, capsys):
     """[forces] samples = 1e9 would need some 4 TB; the bound is in the message (100000: about 0.4 GB)."""
     rc, err = _run(tmp_path, _set(SLOTTING, "forces.samples", samples), capsys)
     assert rc == 2 and err.count("\n") == 1 and "forces.samples: must be an integer from 12 to 100000" in err
+
+
+def test_api_number_check_refuses_integers_beyond_floats():
+    """laws.errors.check_number (the API's classes: springs, loads, links) took a 400-digit int to a TypeError."""
+    from laws.errors import check_number
+
+    with pytest.raises(InputError, match=r"^dynamics\.load: must be a finite number, got 1\.00000e\+400, too large"):
+        check_number("dynamics.load", 10 ** 400)
+    assert check_number("dynamics.load", 10 ** 20) == 1e20  # representable: a float, as any number
