@@ -88,6 +88,15 @@ ROCKER_FORCE = {
     "dynamics": {"mass": 0.003, "load": 0.5, "spring_rate": 3.0, "preload": 1.0, "friction": 0.1,
                  "journal_radius": 8.0, "margin": 1.5, "max_spring_force": 100.0},
 }
+#: a chosen cam ([cam] base_radius with L, or [cam] centre), checked instead of sized
+ROCKER_CHOSEN_R0 = {
+    "follower": {"kind": "rocker", "arm": 125.0, "swing": 15.0, "roller_radius": 10.0},
+    "cam": {"rpm": 60, "base_radius": 60.0},
+    "motion": MOTION,
+    "limits": {"pressure_angle": 45, "centre_distance": 120.0},
+}
+ROCKER_CHOSEN_CENTRE = {**ROCKER_CHOSEN_R0, "cam": {"rpm": 60, "centre": [100.0, -60.0]},
+                        "limits": {"pressure_angle": 45}}
 TRANSLATING = {
     "follower": {"kind": "translating", "stroke": 20.0, "offset": 5.0, "roller_radius": 5.0},
     "motion": [dict(m, height=20.0) if m["phase"] == "rise" else m for m in MOTION],
@@ -155,6 +164,8 @@ HOMES = {
     ("`[follower]`", "", "roller_radius"): (ROCKER_FORM, "follower.roller_radius"),
     ("`[cam]`", "", "rpm"): (ROCKER_FORM, "cam.rpm"),
     ("`[cam]`", "", "bore_radius"): (ROCKER_FORM, "cam.bore_radius"),
+    ("`[cam]`", "", "base_radius"): (ROCKER_CHOSEN_R0, "cam.base_radius"),
+    ("`[cam]`", "", "centre"): (ROCKER_CHOSEN_CENTRE, "cam.centre[0]"),
     ("`[[motion]]`", "", "angle"): (ROCKER_FORM, "motion[2].angle"),
     ("`[[motion]]`", "", "height"): (ROCKER_FORM, "motion[0].height"),
     ("`[limits]`", "", "pressure_angle"): (ROCKER_FORM, "limits.pressure_angle"),
@@ -256,8 +267,14 @@ def test_every_documented_numeric_key_has_a_home():
     assert [k for k in keys if k not in HOMES] == []
 
 
-@pytest.mark.parametrize("base", [ROCKER_FORM, ROCKER_FORCE, TRANSLATING, FLAT_ROCKER, FLAT_TRANSLATING, *MACHINES],
-                         ids=lambda d: d.get("name", "") + str(d["follower"]) + str(d.get("linkage", "")))
+def _bases_in_use() -> list[dict]:
+    """The base documents that hold a documented key (each once), the machines always."""
+    bases = [HOMES[k][0] for k in documented_numeric_keys() if k in HOMES] + MACHINES
+    return [b for i, b in enumerate(bases) if not any(b is c for c in bases[:i])]
+
+
+@pytest.mark.parametrize("base", _bases_in_use(), ids=lambda d: str(d["follower"]) + str(d.get("cam", ""))
+                         + str(d.get("linkage", "")))
 def test_base_documents_load(base, tmp_path):
     f = tmp_path / "base.toml"
     f.write_text(to_toml(base), encoding="utf-8")
