@@ -56,8 +56,8 @@ def read_toml(path: str | os.PathLike) -> dict:
     Raises
     ------
     InputError
-        Field ``FILE``: the file cannot be read, is not UTF-8, is empty, is
-        not valid TOML or nests too deeply for the parser.
+        Field ``FILE``: the file cannot be read, is not UTF-8, is not valid
+        TOML or nests too deeply for the parser.
     """
     import tomllib
 
@@ -74,13 +74,11 @@ def read_toml(path: str | os.PathLike) -> dict:
         raise InputError("FILE", f"{p}: not valid TOML: {e}") from None
     except RecursionError:
         raise InputError("FILE", f"{p}: arrays or tables nested too deeply (at most {MAX_DEPTH} levels)") from None
-    if not d:
-        raise InputError("FILE", f"{p}: the file is empty (no table, no key); see examples/ for complete files")
     return d
 
 
 def check_document(d: dict) -> None:
-    """Refuse what no key of a design or machine file allows, wherever it is.
+    """Refuse an empty document, and what no key of a design or machine file allows, wherever it is.
 
     A non-finite float (TOML's ``nan``, ``inf``), a number larger than
     :data:`MAX_NUMBER` in size (a 100-bit integer, ``1e300``) and nesting
@@ -97,8 +95,10 @@ def check_document(d: dict) -> None:
     ------
     InputError
         Naming the value's dotted path, e.g. ``motion[2].angle``; ``FILE`` for
-        too deep a nesting.
+        an empty document or too deep a nesting.
     """
+    if not d:
+        raise InputError("FILE", "the file is empty (no table, no key); see examples/ for complete files")
     stack: list[tuple[str, object, int]] = [("", d, 0)]
     while stack:
         path, v, depth = stack.pop()
