@@ -141,8 +141,9 @@ def _check_length_range(d: dict) -> None:
             continue
         for k in keys:
             v = t.get(k)
-            if isinstance(v, (int, float)) and not isinstance(v, bool) and not (isinstance(v, float) and math.isnan(v)) \
-                    and v != 0 and not lo <= abs(v) <= hi:  # ints of any size; inf is outside too
+            number = isinstance(v, (int, float)) and not isinstance(v, bool) \
+                and not (isinstance(v, float) and math.isnan(v))
+            if number and v != 0 and not lo <= abs(v) <= hi:  # ints of any size; inf is outside too
                 raise InputError(f"{table}.{k}", f"{show_value(v)} mm is outside the lengths a design may use "
                                  f"({lo:g} to {hi:g} mm in size)")
 

@@ -113,7 +113,9 @@ def show_value(v) -> str:
     """
     if isinstance(v, (np.integer, int)) and not isinstance(v, bool):
         digits = str(abs(int(v)))
-        return str(int(v)) if len(digits) <= 30 else f"{'-' if v < 0 else ''}{digits[0]}.{digits[1:6]}e+{len(digits) - 1}"
+        if len(digits) <= 30:
+            return str(int(v))
+        return f"{'-' if v < 0 else ''}{digits[0]}.{digits[1:6]}e+{len(digits) - 1}"
     if isinstance(v, (np.floating, float)):
         return repr(float(v))
     if isinstance(v, (list, tuple)):

@@ -189,8 +189,10 @@ HOMES = {
     ("`[linkage]`", "", "rpm"): (SLOTTING, "linkage.rpm"),
     **{("`type = \"slotting\"`", "", k): (SLOTTING, f"linkage.{k}")
        for k in ("time_ratio", "stroke", "centre_distance", "rod_ratio")},
-    **{("`type = \"slotting\"`", "", k): (SLOTTING_LENGTHS, f"linkage.{k}") for k in ("crank", "bar", "rod", "guide_x")},
-    **{("`type = \"crank_slider\"`", "", k): (CRANK_SLIDER, f"linkage.{k}") for k in ("stroke", "rod", "offset", "rod_cg")},
+    **{("`type = \"slotting\"`", "", k): (SLOTTING_LENGTHS, f"linkage.{k}")
+       for k in ("crank", "bar", "rod", "guide_x")},
+    **{("`type = \"crank_slider\"`", "", k): (CRANK_SLIDER, f"linkage.{k}")
+       for k in ("stroke", "rod", "offset", "rod_cg")},
     ("`type = \"crank_slider\"`", "", "crank"): (CRANK_SLIDER_LENGTHS, "linkage.crank"),
     **{("`type = \"slotted_lever_pump\"`", "", k): (PUMP, f"linkage.{k}")
        for k in ("time_ratio", "stroke", "centre_distance", "guide_x")},
@@ -281,7 +283,8 @@ def test_base_documents_load(base, tmp_path):
     (load_machine if "linkage" in base else load_design)(f)
 
 
-@pytest.mark.parametrize("key", documented_numeric_keys(), ids=lambda k: ".".join(x.strip("`[]") for x in k[1:3]) + k[0][:12])
+@pytest.mark.parametrize("key", documented_numeric_keys(),
+                         ids=lambda k: ".".join(x.strip("`[]") for x in k[1:3]) + k[0][:12])
 def test_every_numeric_key_refuses_values_no_key_allows(key, tmp_path, capsys):
     base, path = HOMES[key]
     field = re.sub(r"\[\d+\]$", "", path)  # an array element is named by its array at least
@@ -372,10 +375,11 @@ def test_malformed_design_files_one_line_in_every_command(command, tmp_path, cap
     for doc, expected in MALFORMED:
         f = tmp_path / "bad.toml"
         f.write_text(doc if isinstance(doc, str) else to_toml(doc), encoding="utf-8")
-        argv = [command, str(f)] + {"sweep": ["--vary", "profile.tolerance=0.001:0.002:2", "--out", str(tmp_path / "s.csv")],
-                                    "profile": ["--csv", str(tmp_path / "p.csv")],
-                                    "plot": ["--out", str(tmp_path / "pl")],
-                                    "report": ["--out", str(tmp_path / "rp")]}.get(command, [])
+        options = {"sweep": ["--vary", "profile.tolerance=0.001:0.002:2", "--out", str(tmp_path / "s.csv")],
+                   "profile": ["--csv", str(tmp_path / "p.csv")],
+                   "plot": ["--out", str(tmp_path / "pl")],
+                   "report": ["--out", str(tmp_path / "rp")]}
+        argv = [command, str(f)] + options.get(command, [])
         capsys.readouterr()
         assert main(argv) == 2, (command, expected)
         err = capsys.readouterr().err

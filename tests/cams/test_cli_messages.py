@@ -112,7 +112,9 @@ def test_read_only_output_folder_names_the_option(argv, tmp_path, capsys, monkey
 
 def _cams_command() -> list[str]:
     script = Path(sys.executable).parent / "cams"
-    return [str(script)] if script.exists() else [sys.executable, "-c", "import sys; from cams.cli import main; sys.exit(main())"]
+    if script.exists():
+        return [str(script)]
+    return [sys.executable, "-c", "import sys; from cams.cli import main; sys.exit(main())"]
 
 
 def _slow_design(tmp_path: Path) -> Path:
