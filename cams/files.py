@@ -33,7 +33,8 @@ __all__ = ["atomic_write", "all_or_nothing", "check_output_path", "check_output_
 #: cam or a machine has (lengths are further limited to 1e9 mm), and small enough that sums and products of a
 #: few such numbers stay finite and integers stay exact in floating point.
 MAX_NUMBER = 1e15
-#: The deepest nesting of tables and arrays a file may have (a design file needs 3: ``forces.friction.A``).
+#: The deepest nesting of tables and arrays a file may have (the files use 3 at most: a machine file's
+#: ``forces.friction.A``).
 MAX_DEPTH = 16
 
 
