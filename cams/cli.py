@@ -3,31 +3,46 @@
 Every subcommand turns a :class:`~laws.errors.CamsError` (bad input, no
 feasible design) into one line on stderr and exit code 2. The subcommands live
 in :mod:`cams.commands`, one module each.
+
+Importing this module loads only the standard library (``cams`` itself is
+empty): :func:`main` first takes Ctrl-C, then imports the project, so an
+interrupt while NumPy loads ends with one line and exit code 130 too.
 """
 
 from __future__ import annotations
 
 import argparse
-import importlib
+import os
+import signal
 import sys
-import warnings
-
-from cams.commands import COMMANDS
-from cams.commands.common import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK
-from laws.errors import CamsError
 
 __all__ = ["main"]
+
+#: Exit code after Ctrl-C (128 + SIGINT), as shells report it (also :data:`cams.commands.common.EXIT_INTERRUPTED`).
+_EXIT_INTERRUPTED = 130
+
+
+def _interrupted_while_loading(signum, frame) -> None:  # pragma: no cover - runs in a subprocess (tested)
+    """SIGINT before the commands run: nothing is written yet, so say so in one line and leave at once."""
+    os.write(2, b"cams: interrupted\n")
+    os._exit(_EXIT_INTERRUPTED)
 
 
 class _Parser(argparse.ArgumentParser):
     """argparse with usage errors as one line and exit code 2."""
 
     def error(self, message):  # noqa: D102
+        from cams.commands.common import EXIT_BAD_INPUT
+
         self.exit(EXIT_BAD_INPUT, f"{self.prog}: error: {message}\n")
 
 
 def build_parser() -> argparse.ArgumentParser:
     """The full parser with every subcommand registered."""
+    import importlib
+
+    from cams.commands import COMMANDS
+
     p = _Parser(
         prog="cams",
         description="Disk-cam design: allowable-centre zone, minimum size, profiles and checks.",
@@ -44,9 +59,33 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the command line; return the exit code."""
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    """Run the command line; return the exit code.
+
+    Until the project's modules are loaded, Ctrl-C ends the process with one
+    line on stderr and exit code 130; from then on it is a
+    :class:`KeyboardInterrupt` that the command turns into the same (its
+    outputs whole or absent, see :mod:`cams.files`).
+    """
+    try:
+        previous = signal.signal(signal.SIGINT, _interrupted_while_loading)
+        ours = True
+    except ValueError:  # not the main thread: signals are not ours to take
+        previous, ours = None, False
+    try:
+        import warnings
+
+        from cams.commands.common import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK
+        from laws.errors import CamsError
+
+        parser = build_parser()
+    finally:
+        if ours:
+            signal.signal(signal.SIGINT, signal.default_int_handler if previous is None else previous)
+    try:
+        args = parser.parse_args(argv)
+    except KeyboardInterrupt:
+        print("cams: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
     if not getattr(args, "func", None):
         parser.print_help()
         return EXIT_BAD_INPUT

@@ -47,16 +47,16 @@ from pathlib import Path
 import numpy as np
 
 from cams.design import CamDesign, FlatFaceDesign, Limits
-from cams.files import check_keys, read_toml
+from cams.files import check_document, check_keys, read_toml, toml_integer
 from cams.files import toml_number as _num
 from cams.files import toml_table as _table
 from cams.flatface import FlatRocker, FlatTranslating
 from cams.follower import Rocker, Translating, sense_of
-from laws.errors import InputError, check_option
+from laws.errors import InputError, check_option, show_value
 from laws.program import Phase, Program
 from laws.registry import get_law
 
-__all__ = ["load_design", "design_from_dict"]
+__all__ = ["load_design", "design_from_dict", "MAX_SAMPLES"]
 
 _KEYS = {
     "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics"},
@@ -113,6 +113,14 @@ def _check_keys(table: dict, where: str, field: str) -> None:
     check_keys(table, _KEYS[where], field or "design")
 
 
+#: The smallest phase angle (degrees): the phase angles' sum is checked against 360 to this, so a shorter phase
+#: would be lost in that round-off.
+MIN_PHASE_ANGLE = 1e-6
+
+#: The most steps per phase of the sampled methods (``[solve] samples``): memory and time grow with the
+#: samples (about 1 kB a sample for the convex method), and the exact method needs none.
+MAX_SAMPLES = 100_000
+
 #: Lengths (mm) a design may use: from a picometre to 1000 km; outside, round-off or overflow would
 #: make the answers meaningless (the solvers work to 1e-12 of the design's scale).
 LENGTH_RANGE = (1e-9, 1e9)
@@ -133,9 +141,10 @@ def _check_length_range(d: dict) -> None:
             continue
         for k in keys:
             v = t.get(k)
-            if isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) and v != 0 \
-                    and not lo <= abs(v) <= hi:
-                raise InputError(f"{table}.{k}", f"{v:g} mm is outside the lengths a design may use "
+            number = isinstance(v, (int, float)) and not isinstance(v, bool) \
+                and not (isinstance(v, float) and math.isnan(v))
+            if number and v != 0 and not lo <= abs(v) <= hi:  # ints of any size; inf is outside too
+                raise InputError(f"{table}.{k}", f"{show_value(v)} mm is outside the lengths a design may use "
                                  f"({lo:g} to {hi:g} mm in size)")
 
 
@@ -165,11 +174,20 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         Unknown keys, missing or invalid values, units other than mm; the
         field is named (e.g. ``"motion[2].angle"``).
     """
+    if not isinstance(d, dict):
+        raise InputError("design", f"must be a dict of the file's tables, got {type(d).__name__}")
+    _check_length_range(d)  # before the general check: the lengths' own range is the clearer message
+    check_document(d)
+    if "linkage" in d:
+        raise InputError("linkage", "the file has a [linkage] table: it is a machine file, to be run with "
+                         "`cams machine`; a design file describes the cam alone (see examples/)")
+    if "follower" not in d:
+        raise InputError("follower", "the file has no [follower] table; a cam needs its [follower], [[motion]] "
+                         "and [limits] tables (see examples/ or `cams new`)")
     _check_keys(d, "", "")
     if d.get("units", "mm") != "mm":
         raise InputError("units", f"{d['units']!r} is not supported: design files are in mm (the "
                          "[dynamics] table's journal_radius too; its other values are SI)")
-    _check_length_range(d)
     fo = _table(d, "follower")
     kind = check_option("follower.kind", fo.get("kind", "rocker"), ("rocker", "translating"))
     if check_option("follower.face", fo.get("face", "roller"), ("roller", "flat")) == "flat":
@@ -225,9 +243,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     _check_keys(_table(d, "profile"), "profile", "profile")
     so = _table(d, "solve")
     _check_keys(so, "solve", "solve")
-    samples = so.get("samples", 360)
-    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 2:
-        raise InputError("solve.samples", f"must be an integer >= 2, got {samples!r}")
+    samples = toml_integer(so, "samples", "solve.samples", default=360, lo=2, hi=MAX_SAMPLES)
     objective = check_option("solve.objective", so.get("objective", "R0"), ("R0", "L"))
     if objective == "L" and kind != "rocker":
         raise InputError("solve.objective", "'L' (least centre distance) applies to rocker followers; a translating "
@@ -264,7 +280,7 @@ def _chosen(cam: dict) -> tuple[float | None, tuple[float, float] | None]:
 def _name(d: dict) -> str:
     name = d.get("name", "cam")
     if not isinstance(name, str):
-        raise InputError("name", "must be a string")
+        raise InputError("name", f"must be a string, got {show_value(name)}")
     return name
 
 
@@ -272,7 +288,8 @@ def _program(d: dict, kind: str, lift: float) -> Program:
     """The ``[[motion]]`` phases as a :class:`Program` (heights of a rocker in degrees in the file)."""
     motion = d.get("motion")
     if not isinstance(motion, list) or not motion:
-        raise InputError("motion", "needs a list of phases ([[motion]] tables)")
+        raise InputError("motion", "needs a list of phases ([[motion]] tables)"
+                         + ("" if motion is None else f", got {show_value(motion)}"))
     # the lift as the file gives it, for messages: a rocker's swing in degrees, a stroke in the length unit
     shown_lift, unit, lift_name = (np.degrees(lift), "degrees", "swing") if kind == "rocker" else (lift, "mm", "stroke")
     specs = []
@@ -280,7 +297,7 @@ def _program(d: dict, kind: str, lift: float) -> Program:
     for i, m in enumerate(motion):
         f = f"motion[{i}]"
         if not isinstance(m, dict):
-            raise InputError(f, "must be a table")
+            raise InputError(f, f"must be a table ([[motion]] with phase, law, angle), got {show_value(m)}")
         _check_keys(m, "motion", f)
         ph = check_option(f"{f}.phase", m.get("phase"), ("rise", "dwell", "return"))
         ang = _num(m, "angle", f"{f}.angle", required=False)
@@ -290,6 +307,9 @@ def _program(d: dict, kind: str, lift: float) -> Program:
             missing.append(i)
         elif ang <= 0:
             raise InputError(f"{f}.angle", f"must be > 0 degrees, got {ang!r}")
+        elif ang < MIN_PHASE_ANGLE:
+            raise InputError(f"{f}.angle", f"must be at least {MIN_PHASE_ANGLE:g} degrees (the angles' sum is "
+                             f"checked to that), got {ang:g}")
         law = None
         if ph != "dwell":
             if "law" not in m:
@@ -308,10 +328,10 @@ def _program(d: dict, kind: str, lift: float) -> Program:
     total = sum(s[1] for s in specs if s[1] is not None)
     if missing:
         rest = 360.0 - total
-        if rest <= 1e-9:
+        if rest < MIN_PHASE_ANGLE:
             raise InputError(f"motion[{missing[0]}].angle", f"the other phases take {total:g} degrees, nothing is left")
         specs[missing[0]][1] = rest
-    elif abs(total - 360.0) > 1e-6:
+    elif abs(total - 360.0) > MIN_PHASE_ANGLE:
         raise InputError("motion", f"phase angles sum to {total:.10g} degrees, must sum to 360 (or leave one dwell's "
                          "angle out: it takes the rest)")
     # rises and returns must balance and reach the lift (checked here in the file's units)

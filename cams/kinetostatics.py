@@ -1256,6 +1256,8 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
                 for key in ("angles", "pressure"):
                     if not isinstance(ld[key], list):
                         raise InputError(f"{f}.{key}", f"must be a list of numbers, got {show_value(ld[key])}")
+                    for j, x in enumerate(ld[key]):  # each element: no booleans, strings or arrays
+                        _num(f"{f}.{key}[{j}]", x)
                 loads.append(GasPressure(body, tuple(ld["angles"]), tuple(ld["pressure"]), _num(f"{f}.bore", ld["bore"]),
                                          start=_num(f"{f}.start", ld.get("start", 0.0)), period=ld.get("period", 360.0)))
             else:
@@ -1284,8 +1286,9 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
             fld = e.field.replace("forces.loads.", f"{f}.") if e.field.startswith("forces.loads.") else e.field
             raise InputError(fld, _message(e)) from None
     samples = t.get("samples", 360)
-    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 12:
-        raise InputError("forces.samples", f"must be an integer >= 12, got {show_value(samples)}")
+    if isinstance(samples, bool) or not isinstance(samples, int) or not 12 <= samples <= 100_000:
+        # the bound keeps memory near 0.5 GB (about 4 kB a crank angle)
+        raise InputError("forces.samples", f"must be an integer from 12 to 100000, got {show_value(samples)}")
     passes = t.get("passes", 2)
     if passes == "iterate":
         passes = None

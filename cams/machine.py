@@ -406,13 +406,25 @@ def place_cam(win: Windows, program: Program, drive: Drive, timing: Timing) -> C
     room = Lw - 2 * m
     if span > room + 1e-12:
         what = "the rise" if len(rises) == 1 else "the rises from the first's start to the last's end"
+        fits = m > 0 and span <= Lw + 1e-12  # the rises would fit with a smaller margin
+        margin_fix = f"the largest timing.margin that fits is {np.degrees((Lw - span) / 2):.4g} deg" if fits else \
+            f"{what} alone take{'s' if len(rises) == 1 else ''} more than the window"
+        if m > 0 and room <= 1e-12:
+            # the margin alone fills the window: it, not the motion, is what leaves no room
+            raise InfeasibleError(
+                "timing.margin",
+                f"{np.degrees(m):.4g} deg at both ends of the {np.degrees(Lw):.4g} deg out-of-work window (crank "
+                f"angle) leave no room for {what}, which take{'s' if len(rises) == 1 else ''} "
+                f"{np.degrees(span):.4g} deg of crank; {margin_fix}",
+            )
         raise InfeasibleError(
             "motion",
             f"feed window too short: the tool is out of the work for {np.degrees(Lw):.4g} deg of crank angle "
             f"({np.degrees(w0) % 360:.4g} to {np.degrees(w1) % 360:.4g} deg after position 1); {what} take{'s' if len(rises) == 1 else ''} "
             f"{np.degrees(b1 - a0):.4g} deg of cam = {np.degrees(span):.4g} deg of crank at ratio {i:g}, plus 2 x "
             f"{np.degrees(m):.4g} deg margin; the largest feasible rise angle is {np.degrees(largest):.4g} deg"
-            + (" (less the other phases between the rises)" if len(rises) > 1 else ""),
+            + (" (less the other phases between the rises)" if len(rises) > 1 else "")
+            + (f"; or {margin_fix}" if fits else ""),
         )
     if timing.placement == "centre":
         start = w0 + m + (room - span) / 2

@@ -41,12 +41,12 @@ from pathlib import Path
 import numpy as np
 
 from cams.designfile import design_from_dict
-from cams.files import check_keys, read_toml
+from cams.files import check_document, check_keys, read_toml
 from cams.files import toml_number as _num
 from cams.files import toml_table as _table
 from cams.machine import CuttingZone, Drive, MachineSpec, Timing, check_follower_direction
 from cams.linkage.machines import CrankSlider, SlottedLeverPump, SlottingMachine
-from laws.errors import InputError, check_option
+from laws.errors import InputError, check_option, show_value
 
 __all__ = ["load_machine", "machine_from_dict", "LINKAGE_TYPES"]
 
@@ -178,6 +178,9 @@ def machine_from_dict(d: dict) -> MachineSpec:
     AssemblyError
         The linkage cannot be assembled at some crank angle.
     """
+    if not isinstance(d, dict):
+        raise InputError("machine", f"must be a dict of the file's tables, got {type(d).__name__}")
+    check_document(d)
     if "linkage" not in d:
         if d.get("follower") is not None or d.get("motion") is not None:
             raise InputError("linkage", "the file has no [linkage] table: it is a cam design file, to be sized "
@@ -186,7 +189,7 @@ def machine_from_dict(d: dict) -> MachineSpec:
     _check_keys(d, _KEYS[""], "")
     name = d.get("name", "machine")
     if not isinstance(name, str):
-        raise InputError("name", "must be a string")
+        raise InputError("name", f"must be a string, got {show_value(name)}")
     units = d.get("units", "mm")
     if units != "mm":
         raise InputError("units", f"{units!r} is not supported: machine files are in mm" if isinstance(units, str)

@@ -7,6 +7,8 @@ print it as one line and exit with code 2.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = ["CamsError", "InputError", "InfeasibleError", "check_option", "check_number", "show_value"]
@@ -79,12 +81,22 @@ def check_number(field: str, value: object, *, lo: float | None = None, strict: 
     ... except InputError as e:
     ...     print(e)
     dynamics.mass: must be > 0, got 0.0
+    >>> try:
+    ...     check_number("dynamics.load", 10 ** 400)
+    ... except InputError as e:
+    ...     print(e)
+    dynamics.load: must be a finite number, got 1.00000e+400, too large
     """
     if value is None and allow_none:
         return None
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)) or not np.isfinite(value):
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise InputError(field, f"must be a finite number, got {show_value(value)}")
-    value = float(value)
+    try:
+        value = float(value)  # a Python int of any size: too large for a float raises here
+    except OverflowError:
+        raise InputError(field, f"must be a finite number, got {show_value(value)}, too large") from None
+    if not math.isfinite(value):
+        raise InputError(field, f"must be a finite number, got {show_value(value)}")
     if lo is not None and (value <= lo if strict else value < lo):
         raise InputError(field, f"must be {'>' if strict else '>='} {lo:g}, got {show_value(value)}")
     return value
@@ -92,14 +104,18 @@ def check_number(field: str, value: object, *, lo: float | None = None, strict: 
 
 def show_value(v) -> str:
     """``v`` for a message: a number as Python writes it (``-5.0``, ``3``, ``nan``; a NumPy scalar as its
-    Python value), a list, tuple or array element-wise, anything else as its repr.
+    Python value; an integer of more than 30 digits in scientific notation, its leading digits kept), a list,
+    tuple or array element-wise, anything else as its repr.
 
     >>> import numpy as np
     >>> show_value(np.float64(-5.0)), show_value([1, np.float64(2.5)]), show_value("abc")
     ('-5.0', '[1, 2.5]', "'abc'")
     """
     if isinstance(v, (np.integer, int)) and not isinstance(v, bool):
-        return str(int(v))
+        digits = str(abs(int(v)))
+        if len(digits) <= 30:
+            return str(int(v))
+        return f"{'-' if v < 0 else ''}{digits[0]}.{digits[1:6]}e+{len(digits) - 1}"
     if isinstance(v, (np.floating, float)):
         return repr(float(v))
     if isinstance(v, (list, tuple)):

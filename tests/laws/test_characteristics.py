@@ -2,9 +2,8 @@
 
 Literature values: Norton, R. L., *Cam Design and Manufacturing Handbook*
 (Industrial Press), ch. 3, and VDI 2143 Blatt 1, "Bewegungsgesetze fuer
-Kurvengetriebe", as quoted in the project's design note
-(shared/design/DOMAIN.md, "Motion laws"); the books themselves were not at
-hand. Checked to 4 significant digits. Values dimensionless (rise 1 over u in
+Kurvengetriebe", as commonly quoted; the books themselves were not at hand.
+Checked to 4 significant digits. Values dimensionless (rise 1 over u in
 [0, 1]).
 """
 

@@ -1,6 +1,7 @@
 """Seed figures not covered by ``test_seeds.py``: plan segments found by similarity, and the seeds' numbered positions.
 
-Sources (in /work/shared/seeds); the table of every seed figure with our value is docs/seeds.md.
+Sources: the seeds (named and described in docs/files.md, "The seeds"); the table of every seed figure
+with our value is docs/seeds.md.
 
 * seed 000 ("Силовой анализ плоского рычажного механизма"), sections "План скоростей
   механизма" and "План ускорений механизма", phi_1 = 60 deg, omega_1 = 200 rad/s:

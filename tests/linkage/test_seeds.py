@@ -1,6 +1,6 @@
 """The seeds' numbers, recomputed.
 
-Sources (in /work/shared/seeds):
+Sources (the seeds, named and described in docs/files.md, "The seeds"):
 
 * seed 000 -- "Силовой анализ плоского рычажного механизма", two-cylinder engine
   mechanism: l_OA = l_OC = 0.048 m, l_AB = l_CD = 0.192 m, l_AS2 = l_CS4 = 0.064 m,
