@@ -93,7 +93,7 @@ def _dynamics_failure(forces) -> str | None:
     return "dynamics: " + "; ".join(why or ["the forces fail"])
 
 
-def assess(design, solution, *, checks=None, forces=None) -> Assessment:
+def assess(design, solution, *, checks=None, forces=None, no_profile: str | None = None) -> Assessment:
     """Assess a sized cam from its parts.
 
     Parameters
@@ -107,6 +107,9 @@ def assess(design, solution, *, checks=None, forces=None) -> Assessment:
     forces : cams.camforces.DesignForces, optional
         The ``[dynamics]`` results (None without a ``[dynamics]`` table or where
         it does not apply).
+    no_profile : str, optional
+        Why no profile could be built at the chord tolerance (then ``checks``
+        is None and the cam is not buildable).
 
     Returns
     -------
@@ -142,6 +145,8 @@ def assess(design, solution, *, checks=None, forces=None) -> Assessment:
                     failures.insert(0, ("not verified", f"not verified: {c.name}: {c.message}"))
             else:
                 fail(c.name, f"{c.name}: {c.message}" if c.message else c.name)
+    elif no_profile is not None:
+        fail("no profile", f"no profile: {no_profile}")
     elif not flat and not knife_in_groove(design):
         raise ValueError("assess: the profile checks are required")
     if forces is not None:
@@ -153,7 +158,15 @@ def assess(design, solution, *, checks=None, forces=None) -> Assessment:
 
 def assess_cam(cam) -> Assessment:
     """Assess a :class:`cams.cam.Cam`: its solution, the checks of its profile, its ``[dynamics]`` forces."""
-    checks = None if knife_in_groove(cam.design) else cam.checks
+    from cams.profile import ProfileSizeError
+
+    checks, no_profile = None, None
+    if not knife_in_groove(cam.design):
+        try:
+            checks = cam.checks
+        except ProfileSizeError as e:  # a valid design whose profile the tolerance cannot carry: not buildable
+            no_profile = str(e)
     extra = getattr(cam.design, "extra", None)
     has_dynamics = isinstance(extra, dict) and "dynamics" in extra  # else no forces module to import
-    return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None)
+    return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None,
+                  no_profile=no_profile)

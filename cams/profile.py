@@ -51,6 +51,7 @@ from laws.errors import InputError
 from laws.program import Motion
 
 __all__ = [
+    "ProfileSizeError",
     "PitchGeometry",
     "Profile",
     "ProfileOptions",
@@ -77,6 +78,15 @@ DEFAULT_TOLERANCE_FRACTION = 1e-3
 PROFILE_KEYS = ("tolerance", "min_curvature_radius")
 #: Largest number of samples of one profile (guards against endless refinement).
 MAX_POINTS = 2_000_000
+
+
+class ProfileSizeError(InputError):
+    """The profile needs more than :data:`MAX_POINTS` points at its chord tolerance.
+
+    An input error where the tolerance was asked for (``cams profile
+    --tolerance``); where a command only assesses a sized cam it makes the cam
+    not buildable at that tolerance (:func:`cams.assess.assess_cam`).
+    """
 
 
 def _xy(x: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -619,7 +629,8 @@ def _sample(design: CamDesign, centre, tol: float, r: float, groove: bool) -> li
         if not np.any(split):
             break
         if len(u) + int(split.sum()) > MAX_POINTS:
-            raise InputError("profile.tolerance", f"{tol:g} needs more than {MAX_POINTS} points; choose a larger tolerance")
+            raise ProfileSizeError("profile.tolerance",
+                                   f"{tol:g} needs more than {MAX_POINTS} points; choose a larger tolerance")
         # the mid-points of the split chords go between their ends (the k-th split one to idx + 1 + k);
         # the two halves of each split chord are the next round's fresh chords
         new = idx[split] + 1 + np.arange(int(split.sum()))

@@ -47,7 +47,6 @@ def print_checks(rep: dict) -> None:
 
 
 def run(args) -> int:
-    from cams.assess import knife_in_groove
     from cams.cam import Cam
     from cams.commands.solve import print_assessment
     from cams.designfile import load_design
@@ -57,13 +56,9 @@ def run(args) -> int:
         refuse_method(args.method)
     cam = Cam(design, method=None if is_flat(design) else args.method, tolerance=args.tolerance)
     cam.options  # bad options fail before solving
-    if knife_in_groove(design):  # no profile to check: the assessment says why
-        report = None
-        rep = {"name": design.name, "passed": False, "checks": []}
-    else:
-        report = cam.checks
-        rep = report.to_dict()
     a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
+    report = cam.__dict__.get("checks")  # None: a knife edge in a groove, or no profile at the tolerance
+    rep = {"name": design.name, "passed": False, "checks": []} if report is None else report.to_dict()
     rep.update(a.to_dict())
     passed = a.usable and report is not None and report.passed
     rep["passed"] = passed

@@ -159,7 +159,6 @@ def _chosen_notes(report, rep: dict) -> None:
 
 
 def run(args) -> int:
-    from cams.assess import knife_in_groove
     from cams.cam import Cam
     from cams.designfile import load_design
 
@@ -182,11 +181,12 @@ def run(args) -> int:
             note = impact_note(df.forces)
             if note:
                 rep["notes"].append(note)
-    if result.mode == "chosen" and not knife_in_groove(design):
-        _chosen_notes(cam.checks, rep)
     rep["forces"] = forces
     # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
     a = cam.assessment
+    checks = cam.__dict__.get("checks")  # None: a knife edge in a groove, or no profile at the tolerance
+    if result.mode == "chosen" and checks is not None:
+        _chosen_notes(checks, rep)
     rep.update(a.to_dict())
     if args.json:
         if forces is not None:

@@ -106,8 +106,11 @@ FLAT_ROCKER = {
     "follower": {"kind": "rocker", "face": "flat", "swing": 15.0, "centre_distance": 120.0, "face_offset": 0.0},
     "cam": {"rpm": 60, "bore_radius": 5.0, "base_radius": 80.0},
     "motion": MOTION,
-    "limits": {"min_radius": 5.0, "min_base_radius": 10.0},
+    "limits": {"min_radius": 5.0},
     "profile": {"tolerance": 0.001},
+}
+FLAT_ROCKER_FLOOR = {  # a floor on R0 sizes the cam: it goes without a chosen [cam] base_radius
+    **FLAT_ROCKER, "cam": {"rpm": 60, "bore_radius": 5.0}, "limits": {"min_radius": 5.0, "min_base_radius": 10.0},
 }
 FLAT_TRANSLATING = {
     "follower": {"kind": "translating", "face": "flat", "stroke": 20.0, "offset": 1.0},
@@ -183,7 +186,7 @@ HOMES = {
        for k in ("stroke", "offset")},
     **{("Flat-faced followers (`face = \"flat\"`)", "`[cam]`", k): (FLAT_ROCKER, f"cam.{k}")
        for k in ("rpm", "bore_radius", "base_radius")},
-    **{("Flat-faced followers (`face = \"flat\"`)", "`[limits]`", k): (FLAT_ROCKER, f"limits.{k}")
+    **{("Flat-faced followers (`face = \"flat\"`)", "`[limits]`", k): (FLAT_ROCKER_FLOOR, f"limits.{k}")
        for k in ("min_radius", "min_base_radius")},
     ("Flat-faced followers (`face = \"flat\"`)", "`[profile]`", "tolerance"): (FLAT_ROCKER, "profile.tolerance"),
     ("`[linkage]`", "", "rpm"): (SLOTTING, "linkage.rpm"),
@@ -341,8 +344,14 @@ def test_phase_angles_below_the_sum_tolerance_are_refused(tmp_path, capsys):
     rc, err = _run(tmp_path, tiny, capsys)
     assert rc == 2 and err.count("\n") == 1 and "motion[0].angle: must be at least 1e-06 degrees" in err
     smallest = _set(_set(TRANSLATING, "motion[0].angle", 1e-6), "motion[3].angle", 210.0 - 1e-6)
-    rc, err = _run(tmp_path, smallest, capsys)
-    assert rc == 0, err
+    f = tmp_path / "smallest.toml"
+    f.write_text(to_toml(smallest), encoding="utf-8")
+    capsys.readouterr()
+    rc = main(["solve", str(f)])
+    out, err = capsys.readouterr()
+    # sized and verified; its profile (a rise in 1e-6 degrees) is a step no tolerance can follow: not buildable
+    assert rc == 1 and err == "", err
+    assert "verified: yes" in out and "buildable: NO" in out and "no profile: profile.tolerance" in out, out
 
 
 def _truncated(doc: dict, before: str) -> str:
