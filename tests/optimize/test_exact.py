@@ -165,3 +165,13 @@ def test_1800_phases_in_bounded_memory():
         clear_cache()
     assert r.certified is True
     assert peak < 400e6, f"peak {peak / 1e6:.0f} MB"
+
+
+def test_convex_bound_holds_at_large_magnitudes():
+    """Tiny phases put the centre ~3e5 mm out: the convex method's answer is the sampled optimum (a relaxation,
+    so not above the exact R0) and its error bound covers the gap (it stated 2e-8 mm for a 1e-2 mm error)."""
+    design = design_from_dict(REFUSED)
+    ex = solve(design, method="exact")
+    cv = solve(design.with_(samples=360), method="convex")
+    assert cv.R0 <= ex.R0 + ex.error_bound
+    assert ex.R0 - cv.R0 <= cv.error_bound
