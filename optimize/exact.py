@@ -157,15 +157,18 @@ def nearest_exact(
         if not add(np.stack([nx[r, k], ny[r, k]], axis=1), off[r, k]):
             break
     # 2. the continuum: the violated local maxima of every side
+    pk, at = None, None
     for _ in range(cap):
-        pk = scan_peaks(t, q.x)
+        at = q.x
+        pk = scan_peaks(t, at)
         bad = pk.value > allowed(pk.offset)
         if not np.any(bad):
             break
         if not add(np.stack([pk.nx[bad], pk.ny[bad]], axis=1), pk.offset[bad]):
             break
     O = q.x
-    pk = scan_peaks(t, O)
+    if pk is None or not np.array_equal(at, O):
+        pk = scan_peaks(t, O)
     v = float(np.max(pk.value))
     obj = float(np.linalg.norm(O - T))
     # the bounds: lower from the multipliers (weak duality, cuts' rounding subtracted), upper from F
@@ -173,7 +176,7 @@ def nearest_exact(
     g = q.dual_value() - float(lam @ q._tol[q.active]) if q.active else 0.0
     lower = float(np.sqrt(2.0 * g)) * (1.0 - 4 * EPS) if g > 0 else 0.0
     lower = min(lower, obj)
-    found = _feasible_point(design, t, O, rel, T)
+    found = _feasible_point(design, t, O, pk, rel, T)
     if found is None:
         centre, upper, bound, certified = O, obj, None, False
     else:
@@ -195,26 +198,30 @@ def nearest_exact(
     )
 
 
-def _feasible_point(design: CamDesign, t, O: np.ndarray, rel: float, T: np.ndarray
+def _feasible_point(design: CamDesign, t, O: np.ndarray, pk, rel: float, T: np.ndarray
                     ) -> tuple[np.ndarray, float] | None:
     """A centre checked feasible near ``O``, and the distance to ``T`` that bounds the optimum from above.
 
-    ``O`` itself when the continuum scan finds no violation beyond the
-    rounding of the numbers compared there, else ``O`` moved inside by
-    :func:`optimize.bounds.push_inside` and scanned again. A violation left
-    within rounding still counts: the upper bound is the distance of the
-    point pushed inside by it. None when no such point is found.
+    ``pk`` is the continuum scan at ``O``. The centre is ``O`` itself when
+    that scan finds no violation beyond the rounding of the numbers compared,
+    else ``O`` moved inside by :func:`optimize.bounds.push_inside` and scanned
+    again. A violation left within rounding still counts: the upper bound is
+    the distance of the point pushed inside by it. None when no such point is
+    found (then nothing is proven).
     """
     F = np.asarray(O, float)
-    for _ in range(4):
-        pk = scan_peaks(t, F)
+    for k in range(4):
+        if k:
+            pk = scan_peaks(t, F)
         v = float(np.max(pk.value))
         slack = rel * (np.abs(pk.offset) + 2.0 * _magnitude(T, F - T))
         if np.all(pk.value <= slack):
             upper = float(np.linalg.norm(F - T))
             if v > 0:
                 G = push_inside(design, F, v)
-                upper = max(upper, float(np.linalg.norm(G - T))) if G is not None else upper + v
+                if G is None:
+                    return None
+                upper = max(upper, float(np.linalg.norm(G - T)))
             return F, upper
         F = push_inside(design, F, v)
         if F is None:
