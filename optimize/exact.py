@@ -172,10 +172,7 @@ def nearest_exact(
     v = float(np.max(pk.value))
     obj = float(np.linalg.norm(O - T))
     # the bounds: lower from the multipliers (weak duality, cuts' rounding subtracted), upper from F
-    lam = np.maximum(q.lam, 0.0)
-    g = q.dual_value() - float(lam @ q._tol[q.active]) if q.active else 0.0
-    lower = float(np.sqrt(2.0 * g)) * (1.0 - 4 * EPS) if g > 0 else 0.0
-    lower = min(lower, obj)
+    lower = min(q.lower_bound(), obj)
     found = _feasible_point(design, t, O, pk, rel, T)
     if found is None:
         centre, upper, bound, certified = O, obj, None, False

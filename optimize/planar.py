@@ -111,6 +111,20 @@ class NearestPoint:
         g = lam @ self._N[self.active]
         return float(-0.5 * (g @ g) - lam @ self._c[self.active])
 
+    def lower_bound(self) -> float:
+        """A proven lower bound of the distance from ``P`` to ``{x : N x <= c}`` (length unit).
+
+        Weak duality at the current multipliers (any ``lam >= 0`` will do),
+        less what the rounding of each offset ``c_i - N_i P`` can change it
+        by: ``sqrt(2 (dual_value - lam . tolerances))``, 0 when that is
+        negative. After :meth:`solve` it meets the distance to rounding.
+        """
+        if not self.active:
+            return 0.0
+        lam = np.maximum(self.lam, 0.0)
+        g = self.dual_value() - float(lam @ self._tol[self.active])
+        return float(np.sqrt(2.0 * g)) * (1.0 - 4 * EPS) if g > 0 else 0.0
+
     def solve(self, max_steps: int | None = None) -> np.ndarray:
         """Make the current point the nearest point of all half-planes added so far.
 

@@ -195,3 +195,22 @@ def test_many_cuts_cost_linear():
         tracemalloc.stop()
     assert np.max(N @ x - c) <= 1e-13
     assert peak < 50 * m * 16
+
+
+def test_lower_bound_never_exceeds_the_distance():
+    """The proven lower bound (weak duality less rounding) is below the true distance at every stage of
+    an incremental solve, and meets it at the end."""
+    rng = np.random.default_rng(21)
+    for _ in range(100):
+        m = 12
+        ang = rng.uniform(0, 2 * np.pi, m)
+        N = np.stack([np.cos(ang), np.sin(ang)], 1)
+        c = rng.uniform(0.2, 2.0, m)
+        P = rng.uniform(-4, 4, 2)
+        q = NearestPoint(P)
+        for k in range(0, m, 3):
+            q.add(N[k:k + 3], c[k:k + 3])
+            q.solve()
+            true = float(_exact_nearest(P, N[:k + 3], c[:k + 3])) ** 0.5
+            assert q.lower_bound() <= true
+            assert q.lower_bound() == pytest.approx(true, rel=1e-12, abs=1e-14)
