@@ -219,8 +219,7 @@ class NearestPoint:
             self.y = np.zeros(2)
 
 
-def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float | None = None
-                  ) -> tuple[np.ndarray, np.ndarray] | None:
+def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
     """Exact nearest point to ``P`` of ``{x : N x <= c}`` (:class:`NearestPoint`).
 
     Parameters
@@ -230,10 +229,8 @@ def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float | None
     N : ndarray, shape (m, 2)
         Unit normals of the half-planes.
     c : ndarray, shape (m,)
-        Offsets, length unit.
-    tol : float, optional
-        Ignored; kept for callers of the former interface: the tolerances
-        follow the numbers computed (module notes).
+        Offsets, length unit. No tolerance is passed: it follows the numbers
+        computed (module notes).
 
     Returns
     -------

@@ -16,11 +16,11 @@ def test_nearest_point_of_square_from_outside_corner_and_edge():
     # unit square 0 <= x, y <= 1
     N = np.array([[1.0, 0], [-1, 0], [0, 1], [0, -1]])
     c = np.array([1.0, 0, 1, 0])
-    x, act = nearest_point(np.array([2.0, 3.0]), N, c, 1e-12)
+    x, act = nearest_point(np.array([2.0, 3.0]), N, c)
     assert np.allclose(x, [1, 1]) and set(act) == {0, 2}
-    x, act = nearest_point(np.array([0.25, -5.0]), N, c, 1e-12)
+    x, act = nearest_point(np.array([0.25, -5.0]), N, c)
     assert np.allclose(x, [0.25, 0]) and list(act) == [3]
-    x, act = nearest_point(np.array([0.5, 0.5]), N, c, 1e-12)
+    x, act = nearest_point(np.array([0.5, 0.5]), N, c)
     assert np.allclose(x, [0.5, 0.5]) and len(act) == 0
 
 
@@ -31,7 +31,7 @@ def test_nearest_point_matches_dense_search_on_random_polygons():
         N = np.stack([np.cos(ang), np.sin(ang)], 1)
         c = rng.uniform(0.5, 2.0, 6)
         P = rng.uniform(-2.5, 2.5, 2)
-        res = nearest_point(P, N, c, 1e-12)
+        res = nearest_point(P, N, c)
         g = np.linspace(-3, 3, 301)
         X, Y = np.meshgrid(g, g)
         pts = np.stack([X.ravel(), Y.ravel()], 1)
@@ -46,7 +46,7 @@ def test_nearest_point_matches_dense_search_on_random_polygons():
 def test_infeasible_returns_none():
     N = np.array([[1.0, 0], [-1, 0]])
     c = np.array([-1.0, -1.0])  # x <= -1 and x >= 1
-    assert nearest_point(np.zeros(2), N, c, 1e-12) is None
+    assert nearest_point(np.zeros(2), N, c) is None
 
 
 def test_line_crossings_and_parallel():
@@ -125,9 +125,8 @@ def test_nearest_point_matches_rational_enumeration_incrementally():
 
 
 def test_vertex_far_from_the_origin_is_not_rejected():
-    """The nearest point where two lines cross far out (coordinates ~1e6) is found, whatever tolerance is passed:
-    the former routine judged Cramer's crossing against a tolerance tied to the design's size and returned a
-    farther vertex."""
+    """The nearest point where two lines cross far out (coordinates ~1e6) is found: the former routine judged
+    Cramer's crossing against a tolerance tied to the design's size (here 1e-13) and rejected it."""
     V = np.array([1.0e6 + 0.123456789, 2.5e6 - 0.987654321])
     a = np.array([np.cos(1.3), np.sin(1.3)])
     b = np.array([np.cos(1.3 + 1e-3), np.sin(1.3 + 1e-3)])
@@ -135,7 +134,7 @@ def test_vertex_far_from_the_origin_is_not_rejected():
     N = np.array([a, b, w])
     c = np.array([a @ V, b @ V, w @ V + 5.0])  # a third line through a farther vertex, slack at V
     P = V + 40.0 * (a + b)                     # outside both lines, V the nearest point
-    x, act = nearest_point(P, N, c, 1e-13)
+    x, act = nearest_point(P, N, c)
     ref = float(_exact_nearest(P, N, c)) ** 0.5
     # conditioning: the crossing moves by eps |V| / sin(1e-3) ~ 1e-6 under rounding of the data
     assert abs(np.linalg.norm(x - P) - ref) <= 4 * np.finfo(float).eps * np.abs(V).sum() / 1e-3
