@@ -67,16 +67,8 @@ class NearestPoint:
 
     @property
     def x(self) -> np.ndarray:
+        """The current point ``P + y`` (fixed frame, length unit)."""
         return self.P + self.y
-
-    @property
-    def N(self) -> np.ndarray:
-        return self._N[: self.m]
-
-    @property
-    def c(self) -> np.ndarray:
-        """The offsets ``c`` as given (up to the rounding of ``c - N P + N P``)."""
-        return self._c[: self.m] + self._N[: self.m] @ self.P
 
     def add(self, N: np.ndarray, c: np.ndarray) -> None:
         """Add the half-planes ``N x <= c`` (unit normals ``N (k, 2)``, offsets ``c (k,)``, length unit)."""
@@ -94,10 +86,6 @@ class NearestPoint:
         self._c[sl] = c - N @ self.P
         self._tol[sl] = EPS * (np.abs(c) + np.abs(self.P).sum())
         self.m = need
-
-    def residuals(self) -> np.ndarray:
-        """Signed distances ``N x - c`` of the current point outside every half-plane (length unit)."""
-        return self._N[: self.m] @ self.y - self._c[: self.m]
 
     def tolerances(self) -> np.ndarray:
         """Allowed residual of every half-plane: rounding of the numbers computed (length unit)."""
