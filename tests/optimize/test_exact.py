@@ -119,6 +119,11 @@ def test_cli_refuses_a_result_that_is_not_certified(monkeypatch, capsys):
     out = capsys.readouterr().out
     assert code == 1
     assert "not certified" in out and "R0      =" not in out
+    import json
+
+    code = main(["solve", "--json", str(EXAMPLES / "rocker_force.toml")])
+    cap = capsys.readouterr()
+    assert code == 1 and json.loads(cap.out)["certified"] is False and "not certified" in cap.err
 
 
 def test_decreasing_relaxation_raises(monkeypatch):
