@@ -364,6 +364,11 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
     seconds = time.perf_counter() - t0
     if sol is not None and mode in ("min_R0", "min_L", "fixed_offset"):
         binding, error_bound, certified = sol.binding, sol.error_bound, sol.certified
+        if certified is False:
+            notes.append(f"NOT CERTIFIED: the exact method's bounds differ by {error_bound:.3g} (lower bound "
+                         f"{sol.lower_bound:.9g}): do not use this answer; try method = \"convex\""
+                         if error_bound is not None else
+                         "NOT CERTIFIED: no centre was checked feasible near the exact method's answer; do not use it")
         if samples is not None:
             notes.append(f"sampled at {samples} steps per phase: the limit may be exceeded slightly between samples")
     else:
@@ -382,11 +387,6 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
     pressure = check_pressure(design, centre)
     if not pressure.ok and R0 < 1e-6 * travel and method == "exact":
         raise vanishing
-    if certified is False:
-        notes.append(f"NOT CERTIFIED: the exact method's bounds differ by {error_bound:.3g} (lower bound "
-                     f"{sol.lower_bound:.9g}): do not use this answer; try method = \"convex\""
-                     if error_bound is not None else
-                     "NOT CERTIFIED: no centre was checked feasible near the exact method's answer; do not use it")
     if R0 <= f.roller_radius:
         notes.append(f"not buildable: R0 = {R0:.6g} is not larger than the roller radius {f.roller_radius:g} (the "
                      "working profile would have no base circle); set limits.min_base_radius or a smaller roller")
