@@ -25,7 +25,10 @@ numpy is imported):
   phase, 10,001 positions, 10^8 crossings); the all-pairs time grows about as
   the cube of the steps (each crossing nearer than the answer is checked
   against every line), so that run takes minutes and is made on one design
-  only (:data:`ALLPAIRS_LONGER`).
+  only (:data:`ALLPAIRS_LONGER`);
+* the exact method's time (zone table included) and peak memory
+  (``tracemalloc``) against the number of phases, on programs of tiny rise
+  and return pairs (:func:`many_phases`, up to 1,800 phases).
 """
 
 from __future__ import annotations
@@ -70,6 +73,9 @@ ALLPAIRS_BYTES_PER_PAIR = 160.0
 #: take 7 to 20 minutes on one design, the harmonic law being among the quickest).
 ALLPAIRS_MAX_STEPS = {1: 1000, 2: 300}
 ALLPAIRS_LONGER = {"rocker force harmonic cw/ccw": 10000, "rocker form cycloidal cw/ccw": 1000}
+#: Phases of the many-phase programs (rise/return pairs of equal tiny angles, issue 12 item 3).
+PHASES = (60, 200, 600, 1800)
+QUICK_PHASES = (20, 60)
 #: The relative error of R0 the issue asks the exact method's time at.
 TARGET_ERROR = 1e-9
 
@@ -292,6 +298,36 @@ def plot(rows, path):
     fig.savefig(path, dpi=120)
 
 
+def many_phases(n: int):
+    """A translating form-closed design of ``n`` phases: ``n / 2`` cycloidal rise/return pairs over 360 deg."""
+    motion = []
+    for _ in range(n // 2):
+        motion += [{"phase": "rise", "law": "cycloidal", "angle": 360 / n},
+                   {"phase": "return", "law": "cycloidal", "angle": 360 / n}]
+    return design_from_dict({"name": f"{n} phases", "follower": {"kind": "translating", "stroke": 1.0},
+                             "cam": {"rotation": "ccw"}, "motion": motion,
+                             "limits": {"pressure_angle": 30, "closure": "form"}})
+
+
+def bench_phases(counts, log) -> list[dict]:
+    """The exact method's time (zone table included) and peak memory against the number of phases."""
+    rows = []
+    for n in counts:
+        d = many_phases(n)
+        zone.clear_cache()
+        tracemalloc.start()
+        t = time.perf_counter()
+        sol = nearest_exact(d, d.follower.position(0.0))
+        sec = time.perf_counter() - t
+        peak = tracemalloc.get_traced_memory()[1]
+        tracemalloc.stop()
+        zone.clear_cache()
+        rows.append({"phases": n, "seconds": sec, "peak_mb": peak / 1e6, "iterations": sol.iterations,
+                     "certified": sol.certified, "R0": sol.objective})
+        log(f"exact, {n} phases: {sec:.2f} s, peak {peak / 1e6:.0f} MB, {sol.iterations} iterations")
+    return rows
+
+
 def machine() -> dict:
     """The machine: CPU model and cores, Python and numpy versions."""
     model = "unknown"
@@ -323,8 +359,10 @@ def main(argv=None):
     rows += bench_convex(sub, refs, QUICK_STEPS if a.quick else CONVEX_STEPS, log)
     rows += bench_allpairs(sub, refs, QUICK_STEPS if a.quick else ALLPAIRS_STEPS, a.max_gb, log)
     summary = summarize(rows, a.max_gb)
+    phases = bench_phases(QUICK_PHASES if a.quick else PHASES, log)
+    summary["exact_by_phases"] = {r["phases"]: {"seconds": r["seconds"], "peak_mb": r["peak_mb"]} for r in phases}
     summary["total_seconds"] = time.perf_counter() - t0
-    result = {"machine": machine(), "summary": summary, "rows": rows}
+    result = {"machine": machine(), "summary": summary, "rows": rows, "phases": phases}
     (out / "solvers.json").write_text(json.dumps(result, indent=1))
     plot(rows, out / "solvers.png")
     print(json.dumps(summary, indent=1))

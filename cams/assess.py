@@ -51,25 +51,32 @@ class Assessment:
         empty when the cam is usable.
     short : tuple of str
         The same failures in a word or two each (for titles of pictures).
+    certified : bool
+        False when the exact method's bounds disagree beyond its stated error
+        bound (the size is not proven minimal): the answer is not one.
     """
 
     verified: bool
     buildable: bool
     failures: tuple[str, ...] = ()
     short: tuple[str, ...] = ()
+    certified: bool = True
 
     @property
     def usable(self) -> bool:
-        """Verified and buildable: what every command's exit code 0 means."""
-        return self.verified and self.buildable
+        """Certified, verified and buildable: what every command's exit code 0 means."""
+        return self.certified and self.verified and self.buildable
 
     def title(self) -> str:
         """A picture's title line for a failing cam, e.g. ``"FAILS: undercut, bore"`` ("" when usable)."""
         return "" if self.usable else "FAILS: " + ", ".join(self.short)
 
     def to_dict(self) -> dict:
-        """JSON-ready ``{verified, buildable, failures}``."""
-        return {"verified": bool(self.verified), "buildable": bool(self.buildable), "failures": list(self.failures)}
+        """JSON-ready ``{verified, buildable, failures}``, and ``certified`` when it is false."""
+        d = {"verified": bool(self.verified), "buildable": bool(self.buildable), "failures": list(self.failures)}
+        if not self.certified:
+            d["certified"] = False
+        return d
 
 
 def knife_in_groove(design) -> bool:
@@ -116,6 +123,11 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     Assessment
     """
     failures: list[tuple[str, str]] = []  # (short, line)
+    certified = getattr(solution, "certified", None) is not False
+    if not certified:
+        eb = solution.error_bound
+        failures.append(("not certified", "not certified: the exact method's bounds on the size "
+                         + ("do not meet (no feasible centre near it)" if eb is None else f"differ by {eb:.3g} mm")))
     verified = bool(solution.verified)
     if not verified:
         failures.append(("not verified", "not verified: the independent check finds a limit exceeded"))
@@ -153,7 +165,7 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
         why = _dynamics_failure(forces.forces)
         if why is not None:
             fail("dynamics", why)
-    return Assessment(verified, buildable, tuple(f for _, f in failures), tuple(s for s, _ in failures))
+    return Assessment(verified, buildable, tuple(f for _, f in failures), tuple(s for s, _ in failures), certified)
 
 
 def assess_cam(cam) -> Assessment:

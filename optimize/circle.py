@@ -14,6 +14,7 @@ from typing import Callable
 import numpy as np
 
 from cams.design import CamDesign
+from optimize.planar import EPS
 from optimize.zone import max_violation, sample_wedges
 
 __all__ = ["admissible_arcs", "best_on_circle", "violation_function", "crossing_seed"]
@@ -93,7 +94,8 @@ def admissible_arcs(
     arcs = _scanned_arcs(design, centre, radius, samples, scan)
     G = violation_function(design, samples)
     at = lambda a: G(centre + radius * np.array([np.cos(a), np.sin(a)]))  # noqa: E731
-    tol = 1e-9 * design.scale
+    # a seed is admissible up to the rounding of the numbers compared (not a fraction of the follower's size)
+    tol = EPS * (float(np.abs(centre).sum()) + 2.0 * radius + design.scale)
     for s in seeds:
         covered = any((s - a) % (2 * np.pi) <= (b - a) + 1e-15 for a, b in arcs)
         if covered or at(s) > tol:

@@ -3,9 +3,10 @@
 Minimum R0 is the nearest admissible point to the roller's start point A0,
 minimum L the nearest to the rocker pivot, and a weighted mix minimizes
 ``w_R0 |O - A0| + w_L |O - O1|``; all are second-order-cone programs. The
-solver's answer is polished by solving exactly on the constraints it found
-active (:func:`optimize.planar.nearest_point`), so that the result agrees with
-the exhaustive method to round-off where the apex is the nearest point.
+solver's answer to a nearest-point problem is polished by the exact nearest
+point of the same sampled zone (:func:`optimize.planar.nearest_point`, O(m)
+per step), so that it is the sampled optimum to rounding, whatever the
+solver's own accuracy at the design's magnitudes.
 cvxpy is imported here only.
 """
 
@@ -15,7 +16,7 @@ import numpy as np
 
 from cams.design import CamDesign
 from laws.errors import InfeasibleError
-from optimize.planar import feasible_mask, nearest_point
+from optimize.planar import EPS, nearest_point
 from optimize.result import Binding, CentreSolution
 from optimize.zone import sample_wedges
 
@@ -64,16 +65,13 @@ def nearest_convex(
 
     T = np.asarray(target, dtype=float)
     W, N, c, O = _solve(design, lambda x, s: cp.norm(x - T / s), samples, extra)
-    atol = tol * design.scale
-    # polish: exact nearest point on the (few) near-active constraints
-    near = np.nonzero(N @ O - c >= -1e-5 * design.scale)[0]
+    # polish: the exact nearest point of the same sampled zone (and the extra half-planes)
     eN = np.zeros((0, 2)) if extra is None else np.asarray(extra[0], float)
     ec = np.zeros(0) if extra is None else np.asarray(extra[1], float)
-    if 0 < len(near) <= 40:
-        res = nearest_point(T, np.vstack([N[near], eN]), np.concatenate([c[near], ec]), atol * 1e-3)
-        if res is not None and feasible_mask(res[0][None], np.vstack([N, eN]), np.concatenate([c, ec]), atol)[0]:
-            O = res[0]
-    binding, _ = _binding(W, N, O, c, 1e-7 * design.scale)
+    res = nearest_point(T, np.vstack([N, eN]), np.concatenate([c, ec]))
+    if res is not None:
+        O = res[0]
+    binding, _ = _binding(W, N, O, c, tol * _magnitude(design, T, O))
     obj = float(np.linalg.norm(O - T))
     return CentreSolution(
         centre=O, objective=obj, method="convex", samples=samples,
@@ -81,8 +79,18 @@ def nearest_convex(
     )
 
 
+def _magnitude(design: CamDesign, *points: np.ndarray) -> float:
+    """Size of the numbers a signed distance compares: the points' coordinates and the design's lengths."""
+    return float(design.scale + sum(np.abs(p).sum() for p in points))
+
+
 def _sampling_bound(design: CamDesign, O: np.ndarray, T: np.ndarray, obj: float) -> float | None:
-    """Gap between the sampled optimum (a lower bound) and a feasible point of the continuum."""
+    """Gap between the sampled optimum (a lower bound) and a feasible point of the continuum, with the rounding.
+
+    ``obj = |O - T|`` is the sampled zone's nearest distance (a relaxation of
+    the continuous zone); the point moved inside by
+    :func:`optimize.bounds.push_inside` bounds the optimum from above.
+    """
     from optimize.bounds import push_inside
     from optimize.zone import max_violation
 
@@ -90,7 +98,7 @@ def _sampling_bound(design: CamDesign, O: np.ndarray, T: np.ndarray, obj: float)
     f = push_inside(design, O, v)
     if f is None:
         return None
-    return float(abs(np.linalg.norm(f - T) - obj) + 1e-9 * design.scale)
+    return float(abs(np.linalg.norm(f - T) - obj) + EPS * _magnitude(design, T, f))
 
 
 def weighted_convex(
@@ -103,7 +111,7 @@ def weighted_convex(
     W, N, c, O = _solve(
         design, lambda x, s: sum(w * cp.norm(x - p / s) for w, p in zip(weights, pts)), samples, None
     )
-    binding, _ = _binding(W, N, O, c, 1e-6 * design.scale)
+    binding, _ = _binding(W, N, O, c, 1e-6 * _magnitude(design, O))
     obj = float(sum(w * np.linalg.norm(O - p) for w, p in zip(weights, pts)))
     return CentreSolution(centre=O, objective=obj, method="convex", samples=samples, binding=binding,
                           violation=float(np.max(N @ O - c)))

@@ -2,15 +2,238 @@
 
 All functions take half-planes as ``N (m, 2)`` unit normals and ``c (m,)``
 offsets meaning ``N @ x <= c``.
+
+The nearest point (:class:`NearestPoint`, :func:`nearest_point`) is a 2-D
+dual active-set method (Goldfarb and Idnani, Math. Programming 27, 1983) with
+the identity as Hessian. In the coordinates ``y = x - P`` it minimizes
+``|y|^2 / 2`` subject to ``N y <= c - N P``: starting from ``y = 0``, the
+most violated half-plane is made active, dropping an active one when its
+multiplier would turn negative. At every step ``y = -N^T lam`` with
+``lam >= 0``, so the dual value ``-|N^T lam|^2 / 2 + lam . (N P - c)`` is a
+lower bound of ``dist^2 / 2`` and never decreases. Half-planes can be added
+one batch at a time (an exchange method only adds cuts): the method goes on
+from the last optimum, each step costs one product ``N y`` (O(m)), and the
+memory is O(m). Tolerances follow the numbers computed: half-plane ``i``
+counts as violated when ``N_i y - (c_i - N_i P)`` exceeds a few rounding
+errors of ``|c_i| + |P| + |y|``.
 """
 
 from __future__ import annotations
 
-from functools import lru_cache
-
 import numpy as np
 
-__all__ = ["nearest_point", "line_crossings", "clip_polygon", "feasible_mask"]
+from laws.errors import InfeasibleError
+
+__all__ = ["NearestPoint", "nearest_point", "line_crossings", "clip_polygon", "feasible_mask", "EPS"]
+
+#: Rounding errors allowed per computed signed distance: ``EPS * (|c_i| + |P| + |y|)``.
+EPS = 16 * np.finfo(float).eps
+#: ``|sin|`` of the angle between two unit normals below which the lines count as parallel.
+_PARALLEL = 1e-14
+
+
+class NearestPoint:
+    """Nearest point to ``P`` of ``{x : N x <= c}``, half-planes added in batches.
+
+    Parameters
+    ----------
+    P : array_like, shape (2,)
+        The point to approach (for the solvers: the target of the objective,
+        the follower's fixed frame, length unit).
+
+    Attributes
+    ----------
+    x : ndarray, shape (2,)
+        The current nearest point (after :meth:`solve`), same frame and unit.
+    active : list of int
+        Indices (in the order of addition) of the half-planes active at ``x``
+        (at most two, independent normals).
+    lam : ndarray, shape (len(active),)
+        Their multipliers, >= 0 (length unit): ``x - P = -sum lam_k N_k``.
+    steps : int
+        Active-set changes so far.
+    """
+
+    def __init__(self, P: np.ndarray):
+        self.P = np.asarray(P, dtype=float).copy()
+        self._N = np.zeros((16, 2))
+        self._c = np.zeros(16)   # offsets relative to P: c_i - N_i . P
+        self._tol = np.zeros(16)  # rounding allowance of each c_i - N_i . P
+        self.m = 0
+        self.y = np.zeros(2)
+        self.active: list[int] = []
+        self.lam = np.zeros(0)
+        self.steps = 0
+
+    @property
+    def x(self) -> np.ndarray:
+        """The current point ``P + y`` (fixed frame, length unit)."""
+        return self.P + self.y
+
+    def add(self, N: np.ndarray, c: np.ndarray) -> None:
+        """Add the half-planes ``N x <= c`` (unit normals ``N (k, 2)``, offsets ``c (k,)``, length unit)."""
+        N = np.asarray(N, dtype=float).reshape(-1, 2)
+        c = np.asarray(c, dtype=float).reshape(-1)
+        k = len(N)
+        need = self.m + k
+        if need > len(self._c):
+            cap = max(need, 2 * len(self._c))
+            self._N = np.resize(self._N, (cap, 2))
+            self._c = np.resize(self._c, cap)
+            self._tol = np.resize(self._tol, cap)
+        sl = slice(self.m, need)
+        self._N[sl] = N
+        self._c[sl] = c - N @ self.P
+        self._tol[sl] = EPS * (np.abs(c) + np.abs(self.P).sum())
+        self.m = need
+
+    def tolerances(self) -> np.ndarray:
+        """Allowed residual of every half-plane: rounding of the numbers computed (length unit)."""
+        return self._tol[: self.m] + EPS * float(np.abs(self.y).sum())
+
+    def dual_value(self) -> float:
+        """``-|N^T lam|^2 / 2 + lam . (N P - c)`` for the current multipliers: <= ``dist^2 / 2``."""
+        if not self.active:
+            return 0.0
+        lam = np.maximum(self.lam, 0.0)
+        g = lam @ self._N[self.active]
+        return float(-0.5 * (g @ g) - lam @ self._c[self.active])
+
+    def lower_bound(self) -> float:
+        """A proven lower bound of the distance from ``P`` to ``{x : N x <= c}`` (length unit).
+
+        Weak duality at the current multipliers (any ``lam >= 0`` will do),
+        less what the rounding of each offset ``c_i - N_i P`` can change it
+        by: ``sqrt(2 (dual_value - lam . tolerances))``, 0 when that is
+        negative. After :meth:`solve` it meets the distance to rounding.
+        """
+        if not self.active:
+            return 0.0
+        lam = np.maximum(self.lam, 0.0)
+        g = self.dual_value() - float(lam @ self._tol[self.active])
+        return float(np.sqrt(2.0 * g)) * (1.0 - 4 * EPS) if g > 0 else 0.0
+
+    def solve(self, max_steps: int | None = None) -> np.ndarray:
+        """Make the current point the nearest point of all half-planes added so far.
+
+        Parameters
+        ----------
+        max_steps : int, optional
+            Cap on the active-set changes of this call; default ``4 m + 100``
+            (each step raises the dual value, and an active set recurs only
+            with a higher value, so the cap is never reached in exact
+            arithmetic).
+
+        Returns
+        -------
+        ndarray, shape (2,)
+            The nearest point (fixed frame, length unit).
+
+        Raises
+        ------
+        InfeasibleError
+            When the half-planes have no common point (a dual ray: the
+            violated half-plane is opposed by the active ones), or when the
+            cap on the steps is reached.
+        """
+        N, c = self._N, self._c
+        limit = (max_steps if max_steps is not None else 4 * self.m + 100)
+        steps = 0
+        while self.m:
+            excess = N[: self.m] @ self.y - c[: self.m] - self.tolerances()
+            p = int(np.argmax(excess))
+            if excess[p] <= 0:
+                break
+            n, up = N[p], 0.0
+            while True:  # raise the multiplier of p until p is active (full step)
+                steps += 1
+                if steps > limit:
+                    raise InfeasibleError("solve", f"the nearest-point method did not settle in {limit} steps")
+                A = self.active
+                if not A:
+                    w, r = n, np.zeros(0)
+                elif len(A) == 1:
+                    a = N[A[0]]
+                    an = float(a @ n)
+                    parallel = abs(a[0] * n[1] - a[1] * n[0]) <= _PARALLEL
+                    w, r = (np.zeros(2) if parallel else n - an * a), np.array([an])
+                else:
+                    a1, a2 = N[A[0]], N[A[1]]
+                    det = a1[0] * a2[1] - a1[1] * a2[0]
+                    w = np.zeros(2)
+                    r = np.array([n[0] * a2[1] - n[1] * a2[0], a1[0] * n[1] - a1[1] * n[0]]) / det
+                # n = r . (active normals) + w: moving y by -t w and the multipliers by -t r, +t keeps
+                # y = -N^T lam and the active half-planes tight, and lowers the residual of p by t |w|^2
+                ww = float(w @ w)
+                sp = max(float(n @ self.y - c[p]), 0.0)
+                t1 = sp / ww if ww > 0 else np.inf
+                t2, k = np.inf, -1
+                for j in range(len(r)):
+                    if r[j] > 0 and self.lam[j] / r[j] < t2:
+                        t2, k = self.lam[j] / r[j], j
+                if t1 == np.inf and t2 == np.inf:
+                    raise InfeasibleError("limits.pressure_angle",
+                                          "no cam centre satisfies the pressure-angle limits")
+                t = min(t1, t2)
+                if ww > 0:
+                    self.y = self.y - t * w
+                self.lam = self.lam - t * r
+                up += t
+                if t1 <= t2:
+                    self.active = A + [p]
+                    self.lam = np.append(self.lam, up)
+                    break
+                self.active = A[:k] + A[k + 1:]
+                self.lam = np.delete(self.lam, k)
+            self._snap()
+        self.steps += steps
+        return self.x
+
+    def _snap(self) -> None:
+        """Recompute the point from its active half-planes (no drift of the accumulated steps)."""
+        N, c, A = self._N, self._c, self.active
+        if len(A) == 2:
+            a1, a2 = N[A[0]], N[A[1]]
+            b1, b2 = c[A[0]], c[A[1]]
+            det = a1[0] * a2[1] - a1[1] * a2[0]
+            self.y = np.array([b1 * a2[1] - b2 * a1[1], a1[0] * b2 - a2[0] * b1]) / det
+            # y = -(lam1 a1 + lam2 a2)
+            lam = -np.array([self.y[0] * a2[1] - self.y[1] * a2[0], a1[0] * self.y[1] - a1[1] * self.y[0]]) / det
+            self.lam = np.maximum(lam, 0.0)
+        elif len(A) == 1:
+            self.y = c[A[0]] * N[A[0]]
+            self.lam = np.array([max(-c[A[0]], 0.0)])
+        else:
+            self.y = np.zeros(2)
+
+
+def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """Exact nearest point to ``P`` of ``{x : N x <= c}`` (:class:`NearestPoint`).
+
+    Parameters
+    ----------
+    P : array_like, shape (2,)
+        The point to approach (length unit).
+    N : ndarray, shape (m, 2)
+        Unit normals of the half-planes.
+    c : ndarray, shape (m,)
+        Offsets, length unit. No tolerance is passed: it follows the numbers
+        computed (module notes).
+
+    Returns
+    -------
+    (x, active) or None
+        The point and the indices of the half-planes active there (at most
+        two, the ones whose multipliers certify it); ``None`` when the
+        half-planes have no common point.
+    """
+    q = NearestPoint(P)
+    q.add(N, c)
+    try:
+        x = q.solve()
+    except InfeasibleError:
+        return None
+    return x, np.array(sorted(q.active), dtype=int)
 
 
 def feasible_mask(points: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> np.ndarray:
@@ -67,65 +290,6 @@ def line_crossings(N1, c1, N2, c2) -> tuple[np.ndarray, np.ndarray]:
     x = (c1[:, None] * d - b * c2[None, :]) / sdet
     y = (a * c2[None, :] - cc * c1[:, None]) / sdet
     return np.stack([x, y], axis=-1), ok
-
-
-@lru_cache(maxsize=128)
-def _pairs(m: int) -> np.ndarray:
-    """Flat indices ``i * m + j`` of the line pairs ``i < j``, in :func:`numpy.triu_indices` order."""
-    iu, ju = np.triu_indices(m, k=1)
-    return iu * m + ju
-
-
-def nearest_point(P: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray] | None:
-    """Exact nearest point to ``P`` of ``{x : N x <= c}`` (planar, small m).
-
-    The nearest point is ``P`` itself, the foot of ``P`` on one line, or the
-    crossing of two lines (as :func:`line_crossings`); the feasible candidate
-    closest to ``P`` is it. Costs O(m^3) and is meant for the few lines of an
-    active-set method.
-
-    Parameters
-    ----------
-    P : array_like, shape (2,)
-        The point to approach (for the solvers: the target of the objective,
-        fixed frame, length unit).
-    N : ndarray, shape (m, 2)
-        Unit normals of the half-planes (the feet of ``P`` assume unit length).
-    c : ndarray, shape (m,)
-        Offsets, length unit.
-    tol : float
-        Feasibility and activity tolerance, length unit.
-
-    Returns
-    -------
-    (x, active) or None
-        The point and the indices of the half-planes active there (within
-        ``tol``); ``None`` when the half-planes have no common point.
-    """
-    P = np.asarray(P, dtype=float)
-    m = len(N)
-    if m == 0:
-        return P.copy(), np.zeros(0, int)
-    r = N @ P - c
-    if (r <= tol).all():
-        return P.copy(), np.flatnonzero(np.abs(r) <= tol)
-    a, b = N[:, 0], N[:, 1]
-    # all pairs as (m, m) arrays, then the pairs i < j whose lines cross
-    pair = _pairs(m)
-    det = (a[:, None] * b - b[:, None] * a).ravel()[pair]
-    ok = np.abs(det) > 1e-12
-    pair, det = pair[ok], det[ok]
-    X = np.empty((m + len(pair), 2))
-    X[:m] = P - r[:, None] * N
-    X[m:, 0] = (c[:, None] * b - b[:, None] * c).ravel()[pair] / det
-    X[m:, 1] = (a[:, None] * c - a * c[:, None]).ravel()[pair] / det
-    feas = (X @ N.T <= c + tol).all(axis=1)
-    if not feas.any():
-        return None
-    X = X[feas]
-    d = X - P
-    x = X[np.argmin(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1])]
-    return x, np.flatnonzero(np.abs(N @ x - c) <= tol)
 
 
 def clip_polygon(N: np.ndarray, c: np.ndarray, box: tuple[float, float, float, float]) -> np.ndarray:

@@ -56,6 +56,14 @@ class CentreSolution:
         Largest signed distance of ``centre`` outside the continuous zone
         (length; <= 0 means inside).
     iterations : int
+    lower_bound : float or None
+        A proven lower bound of the true continuous optimum (length), None
+        where the method states none.
+    certified : bool or None
+        True when ``error_bound`` is within the method's stated accuracy
+        (:data:`optimize.exact.CERT_RTOL`); False when the bounds disagree
+        beyond it (the answer is not to be used); None for methods that
+        certify nothing.
     """
 
     centre: np.ndarray
@@ -66,4 +74,6 @@ class CentreSolution:
     error_bound: float | None = None
     violation: float = 0.0
     iterations: int = 0
+    lower_bound: float | None = None
+    certified: bool | None = None
     notes: tuple[str, ...] = field(default_factory=tuple)

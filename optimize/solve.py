@@ -63,6 +63,11 @@ class SolveResult:
     margin : float
         Smallest distance of the centre from the zone's edges (length, > 0
         inside; only meaningful for ``floor_R0`` and ``fixed_L``).
+    certified : bool or None
+        The exact method's verdict on its own bounds (minimum R0, minimum L,
+        fixed offset): False when the proven lower bound and the feasible
+        upper bound disagree beyond the stated accuracy, so the answer is not
+        certified; None where no bound is stated.
     """
 
     design: CamDesign
@@ -79,6 +84,7 @@ class SolveResult:
     pressure: PressureReport
     margin: float
     notes: tuple[str, ...] = field(default_factory=tuple)
+    certified: bool | None = None
 
     @property
     def verified(self) -> bool:
@@ -124,6 +130,7 @@ class SolveResult:
             "samples": self.samples,
             "mode": self.mode,
             "error_bound": self.error_bound,
+            "certified": None if self.certified is None else bool(self.certified),
             "margin": float(self.margin),
             "seconds": float(self.seconds),
             "notes": list(self.notes),
@@ -472,11 +479,16 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
             notes.append(f"R0 raised to the constructive floor {floor:g} (least at this L {least:.6g})")
     seconds = time.perf_counter() - t0
     if sol is not None and mode in ("min_R0", "min_L", "fixed_offset"):
-        binding, error_bound = sol.binding, sol.error_bound
+        binding, error_bound, certified = sol.binding, sol.error_bound, sol.certified
+        if certified is False:
+            notes.append(f"NOT CERTIFIED: the exact method's bounds differ by {error_bound:.3g} (lower bound "
+                         f"{sol.lower_bound:.9g}): do not use this answer; try method = \"convex\""
+                         if error_bound is not None else
+                         "NOT CERTIFIED: no centre was checked feasible near the exact method's answer; do not use it")
         if samples is not None:
             notes.append(f"sampled at {samples} steps per phase: the limit may be exceeded slightly between samples")
     else:
-        binding, error_bound = (), None
+        binding, error_bound, certified = (), None, None
     R0 = float(np.linalg.norm(centre - A0))
     # the roller centre's travel: arc l*psi_max of a rocker, the stroke of a translating follower
     travel = design.program.lift * (f.arm if isinstance(f, Rocker) else 1.0)
@@ -510,4 +522,5 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
         pressure=pressure,
         margin=float(margin),
         notes=tuple(notes),
+        certified=certified,
     )

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
 
@@ -168,6 +169,8 @@ def run(args) -> int:
         return _run_flat(args, cam)
     result = cam.solution
     rep = result.to_dict()
+    if rep["certified"] is False:
+        return _not_certified(args, rep)
     forces = None
     if "dynamics" in design.extra:
         from cams.camforces import design_forces, impact_note
@@ -198,6 +201,20 @@ def run(args) -> int:
         print_summary(rep)
         print_assessment(rep)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
+
+
+def _not_certified(args, rep: dict) -> int:
+    """An exact answer whose bounds disagree: said so, never printed as an answer (exit 1)."""
+    eb = rep["error_bound"]
+    gap = "no feasible centre was found near it" if eb is None else f"its bounds differ by {eb:.3g} mm"
+    msg = (f"not certified: the exact method's result for R0 ({rep['R0']:.9g} mm) is not proven: {gap}; "
+           "try --method convex")
+    if args.json:
+        print(json.dumps(rep, indent=2))
+        print(f"cams solve: {msg}", file=sys.stderr)
+    else:
+        print(f"{rep['name']}: {msg}")
+    return EXIT_CHECK_FAILED
 
 
 def register(sub) -> None:

@@ -20,3 +20,4 @@ def test_bench_solvers_quick_writes_json_and_png(tmp_path):
     methods = {row["method"] for row in res["rows"]}
     assert methods == {"exact", "convex", "exhaustive"}
     assert (tmp_path / "solvers.png").stat().st_size > 0
+    assert [r["phases"] for r in res["phases"]] == [20, 60] and all(r["certified"] for r in res["phases"])

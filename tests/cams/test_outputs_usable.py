@@ -254,3 +254,21 @@ def test_plot_animation_of_a_failing_cam_is_titled(designs, capsys, tmp_path, mo
     capsys.readouterr()
     assert rc == 1 and len(list((tmp_path / "a").glob("*_turn.gif"))) == 1
     assert titles and all(t == "FAILS: bore" for t in titles)
+
+
+def test_a_result_that_is_not_certified_is_not_usable():
+    """The exact method's bounds disagreeing (certified False) makes the cam unusable in every command's rule."""
+    import dataclasses
+
+    from cams.assess import assess
+    from cams.cam import Cam
+    from cams.designfile import load_design
+
+    cam = Cam(load_design(EXAMPLES / "rocker_force.toml"))
+    ok = assess(cam.design, cam.solution, checks=cam.checks)
+    assert ok.usable and ok.certified and "certified" not in ok.to_dict()
+    bad = dataclasses.replace(cam.solution, certified=False, error_bound=1e-3)
+    a = assess(cam.design, bad, checks=cam.checks)
+    assert not a.usable and not a.certified and a.verified and a.buildable
+    assert a.to_dict()["certified"] is False
+    assert a.failures[0] == "not certified: the exact method's bounds on the size differ by 0.001 mm"

@@ -44,6 +44,7 @@ NONE_OK = {
     "offset",                    # rocker follower
     "samples",                   # exact method
     "error_bound",               # sampled methods / fixed L / floor modes
+    "certified",                 # sampled methods / fixed L / floor modes
     "max_pressure_angle.return", "pressure_angle_at.return",  # program without return
     "limits.return",             # force closure
 }
@@ -172,6 +173,7 @@ def check_result(result, *, exact: bool) -> None:
         if result.mode in ("min_R0", "min_L", "fixed_offset"):
             assert result.error_bound is not None and math.isfinite(result.error_bound)
             assert result.error_bound <= 1e-6 * result.design.scale
+            assert result.certified is True, f"exact result not certified (error bound {result.error_bound!r})"
 
 
 def check_outcome(d, method: str = "exact"):
@@ -245,3 +247,79 @@ def to_toml(d: dict) -> str:
                 out.append(f"[[{k}]]")
                 out += [f"{a} = {val(b)}" for a, b in t.items()]
     return "\n".join(out) + "\n"
+
+
+def _coarse_excess(design, centres: np.ndarray, grid: int = 400) -> np.ndarray:
+    """Largest pressure angle minus its limit over the sampled cycle, for many centres at once (radians).
+
+    By kinematic inversion (:func:`cams.pressure.contact_normal`, which shares
+    no formula with the zone), on ``grid + 1`` positions per phase: a sampled
+    maximum is below the true one, so a positive value proves the centre
+    inadmissible.
+    """
+    from cams.pressure import contact_normal
+
+    lim = design.limits
+    u = np.linspace(0.0, 1.0, grid + 1)
+    worst = np.full(len(centres), -np.inf)
+    for i, limit in design.constrained_phases():
+        m = design.program.evaluate_phase(i, u)
+        n, e, _ = contact_normal(design, centres[:, None, :], m.s, m.ds)
+        g = np.arccos(np.clip(np.sum(n * e, axis=-1), -1.0, 1.0))
+        worst = np.maximum(worst, np.nanmax(np.where(np.isnan(g), -np.inf, g), axis=1) - limit)
+    assert lim is not None
+    return worst
+
+
+def _refined_excess(design, centre: np.ndarray, grid: int = 2000, peaks: int = 8) -> float:
+    """Largest pressure angle minus its limit, every local maximum of the sampled cycle zoomed in (radians).
+
+    :func:`cams.pressure.pressure_angle` on ``grid + 1`` positions per
+    constrained phase, then each of the ``peaks`` highest local maxima is
+    zoomed tenfold six times (21 points a bracket); a lone global maximum
+    would miss a second peak that the sampling lowered.
+    """
+    from cams.pressure import pressure_angle
+
+    worst = -np.inf
+    u = np.linspace(0.0, 1.0, grid + 1)
+    for i, limit in design.constrained_phases():
+        g = np.nan_to_num(pressure_angle(design, centre, i, u), nan=-1.0)
+        local = np.flatnonzero((g >= np.roll(g, 1)) & (g >= np.roll(g, -1)))
+        local = np.union1d(local, [0, grid])
+        for k in local[np.argsort(-g[local])][:peaks]:
+            lo, hi = u[max(k - 1, 0)], u[min(k + 1, grid)]
+            best = g[k]
+            for _ in range(6):
+                x = np.linspace(lo, hi, 21)
+                gx = np.nan_to_num(pressure_angle(design, centre, i, x), nan=-1.0)
+                j = int(np.argmax(gx))
+                best = max(best, gx[j])
+                lo, hi = x[max(j - 1, 0)], x[min(j + 1, 20)]
+            worst = max(worst, best - limit)
+    return float(worst)
+
+
+def assert_minimal(result, shrink: float = 1e-6) -> None:
+    """No admissible centre at ``R0 (1 - shrink)`` from the roller's start point (minimum R0 answers).
+
+    Candidates: 360 points evenly round that circle and 161 within 1 degree
+    of the answer's direction. Each is judged by the pressure angle over the
+    cycle by kinematic inversion (:mod:`cams.pressure`, no formula of the
+    zone): first sampled (:func:`_coarse_excess`), then the few that sampling
+    cannot reject with every local maximum zoomed in (:func:`_refined_excess`),
+    with no tolerance. Any that passes is a smaller admissible cam: the answer
+    was not minimal.
+    """
+    design = result.design
+    A0 = design.follower.position(0.0)
+    rho = result.R0 * (1.0 - shrink)
+    d = result.centre - A0
+    a0 = math.atan2(d[1], d[0])
+    ang = np.concatenate([np.linspace(0, 2 * np.pi, 360, endpoint=False), a0 + np.radians(np.linspace(-1, 1, 161))])
+    pts = A0 + rho * np.stack([np.cos(ang), np.sin(ang)], axis=1)
+    excess = _coarse_excess(design, pts)
+    for p in pts[excess <= 0]:
+        assert _refined_excess(design, p) > 0, (
+            f"a centre at R0 (1 - {shrink:g}) = {rho!r} is admissible: {p.tolist()} "
+            f"(answer R0 = {result.R0!r}, error bound {result.error_bound!r})")
