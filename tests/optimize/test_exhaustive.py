@@ -130,7 +130,7 @@ def test_candidates_contain_the_nearest_point_of_random_polygons():
         N = np.stack([np.cos(ang), np.sin(ang)], axis=1)
         c = rng.uniform(0.5, 2.0, 2 * n)
         T = rng.normal(size=2) * rng.choice([0.3, 3.0, 30.0])
-        ref = nearest_point(T, N, c, 1e-12)
+        ref = nearest_point(T, N, c)
         pts, lines = candidates(N, c, T)
         order = np.argsort(np.linalg.norm(pts - T, axis=1), kind="stable")
         q = first_admissible(pts[order], N, c, np.full(len(pts), 1e-12))
