@@ -91,18 +91,26 @@ class SolveResult:
         Returns
         -------
         dict
-            ``R0``, ``L``, ``offset`` and ``centre`` (``x``, ``y`` in the
-            follower's fixed frame) in the design's length unit; the largest
+            ``R0`` (the pitch curve's base radius), ``smallest_cam_radius``
+            (the working profile's nearest point to the cam centre, and
+            ``smallest_cam_radius_at_deg`` where), ``L``, ``offset`` and
+            ``centre`` (``x``, ``y`` in the follower's fixed frame) in the
+            design's length unit; the largest
             pressure angles, where they occur (cam angle) and the limits, and
             the binding lines' cam angles, in degrees; the solver's mode,
             method, samples, error bound, margin, time (s) and notes.
         """
+        from cams.profile import smallest_cam_radius
+
         deg = lambda x: None if x is None else float(np.degrees(x))  # noqa: E731
         p = self.pressure
+        cam_r, cam_r_at = smallest_cam_radius(self.design, self.centre)
         return {
             "name": self.design.name,
             "follower": self.design.follower.kind,
             "R0": float(self.R0),
+            "smallest_cam_radius": cam_r,
+            "smallest_cam_radius_at_deg": float(np.degrees(cam_r_at)),
             "L": None if self.L is None else float(self.L),
             "offset": None if self.offset is None else float(self.offset),
             "centre": {"x": float(self.centre[0]), "y": float(self.centre[1])},
@@ -112,7 +120,8 @@ class SolveResult:
             "verified": bool(self.verified),
             "buildable": self.buildable,
             "binding": [
-                {"phi": float(np.degrees(b.phi)), "phase": b.phase, "line": "t-t" if b.side == 0 else "t1-t1"}
+                {"phi": float(np.degrees(b.phi)), "phase": b.phase, "line": b.line,
+                 "phase_kind": self.design.program.phases[b.phase].kind}
                 for b in self.binding
             ],
             "method": self.method,

@@ -43,6 +43,7 @@ DOCTEST_MODULES = [
     "cams.kinetostatics",
     # profiles
     "cams.flatface",
+    "cams.words",
     "cams.profile",
 ]
 

@@ -6,6 +6,7 @@ import argparse
 import json
 
 from cams.commands.common import EXIT_OK, is_flat, refuse_method
+from cams.words import bore_text, length_format
 
 __all__ = ["register"]
 
@@ -44,7 +45,7 @@ def _run_flat(args, design) -> int:
     sol = size_flat_face(design)
     prof = flat_face_profile(design, sol.R0, tolerance=tol, field=field)
     bore = design.bore_radius if design.bore_radius is not None else default_bore_radius(prof)
-    written = _write(args, prof, bore)
+    written = _write(args, prof, design.bore_radius)  # a suggested bore is not drawn
     rep = {
         "name": design.name,
         "face": "flat",
@@ -56,15 +57,17 @@ def _run_flat(args, design) -> int:
         "min_rho": sol.min_rho,
         "min_radius": design.min_radius,
         "bore_radius": bore,
+        "bore_suggested": design.bore_radius is None,
         "columns": "phi_deg,work_x,work_y",
         "written": written,
     }
     if args.json:
         print(json.dumps(rep, indent=2))
     else:
+        f = length_format(rep["R0"])
         print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-              f"R0 = {rep['R0']:.6f} mm, profile radius >= {rep['min_work_radius']:.6f} mm, "
-              f"radius of curvature >= {sol.min_rho:.6f} mm, bore {bore:.4f} mm")
+              f"R0 = {rep['R0']:{f}} mm, profile radius >= {rep['min_work_radius']:{f}} mm, "
+              f"radius of curvature >= {sol.min_rho:{f}} mm, {bore_text(bore, rep['bore_suggested'])}")
         if not sol.verified:
             print(f"  warning: radius of curvature {sol.min_rho:.6g} mm < limits.min_radius {design.min_radius:g} mm "
                   "(run cams check)")
@@ -76,7 +79,7 @@ def _run_flat(args, design) -> int:
 def run(args) -> int:
     from cams.checks import curvature_extremes
     from cams.designfile import load_design
-    from cams.profile import build_profile, default_bore_radius, profile_options
+    from cams.profile import build_profile, default_bore_radius, profile_options, smallest_cam_radius
     from optimize.solve import solve
 
     design = load_design(args.file)
@@ -88,7 +91,8 @@ def run(args) -> int:
     prof = build_profile(result.design, result.centre, tolerance=opts.tolerance)
     bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
     ext = curvature_extremes(result.design, result.centre)  # all that can fail, before writing
-    written = _write(args, prof, bore)
+    written = _write(args, prof, opts.bore_radius)  # a suggested bore is not drawn
+    cam_r = smallest_cam_radius(result.design, result.centre)[0]
     rep = {
         "name": design.name,
         "points": len(prof),
@@ -98,6 +102,8 @@ def run(args) -> int:
         "roller_radius": prof.roller_radius,
         "min_work_radius": prof.min_work_radius,
         "bore_radius": bore,
+        "bore_suggested": opts.bore_radius is None,
+        "smallest_cam_radius": cam_r,
         "largest_roller_radius": ext.convex if prof.outer is None else min(ext.convex, ext.concave),
         "groove": prof.groove,
         "written": written,
@@ -105,9 +111,10 @@ def run(args) -> int:
     if args.json:
         print(json.dumps(rep, indent=2))
     else:
+        f = length_format(rep["R0"])
         print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-              f"R0 = {rep['R0']:.6f} mm, working profile radius >= {rep['min_work_radius']:.6f} mm, "
-              f"bore {bore:.4f} mm")
+              f"R0 = {rep['R0']:{f}} mm (pitch curve), cam's smallest radius {cam_r:{f}} mm, "
+              f"{bore_text(bore, rep['bore_suggested'])}")
         if rep["largest_roller_radius"] <= prof.roller_radius:
             print(f"  warning: undercut: roller radius {prof.roller_radius:g} mm >= largest allowed "
                   f"{rep['largest_roller_radius']:.4f} mm (run cams check)")
