@@ -44,6 +44,7 @@ DOCTEST_MODULES = [
     # profiles
     "cams.flatface",
     "cams.words",
+    "cams.sweep",
     "cams.profile",
 ]
 

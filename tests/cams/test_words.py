@@ -187,3 +187,55 @@ def test_the_suggested_bore_stays_out_of_the_manufacturing_files(capsys, tmp_pat
     circles = [e for e in ezdxf.readfile(str(dxf)).modelspace() if e.dxf.layer == "BORE"]
     assert len(circles) == 1 and circles[0].dxf.radius == pytest.approx(2.0)
     assert 'id="BORE"' in svg.read_text()
+
+
+# -- item 15: units beside every number, one precision per quantity ---------------------------------------
+
+
+def test_spring_units_follow_the_follower(capsys, examples_dir, tmp_path):
+    """A rocker's closing spring is torsional (N m/rad, N m), a translating follower's linear (N/m, N)."""
+    rc, out = _main(capsys, "solve", str(examples_dir / "slotting_feed_cam.toml"))
+    assert rc == 0
+    assert "spring: rate 3 N m/rad, preload 0 N m" in out
+    assert "contact force: max 12.0948 N at 101.5000 deg, min 5.22163 N" in out
+    assert "camshaft torque max 0.492217 N m at 29.5000 deg" in out
+    assert "jamming limit 89.6333 deg" in out
+    rc, out = _main(capsys, "machine", str(examples_dir / "machines" / "slotting_machine_forces.toml"), "--forces")
+    assert "spring rate 3 N m/rad, preload 0 N m" in out and "max contact force 12.0948 N at cam angle 101.5000 deg" in out
+
+
+def test_sweep_csv_headers_carry_units_and_no_round_off_tails(capsys, tmp_path, examples_dir):
+    import csv
+
+    out = tmp_path / "s.csv"
+    from cams.cli import main
+
+    assert main(["sweep", str(examples_dir / "rocker_force.toml"), "--vary", "limits.pressure_angle=30:45:2",
+                 "--out", str(out), "--jobs", "1", "--quiet"]) == 0
+    text = out.read_text()
+    head = text.splitlines()[0].split(",")
+    assert head[:4] == ["limits.pressure_angle", "R0_mm", "L_mm", "offset_mm"]
+    assert "max_pressure_rise_deg" in head and "error_bound_mm" in head
+    rows = list(csv.DictReader(out.open()))
+    # the binding rise angle is the limit: printed as 30 and 45, not 29.999999999999996
+    assert [r["max_pressure_rise_deg"] for r in rows] == ["30", "45"]
+    assert "9999999" not in text
+
+
+@pytest.mark.parametrize("name", EXAMPLES_ROLLER)
+def test_every_length_in_the_solve_and_check_text_carries_mm(capsys, examples_dir, name):
+    """Each number printed is followed by its unit (mm, deg, N, N m, rpm, ms), or is a count or a flag."""
+    import re
+
+    f = str(examples_dir / f"{name}.toml")
+    for cmd in ("solve", "check"):
+        _, out = _main(capsys, cmd, f)
+        for line in out.splitlines():
+            line = re.sub(r"\[\[motion\]\] \d+", "", line)
+            line = re.sub(r"\(-?[\d.]+, -?[\d.]+\) mm", "mm", line)  # a point: its unit after the pair
+            line = re.sub(r"^\s*(error bound: [0-9.e+-]+ mm)", "", line)
+            for m in re.finditer(r"(?<![\w.])(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?)(?![\w.])(\s*[^\s,;)]*)", line):
+                num, unit = m.group(1), m.group(2).strip()
+                if unit.startswith(("mm", "deg", "N", "rpm", "ms", "points", "(limit")) or num in ("0", "1"):
+                    continue
+                raise AssertionError(f"{cmd}: a number without a unit: {num!r} in {line!r}")
