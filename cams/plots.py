@@ -75,7 +75,7 @@ def _radii_label(R0: float, cam_radius: float | None) -> str:
     """The legend of the base circle: R0 (pitch curve) and, for a roller, the cam's own smallest radius."""
     text = f"base circle R0 = {R0:.3f} mm (pitch curve)"
     if cam_radius is not None:
-        text += f"; cam's smallest radius {cam_radius:.3f} mm"
+        text += f"\ncam's smallest radius {cam_radius:.3f} mm"
     return text
 
 

@@ -324,10 +324,10 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
                 centre = best_on_circle(design, A0, floor, G, samples=samples, seeds=seeds)
                 if centre is None:  # pragma: no cover - the zone is unbounded beyond R0_min
                     raise InfeasibleError("limits.min_base_radius", f"no admissible centre at R0 = {floor:g}")
-            notes.append(f"R0 raised to the constructive floor {floor:g} (minimum {sol.objective:.6g}); "
+            notes.append(f"R0 raised to the constructive floor {floor:g} mm (minimum {sol.objective:.6g} mm); "
                          "centre placed with the largest margin to the zone's edges")
         elif floor is not None:
-            notes.append(f"constructive floor {floor:g} below the minimum R0: not binding")
+            notes.append(f"constructive floor {floor:g} mm below the minimum R0: not binding")
     else:
         mode = "fixed_L"
         dist = lambda O: float(np.linalg.norm(O - A0))  # noqa: E731
@@ -344,7 +344,7 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
                                   f"L = {L_fixed:g} misses the allowable-centre zone; admissible L {rng}")
         least = dist(centre)
         if floor is not None and least >= floor:
-            notes.append(f"constructive floor {floor:g} below the least R0 at this L ({least:.6g}): not binding")
+            notes.append(f"constructive floor {floor:g} mm below the least R0 at this L ({least:.6g} mm): not binding")
         elif floor is not None:
             # R0 raised to the floor: the crossings of the circles |O - pivot| = L and |O - A0| = floor
             d = np.linalg.norm(A0 - f.pivot)
@@ -362,7 +362,7 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
                                       f"{least:.6g}; the admissible centres on that circle do not reach R0 = {floor:g})")
             centre = min(cands, key=G)
             mode = "fixed_L_and_R0"
-            notes.append(f"R0 raised to the constructive floor {floor:g} (least at this L {least:.6g})")
+            notes.append(f"R0 raised to the constructive floor {floor:g} mm (least at this L {least:.6g} mm)")
     seconds = time.perf_counter() - t0
     if sol is not None and mode in ("min_R0", "min_L", "fixed_offset"):
         binding, error_bound = sol.binding, sol.error_bound
@@ -385,7 +385,7 @@ def solve(design: CamDesign, *, method: str | None = None, objective: str = "R0"
     if not pressure.ok and R0 < 1e-6 * travel and method == "exact":
         raise vanishing
     if R0 <= f.roller_radius:
-        notes.append(f"not buildable: R0 = {R0:.6g} is not larger than the roller radius {f.roller_radius:g} (the "
+        notes.append(f"not buildable: R0 = {R0:.6g} mm is not larger than the roller radius {f.roller_radius:g} mm (the "
                      "working profile would have no base circle); set limits.min_base_radius or a smaller roller")
     return SolveResult(
         design=design,

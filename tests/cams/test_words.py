@@ -239,3 +239,14 @@ def test_every_length_in_the_solve_and_check_text_carries_mm(capsys, examples_di
                 if unit.startswith(("mm", "deg", "N", "rpm", "ms", "points", "(limit")) or num in ("0", "1"):
                     continue
                 raise AssertionError(f"{cmd}: a number without a unit: {num!r} in {line!r}")
+
+
+def test_notes_give_lengths_in_mm():
+    """A floor on R0 above the minimum, and one below it: the notes name the lengths with their unit."""
+    import re
+
+    for floor in (40.0, 5.0):
+        res = solve(design_from_dict(rocker_dict(limits={"min_base_radius": floor})))
+        (note,) = [n for n in res.notes if "constructive floor" in n]
+        for num in re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", note):
+            assert re.search(rf"{re.escape(num)} mm", note), note
