@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cams.words import phase_words
+from cams.words import binding_text, phase_words
 from laws.units import rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
@@ -128,7 +128,9 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
         ax.plot([p0[0], p1[0]], [p0[1], p1[1]], ls="-" if side == 0 else "--", **style)
     ax.plot([], [], color="0.55", lw=0.5, label="t-t lines")
     ax.plot([], [], color="0.55", lw=0.5, ls="--", label="t1-t1 lines")
-    ax.plot([], [], color="#c53030", lw=1.4, label="binding lines")
+    named = [binding_text({"line": b.line, "phi": float(np.degrees(b.phi)), "phase": b.phase,
+                           "phase_kind": d.program.phases[b.phase].kind}) for b in result.binding]
+    ax.plot([], [], color="#c53030", lw=1.4, label="\n".join(["binding lines", *named]))
     for c in zd.curves:
         col = "#2f855a" if c.kind == "rise" else "#b7791f"
         ax.plot(c.A[:, 0], c.A[:, 1], color="k", lw=1.0)
