@@ -49,6 +49,7 @@ from cams.profile import (
     default_bore_radius,
     pitch_phase,
     profile_options,
+    smallest_cam_radius,
 )
 
 __all__ = [
@@ -594,6 +595,7 @@ def check_profile(
         largest_roller_radius=float(largest),
         recommended_roller_radius=float(RECOMMENDED_ROLLER_FRACTION * largest),
         bore_radius=float(bore),
+        extra={"smallest_cam_radius": float(smallest_cam_radius(design, centre)[0])},
     )
 
 

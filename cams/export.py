@@ -12,7 +12,8 @@ Layers (DXF) and groups (SVG):
 * ``OUTER``: the outer wall of a groove (form closure only);
 * ``PITCH``: the pitch curve (roller-centre path);
 * ``BASE``: the base circle of radius R0 (the pitch curve's, the project's R0);
-* ``BORE``: the bore circle.
+* ``BORE``: the bore circle, only when a bore radius is given (``[cam]
+  bore_radius``): the automatic bore is a suggestion, not a dimension.
 
 A cam that fails a check (:mod:`cams.assess`) is exported only when asked for
 (``cams profile --allow-failed``) and then marked: the DXF gets a layer
@@ -35,7 +36,7 @@ from pathlib import Path
 import numpy as np
 
 from cams.files import atomic_write, check_output_path
-from cams.profile import Profile, default_bore_radius
+from cams.profile import Profile
 from laws.errors import InputError
 
 __all__ = ["write_csv", "write_dxf", "write_svg", "csv_header", "length_decimals", "LAYERS", "SIGNIFICANT_DIGITS"]
@@ -129,9 +130,10 @@ def write_csv(profile: Profile, path: str | os.PathLike, *, field: str = "--csv"
     return atomic_write(path, field, write)
 
 
-def _bore(profile: Profile, bore_radius: float | None) -> float:
+def _bore(profile: Profile, bore_radius: float | None) -> float | None:
+    """The bore radius to draw: None when none is given (a suggested bore is not a dimension)."""
     if bore_radius is None:
-        return default_bore_radius(profile)
+        return None
     if not (np.isfinite(bore_radius) and bore_radius > 0):
         raise InputError("cam.bore_radius", f"must be > 0, got {bore_radius!r}")
     return float(bore_radius)
@@ -152,7 +154,7 @@ def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     profile : Profile
     path : path-like
     bore_radius : float, optional
-        Length unit; default :func:`cams.profile.default_bore_radius`.
+        Length unit; None (default): no bore drawn.
     field : str
         Name of the option for error messages.
     failing : str, optional
@@ -167,7 +169,8 @@ def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     doc.units = units.MM
     doc.header["$MEASUREMENT"] = 1
     for name in LAYERS:
-        if (name == "OUTER" and profile.outer is None) or (name == "PITCH" and profile.pitch is None):
+        if (name == "OUTER" and profile.outer is None) or (name == "PITCH" and profile.pitch is None) or (
+                name == "BORE" and bore is None):
             continue
         doc.layers.add(name, color=_COLOURS[name])
     msp = doc.modelspace()
@@ -177,7 +180,8 @@ def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     if profile.pitch is not None:
         msp.add_lwpolyline(profile.pitch.tolist(), format="xy", close=True, dxfattribs={"layer": "PITCH"})
     msp.add_circle((0.0, 0.0), profile.R0, dxfattribs={"layer": "BASE"})
-    msp.add_circle((0.0, 0.0), bore, dxfattribs={"layer": "BORE"})
+    if bore is not None:
+        msp.add_circle((0.0, 0.0), bore, dxfattribs={"layer": "BORE"})
     if failing:
         doc.header.custom_vars.append("CAMS_STATUS", f"FAILED: {failing}")
         doc.layers.add("FAILED", color=1)
@@ -211,7 +215,7 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
     profile : Profile
     path : path-like
     bore_radius : float, optional
-        Length unit; default :func:`cams.profile.default_bore_radius`.
+        Length unit; None (default): no bore drawn.
     field : str
         Name of the option for error messages.
     failing : str, optional
@@ -235,7 +239,7 @@ def write_svg(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
         "OUTER": f'<path d="{_path_d(profile.outer, k)}"/>' if profile.outer is not None else None,
         "PITCH": f'<path d="{_path_d(profile.pitch, k)}"/>' if profile.pitch is not None else None,
         "BASE": f'<circle cx="0" cy="0" r="{profile.R0:.{k}f}"/>',
-        "BORE": f'<circle cx="0" cy="0" r="{bore:.{k}f}"/>',
+        "BORE": None if bore is None else f'<circle cx="0" cy="0" r="{bore:.{k}f}"/>',
     }
     lines = [
         '<?xml version="1.0" encoding="UTF-8"?>',

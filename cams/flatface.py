@@ -917,7 +917,7 @@ def size_flat_face(design) -> FlatFaceSolution:
     if design.base_radius is not None:
         R0, source = float(design.base_radius), "cam.base_radius"
         if R0_min is not None:
-            notes.append(f"R0 is cam.base_radius = {R0:g}; the smallest convex enough is {R0_min:.6g}")
+            notes.append(f"R0 is cam.base_radius = {R0:g} mm; the smallest convex enough is {R0_min:.6g} mm")
     elif design.min_base_radius is not None and design.min_base_radius > R0_min:
         R0, source = float(design.min_base_radius), "limits.min_base_radius"
         notes.append(f"R0 raised to limits.min_base_radius = {R0:g} (convexity needs {R0_min:.6g})")

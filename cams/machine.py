@@ -529,7 +529,7 @@ class CycleDiagram:
         deg = np.degrees(self.crank)
         fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(9, 5.5))
         ax1.plot(deg, self.tool, color="C0")
-        ax1.set_ylabel("tool from position 1")
+        ax1.set_ylabel("tool from position 1, mm")
         f = np.degrees(self.follower) if self.follower_unit == "rad" else self.follower
         ax2.plot(deg, f, color="C1")
         ax2.set_ylabel("follower, " + ("deg" if self.follower_unit == "rad" else self.follower_unit))

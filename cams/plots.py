@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from cams.words import binding_text, phase_words
 from laws.units import rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
@@ -30,6 +31,52 @@ def _figure(w=A4_WIDTH_IN, h=5.5):
     from matplotlib.figure import Figure
 
     return Figure(figsize=(w, h), layout="constrained")
+
+
+def _wrapped(text: str, width_in: float, fontsize: float) -> str:
+    """``text`` broken into lines that fit ``width_in`` inches at ``fontsize`` points (a glyph ~0.55 em wide)."""
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, max(20, int(width_in * 72 / (0.55 * fontsize)) - 4)))
+
+
+def _title(ax, text: str, width_in: float = A4_WIDTH_IN, fontsize: float = 11.0) -> None:
+    """Set ``ax``'s title, wrapped onto lines that fit the figure's width (a long name is not cut off)."""
+    ax.set_title(_wrapped(text, width_in, fontsize), fontsize=fontsize)
+
+
+def _suptitle(fig, text: str, fontsize: float = 11.0) -> None:
+    """The figure's title, centred over the whole figure and wrapped to its width (for axes squeezed by a
+    legend beside them, whose own title would be wider than they are)."""
+    fig.suptitle(_wrapped(text, fig.get_figwidth(), fontsize), fontsize=fontsize)
+
+
+def _unique_handles(ax) -> tuple[list, list[str]]:
+    """Legend handles and labels of ``ax``, each label once (its first artist stands for all of them)."""
+    handles, labels = ax.get_legend_handles_labels()
+    first = {}
+    for h, lab in zip(handles, labels):
+        first.setdefault(lab, h)
+    return list(first.values()), list(first)
+
+
+def _legend(ax, **kw):
+    """A legend with each label once."""
+    return ax.legend(*_unique_handles(ax), **kw)
+
+
+def _legend_below(fig, ax, ncol: int = 2):
+    """The legend of ``ax`` under the figure's axes, each label once: it neither covers the drawing nor
+    squeezes it sideways (constrained layout makes room for it)."""
+    return fig.legend(*_unique_handles(ax), loc="outside lower center", ncol=ncol, fontsize=7)
+
+
+def _radii_label(R0: float, cam_radius: float | None) -> str:
+    """The legend of the base circle: R0 (pitch curve) and, for a roller, the cam's own smallest radius."""
+    text = f"base circle R0 = {R0:.3f} mm (pitch curve)"
+    if cam_radius is not None:
+        text += f"\ncam's smallest radius {cam_radius:.3f} mm"
+    return text
 
 
 def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
@@ -91,11 +138,13 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
         ax.plot([p0[0], p1[0]], [p0[1], p1[1]], ls="-" if side == 0 else "--", **style)
     ax.plot([], [], color="0.55", lw=0.5, label="t-t lines")
     ax.plot([], [], color="0.55", lw=0.5, ls="--", label="t1-t1 lines")
-    ax.plot([], [], color="#c53030", lw=1.4, label="binding lines")
+    named = [binding_text({"line": b.line, "phi": float(np.degrees(b.phi)), "phase": b.phase,
+                           "phase_kind": d.program.phases[b.phase].kind}) for b in result.binding]
+    ax.plot([], [], color="#c53030", lw=1.4, label="\n".join(["binding lines", *named]))
     for c in zd.curves:
         col = "#2f855a" if c.kind == "rise" else "#b7791f"
         ax.plot(c.A[:, 0], c.A[:, 1], color="k", lw=1.0)
-        ax.plot(c.D[:, 0], c.D[:, 1], color=col, lw=1.2, label=f"analogue diagram, {c.kind} (phase {c.phase})")
+        ax.plot(c.D[:, 0], c.D[:, 1], color=col, lw=1.2, label=f"analogue diagram, {phase_words(c.kind, c.phase)}")
     A0 = f.position(0.0)
     if f.kind == "rocker":
         ax.plot([0, A0[0]], [0, A0[1]], color="k", lw=2)
@@ -107,14 +156,17 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
             # the offset e: from the cam centre across to the follower's axis
             ax.annotate("", xy=(0.0, result.centre[1]), xytext=tuple(result.centre),
                         arrowprops=dict(arrowstyle="<->", color="#6b46c1", lw=1.2))
-            ax.plot([], [], color="#6b46c1", lw=1.2, label=f"offset e = {result.offset:.3f}")
+            ax.plot([], [], color="#6b46c1", lw=1.2, label=f"offset e = {result.offset:.3f} mm")
     ax.plot(*A0, "ko", ms=4)
     ax.annotate("A0", A0, textcoords="offset points", xytext=(4, -10))
     ax.plot(*result.centre, "o", color="#c53030", ms=6, label="cam centre O")
-    ax.add_patch(Circle(result.centre, result.R0, fill=False, ls=":", color="#c53030", label=f"R0 = {result.R0:.3f}"))
+    from cams.profile import smallest_cam_radius
+
+    ax.add_patch(Circle(result.centre, result.R0, fill=False, ls=":", color="#c53030",
+                        label=_radii_label(result.R0, smallest_cam_radius(d, result.centre)[0])))
     if d.limits.centre_distance is not None and f.kind == "rocker":
         ax.add_patch(Circle((0, 0), d.limits.centre_distance, fill=False, ls="-.", color="0.3",
-                            label=f"L = {d.limits.centre_distance:g}"))
+                            label=f"L = {d.limits.centre_distance:g} mm"))
     if tradeoff is not None:
         ax.plot(tradeoff.centres[:, 0], tradeoff.centres[:, 1], color="#6b46c1", lw=2, label="R0-L trade-off")
     x0, y0, x1, y1 = zd.box
@@ -123,9 +175,9 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
     ax.set_aspect("equal")
     ax.set_xlabel("x, mm")
     ax.set_ylabel("y, mm")
-    ax.set_title(f"{d.name}: allowable-centre zone")
+    _suptitle(fig, f"{d.name}: allowable-centre zone")
     # beside the drawing, not over it: the zone and the centre can lie anywhere in the box
-    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+    _legend(ax, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     ax.grid(True, lw=0.3)
     return fig
 
@@ -175,14 +227,17 @@ def plot_motion(design, *, n: int = 721):
         ax.grid(True, lw=0.3)
         for s in prog.starts:
             ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
+    # impacts as marked lines named once in a legend: text labels at each would pile up where impacts are close
     for imp in impacts:
         k = 1 if imp.kind == "hard" else 2
-        axes[k].axvline(np.degrees(imp.phi), color="#c53030", lw=1.0)
-        axes[k].annotate(f"{imp.kind} impact", (np.degrees(imp.phi), 0), fontsize=7, color="#c53030",
-                         textcoords="offset points", xytext=(3, 3))
+        what = "hard impact (velocity jump)" if imp.kind == "hard" else "soft impact (acceleration jump)"
+        axes[k].axvline(np.degrees(imp.phi), color="#c53030", lw=1.0, label=what)
+    for k in (1, 2):
+        if axes[k].get_legend_handles_labels()[1]:
+            _legend(axes[k], fontsize=7, loc="upper right")
     axes[-1].set_xlabel("cam angle φ, deg")
     axes[-1].set_xlim(0, 360)
-    axes[0].set_title(f"{design.name}: motion diagrams" + (f" at {design.rpm:g} rpm" if design.rpm else " (analogues)"))
+    _title(axes[0], f"{design.name}: motion diagrams" + (f" at {design.rpm:g} rpm" if design.rpm else " (analogues)"))
     return fig
 
 
@@ -210,11 +265,9 @@ def plot_pressure(result, *, n: int = 721):
     ax.set_xlim(0, 360)
     ax.set_xlabel("cam angle φ, deg")
     ax.set_ylabel("pressure angle γ, deg")
-    ax.set_title(f"{d.name}: pressure angle")
+    _title(ax, f"{d.name}: pressure angle")
     ax.grid(True, lw=0.3)
-    handles, labels = ax.get_legend_handles_labels()
-    uniq = dict(zip(labels, handles))
-    ax.legend(uniq.values(), uniq.keys(), fontsize=8)
+    _legend(ax, fontsize=8)
     return fig
 
 
@@ -239,9 +292,9 @@ def plot_flat_pressure(solution, *, n: int = 721):
     ax.set_ylim(-0.05 * top, top)
     ax.set_xlabel("cam angle φ, deg")
     ax.set_ylabel("pressure angle γ, deg")
-    ax.set_title(f"{d.name}: pressure angle, fixed by the geometry ({why})")
+    _title(ax, f"{d.name}: pressure angle, fixed by the geometry ({why})")
     ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8)
+    _legend(ax, fontsize=8)
     return fig
 
 
@@ -258,12 +311,12 @@ def plot_curvature(solution, *, n: int = 721):
     fig = _figure(h=6.0)
     ax1, ax2 = fig.subplots(2, 1, sharex=True)
     ax1.plot(x, c["rho"], color="#2b6cb0", lw=1.3, label="radius of curvature ρ")
-    ax1.axhline(d.min_radius, color="#c53030", ls="--", lw=1, label=f"limits.min_radius = {d.min_radius:g}")
+    ax1.axhline(d.min_radius, color="#c53030", ls="--", lw=1, label=f"limits.min_radius = {d.min_radius:g} mm")
     ax1.plot(np.degrees(solution.min_rho_at) % 360, solution.min_rho, "o", color="#c53030", ms=5,
-             label=f"smallest ρ = {solution.min_rho:.3f} at {np.degrees(solution.min_rho_at) % 360:.1f}°")
+             label=f"smallest ρ = {solution.min_rho:.3f} mm at {np.degrees(solution.min_rho_at) % 360:.1f}°")
     ax1.set_ylim(min(0.0, np.nanmin(c["rho"])), 1.1 * np.nanmax(c["rho"]))
     ax1.set_ylabel("ρ, mm")
-    ax1.set_title(f"{d.name}: radius of curvature (R0 = {solution.R0:.3f} mm) and contact on the face")
+    _title(ax1, f"{d.name}: radius of curvature (R0 = {solution.R0:.3f} mm) and contact on the face")
     where = "from the axis" if d.follower.kind == "translating" else "from the pivot's foot"
     ax2.plot(x, c["contact"], color="#6b46c1", lw=1.3, label=f"contact position {where}")
     lo, hi = solution.face_range
@@ -276,7 +329,7 @@ def plot_curvature(solution, *, n: int = 721):
         for s in d.program.starts:
             ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
         ax.grid(True, lw=0.3)
-        ax.legend(fontsize=7, loc="best")
+        _legend(ax, fontsize=7, loc="best")
         ax.set_xlim(0, 360)
     return fig
 
@@ -304,7 +357,7 @@ def _draw_flat_mechanism(ax, cam, profile, phi: float):
     work = _turned(centre, d.cam_sense, profile.work, phi)
     ax.fill(work[:, 0], work[:, 1], fc="#e2e8f0", ec="#1a202c", lw=1.2, label="cam profile")
     ax.add_patch(Circle(centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
-                        label=f"base circle R0 = {profile.R0:.3f}"))
+                        label=_radii_label(profile.R0, None)))
     origin, direction = (v[0] for v in sol.face_line(np.array([phi])))
     lo, hi = sol.face_range
     margin = 0.1 * max(hi - lo, 1e-9)
@@ -349,8 +402,10 @@ def _draw_mechanism(ax, cam, profile, phi: float):
         outer = _cam_in_fixed_frame(profile, profile.outer, phi)
         ax.plot(outer[:, 0], outer[:, 1], color="#1a202c", lw=1.2, label="groove, outer wall")
     ax.plot(pitch[:, 0], pitch[:, 1], color="#2b6cb0", lw=0.8, ls="--", label="pitch curve")
+    from cams.profile import smallest_cam_radius
+
     ax.add_patch(Circle(profile.centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
-                        label=f"base circle R0 = {profile.R0:.3f}"))
+                        label=_radii_label(profile.R0, smallest_cam_radius(d, profile.centre)[0])))
     m = d.program.evaluate(np.array([phi]))
     A = f.position(m.s)[0]
     if profile.roller_radius > 0:
@@ -388,9 +443,43 @@ def plot_profile(cam, *, phi: float | None = None):
     fig = _figure(w=A4_WIDTH_IN, h=6.0)
     ax = fig.add_subplot()
     _draw(ax, cam, profile, phi)
-    ax.set_title(f"{d.name}: cam at φ = {np.degrees(phi):.1f}°")
-    ax.legend(fontsize=7, loc="best")
+    _title(ax, f"{d.name}: cam at φ = {np.degrees(phi):.1f}°")
+    _legend_below(fig, ax)
     return fig
+
+
+def _animation_box(cam, profile) -> tuple[np.ndarray, np.ndarray]:
+    """Corners of a view that holds the mechanism at every cam angle (fixed frame, length unit).
+
+    The cam turns about its centre, so it stays inside the circle through its
+    farthest point (working profile, pitch curve plus the roller, a groove's
+    outer wall); the follower (roller, face, stem) is taken at every lift.
+    """
+    d = cam.design
+    span = 0.05 * max(float(np.max(np.abs(profile.work))), d.scale)
+    if getattr(cam, "flat", False):
+        sol = cam.solution
+        centre = sol.centre
+        reach = float(np.max(np.linalg.norm(profile.work, axis=1)))
+        phis = np.linspace(0, 2 * np.pi, 145)
+        o, t = sol.face_line(phis)
+        lo_f, hi_f = sol.face_range
+        margin = 0.1 * max(hi_f - lo_f, 1e-9)
+        follower = np.concatenate([o + (lo_f - margin) * t, o + (hi_f + margin) * t,
+                                   o + np.array([0.0, 0.6 * d.scale]), np.zeros((1, 2))])
+    else:
+        centre = profile.centre
+        r = profile.roller_radius
+        reach = max(float(np.max(np.linalg.norm(c, axis=1))) + (r if c is profile.pitch else 0.0)
+                    for c in (profile.work, profile.pitch, profile.outer) if c is not None)
+        A = d.follower.position(np.linspace(0.0, d.program.lift, 33))
+        pts = [A - r, A + r, d.follower.pivot[None]]
+        if d.follower.kind != "rocker":
+            pts.append(A + np.array([0.0, 0.6 * d.scale + 2 * r]))
+        follower = np.concatenate(pts)
+    cam_box = np.asarray(centre)[None] + reach * np.array([[-1.0, -1.0], [1.0, 1.0]])
+    allp = np.concatenate([cam_box, follower])
+    return allp.min(axis=0) - span, allp.max(axis=0) + span
 
 
 def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = "") -> Path:
@@ -403,19 +492,7 @@ def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = 
     profile = cam.profile
     fig = mark_failing(_figure(w=5.0, h=5.0), title)
     ax = fig.add_subplot()
-    span = np.max(np.abs(profile.work)) + profile.roller_radius
-    if getattr(cam, "flat", False):
-        sol = cam.solution
-        phis = np.linspace(0, 2 * np.pi, 73)
-        o, t = sol.face_line(phis)
-        lo, hi = sol.face_range
-        face = np.concatenate([o + lo * t, o + hi * t, o + np.array([0.0, 0.6 * cam.design.scale])])
-        pts = np.concatenate([sol.centre[None] + span * np.array([[-1.1, -1.1], [1.1, 1.1]]), face, np.zeros((1, 2))])
-    else:
-        pts = np.concatenate([profile.centre[None] + span * np.array([[-1.1, -1.1], [1.1, 1.1]]),
-                              cam.design.follower.position(np.array([0.0, cam.design.program.lift])),
-                              cam.design.follower.pivot[None]])
-    lo, hi = pts.min(axis=0) - 0.05 * span, pts.max(axis=0) + 0.05 * span
+    lo, hi = _animation_box(cam, profile)
 
     def frame(k):
         ax.clear()

@@ -5,7 +5,8 @@ motion diagrams, the pressure angle, the radius of curvature with the contact's
 travel on the face, and the profile (no allowable-centre zone).
 
 The HTML file is self-contained (pictures embedded as PNG data); the PDF is
-written with matplotlib's PdfPages, one page per topic. Both are written to a
+written with matplotlib's PdfPages: the tables flow over A4 pages (a new page
+only when one is full), then one page per picture. Both are written to a
 temporary file first and renamed, so a failed run leaves no partial report.
 """
 
@@ -18,11 +19,15 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["report_sections", "write_report"]
+from cams.words import binding_text, bore_text, deg, force, length_format, spring_text
+from cams.words import torque as torque_text
+
+__all__ = ["report_sections", "report_pages", "write_report"]
 
 
 def _deg(x):
-    return "—" if x is None else f"{np.degrees(x):.4f}°"
+    """An angle given in radians, as every command prints angles (:func:`cams.words.deg`)."""
+    return "—" if x is None else deg(x, radians=True)
 
 
 def _flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
@@ -43,7 +48,7 @@ def _flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         inputs.append(("cam speed", f"{d.rpm:g} rpm"))
     for i, p in enumerate(d.program.phases):
         law = "" if p.law is None else f", {p.law.name}"
-        inputs.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.4g}°"))
+        inputs.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.6g} deg"))
     inputs.append(("smallest radius of curvature allowed", f"{d.min_radius:g} mm"))
     if d.min_base_radius is not None:
         inputs.append(("constructive floor on R0", f"{d.min_base_radius:g} mm"))
@@ -57,7 +62,7 @@ def _flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     where = "of the follower axis" if f.kind == "translating" else "along the face from the pivot's foot"
     results += [
         ("cam centre (x, y)", f"({r['centre']['x']:.6f}, {r['centre']['y']:.6f}) mm"),
-        ("smallest radius of curvature", f"{r['min_rho']:.6f} mm at {r['min_rho_at_deg']:.3f}°"),
+        ("smallest radius of curvature", f"{r['min_rho']:.6f} mm at {deg(r['min_rho_at_deg'])}"),
         ("contact travel on the face", f"{fr['from']:.6f} to {fr['to']:.6f} mm {where}"),
         ("face width needed (no margins)", f"{r['face_width']:.6f} mm"),
     ]
@@ -79,19 +84,24 @@ def _assessment_rows(cam) -> list[tuple[str, str]]:
 
 
 def _check_rows(cam) -> list[tuple[str, str]]:
+    """One row per check, named in words (:data:`cams.words.CHECK_WORDS`), values as ``cams check`` prints them."""
     from cams.assess import knife_in_groove
+    from cams.commands.check import _fmt
+    from cams.words import check_words, deg, length_format
 
     if knife_in_groove(cam.design):
         return [("profile", "none: a knife edge cannot run in a groove (form closure needs a roller)")]
+
+    f = length_format(cam.checks.profile.R0)
     checks = []
     for c in cam.checks.checks:
         cd = c.to_dict()
-        worst = cd.get("worst")
-        at = cd.get("at_deg")
-        val = "—" if worst is None else f"{worst:.6g} {cd.get('unit', '')}".strip()
-        where = "" if at is None else f" at {at:.3f}°"
-        lim_s = "" if cd.get("limit") is None else f" (limit {cd['limit']:.6g})"
-        checks.append((cd["name"], f"{'pass' if cd['passed'] else 'FAIL'}: {val}{where}{lim_s}"))
+        at = "" if cd.get("at_deg") is None else f" at {deg(cd['at_deg'])}"
+        lim_s = "" if cd.get("limit") is None else f" (limit {_fmt(cd['limit'], cd.get('unit', ''), f)})"
+        checks.append((check_words(cd["name"]),
+                       f"{'pass' if cd['passed'] else 'FAIL'}: {_fmt(cd.get('worst'), cd.get('unit', ''), f)}{at}{lim_s}"))
+    given = any(c.name == "bore" for c in cam.checks.checks)
+    checks.append(("bore", bore_text(cam.checks.bore_radius, not given)))
     return checks
 
 
@@ -113,7 +123,7 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         inputs.append(("cam speed", f"{d.rpm:g} rpm"))
     for i, p in enumerate(d.program.phases):
         law = "" if p.law is None else f", {p.law.name}"
-        inputs.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.4g}°"))
+        inputs.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.6g} deg"))
     lim = d.limits
     inputs += [("closure", lim.closure), ("allowable pressure angle, rise", _deg(lim.pressure_angle))]
     if lim.closure == "form":
@@ -129,16 +139,19 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         inputs.append(("chosen cam centre (x, y)", f"({d.centre[0]:g}, {d.centre[1]:g}) mm"))
     r = cam.solution.to_dict()
     method = "none: the chosen cam is checked, not sized" if r["mode"] == "chosen" else f"{r['method']} ({r['mode']})"
-    results = [("method", method), ("base radius R0", f"{r['R0']:.6f} mm")]
+    fl = length_format(max(abs(r["R0"]), abs(r["L"] or 0.0), abs(r["offset"] or 0.0)))
+    results = [("method", method),
+               ("base radius R0 (pitch curve, to the roller centre)", f"{r['R0']:{fl}} mm"),
+               ("the cam's own smallest radius (working profile)", f"{r['smallest_cam_radius']:{fl}} mm")]
     if r["L"] is not None:
-        results.append(("centre distance L", f"{r['L']:.6f} mm"))
+        results.append(("centre distance L", f"{r['L']:{fl}} mm"))
     if r["offset"] is not None:
-        results.append(("offset e", f"{r['offset']:.6f} mm"))
+        results.append(("offset e", f"{r['offset']:{fl}} mm"))
     results += [
-        ("cam centre (x, y)", f"({r['centre']['x']:.6f}, {r['centre']['y']:.6f}) mm"),
-        ("max pressure angle, rise", "—" if r["max_pressure_angle"]["rise"] is None else f"{r['max_pressure_angle']['rise']:.4f}°"),
-        ("max pressure angle, return", "—" if r["max_pressure_angle"]["return"] is None else f"{r['max_pressure_angle']['return']:.4f}°"),
-        ("binding positions", ", ".join(f"{b['line']} at {b['phi']:.3f}°" for b in r["binding"]) or "—"),
+        ("cam centre (x, y)", f"({r['centre']['x']:{fl}}, {r['centre']['y']:{fl}}) mm"),
+        ("max pressure angle, rise", deg(r["max_pressure_angle"]["rise"])),
+        ("max pressure angle, return", deg(r["max_pressure_angle"]["return"])),
+        ("binding lines", ", ".join(binding_text(b) for b in r["binding"]) or "—"),
         ("error bound", "not stated by this method" if r["error_bound"] is None else f"{r['error_bound']:.3g} mm"),
         ("verified (independent pressure-angle check)", "yes" if r["verified"] else "NO"),
     ]
@@ -147,11 +160,11 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
     df = cam.forces if "dynamics" in d.extra else None
     if df is not None:
-        sections.append(("Forces at the cam", _force_rows(df)))
+        sections.append(("Forces at the cam", _force_rows(df, f.kind)))
     return sections
 
 
-def _force_rows(df) -> list[tuple[str, str]]:
+def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
     """The rows of the forces page (a :class:`cams.camforces.DesignForces`).
 
     At a rigid impact (a velocity jump, e.g. a linear law) a force is not a
@@ -165,18 +178,18 @@ def _force_rows(df) -> list[tuple[str, str]]:
     down = [i for i in fo["impacts"] if i["effect"] == "separation"]
 
     def at_impact(imps, what=""):
-        return f"unbounded{what} (rigid impact at {imps[0]['cam_angle_deg']:.2f}°)"
+        return f"unbounded{what} (rigid impact at {deg(imps[0]['cam_angle_deg'])})"
 
-    largest = at_impact(up) if up else f"{fo['max_contact_force']:.6g} N at {fo['max_contact_at_deg']:.2f}°"
-    smallest = at_impact(down, " negative: contact lost") if down else f"{fo['min_contact_force']:.6g} N"
-    torque = at_impact(up) if up else f"{fo['max_torque']:.6g} N m at {fo['max_torque_at_deg']:.2f}°"
+    largest = at_impact(up) if up else f"{force(fo['max_contact_force'])} at {deg(fo['max_contact_at_deg'])}"
+    smallest = at_impact(down, " negative: contact lost") if down else force(fo['min_contact_force'])
+    torque = at_impact(up) if up else f"{torque_text(fo['max_torque'])} at {deg(fo['max_torque_at_deg'])}"
     if fo["jump_at_impact"]:
-        jump = f"any speed: the follower leaves the cam at its velocity drop (rigid impact at {fo['jump_at_deg']:.2f}°)"
+        jump = f"any speed: the follower leaves the cam at its velocity drop (rigid impact at {deg(fo['jump_at_deg'])})"
     else:
         jump = jump_text(fo["jump_rpm"]) if fo["jump_at_deg"] is None or fo["jump_rpm"] is None or not np.isfinite(
-            fo["jump_rpm"]) else f"{jump_text(fo['jump_rpm'])} (first at {fo['jump_at_deg']:.2f}°)"
+            fo["jump_rpm"]) else f"{jump_text(fo['jump_rpm'])} (first at {deg(fo['jump_at_deg'])})"
     rows = [
-        ("closing spring", f"rate {fo['spring']['rate']:.6g}, preload {fo['spring']['preload']:.6g} (SI)"),
+        ("closing spring", spring_text(fo["spring"]["rate"], fo["spring"]["preload"], df_kind)),
         ("cam speed", f"{fo['rpm']:.6g} rpm"),
         ("largest contact force", largest),
         ("smallest contact force", smallest),
@@ -186,9 +199,9 @@ def _force_rows(df) -> list[tuple[str, str]]:
     bi = fo.get("between_impacts")
     if bi:
         rows.append(("between the rigid impacts",
-                     f"contact force max {bi['max_contact_force']:.6g} N at {bi['max_contact_at_deg']:.2f}°, min "
-                     f"{bi['min_contact_force']:.6g} N; camshaft torque max {bi['max_torque']:.6g} N m at "
-                     f"{bi['max_torque_at_deg']:.2f}°; jump speed {bi['jump_rpm']:.6g} rpm"))
+                     f"contact force max {force(bi['max_contact_force'])} at {deg(bi['max_contact_at_deg'])}, min "
+                     f"{force(bi['min_contact_force'])}; camshaft torque max {torque_text(bi['max_torque'])} at "
+                     f"{deg(bi['max_torque_at_deg'])}; jump speed {jump_text(bi['jump_rpm'])}"))
     rows.append(("contact lost / jammed", f"{'yes' if fo['contact_lost'] else 'no'} / {'yes' if fo['jammed'] else 'no'}"))
     note = impact_note(df.forces)
     if note:
@@ -216,6 +229,76 @@ def _figures(cam):
     return [(name, plots.mark_failing(fig, title)) for name, fig in figs]
 
 
+#: A4 portrait, inches.
+A4_IN = (8.27, 11.69)
+#: Page layout of the text pages, as fractions of the page: margins, columns, one line of 9 pt text.
+_TOP, _BOTTOM, _LEFT, _VALUE_X, _LINE = 0.95, 0.05, 0.08, 0.45, 0.0145
+#: Characters per line of the label and value columns at 9 pt (their widths over an average glyph).
+_LABEL_CHARS, _VALUE_CHARS = 40, 58
+
+
+def _text_pages(title: str, sections) -> list:
+    """The report's tables on A4 pages, the sections one after the other (a new page only when one is full).
+
+    Labels and values are wrapped to their column's width and each row
+    takes as many lines as its longer cell, so a wrapped value never runs
+    into the next row.
+    """
+    import textwrap
+
+    from matplotlib.figure import Figure
+
+    pages: list = []
+    y = 0.0
+
+    def new_page(heading: str | None = None):
+        nonlocal y
+        page = Figure(figsize=A4_IN)
+        pages.append(page)
+        head = "\n".join(textwrap.wrap(title, 60))
+        page.text(_LEFT, _TOP, head, fontsize=15, weight="bold", va="top")
+        y = _TOP - 0.03 * (head.count("\n") + 1) - 0.01
+        if heading:
+            page.text(_LEFT, y, heading, fontsize=12, weight="bold", va="top")
+            y -= 0.028
+
+    def lines(text: str, width: int) -> list[str]:
+        return textwrap.wrap(text, width) or [""]
+
+    new_page()
+    for heading, rows in sections:
+        first = max(len(lines(rows[0][0], _LABEL_CHARS)), len(lines(rows[0][1], _VALUE_CHARS))) if rows else 1
+        if y - 0.028 - first * _LINE < _BOTTOM:
+            new_page()
+        pages[-1].text(_LEFT, y, heading, fontsize=12, weight="bold", va="top")
+        y -= 0.028
+        for label, value in rows:
+            lab, val = lines(label, _LABEL_CHARS), lines(value, _VALUE_CHARS)
+            n = max(len(lab), len(val))
+            if y - n * _LINE < _BOTTOM:
+                new_page(f"{heading} (continued)")
+            page = pages[-1]
+            page.text(_LEFT, y, "\n".join(lab), fontsize=9, color="0.25", va="top", linespacing=1.2)
+            page.text(_VALUE_X, y, "\n".join(val), fontsize=9, va="top", linespacing=1.2)
+            y -= n * _LINE + 0.005
+        y -= 0.02
+    return pages
+
+
+def report_pages(cam, sections=None, figs=None) -> list:
+    """The PDF's pages as matplotlib Figures: the tables flowed onto A4 pages, then one page per picture.
+
+    Parameters
+    ----------
+    cam : cams.cam.Cam
+    sections, figs : optional
+        :func:`report_sections` and the pictures, when already made.
+    """
+    sections = report_sections(cam) if sections is None else sections
+    figs = _figures(cam) if figs is None else figs
+    return _text_pages(cam.design.name, sections) + [fig for _, fig in figs]
+
+
 def write_report(cam, out: str | Path) -> tuple[Path, Path]:
     """Write ``report.html`` and ``report.pdf`` for ``cam`` into folder ``out``.
 
@@ -225,7 +308,6 @@ def write_report(cam, out: str | Path) -> tuple[Path, Path]:
 
     matplotlib.use("Agg", force=False)
     from matplotlib.backends.backend_pdf import PdfPages
-    from matplotlib.figure import Figure
 
     from cams.files import atomic_write, ensure_folder
 
@@ -235,17 +317,8 @@ def write_report(cam, out: str | Path) -> tuple[Path, Path]:
 
     def write_pdf(tmp):
         with PdfPages(tmp) as pdf:
-            for title, rows in sections:
-                page = Figure(figsize=(8.27, 11.69))
-                page.text(0.08, 0.95, f"{cam.design.name}: {title}", fontsize=15, weight="bold")
-                y = 0.91
-                for label, value in rows:
-                    page.text(0.08, y, label, fontsize=9, color="0.25")
-                    page.text(0.45, y, value, fontsize=9, wrap=True)
-                    y -= 0.024
+            for page in report_pages(cam, sections, figs):
                 pdf.savefig(page)
-            for _, fig in figs:
-                pdf.savefig(fig)
 
     def write_html(tmp):
         parts = [

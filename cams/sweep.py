@@ -28,7 +28,8 @@ import numpy as np
 
 from laws.errors import CamsError, InputError
 
-__all__ = ["parse_vary", "key_parts", "sweep", "SweepResult", "COLUMNS", "MAX_WORKERS_PER_CPU"]
+__all__ = ["parse_vary", "key_parts", "sweep", "SweepResult", "COLUMNS", "COLUMN_UNITS", "csv_header", "csv_row",
+           "MAX_WORKERS_PER_CPU"]
 
 #: At most this many processes per core (and never more than designs).
 MAX_WORKERS_PER_CPU = 4
@@ -36,6 +37,42 @@ MAX_WORKERS_PER_CPU = 4
 #: Result columns after the varied keys.
 COLUMNS = ("R0", "L", "offset", "centre_x", "centre_y", "max_pressure_rise", "max_pressure_return",
            "verified", "buildable", "error_bound", "failures", "error")
+
+#: Unit of each result column, written into the CSV header as ``name_unit`` (none for flags and text).
+COLUMN_UNITS = {"R0": "mm", "L": "mm", "offset": "mm", "centre_x": "mm", "centre_y": "mm",
+                "max_pressure_rise": "deg", "max_pressure_return": "deg", "error_bound": "mm"}
+
+
+def csv_header(keys: tuple[str, ...]) -> list[str]:
+    """The CSV header: the varied keys (units as in the design file) then :data:`COLUMNS` with their units.
+
+    >>> csv_header(("follower.arm",))[:3]
+    ['follower.arm', 'R0_mm', 'L_mm']
+    """
+    return list(keys) + [f"{c}_{COLUMN_UNITS[c]}" if c in COLUMN_UNITS else c for c in COLUMNS]
+
+
+def csv_row(row: dict) -> list:
+    """A row's cells in :func:`csv_header`'s order, None as an empty cell.
+
+    Lengths keep every digit (they round-trip, as JSON does); angles in
+    degrees, converted from radians, are written to 12 significant digits so
+    a limit reads ``30``, not ``29.999999999999996``; the varied inputs to 15
+    (``0.3``, not ``0.30000000000000004``).
+
+    >>> csv_row({"R0": 13.240793033539259, "max_pressure_rise": 29.999999999999996, "error": None})
+    ['13.240793033539259', '30', '']
+    """
+    def cell(k, v):
+        if v is None:
+            return ""
+        if isinstance(v, float):
+            if k not in COLUMNS:  # a varied input: a range's values without linspace's last-digit noise
+                return f"{v:.15g}"
+            return f"{v:.12g}" if COLUMN_UNITS.get(k) == "deg" else repr(float(v))
+        return v
+
+    return [cell(k, v) for k, v in row.items()]
 
 
 def parse_vary(spec: str) -> tuple[str, np.ndarray]:

@@ -6,7 +6,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Binding", "CentreSolution"]
+__all__ = ["Binding", "CentreSolution", "LINE_NAMES"]
+
+#: The seed's names of the two sides of a wedge (index: side).
+LINE_NAMES = ("t-t", "t1-t1")
 
 
 @dataclass(frozen=True)
@@ -14,7 +17,12 @@ class Binding:
     """A constraint active at the solution.
 
     ``phase`` index in the program, ``phi`` cam angle (radians), ``side`` 0 for
-    the seed's t-t line, 1 for t1-t1.
+    the seed's t-t line, 1 for t1-t1: t-t where the pressure angle, signed
+    positive where the cam drives the follower along its rise, reaches
+    ``+[gamma]`` (the rise's lines), t1-t1 where it reaches ``-[gamma]`` (the
+    return's lines under form closure, the start position's under force
+    closure); see :mod:`optimize.zone`. Mirror-image designs name their lines
+    alike.
     """
 
     phase: int
@@ -33,6 +41,11 @@ class Binding:
             Index into the flattened lines: position ``k // 2``, side ``k % 2``.
         """
         return cls(int(wedges.phase[k // 2]), float(wedges.phi[k // 2]), int(k % 2))
+
+    @property
+    def line(self) -> str:
+        """The seed's name of the line: ``"t-t"`` (side 0) or ``"t1-t1"`` (side 1)."""
+        return LINE_NAMES[self.side]
 
 
 @dataclass(frozen=True)

@@ -102,18 +102,26 @@ class SolveResult:
         Returns
         -------
         dict
-            ``R0``, ``L``, ``offset`` and ``centre`` (``x``, ``y`` in the
-            follower's fixed frame) in the design's length unit; the largest
+            ``R0`` (the pitch curve's base radius), ``smallest_cam_radius``
+            (the working profile's nearest point to the cam centre, and
+            ``smallest_cam_radius_at_deg`` where), ``L``, ``offset`` and
+            ``centre`` (``x``, ``y`` in the follower's fixed frame) in the
+            design's length unit; the largest
             pressure angles, where they occur (cam angle) and the limits, and
             the binding lines' cam angles, in degrees; the solver's mode,
             method, samples, error bound, margin, time (s) and notes.
         """
+        from cams.profile import smallest_cam_radius
+
         deg = lambda x: None if x is None else float(np.degrees(x))  # noqa: E731
         p = self.pressure
+        cam_r, cam_r_at = smallest_cam_radius(self.design, self.centre)
         return {
             "name": self.design.name,
             "follower": self.design.follower.kind,
             "R0": float(self.R0),
+            "smallest_cam_radius": cam_r,
+            "smallest_cam_radius_at_deg": float(np.degrees(cam_r_at)),
             "L": None if self.L is None else float(self.L),
             "offset": None if self.offset is None else float(self.offset),
             "centre": {"x": float(self.centre[0]), "y": float(self.centre[1])},
@@ -123,7 +131,8 @@ class SolveResult:
             "verified": bool(self.verified),
             "buildable": self.buildable,
             "binding": [
-                {"phi": float(np.degrees(b.phi)), "phase": b.phase, "line": "t-t" if b.side == 0 else "t1-t1"}
+                {"phi": float(np.degrees(b.phi)), "phase": b.phase, "line": b.line,
+                 "phase_kind": self.design.program.phases[b.phase].kind}
                 for b in self.binding
             ],
             "method": self.method,
@@ -438,10 +447,10 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
                 centre = best_on_circle(design, A0, floor, G, samples=samples, seeds=seeds)
                 if centre is None:  # pragma: no cover - the zone is unbounded beyond R0_min
                     raise InfeasibleError("limits.min_base_radius", f"no admissible centre at R0 = {floor:g}")
-            notes.append(f"R0 raised to the constructive floor {floor:g} (minimum {sol.objective:.6g}); "
+            notes.append(f"R0 raised to the constructive floor {floor:g} mm (minimum {sol.objective:.6g} mm); "
                          "centre placed with the largest margin to the zone's edges")
         elif floor is not None:
-            notes.append(f"constructive floor {floor:g} below the minimum R0: not binding")
+            notes.append(f"constructive floor {floor:g} mm below the minimum R0: not binding")
     else:
         mode = "fixed_L"
         dist = lambda O: float(np.linalg.norm(O - A0))  # noqa: E731
@@ -458,7 +467,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
                                   f"L = {L_fixed:g} misses the allowable-centre zone; admissible L {rng}")
         least = dist(centre)
         if floor is not None and least >= floor:
-            notes.append(f"constructive floor {floor:g} below the least R0 at this L ({least:.6g}): not binding")
+            notes.append(f"constructive floor {floor:g} mm below the least R0 at this L ({least:.6g} mm): not binding")
         elif floor is not None:
             # R0 raised to the floor: the crossings of the circles |O - pivot| = L and |O - A0| = floor
             d = np.linalg.norm(A0 - f.pivot)
@@ -476,7 +485,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
                                       f"{least:.6g}; the admissible centres on that circle do not reach R0 = {floor:g})")
             centre = min(cands, key=G)
             mode = "fixed_L_and_R0"
-            notes.append(f"R0 raised to the constructive floor {floor:g} (least at this L {least:.6g})")
+            notes.append(f"R0 raised to the constructive floor {floor:g} mm (least at this L {least:.6g} mm)")
     seconds = time.perf_counter() - t0
     if sol is not None and mode in ("min_R0", "min_L", "fixed_offset"):
         binding, error_bound, certified = sol.binding, sol.error_bound, sol.certified
@@ -505,7 +514,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
         raise vanishing
     notes += pressure_failures(pressure)  # a sized cam that fails the independent check says by how much, too
     if R0 <= f.roller_radius:
-        notes.append(f"not buildable: R0 = {R0:.6g} is not larger than the roller radius {f.roller_radius:g} (the "
+        notes.append(f"not buildable: R0 = {R0:.6g} mm is not larger than the roller radius {f.roller_radius:g} mm (the "
                      "working profile would have no base circle); set limits.min_base_radius or a smaller roller")
     return SolveResult(
         design=design,

@@ -16,11 +16,17 @@ with the cam pushing (the physical branch) means O lies in the wedge with apex
 D, axis -e and half-angle [gamma]. For a rocker D lies on the rocker line with
 O1 D = l (1 - q), q = omega_rocker / omega_cam (seed: l (1 + psi')).
 
-Each wedge is two half-planes ``n . O <= n . D`` (n unit). Side "t" is the one
-whose half-plane shrinks when D moves outward along the lever (the seed's t-t
-line of the rise), side "t1" the other (seed's t1-t1). The safety factor K_C
-(seed 3.26) moves D along the lever by ``(K_C - 1) l`` for side t and by
-``-(1 - 1/K_C) l`` for side t1, shifting both lines into the zone.
+Each wedge is two half-planes ``n . O <= n . D`` (n unit). The pressure angle
+signed positive in the cam's sense of rotation, i.e. positive where the cam
+drives the follower along its rise, is ``+[gamma]`` on one edge and
+``-[gamma]`` on the other: side "t" (index 0, the seed's t-t lines: the rise's)
+is the ``+[gamma]`` edge, side "t1" (index 1, the seed's t1-t1 lines: the
+return's under form closure, the start position's under force closure) the
+``-[gamma]`` edge, whatever the senses of cam and follower, so mirror images
+name their lines alike. The safety factor K_C (seed 3.26) moves D along the
+lever by ``(K_C - 1) l`` for the edge whose half-plane shrinks when D moves
+outward along the lever and by ``-(1 - 1/K_C) l`` for the other, shifting both
+lines into the zone.
 
 The follower as a rigid body
 ----------------------------
@@ -137,11 +143,14 @@ def _side_constants(design: CamDesign, limit: float) -> tuple[np.ndarray, np.nda
     cs, sn = -math.sin(limit), math.cos(limit)
     na = (cs * ax - sn * ay, sn * ax + cs * ay)
     nb = (cs * ax + sn * ay, -sn * ax + cs * ay)
-    # side t: the half-plane that shrinks when D moves outward along the lever
-    n0 = np.array([na, nb] if na[0] * lever[0] + na[1] * lever[1] < 0 else [nb, na])
+    # side t: the edge where the pressure angle, signed positive in the cam's sense, is +limit (na lies
+    # at +(90 deg + limit) from the axis -e, so there n is e turned by +limit): na for a counter-clockwise cam
+    n0 = np.array([na, nb] if design.cam_sense > 0 else [nb, na])
     K = design.limits.safety_factor
     ref = getattr(f, "arm", 0.0)
-    P0 = np.array([[A[0] + k * lever[0], A[1] + k * lever[1]] for k in ((K - 1.0) * ref, -(1.0 - 1.0 / K) * ref)])
+    # K_C: outward along the lever for the edge that shrinks so (n . lever < 0), inward for the other
+    shift = [(K - 1.0) * ref if n[0] * lever[0] + n[1] * lever[1] < 0 else -(1.0 - 1.0 / K) * ref for n in n0]
+    P0 = np.array([[A[0] + k * lever[0], A[1] + k * lever[1]] for k in shift])
     Q0 = np.array([-design.cam_sense * T[1], design.cam_sense * T[0]])
     return n0, P0, Q0
 

@@ -43,6 +43,8 @@ DOCTEST_MODULES = [
     "cams.kinetostatics",
     # profiles
     "cams.flatface",
+    "cams.words",
+    "cams.sweep",
     "cams.profile",
     "cams.export",
 ]

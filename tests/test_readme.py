@@ -44,5 +44,5 @@ def test_main_command_output_matches(capsys):
     assert main(["solve", str(README.parent / "examples" / "rocker_force.toml")]) == 0
     out = capsys.readouterr().out
     for line in shown.splitlines():
-        if line.strip().startswith(("R0", "L ", "centre", "max pressure", "binding")) or line.startswith("rocker cam"):
+        if line.strip().startswith(("R0", "Rmin", "L ", "centre", "max pressure", "binding")) or line.startswith("rocker cam"):
             assert line in out, line

@@ -6,16 +6,22 @@ import argparse
 import json
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
+from cams.words import bore_text, check_words, deg, length_format, number
 
 __all__ = ["register", "print_checks", "failure_text"]
 
 
-def _fmt(x, unit: str) -> str:
+def _fmt(x, unit: str, f: str = ".6f") -> str:
+    """A check's value: lengths as every command prints them (``f``), angles in degrees, counts as integers."""
     if x is None:
         return "-"
     if not unit and float(x).is_integer():
         return str(int(x))
-    return f"{x:.4f} {unit}".rstrip()
+    if unit == "deg":
+        return deg(x)
+    if unit == "mm":
+        return f"{x:{f}} mm"
+    return f"{number(x)} {unit}".rstrip()
 
 
 def _by(c: dict) -> str:
@@ -33,17 +39,23 @@ def failure_text(c: dict) -> str:
 
 
 def print_checks(rep: dict) -> None:
-    """Readable table of a check report (as from ``CheckReport.to_dict``)."""
-    print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, R0 = {rep['R0']:.6f} mm")
+    """Readable table of a check report (as from ``CheckReport.to_dict``), the checks named in words."""
+    f = length_format(rep["R0"])
+    cam_r = rep.get("smallest_cam_radius")
+    head = f"R0 = {rep['R0']:{f}} mm (pitch curve)" if cam_r is not None else f"R0 = {rep['R0']:{f}} mm"
+    if cam_r is not None:
+        head += f", cam's smallest radius {cam_r:{f}} mm"
+    print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, {head}")
     for c in rep["checks"]:
-        at = "" if c["at_deg"] is None else f" at {c['at_deg']:.4f} deg"
-        lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'])})"
-        print(f"  {'pass' if c['passed'] else 'FAIL'}  {c['name']:<22} {_fmt(c['worst'], c['unit'])}{at}{lim}{_by(c)}")
+        at = "" if c["at_deg"] is None else f" at {deg(c['at_deg'])}"
+        lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'], f)})"
+        print(f"  {'pass' if c['passed'] else 'FAIL'}  {check_words(c['name'])}: {_fmt(c['worst'], c['unit'], f)}{at}{lim}{_by(c)}")
     lr = rep.get("largest_roller_radius")
     if lr is not None:
-        print(f"  roller radius {rep['roller_radius']:g} mm; largest without undercut {lr:.4f} mm, "
-              f"recommended <= {rep['recommended_roller_radius']:.4f} mm")
-    print(f"  bore radius {rep['bore_radius']:.4f} mm; {'all checks pass' if rep['passed'] else 'a check FAILS'}")
+        print(f"  roller radius {rep['roller_radius']:{f}} mm; largest without undercut {lr:{f}} mm, "
+              f"recommended <= {rep['recommended_roller_radius']:{f}} mm")
+    given = any(c["name"] == "bore" for c in rep["checks"])
+    print(f"  {bore_text(rep['bore_radius'], not given)}; {'all checks pass' if rep['passed'] else 'a check FAILS'}")
 
 
 def run(args) -> int:
@@ -71,7 +83,7 @@ def run(args) -> int:
         print(json.dumps(rep, indent=2))
     else:
         if report is not None:
-            print_checks(report.to_dict())
+            print_checks(rep)
         else:
             print(f"{design.name}: no profile to check")
         print(f"  verified: {'yes' if a.verified else 'NO'}")

@@ -30,8 +30,8 @@ def print_machine(rep: dict) -> None:
         if syn.get("rod_ratio") is not None:
             course += f", rod ratio = {syn['rod_ratio']:g}"
         print(f"  synthesis from {course}: swing theta = {syn['swing_deg']:.4f} deg")
-    lengths = ", ".join(f"{k} = {v:.4f}" for k, v in lk.items() if isinstance(v, float) and not k.endswith("_deg") and k != "rpm")
-    print(f"  lengths ({u}): {lengths}")
+    lengths = ", ".join(f"{k} = {v:.4f} {u}" for k, v in lk.items() if isinstance(v, float) and not k.endswith("_deg") and k != "rpm")
+    print(f"  lengths: {lengths}")
     a = rep["analysis"]
     print(
         f"  stroke {a['stroke']:.4f} {u}, time ratio K = {a['time_ratio']:.6f}, dead positions at "
@@ -59,11 +59,16 @@ def print_machine(rep: dict) -> None:
     print_summary(rep["cam"])
 
 
-def print_forces(rep: dict) -> None:
-    """Readable summary of a forces report (as from ``MachineForces.to_dict``)."""
+def print_forces(rep: dict, *, follower: str = "rocker") -> None:
+    """Readable summary of a forces report (as from ``MachineForces.to_dict``).
+
+    ``follower`` (the cam's follower kind) gives the spring's units
+    (:func:`cams.words.spring_text`).
+    """
     import math
 
-    from cams.camforces import force_text, jump_text
+    from cams.camforces import jump_text
+    from cams.words import deg, force, spring_text, torque
 
     lk = rep.get("linkage")
     if lk is not None:
@@ -75,7 +80,7 @@ def print_forces(rep: dict) -> None:
         for name, p in lk["pairs"].items():
             print(f"    pair {name:8s} ({p['kind']:9s}): max {p['max']:.5g} N at {p['at_deg']:.1f} deg, mean {p['mean']:.5g} N")
         if lk["friction_power_mean_W"]:
-            parts = ", ".join(f"{k} {v:.3g}" for k, v in lk["friction_power_mean_W"].items())
+            parts = ", ".join(f"{k} {v:.3g} W" for k, v in lk["friction_power_mean_W"].items())
             print(f"    friction losses: mean {lk['friction_power_total_mean_W']:.4g} W ({parts}); "
                   f"drive power mean {lk['drive_power_mean_W']:.4g} W")
         else:
@@ -91,29 +96,26 @@ def print_forces(rep: dict) -> None:
         sp = cam["spring"]
 
         def at(key):
-            where = f"cam angle {cam[key + '_deg']:.1f} deg"
+            where = f"cam angle {deg(cam[key + '_deg'])}"
             cyc = cam.get(key + "_cycle_deg")
             if cyc:
-                where += f" = cycle angle {', '.join(f'{c:.1f}' for c in cyc)} deg"
+                where += f" = cycle angle {', '.join(deg(c) for c in cyc)}"
             return where
 
-        def g(x):
-            return force_text(x, 4)
-
-        print(f"  cam forces at {cam['rpm']:.4g} rpm: spring rate {sp['rate']:.4g}, preload {sp['preload']:.4g}; "
-              f"max contact force {g(cam['max_contact_force'])} N at {at('max_contact_at')}; "
-              f"max camshaft torque {g(cam['max_torque'])} N m at {at('max_torque_at')}")
+        print(f"  cam forces at {cam['rpm']:.6g} rpm: spring {spring_text(sp['rate'], sp['preload'], follower)}; "
+              f"max contact force {force(cam['max_contact_force'])} at {at('max_contact_at')}; "
+              f"max camshaft torque {torque(cam['max_torque'])} at {at('max_torque_at')}")
         bi = cam.get("between_impacts")
         if bi:
-            print(f"    between the rigid impacts: max contact force {bi['max_contact_force']:.4g} N, max camshaft torque "
-                  f"{bi['max_torque']:.4g} N m, jump speed {jump_text(bi['jump_rpm'], 4)}")
+            print(f"    between the rigid impacts: max contact force {force(bi['max_contact_force'])}, max camshaft "
+                  f"torque {torque(bi['max_torque'])}, jump speed {jump_text(bi['jump_rpm'])}")
         if cam["jump_rpm"] is None or not math.isfinite(cam["jump_rpm"]):
             jump = jump_text(None)
         elif cam.get("jump_at_impact"):
             jump = f"0 rpm: the follower leaves the cam at any speed at its velocity drop (at {at('jump_at')})"
         else:
-            jump = f"{jump_text(cam['jump_rpm'], 4)} (at {at('jump_at')})"
-        print(f"    jump speed {jump}; jamming limit {cam['jamming_limit_deg']:.2f} deg; contact lost: "
+            jump = f"{jump_text(cam['jump_rpm'])} (at {at('jump_at')})"
+        print(f"    jump speed {jump}; jamming limit {deg(cam['jamming_limit_deg'])}; contact lost: "
               f"{'YES' if cam['contact_lost'] else 'no'}; jammed: {'YES' if cam['jammed'] else 'no'}")
     for n in rep.get("notes", []):
         print(f"  note: {n}")
@@ -164,7 +166,7 @@ def run(args) -> int:
     else:
         print_machine(rep)
         if forces is not None:
-            print_forces(rep["forces"])
+            print_forces(rep["forces"], follower=rep["cam"]["follower"])
         for p in rep.get("plots", []):
             print(f"  plot: {p}")
     ok = res.ok and (forces is None or forces.ok)

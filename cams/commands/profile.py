@@ -6,6 +6,7 @@ import argparse
 import json
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
+from cams.words import bore_text, length_format
 
 __all__ = ["register"]
 
@@ -46,7 +47,7 @@ def _summary_stream(args):
     return sys.stderr if any(writes_stdout(getattr(args, o)) for o in ("csv", "dxf", "svg")) else sys.stdout
 
 
-def _report(cam, prof, bore) -> dict:
+def _report(cam, prof, bore, given) -> dict:
     """The summary of the exported profile (lengths mm), without the assessment and the files written."""
     design, sol = cam.design, cam.solution
     if prof is None:  # a knife edge in a groove: no profile
@@ -59,9 +60,13 @@ def _report(cam, prof, bore) -> dict:
                 "centre": {"x": float(sol.centre[0]), "y": float(sol.centre[1])}})
     if cam.flat:
         rep.update({"min_work_radius": prof.min_work_radius, "min_rho": sol.min_rho, "min_radius": design.min_radius,
-                    "bore_radius": bore, "columns": "phi_deg,work_x,work_y"})
+                    "bore_radius": bore, "bore_suggested": given is None, "columns": "phi_deg,work_x,work_y"})
     else:
+        from cams.profile import smallest_cam_radius
+
         rep.update({"roller_radius": prof.roller_radius, "min_work_radius": prof.min_work_radius, "bore_radius": bore,
+                    "bore_suggested": given is None,
+                    "smallest_cam_radius": smallest_cam_radius(design, sol.centre)[0],
                     "largest_roller_radius": cam.checks.largest_roller_radius, "groove": prof.groove})
     return rep
 
@@ -88,7 +93,7 @@ def run(args) -> int:
     bore = None
     if prof is not None:
         bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
-    rep = _report(cam, prof, bore)
+    rep = _report(cam, prof, bore, opts.bore_radius)
     rep.update(a.to_dict())
     asked = any(getattr(args, o) is not None for o in ("csv", "dxf", "svg"))
     refused = ""
@@ -98,24 +103,23 @@ def run(args) -> int:
     elif asked and not a.usable and not args.allow_failed:
         refused = "the cam fails (" + ", ".join(a.short) + "); --allow-failed writes them, marked as failing"
     elif asked:
-        written = _write(args, prof, bore, failing="" if a.usable else "; ".join(a.failures))
+        # a suggested bore is not drawn: only a given one
+        written = _write(args, prof, opts.bore_radius, failing="" if a.usable else "; ".join(a.failures))
     rep["written"] = written
     if args.json:
         print(json.dumps(rep, indent=2), file=out)
     else:
-        from cams.commands.solve import length_format
-
         f = length_format(rep["R0"])  # enough digits for the cam's size
         if prof is None:
             print(f"{rep['name']}: no profile: R0 = {rep['R0']:{f}} mm", file=out)
         elif flat:
             print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
                   f"R0 = {rep['R0']:{f}} mm, profile radius >= {rep['min_work_radius']:{f}} mm, "
-                  f"radius of curvature >= {rep['min_rho']:{f}} mm, bore {bore:{f}} mm", file=out)
+                  f"radius of curvature >= {rep['min_rho']:{f}} mm, {bore_text(bore, rep['bore_suggested'])}", file=out)
         else:
             print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-                  f"R0 = {rep['R0']:{f}} mm, working profile radius >= {rep['min_work_radius']:{f}} mm, "
-                  f"bore {bore:{f}} mm", file=out)
+                  f"R0 = {rep['R0']:{f}} mm (pitch curve), cam's smallest radius "
+                  f"{rep['smallest_cam_radius']:{f}} mm, {bore_text(bore, rep['bore_suggested'])}", file=out)
         print(f"  verified: {'yes' if a.verified else 'NO'}", file=out)
         print_assessment(rep, file=out)
         for w in written:

@@ -7,26 +7,15 @@ import json
 import sys
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
+from cams.words import binding_text, deg, spring_text
+from cams.words import length_format as _length_format
 
 __all__ = ["register", "print_summary", "print_flat_summary", "print_cam_forces", "print_assessment"]
 
 
-def _fmt_deg(x) -> str:
-    return "-" if x is None else f"{x:.4f} deg"
-
-
 def length_format(scale: float) -> str:
-    """Format spec for lengths of a design of size ``scale``: 6 decimals, more for designs under 1 mm.
-
-    Keeps about seven significant digits of the design's size, so a
-    micrometre cam does not print as ``0.000000``; at 1 mm and above it is
-    ``.6f``.
-    """
-    import math
-
-    if not (scale > 0 and math.isfinite(scale)):
-        return ".6f"
-    return f".{min(15, max(6, 6 - math.floor(math.log10(scale))))}f"
+    """Format spec for lengths of a design of size ``scale`` (:func:`cams.words.length_format`)."""
+    return _length_format(scale)
 
 
 def print_summary(rep: dict) -> None:
@@ -37,7 +26,10 @@ def print_summary(rep: dict) -> None:
         print(f"{rep['name']}: {rep['follower']} follower, the chosen cam (checked, not sized)")
     else:
         print(f"{rep['name']}: {rep['follower']} follower, method {rep['method']}, {rep['mode']}")
-    print(f"  R0      = {rep['R0']:{f}} {unit}")
+    print(f"  R0      = {rep['R0']:{f}} {unit}  (pitch curve's base radius: cam centre to roller centre)")
+    cr = rep.get("smallest_cam_radius")
+    if cr is not None:
+        print(f"  Rmin    = {cr:{f}} {unit}  (the cam's own smallest radius, on the working profile)")
     if rep["L"] is not None:
         print(f"  L       = {rep['L']:{f}} {unit}")
     if rep["offset"] is not None:
@@ -45,46 +37,48 @@ def print_summary(rep: dict) -> None:
     c = rep["centre"]
     print(f"  centre  = ({c['x']:{f}}, {c['y']:{f}}) {unit}")
     mp, lim = rep["max_pressure_angle"], rep["limits"]
-    print(f"  max pressure angle: rise {_fmt_deg(mp['rise'])} (limit {_fmt_deg(lim['rise'])}), "
-          f"return {_fmt_deg(mp['return'])} (limit {_fmt_deg(lim['return'])})")
+    print(f"  max pressure angle: rise {deg(mp['rise'])} (limit {deg(lim['rise'])}), "
+          f"return {deg(mp['return'])} (limit {deg(lim['return'])})")
     if rep["binding"]:
-        print("  binding: " + ", ".join(f"{b['line']} at {b['phi']:.4f} deg" for b in rep["binding"]))
+        print("  binding: " + ", ".join(binding_text(b) for b in rep["binding"]))
     eb = rep["error_bound"]
     bound = "" if rep["mode"] == "chosen" else \
         f"error bound: {'not stated by this method' if eb is None else f'{eb:.3g} {unit}'}; "
     print(f"  {bound}verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
     fo = rep.get("forces")
     if fo:
-        print_cam_forces(fo)
+        print_cam_forces(fo, follower=rep["follower"])
     for n in rep["notes"]:
         print(f"  note: {n}")
 
 
-def print_cam_forces(fo: dict, indent: str = "  ") -> None:
+def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translating") -> None:
     """The [dynamics] part of a report (from ``DesignForces.to_dict``): spring, contact force, torque, jump speed.
 
     With rigid impacts the unbounded values are said so, the finite ones
-    between the impacts follow, and the jump speed is "any speed".
+    between the impacts follow, and the jump speed is "any speed". The
+    spring's units follow the ``follower`` kind: N/m and N, or N m/rad and
+    N m for a rocker's torsional spring (:func:`cams.words.spring_text`).
     """
-    from cams.camforces import force_text as _g
     from cams.camforces import jump_text
+    from cams.words import force, torque
 
     sp = fo["spring"]
-    print(f"{indent}spring: rate {sp['rate']:.6g}, preload {sp['preload']:.6g} (SI: N/m and N, or N m/rad and N m)")
-    print(f"{indent}contact force: max {_g(fo['max_contact_force'])} at {fo['max_contact_at_deg']:.2f} deg, "
-          f"min {_g(fo['min_contact_force'])}; camshaft torque max {_g(fo['max_torque'])} N m "
-          f"at {fo['max_torque_at_deg']:.2f} deg")
+    print(f"{indent}spring: {spring_text(sp['rate'], sp['preload'], follower)}")
+    print(f"{indent}contact force: max {force(fo['max_contact_force'])} at {deg(fo['max_contact_at_deg'])}, "
+          f"min {force(fo['min_contact_force'])}; camshaft torque max {torque(fo['max_torque'])} "
+          f"at {deg(fo['max_torque_at_deg'])}")
     bi = fo.get("between_impacts")
     if bi:
-        print(f"{indent}  between the rigid impacts: contact force max {bi['max_contact_force']:.6g} at "
-              f"{bi['max_contact_at_deg']:.2f} deg, min {bi['min_contact_force']:.6g}; camshaft torque max "
-              f"{bi['max_torque']:.6g} N m at {bi['max_torque_at_deg']:.2f} deg; jump speed {jump_text(bi['jump_rpm'])}")
+        print(f"{indent}  between the rigid impacts: contact force max {force(bi['max_contact_force'])} at "
+              f"{deg(bi['max_contact_at_deg'])}, min {force(bi['min_contact_force'])}; camshaft torque max "
+              f"{torque(bi['max_torque'])} at {deg(bi['max_torque_at_deg'])}; jump speed {jump_text(bi['jump_rpm'])}")
     if fo.get("jump_at_impact"):
-        jump = f"follower leaves the cam at any speed (velocity drop at {fo['jump_at_deg']:.2f} deg)"
+        jump = f"follower leaves the cam at any speed (velocity drop at {deg(fo['jump_at_deg'])})"
     else:
         jump = f"follower jumps above {jump_text(fo['jump_rpm'])}"
     print(f"{indent}{jump}; contact lost: {'YES' if fo['contact_lost'] else 'no'}; "
-          f"jammed: {'YES' if fo['jammed'] else 'no'} (jamming limit {fo['jamming_limit_deg']:.2f} deg)")
+          f"jammed: {'YES' if fo['jammed'] else 'no'} (jamming limit {deg(fo['jamming_limit_deg'])})")
 
 
 def pressure_text(rep: dict) -> str:

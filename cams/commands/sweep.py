@@ -25,7 +25,7 @@ def run(args) -> int:
 
 def _run(args) -> int:
     from cams.files import atomic_write, check_output_paths, read_toml
-    from cams.sweep import COLUMNS, parse_vary, sweep
+    from cams.sweep import csv_header, csv_row, parse_vary, sweep
 
     if args.jobs is not None and args.jobs < 1:
         raise InputError("--jobs", f"must be an integer >= 1 (processes), got {args.jobs}")
@@ -37,10 +37,10 @@ def _run(args) -> int:
 
     def write(tmp):
         with open(tmp, "w", newline="", encoding="utf-8") as fh:
-            w = csv.DictWriter(fh, fieldnames=list(res.keys) + list(COLUMNS))
-            w.writeheader()
+            w = csv.writer(fh)
+            w.writerow(csv_header(res.keys))
             for r in res.rows:
-                w.writerow({k: ("" if v is None else v) for k, v in r.items()})
+                w.writerow(csv_row(r))
 
     atomic_write(out, "--out", write)
     # one rule for every command (cams.assess): a row without a solution, not verified or not buildable fails

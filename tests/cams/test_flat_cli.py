@@ -135,7 +135,7 @@ def test_check_profile_plot_report_run(tmp_path, capsys, file):
     assert rc == 0 and rep["passed"] and rep["face"] == "flat"
     assert [c["name"] for c in rep["checks"]] == ["convexity", "profile_polygon"]
     rc, out, _ = _run(capsys, "check", str(file))
-    assert rc == 0 and "pass  convexity" in out and "all checks pass" in out
+    assert rc == 0 and "pass  convex profile: smallest radius of curvature" in out and "all checks pass" in out
     csv, dxf, svg = tmp_path / "c.csv", tmp_path / "c.dxf", tmp_path / "c.svg"
     rc, out, _ = _run(capsys, "profile", str(file), "--csv", str(csv), "--dxf", str(dxf), "--svg", str(svg), "--json")
     rep = json.loads(out)
@@ -146,7 +146,8 @@ def test_check_profile_plot_report_run(tmp_path, capsys, file):
     import ezdxf
 
     doc = ezdxf.readfile(str(dxf))
-    assert {e.dxf.layer for e in doc.modelspace()} == {"PROFILE", "BASE", "BORE"}
+    # no [cam] bore_radius: the suggested bore is not a dimension, so no BORE circle (issue 12, item 13)
+    assert {e.dxf.layer for e in doc.modelspace()} == {"PROFILE", "BASE"}
     text = svg.read_text()
     assert 'id="PROFILE"' in text and 'id="PITCH"' not in text
     rc, out, err = _run(capsys, "plot", str(file), "--out", str(tmp_path / "pics"))

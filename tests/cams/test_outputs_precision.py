@@ -116,6 +116,6 @@ def test_profile_summary_prints_the_digits_of_a_micrometre_cam(tmp_path, capsys)
     rc, rep = _json(capsys, "profile", f)
     assert main(["profile", str(f)]) == 0
     out = capsys.readouterr().out
-    for key, label in (("R0", "R0 = "), ("min_work_radius", "radius >= "), ("bore_radius", "bore ")):
+    for key, label in (("R0", "R0 = "), ("smallest_cam_radius", "cam's smallest radius "), ("bore_radius", "bore radius ")):
         printed = float(re.search(re.escape(label) + r"([0-9.e+-]+) mm", out).group(1))
         assert printed == pytest.approx(rep[key], rel=1e-6), key

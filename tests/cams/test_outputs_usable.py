@@ -207,7 +207,7 @@ def test_sweep_counts_unbuildable_rows_and_exits_1(capsys, tmp_path):
                "--quiet"])
     err = capsys.readouterr().err
     rows = list(csv.DictReader(out.open()))
-    assert all(float(r["R0"]) < 20.0 for r in rows)  # no working profile in either row
+    assert all(float(r["R0_mm"]) < 20.0 for r in rows)  # no working profile in either row
     assert all(r["buildable"] == "False" and "no working profile" in r["failures"] for r in rows)
     assert rc == 1 and "(2 infeasible" in err
     # the same rows one by one: the same answer as cams solve

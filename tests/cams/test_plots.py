@@ -54,8 +54,8 @@ def test_motion_picture_marks_impacts():
                                              {"phase": "return", "law": "linear", "angle": 100},
                                              {"phase": "dwell"}]))
     fig = plot_motion(d)
-    texts = [t.get_text() for ax in fig.axes for t in ax.texts]
-    assert texts.count("hard impact") == 2 and texts.count("soft impact") == 2
+    marks = [ln.get_label() for ax in fig.axes for ln in ax.lines]  # marked lines, named once in a legend
+    assert marks.count("hard impact (velocity jump)") == 2 and marks.count("soft impact (acceleration jump)") == 2
     assert "jerk" in fig.axes[-1].get_ylabel() or "d³s" in fig.axes[-1].get_ylabel()
 
 
@@ -79,7 +79,7 @@ def test_translating_zone_shows_the_offset(cams_by_name):
     cam = cams_by_name["translating_force"]
     fig = plot_zone(cam.solution)
     labels = [h.get_label() for h in fig.axes[0].get_lines()]
-    assert f"offset e = {cam.solution.offset:.3f}" in labels
+    assert f"offset e = {cam.solution.offset:.3f} mm" in labels
 
 
 def test_names_the_font_lacks_print_no_warnings(tmp_path):

@@ -21,10 +21,10 @@ def test_linear_law_forces_are_unbounded_not_inf(linear_feed):
     page = forces_page(cam)
     text = " ".join(page.values())
     assert "inf" not in text.replace("infinite", "")
-    assert page["largest contact force"] == "unbounded (rigid impact at 0.00°)"
-    assert page["largest camshaft torque"] == "unbounded (rigid impact at 0.00°)"
-    assert page["smallest contact force"] == "unbounded negative: contact lost (rigid impact at 60.00°)"
-    assert page["jump speed"].startswith("any speed: the follower leaves the cam") and "60.00°" in page["jump speed"]
+    assert page["largest contact force"] == "unbounded (rigid impact at 0.0000 deg)"
+    assert page["largest camshaft torque"] == "unbounded (rigid impact at 0.0000 deg)"
+    assert page["smallest contact force"] == "unbounded negative: contact lost (rigid impact at 60.0000 deg)"
+    assert page["jump speed"].startswith("any speed: the follower leaves the cam") and "60.0000 deg" in page["jump speed"]
     assert "0 rpm" not in page["jump speed"]
     bi = cam.forces.to_dict()["between_impacts"]
     assert f"contact force max {bi['max_contact_force']:.6g} N" in page["between the rigid impacts"]
@@ -37,12 +37,12 @@ def test_smooth_law_forces_are_numbers():
     cam = Cam.from_file(FEED)
     page = forces_page(cam)
     fo = cam.forces.to_dict()
-    assert page["largest contact force"] == f"{fo['max_contact_force']:.6g} N at {fo['max_contact_at_deg']:.2f}°"
-    assert page["jump speed"] == f"{fo['jump_rpm']:.6g} rpm (first at {fo['jump_at_deg']:.2f}°)"
+    assert page["largest contact force"] == f"{fo['max_contact_force']:.6g} N at {fo['max_contact_at_deg']:.4f} deg"
+    assert page["jump speed"] == f"{fo['jump_rpm']:.6g} rpm (first at {fo['jump_at_deg']:.4f} deg)"
     assert "between the rigid impacts" not in page and "note" not in page
 
 
 def test_written_report_says_unbounded(linear_feed, tmp_path):
     page, _ = write_report(Cam.from_file(linear_feed), tmp_path / "out")
     html = page.read_text(encoding="utf-8")
-    assert "unbounded (rigid impact at 0.00°)" in html and "inf N" not in html
+    assert "unbounded (rigid impact at 0.0000 deg)" in html and "inf N" not in html

@@ -53,7 +53,7 @@ def test_sweep_cli_writes_csv(tmp_path, capsys):
     assert rc == 0
     rows = list(csv.DictReader(out.open()))
     assert [float(r["limits.pressure_angle"]) for r in rows] == [40.0, 45.0, 50.0]
-    R0 = [float(r["R0"]) for r in rows]
+    R0 = [float(r["R0_mm"]) for r in rows]  # headers carry their units
     assert R0[0] > R0[1] > R0[2]  # a larger allowable angle: a smaller cam
     with open(EXAMPLES / "rocker_force.toml", "rb") as fh:
         base = tomllib.load(fh)

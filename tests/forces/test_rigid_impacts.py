@@ -78,8 +78,8 @@ def test_smooth_law_has_no_impacts():
 def test_cams_solve_text_and_json(linear_feed, capsys):
     assert main(["solve", str(linear_feed)]) == 1
     out = capsys.readouterr().out
-    assert "contact force: max UNBOUNDED at 0.00 deg" in out
-    assert "follower leaves the cam at any speed (velocity drop at 60.00 deg)" in out and "contact lost: YES" in out
+    assert "contact force: max UNBOUNDED at 0.0000 deg" in out  # angles: 4 decimals in every command
+    assert "follower leaves the cam at any speed (velocity drop at 60.0000 deg)" in out and "contact lost: YES" in out
     assert "note: rigid impacts" in out and "+90 deg/s" in out and "-90 deg/s" in out
     assert "between the rigid impacts" in out
     assert main(["solve", str(linear_feed), "--json"]) == 1

@@ -27,7 +27,7 @@ def test_check_json_passes(capsys, name):
 def test_check_text_output(capsys):
     assert main(["check", str(EXAMPLES / "rocker_form.toml"), "--tolerance", "0.01"]) == 0
     out = capsys.readouterr().out
-    assert "tolerance 0.01 mm" in out and "jamming_return" in out and "all checks pass" in out
+    assert "tolerance 0.01 mm" in out and "pressure angle, return" in out and "all checks pass" in out
 
 
 def test_check_fails_with_exit_1_for_undercut(tmp_path, capsys):

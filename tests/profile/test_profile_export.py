@@ -51,7 +51,10 @@ def test_dxf_reads_back_and_matches_the_csv(profiles, tmp_path, name):
 
     prof = profiles[name]
     write_csv(prof, tmp_path / "cam.csv")
-    write_dxf(prof, tmp_path / "cam.dxf")
+    # without a bore radius the file has no bore (a suggested bore is not a dimension); with one, it has
+    write_dxf(prof, tmp_path / "nobore.dxf")
+    assert "BORE" not in {lay.dxf.name for lay in ezdxf.readfile(tmp_path / "nobore.dxf").layers}
+    write_dxf(prof, tmp_path / "cam.dxf", bore_radius=default_bore_radius(prof))
     _, data = _read_csv(tmp_path / "cam.csv")
     doc = ezdxf.readfile(tmp_path / "cam.dxf")
     assert doc.units == ezdxf.units.MM

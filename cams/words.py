@@ -1,0 +1,187 @@
+"""How the product prints its quantities and names: one home per quantity.
+
+Every command, the report and the pictures format a quantity through this
+module, so the same quantity reads the same (unit, precision) everywhere:
+
+* angles in degrees, 4 decimals (:func:`deg`);
+* lengths in mm with enough decimals for the design's size (:func:`length_format`);
+* forces in N, torques in N m, spring rates in N/m (translating) or N m/rad
+  (rocker, a torsional spring) (:func:`spring_text`, :func:`force`);
+* the seed's constraint lines with their phase and cam angle (:func:`binding_text`);
+* the checks of a profile in words a student reads (:data:`CHECK_WORDS`).
+
+Light: imports nothing heavier than the standard library.
+"""
+
+from __future__ import annotations
+
+import math
+
+__all__ = [
+    "ANGLE_DECIMALS",
+    "CHECK_WORDS",
+    "deg",
+    "length_format",
+    "length",
+    "number",
+    "force",
+    "torque",
+    "spring_units",
+    "spring_text",
+    "binding_text",
+    "check_words",
+    "phase_words",
+    "bore_text",
+]
+
+#: Decimals of an angle in degrees, everywhere.
+ANGLE_DECIMALS = 4
+
+#: The checks of :mod:`cams.checks` and :mod:`cams.flatface` in words (name: what it checks).
+CHECK_WORDS = {
+    "jamming_rise": "pressure angle, rise",
+    "jamming_return": "pressure angle, return",
+    "undercut": "no undercut: pitch curve's smallest convex radius of curvature, limit the roller radius",
+    "undercut_outer": "no undercut of the groove's outer wall: smallest concave radius of curvature, limit the "
+                      "roller radius",
+    "min_curvature_radius": "working profile's smallest radius of curvature",
+    "profile_polygon": "working profile is one closed curve: self-crossings",
+    "outer_polygon": "groove's outer wall is one closed curve: self-crossings",
+    "bore": "bore inside the cam: working profile's smallest radius, limit the bore radius",
+    "convexity": "convex profile: smallest radius of curvature, limit limits.min_radius",
+}
+
+
+def check_words(name: str) -> str:
+    """The words of a check's internal ``name`` (the name itself when it has none).
+
+    >>> check_words("profile_polygon")
+    'working profile is one closed curve: self-crossings'
+    """
+    return CHECK_WORDS.get(name, name.replace("_", " "))
+
+
+def number(x: float, digits: int = 6) -> str:
+    """A value with ``digits`` significant digits, round-off noise removed.
+
+    >>> number(29.999999999999993)
+    '30'
+    >>> number(0.1 + 0.2)
+    '0.3'
+    """
+    if x is None:
+        return "-"
+    return f"{float(x):.{digits}g}"
+
+
+def deg(x: float | None, *, radians: bool = False) -> str:
+    """An angle for print: degrees with :data:`ANGLE_DECIMALS` decimals and its unit, ``-`` for None.
+
+    >>> deg(45.0)
+    '45.0000 deg'
+    >>> deg(math.pi / 4, radians=True)
+    '45.0000 deg'
+    """
+    if x is None:
+        return "-"
+    v = math.degrees(x) if radians else float(x)
+    return f"{v:.{ANGLE_DECIMALS}f} deg"
+
+
+def length_format(scale: float) -> str:
+    """Format spec for lengths of a design of size ``scale``: 6 decimals, more for designs under 1 mm.
+
+    Keeps about seven significant digits of the design's size, so a
+    micrometre cam does not print as ``0.000000``; at 1 mm and above it is
+    ``.6f``.
+
+    >>> length_format(13.2)
+    '.6f'
+    >>> length_format(0.001)
+    '.9f'
+    """
+    if not (scale > 0 and math.isfinite(scale)):
+        return ".6f"
+    return f".{min(15, max(6, 6 - math.floor(math.log10(scale))))}f"
+
+
+def length(x: float | None, scale: float | None = None) -> str:
+    """A length in mm for print, decimals by :func:`length_format` (``scale`` defaults to ``|x|``).
+
+    >>> length(13.2407931)
+    '13.240793 mm'
+    """
+    if x is None:
+        return "-"
+    return f"{x:{length_format(abs(x) if scale is None else scale)}} mm"
+
+
+def force(x: float | None, digits: int = 6) -> str:
+    """A force in N: ``UNBOUNDED`` for ``inf`` (a rigid impact) or None (its JSON form).
+
+    >>> force(12.09481234)
+    '12.0948 N'
+    """
+    if x is None or x == float("inf"):
+        return "UNBOUNDED"
+    if x == float("-inf"):
+        return "-UNBOUNDED"
+    return f"{x:.{digits}g} N"
+
+
+def torque(x: float | None, digits: int = 6) -> str:
+    """A torque in N m (``UNBOUNDED`` as :func:`force`)."""
+    t = force(x, digits)
+    return t if "UNBOUNDED" in t else t[:-2] + " N m"
+
+
+def spring_units(follower: str) -> tuple[str, str]:
+    """Units of a closing spring's rate and preload: ``("N/m", "N")``, or ``("N m/rad", "N m")`` for a rocker.
+
+    >>> spring_units("rocker")
+    ('N m/rad', 'N m')
+    """
+    return ("N m/rad", "N m") if follower == "rocker" else ("N/m", "N")
+
+
+def spring_text(rate: float, preload: float, follower: str, digits: int = 6) -> str:
+    """A closing spring for print: ``rate 3 N m/rad, preload 0 N m`` (torsional for a rocker).
+
+    >>> spring_text(2000.0, 15.0, "translating")
+    'rate 2000 N/m, preload 15 N'
+    """
+    ru, pu = spring_units(follower)
+    return f"rate {rate:.{digits}g} {ru}, preload {preload:.{digits}g} {pu}"
+
+
+def phase_words(kind: str, index: int) -> str:
+    """A phase for print: its kind and its place in the file's ``[[motion]]`` list (1-based).
+
+    >>> phase_words("rise", 0)
+    'rise, [[motion]] 1'
+    """
+    return f"{kind}, [[motion]] {index + 1}"
+
+
+def binding_text(b: dict) -> str:
+    """A binding line (as in ``SolveResult.to_dict()["binding"]``): name, cam angle and phase.
+
+    >>> binding_text({"line": "t-t", "phi": 48.86221, "phase": 0, "phase_kind": "rise"})
+    't-t at 48.8622 deg (rise, [[motion]] 1)'
+    """
+    kind = b.get("phase_kind")
+    where = f" ({phase_words(kind, b['phase'])})" if kind else f" ([[motion]] {b['phase'] + 1})"
+    return f"{b['line']} at {deg(b['phi'])}{where}"
+
+
+def bore_text(radius: float, suggested: bool) -> str:
+    """The bore for print: a given one (``[cam] bore_radius``), or the automatic one as a suggestion.
+
+    The suggested bore is not checked and not drawn in the manufacturing files.
+
+    >>> bore_text(2.59244, True)
+    'suggested bore radius 2.592440 mm (not checked, not in the files: set [cam] bore_radius)'
+    """
+    if suggested:
+        return f"suggested bore radius {length(radius)} (not checked, not in the files: set [cam] bore_radius)"
+    return f"bore radius {length(radius)}"

@@ -1,0 +1,154 @@
+"""Pictures and the report, measured: no text over text, nothing cut off, each legend label once, no blank
+pages, the animation's view holding the whole mechanism at every cam angle (issue 12, item 16).
+
+The measures use matplotlib's own renderer (the extents of the drawn text
+boxes) and the pixels of the rendered pages, not the code that places them.
+"""
+
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
+from matplotlib.text import Text  # noqa: E402
+
+from cams import plots  # noqa: E402
+from cams.cam import Cam  # noqa: E402
+from cams.designfile import design_from_dict  # noqa: E402
+from tests.conftest import EXAMPLES, rocker_dict  # noqa: E402
+
+ALL_EXAMPLES = sorted(p.stem for p in EXAMPLES.glob("*.toml"))
+
+
+def _drawn_texts(fig):
+    """The texts ``fig`` draws (titles, labels, tick labels in view, annotations, legends), with their extents
+    in pixels, after a draw."""
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    r = canvas.get_renderer()
+    texts = list(fig.texts)
+    for lg in fig.legends:
+        texts += lg.get_texts()
+    for ax in fig.axes:
+        if not ax.get_visible():
+            continue
+        texts += [ax.title, ax._left_title, ax._right_title, ax.xaxis.label, ax.yaxis.label, *ax.texts]
+        for axis in (ax.xaxis, ax.yaxis):
+            texts += [t.label1 for t in axis._update_ticks()] + [axis.get_offset_text()]
+        if ax.get_legend() is not None:
+            texts += ax.get_legend().get_texts()
+    out = [(t, t.get_window_extent(r)) for t in texts if t.get_visible() and t.get_text().strip()]
+    return out, fig.bbox
+
+
+def text_faults(fig) -> list[str]:
+    """Pairs of text boxes that overlap (more than a pixel each way), and texts reaching outside the figure."""
+    texts, page = _drawn_texts(fig)
+    faults = []
+    for t, b in texts:
+        if b.x0 < page.x0 - 1 or b.y0 < page.y0 - 1 or b.x1 > page.x1 + 1 or b.y1 > page.y1 + 1:
+            faults.append(f"cut off: {t.get_text()!r}")
+    for i, (t1, b1) in enumerate(texts):
+        for t2, b2 in texts[i + 1:]:
+            w = min(b1.x1, b2.x1) - max(b1.x0, b2.x0)
+            h = min(b1.y1, b2.y1) - max(b1.y0, b2.y0)
+            if w > 1 and h > 1:
+                faults.append(f"overlap: {t1.get_text()!r} and {t2.get_text()!r}")
+    return faults
+
+
+def legend_duplicates(fig) -> list[str]:
+    legends = [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None] + list(fig.legends)
+    dups = []
+    for lg in legends:
+        labels = [t.get_text() for t in lg.get_texts()]
+        dups += sorted({lab for lab in labels if labels.count(lab) > 1})
+    return dups
+
+
+def _figures(cam):
+    if cam.flat:
+        return {"motion": plots.plot_motion(cam.design), "pressure": plots.plot_flat_pressure(cam.solution),
+                "curvature": plots.plot_curvature(cam.solution), "profile": plots.plot_profile(cam)}
+    return {"zone": plots.plot_zone(cam.solution, tradeoff=cam.tradeoff), "motion": plots.plot_motion(cam.design),
+            "pressure": plots.plot_pressure(cam.solution), "profile": plots.plot_profile(cam)}
+
+
+@pytest.mark.parametrize("name", ALL_EXAMPLES)
+def test_every_picture_of_every_example_reads(name):
+    cam = Cam.from_file(EXAMPLES / f"{name}.toml")
+    for which, fig in _figures(cam).items():
+        assert text_faults(fig) == [], which
+        assert legend_duplicates(fig) == [], which
+
+
+def _close_impacts():
+    """Harmonic laws with a 1-degree dwell between rise and return: four soft impacts, two pairs 1 degree apart."""
+    return design_from_dict(rocker_dict(motion=[
+        {"phase": "rise", "law": "harmonic", "angle": 120}, {"phase": "dwell", "angle": 1},
+        {"phase": "return", "law": "harmonic", "angle": 120}, {"phase": "dwell"}]))
+
+
+def test_soft_impact_marks_do_not_write_over_each_other():
+    fig = plots.plot_motion(_close_impacts())
+    assert text_faults(fig) == []
+    assert legend_duplicates(fig) == []
+    # the impacts are still marked: one legend entry names them
+    labels = [t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()]
+    assert "soft impact (acceleration jump)" in labels
+
+
+def test_a_long_name_wraps_its_titles_inside_the_figure():
+    d = design_from_dict(rocker_dict(name="a rocker cam with a rather long descriptive name for its drawing office"))
+    cam = Cam(d)
+    for which, fig in _figures(cam).items():
+        assert text_faults(fig) == [], which
+
+
+@pytest.mark.parametrize("name", ALL_EXAMPLES)
+def test_the_animation_view_holds_the_mechanism_at_every_angle(name):
+    """Every artist of every frame (cam, groove's outer wall, roller, follower) lies inside the fixed view."""
+    from matplotlib.figure import Figure
+
+    cam = Cam.from_file(EXAMPLES / f"{name}.toml")
+    profile = cam.profile
+    lo, hi = plots._animation_box(cam, profile)
+    for phi in np.linspace(0.0, 2 * np.pi, 37):
+        ax = Figure().add_subplot()
+        plots._draw(ax, cam, profile, phi)
+        ax.relim()
+        dl = ax.dataLim
+        assert dl.x0 >= lo[0] and dl.y0 >= lo[1] and dl.x1 <= hi[0] and dl.y1 <= hi[1], (np.degrees(phi), dl, lo, hi)
+
+
+def _ink(fig) -> float:
+    """Fraction of the page's pixels that are not white."""
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    px = np.asarray(canvas.buffer_rgba())[..., :3]
+    return float(np.mean(np.any(px < 250, axis=-1)))
+
+
+@pytest.mark.parametrize("name", ["slotting_feed_cam", "rocker_form", "rocker_flat"])
+def test_report_pages_are_filled_and_rows_do_not_overlap(name):
+    from cams.report import report_pages, report_sections
+
+    cam = Cam.from_file(EXAMPLES / f"{name}.toml")
+    sections = report_sections(cam)
+    pages = report_pages(cam, sections, figs=[])
+    for page in pages:
+        assert text_faults(page) == []
+        assert _ink(page) > 0.005  # no blank page
+    # the tables flow: every page but the last is filled down to its lower fifth
+    for page in pages[:-1]:
+        texts, box = _drawn_texts(page)
+        assert min(b.y0 for _, b in texts) < box.y0 + 0.2 * box.height
+    # the checks are named in words, not by their internal names (profile_polygon, undercut_outer)
+    import re
+
+    names = [label for title, r in sections if title == "Checks" for label, _ in r]
+    assert not any(re.fullmatch(r"[a-z]+(_[a-z]+)+", n) for n in names), names
