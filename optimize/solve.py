@@ -146,6 +146,14 @@ class SolveResult:
         }
 
 
+def _no_base_circle(R0: float, roller_radius: float, remedy: str) -> list[str]:
+    """The note of a cam whose R0 (mm) is not larger than the roller radius (mm): no working profile; else none."""
+    if R0 > roller_radius:
+        return []
+    return [f"not buildable: R0 = {R0:.6g} mm is not larger than the roller radius {roller_radius:g} mm (the working "
+            f"profile would have no base circle); {remedy}"]
+
+
 def _offset_x(v: float) -> float:
     """The fixed offset's sign convention, ``x_O = -e``, read either way.
 
@@ -329,9 +337,7 @@ def _solve_chosen(design: CamDesign) -> SolveResult:
     A0 = f.position(0.0)
     R0 = float(np.linalg.norm(centre - A0))
     notes += pressure_failures(pressure)
-    if R0 <= f.roller_radius:
-        notes.append(f"not buildable: R0 = {R0:.6g} mm is not larger than the roller radius {f.roller_radius:g} mm "
-                     "(the working profile would have no base circle); choose a larger cam or a smaller roller")
+    notes += _no_base_circle(R0, f.roller_radius, "choose a larger cam or a smaller roller")
     return SolveResult(
         design=design,
         centre=np.asarray(centre, float),
@@ -513,9 +519,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
     if not pressure.ok and R0 < 1e-6 * travel and method == "exact":
         raise vanishing
     notes += pressure_failures(pressure)  # a sized cam that fails the independent check says by how much, too
-    if R0 <= f.roller_radius:
-        notes.append(f"not buildable: R0 = {R0:.6g} mm is not larger than the roller radius {f.roller_radius:g} mm (the "
-                     "working profile would have no base circle); set limits.min_base_radius or a smaller roller")
+    notes += _no_base_circle(R0, f.roller_radius, "set limits.min_base_radius or a smaller roller")
     return SolveResult(
         design=design,
         centre=np.asarray(centre, float),
