@@ -148,15 +148,18 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
             fail("knife edge in a groove", "a knife edge cannot run in a groove: form closure needs "
                  "follower.roller_radius > 0")
     if checks is not None:
+        from cams.words import fault_words
+
         for c in checks.checks:
             if c.passed:
                 continue
+            words = fault_words(c.name)  # what a student reads, not the internal name
             if c.name in PRESSURE_CHECKS:  # the same limits recomputed from the profile: the verified side
                 if verified:
                     verified = False
-                    failures.insert(0, ("not verified", f"not verified: {c.name}: {c.message}"))
+                    failures.insert(0, ("not verified", f"not verified: {words}: {c.message}"))
             else:
-                fail(c.name, f"{c.name}: {c.message}" if c.message else c.name)
+                fail(words, f"{words}: {c.message}" if c.message else words)
     elif no_profile is not None:
         fail("no profile", f"no profile: {no_profile}")
     elif not flat and not knife_in_groove(design):

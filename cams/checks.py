@@ -498,7 +498,8 @@ def _polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:
                 loc = None
         if loc is not None:
             at = _deg(phi[int(np.argmin(np.linalg.norm(pts - np.asarray(loc), axis=1)))])
-        msg = f"self-intersecting or invalid polygon, {crossings} crossing(s) ({reason})"
+        where = "" if at is None else f", the first near cam angle {at:.4f} deg"
+        msg = f"{crossings} self-crossing(s){where}" if crossings else f"not a valid closed curve ({reason}){where}"
     elif not around:
         msg = "the closed curve does not surround the cam centre"
     return Check(name, valid and around, float(crossings), at, 0.0, "", msg)
@@ -558,13 +559,13 @@ def check_profile(
     # undercut and sharp points
     ext = _curvature(design, centre, maxima)
     checks.append(Check("undercut", bool(ext.convex > r), ext.convex, _deg(ext.convex_at), r, "mm",
-                        f"smallest convex radius of curvature of the pitch curve {ext.convex:.6g} "
-                        f"vs roller radius {r:g}"))
+                        f"smallest convex radius of curvature of the pitch curve {ext.convex:.6g} mm "
+                        f"vs roller radius {r:g} mm"))
     largest = ext.convex
     if prof.groove:
         checks.append(Check("undercut_outer", bool(ext.concave > r), ext.concave, _deg(ext.concave_at), r, "mm",
-                            f"smallest concave radius of curvature of the pitch curve {ext.concave:.6g} "
-                            f"vs roller radius {r:g} (outer wall of the groove)"))
+                            f"smallest concave radius of curvature of the pitch curve {ext.concave:.6g} mm "
+                            f"vs roller radius {r:g} mm (outer wall of the groove)"))
         largest = min(largest, ext.concave)
     if opts.min_curvature_radius is not None:
         worst, at = ext.convex - r, ext.convex_at
@@ -587,7 +588,7 @@ def check_profile(
         k = int(np.argmin(rad))
         rmin = prof.min_work_radius
         checks.append(Check("bore", bool(rmin > bore), rmin, _deg(prof.phi[k]), float(bore), "mm",
-                            f"working profile's smallest radius {rmin:.6g} vs bore radius {bore:.6g}"))
+                            f"working profile's smallest radius {rmin:.6g} mm vs bore radius {bore:.6g} mm"))
     return CheckReport(
         name=design.name,
         checks=tuple(checks),

@@ -1001,5 +1001,5 @@ def check_flat_face(design, solution: FlatFaceSolution, profile: FlatFaceProfile
         rad = np.linalg.norm(profile.work, axis=1)
         k = int(np.argmin(rad))
         checks.append(Check("bore", bool(rad[k] > bore), float(rad[k]), _deg(profile.phi[k]), float(bore), "mm",
-                            f"profile's smallest radius {rad[k]:.6g} vs bore radius {bore:.6g}"))
+                            f"profile's smallest radius {rad[k]:.6g} mm vs bore radius {bore:.6g} mm"))
     return FlatCheckReport(design.name, tuple(checks), profile, float(bore), float(rmin))

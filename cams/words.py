@@ -30,6 +30,8 @@ __all__ = [
     "spring_text",
     "binding_text",
     "check_words",
+    "FAULT_WORDS",
+    "fault_words",
     "phase_words",
     "bore_text",
 ]
@@ -50,6 +52,29 @@ CHECK_WORDS = {
     "bore": "bore inside the cam: working profile's smallest radius, limit the bore radius",
     "convexity": "convex profile: smallest radius of curvature, limit limits.min_radius",
 }
+
+
+#: A failed check in a few words (name: what is wrong), for the lines and titles of a failing cam.
+FAULT_WORDS = {
+    "jamming_rise": "pressure angle above its limit on the rise",
+    "jamming_return": "pressure angle above its limit on the return",
+    "undercut": "undercut",
+    "undercut_outer": "undercut of the groove's outer wall",
+    "min_curvature_radius": "radius of curvature too small",
+    "profile_polygon": "working profile crosses itself",
+    "outer_polygon": "groove's outer wall crosses itself",
+    "bore": "bore",
+    "convexity": "profile not convex (radius of curvature below limits.min_radius)",
+}
+
+
+def fault_words(name: str) -> str:
+    """What is wrong when the check ``name`` fails, in a few words (the name itself when it has none).
+
+    >>> fault_words("profile_polygon")
+    'working profile crosses itself'
+    """
+    return FAULT_WORDS.get(name, name.replace("_", " "))
 
 
 def check_words(name: str) -> str:
