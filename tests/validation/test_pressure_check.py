@@ -1,0 +1,144 @@
+"""The independent pressure check (:mod:`cams.pressure`) against a brute force that shares none of its formulas.
+
+The brute force inverts the mechanism on a million positions per phase: the
+roller centre's fixed path ``A(s)`` (:func:`.reference.path`, written from the
+frame definitions), the pitch curve ``P(phi) = Rot(-eps phi) (A(s(phi)) - O)``,
+its tangent by numerical differentiation of those positions
+(``numpy.gradient``, second order, over the dense cam angles), turned back to
+the fixed frame; the force is the outward normal on a rise (the tangent turned
+by ``eps * 90 deg``), the velocity direction a central difference of ``A``
+along the path. Every local maximum of that dense sampling is then refined by
+a bounded scalar search on :func:`.reference.pressure_angles` (a 4th-order
+finite difference of the same positions).
+
+The design has two nearly equal peaks in one rise (a rocker with a
+modified-cycloid rise: one peak after each acceleration pulse); a coarse scan
+lowers one of them more than the other, so a check that zooms only into the
+highest sample reports the lower peak.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.optimize import minimize_scalar
+
+from cams.pressure import check_pressure, check_pressure_many
+from laws.errors import InputError
+
+from .designs import BRUTE_DESIGNS, rocker
+from .reference import D_PATH, path, pressure_angles, spec_of
+
+#: The two peaks of the rise (u near 0.23 and 0.77) are equal for a centre near x = 64.8545, y = 51.1 (mm);
+#: below it the second is higher; at x = 64.86 the first is higher by about 7e-6 rad, at x = 64.87 by about 2e-5 rad.
+TWO_PEAKS = dict(swing=60.0, rise=("modified_cycloid", 120.0), limit=60.0)
+TWO_PEAK_CENTRES = [(64.84, 51.1), (64.85, 51.1), (64.86, 51.1), (64.87, 51.1)]
+
+
+def _turn(v: np.ndarray, a) -> np.ndarray:
+    c, s = np.cos(a), np.sin(a)
+    return np.stack([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]], axis=-1)
+
+
+def _dense_angles(design, centre, phase: int, u: np.ndarray) -> np.ndarray:
+    """Rise pressure angle (radians) on the dense positions ``u`` by differentiating the inverted positions."""
+    spec = spec_of(design)
+    p = spec.program.phases[phase]
+    assert p.kind == "rise"
+    phi = spec.program.starts[phase] + u * p.angle
+    s = spec.program.evaluate_phase(phase, u).s
+    pitch = _turn(path(spec, s) - np.asarray(centre, float), -spec.eps * phi)
+    tangent = _turn(np.gradient(pitch, phi, axis=0, edge_order=2), spec.eps * phi)
+    force = _turn(tangent, spec.eps * np.pi / 2)
+    d = D_PATH * (1.0 if spec.kind == "rocker" else spec.scale)
+    v = path(spec, s + d) - path(spec, s - d)
+    c = np.sum(force * v, axis=-1) / (np.linalg.norm(force, axis=-1) * np.linalg.norm(v, axis=-1))
+    return np.arccos(np.clip(c, -1.0, 1.0))
+
+
+def brute_force_rise(design, centre, phase: int = 0, n: int = 10**6) -> float:
+    """Largest rise pressure angle (radians): ``n + 1`` positions, every local maximum refined."""
+    u = np.linspace(0.0, 1.0, n + 1)
+    g = _dense_angles(design, centre, phase, u)
+    k = np.flatnonzero((g >= np.r_[-1.0, g[:-1]]) & (g >= np.r_[g[1:], -1.0]))
+    best = float(g.max())
+    for j in k[np.argsort(-g[k])][:10]:
+        r = minimize_scalar(lambda x: -float(pressure_angles(design, centre, phase, [x])[0]),
+                            bounds=(u[max(j - 1, 0)], u[min(j + 1, n)]), method="bounded",
+                            options={"xatol": 1e-13})
+        best = max(best, float(-r.fun), float(pressure_angles(design, centre, phase, [u[j]])[0]))
+    return best
+
+
+@pytest.fixture(scope="module")
+def two_peaks():
+    d = rocker(**TWO_PEAKS)
+    return d, {c: brute_force_rise(d, np.array(c)) for c in TWO_PEAK_CENTRES}
+
+
+def test_brute_force_sees_two_nearly_equal_peaks(two_peaks):
+    """The construction: two interior maxima, within 3e-5 rad of each other, the higher one changing side."""
+    d, _ = two_peaks
+    u = np.linspace(0.0, 1.0, 20001)
+    sides = []
+    for c in TWO_PEAK_CENTRES:
+        g = _dense_angles(d, c, 0, u)
+        first, second = g[:10001].max(), g[10000:].max()
+        assert abs(first - second) < 3e-5
+        sides.append(first > second)
+    assert not sides[0] and sides[-1]
+
+
+@pytest.mark.parametrize("grid", [5, 8, 13, 21, 34, 55, 2000])
+def test_check_finds_the_peak_the_sampling_lowered(two_peaks, grid):
+    """Every local maximum is refined: the check equals the brute force at every scan, however coarse."""
+    d, truth = two_peaks
+    for c, ref in truth.items():
+        got = check_pressure(d, np.array(c), grid=grid).rise
+        assert got == pytest.approx(ref, abs=1e-9), (c, grid, got - ref)
+
+
+def test_check_matches_brute_force_on_validation_designs():
+    """Rise maxima of the validation designs at a few centres, default scan, against the brute force."""
+    rng = np.random.default_rng(12)
+    for name in ("rocker force, opposite senses", "rocker form, cam cw, long arm"):
+        from cams.designfile import design_from_dict
+
+        d = design_from_dict(BRUTE_DESIGNS[name])
+        for c in rng.normal(size=(2, 2)) * d.scale:
+            got = check_pressure(d, c).rise
+            assert got == pytest.approx(brute_force_rise(d, c, n=200_000), abs=1e-9), (name, c)
+
+
+def test_many_equals_one_at_a_time():
+    """The batched check gives, per centre, the one-at-a-time report (values to rounding, the same verdicts)."""
+    rng = np.random.default_rng(7)
+    from cams.designfile import design_from_dict
+
+    for dd in BRUTE_DESIGNS.values():
+        d = design_from_dict(dd)
+        C = rng.normal(size=(40, 2)) * d.scale
+        many = check_pressure_many(d, C, grid=300)
+        assert len(many) == len(C)
+        for c, m in zip(C, many):
+            one = check_pressure(d, c, grid=300)
+            assert one.ok == m.ok
+            for a, b in ((one.rise, m.rise), (one.ret, m.ret)):
+                assert (a is None) == (b is None)
+                if a is not None:
+                    assert a == pytest.approx(b, abs=1e-12)
+    assert check_pressure_many(d, C[0]) == [check_pressure(d, C[0])]
+    assert check_pressure_many(d, np.empty((0, 2))) == []
+
+
+@pytest.mark.parametrize("bad", [[1.0], [[1.0, 2.0, 3.0]], [np.nan, 0.0], "x", [[[1.0, 2.0]]]])
+def test_bad_centres_are_refused(bad):
+    d = rocker()
+    with pytest.raises(InputError) as exc:
+        check_pressure_many(d, bad)
+    assert exc.value.field == "centre"
+
+
+def test_one_centre_only():
+    with pytest.raises(InputError):
+        check_pressure(rocker(), [[0.0, -60.0], [0.0, -70.0]])
