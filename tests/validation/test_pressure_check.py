@@ -27,7 +27,7 @@ from cams.pressure import check_pressure, check_pressure_many
 from laws.errors import InputError
 
 from .designs import BRUTE_DESIGNS, rocker
-from .reference import D_PATH, path, pressure_angles, spec_of
+from .reference import D_PATH, max_pressure, path, pressure_angles, spec_of
 
 #: The two peaks of the rise (u near 0.23 and 0.77) are equal for a centre near x = 64.8545, y = 51.1 (mm);
 #: below it the second is higher; at x = 64.86 the first is higher by about 7e-6 rad, at x = 64.87 by about 2e-5 rad.
@@ -96,6 +96,14 @@ def test_check_finds_the_peak_the_sampling_lowered(two_peaks, grid):
     for c, ref in truth.items():
         got = check_pressure(d, np.array(c), grid=grid).rise
         assert got == pytest.approx(ref, abs=1e-9), (c, grid, got - ref)
+
+
+@pytest.mark.parametrize("n", [8, 21, 55])
+def test_reference_max_pressure_refines_every_peak(two_peaks, n):
+    """The validation reference's own maximum (a coarse scan, scalar search) also keeps the lowered peak."""
+    d, truth = two_peaks
+    for c, ref in truth.items():
+        assert max_pressure(d, np.array(c), n=n)[0] == pytest.approx(ref, abs=1e-9), (c, n)
 
 
 def test_check_matches_brute_force_on_validation_designs():
