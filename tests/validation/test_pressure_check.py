@@ -28,7 +28,7 @@ from scipy.optimize import minimize_scalar
 from cams.pressure import check_pressure, check_pressure_many
 from laws.errors import InputError
 
-from .designs import BRUTE_DESIGNS, rocker
+from .designs import BRUTE_DESIGNS, rocker, rocker_dict
 from .reference import D_PATH, max_pressure, path, pressure_angles, spec_of
 
 #: Rockers whose rise has two peaks of the pressure angle, and centres (mm) across the one where they are equal.
@@ -115,6 +115,21 @@ def test_reference_max_pressure_refines_every_peak(two_peaks, n):
     d, truth = two_peaks
     for c, ref in truth.items():
         assert max_pressure(d, np.array(c), n=n)[0] == pytest.approx(ref, abs=1e-9), (c, n)
+
+
+def test_check_at_a_join_of_two_rises():
+    """Two rises meeting with a jump of velocity: the largest angle sits at a phase end (one side of the join)."""
+    from cams.designfile import design_from_dict
+
+    dd = rocker_dict(limit=60.0)
+    dd["motion"] = [{"phase": "rise", "law": "linear", "angle": 60.0, "height": 5.0},
+                    {"phase": "rise", "law": "linear", "angle": 40.0, "height": 10.0},
+                    {"phase": "dwell", "angle": 30.0}, {"phase": "return", "law": "cycloidal", "angle": 120.0},
+                    {"phase": "dwell"}]
+    d = design_from_dict(dd)
+    for c in [(60.0, -40.0), (-30.0, -90.0), (80.0, 20.0)]:
+        ref = max(brute_force_rise(d, np.array(c), phase, n=200_000) for phase in (0, 1))
+        assert check_pressure(d, np.array(c), grid=50).rise == pytest.approx(ref, abs=1e-9), c
 
 
 def test_check_matches_brute_force_on_validation_designs():
