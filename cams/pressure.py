@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from cams.design import CamDesign
-from laws.errors import InputError
+from laws.errors import InputError, show_value
 
 __all__ = ["pressure_angle", "contact_normal", "PressureReport", "check_pressure", "check_pressure_many"]
 
@@ -125,7 +125,7 @@ def _angles(design: CamDesign, i: int, centres: np.ndarray, u: np.ndarray) -> np
 
 
 def _phase_max(design: CamDesign, centres: np.ndarray, i: int, grid: int) -> tuple[np.ndarray, np.ndarray]:
-    """Largest pressure angle in phase ``i`` for each centre, and its normalized position.
+    """Largest pressure angle in phase ``i`` for each of the centres (shape (k, 2)), and its normalized position.
 
     Every local maximum of the sampled angle (the phase ends included: the
     angle may jump at a join between phases, where each side is its own
@@ -167,9 +167,12 @@ def _as_centres(centres) -> np.ndarray:
     try:
         C = np.asarray(centres, dtype=float)
     except (TypeError, ValueError):
-        raise InputError("centre", f"must be numbers [x, y] or an array of shape (k, 2), got {centres!r}") from None
-    if C.ndim not in (1, 2) or C.shape[-1] != 2 or not np.all(np.isfinite(C)):
-        raise InputError("centre", f"must be finite [x, y] or an array of shape (k, 2), got shape {C.shape}")
+        raise InputError("centre", f"must be numbers [x, y] or an array of shape (k, 2), "
+                                   f"got a {type(centres).__name__} that is not") from None
+    if C.ndim not in (1, 2) or C.shape[-1] != 2:
+        raise InputError("centre", f"must be [x, y] or an array of shape (k, 2), got shape {C.shape}")
+    if not np.all(np.isfinite(C)):
+        raise InputError("centre", "must be finite numbers, got infinity or NaN")
     return C.reshape(-1, 2)
 
 
@@ -189,16 +192,18 @@ def check_pressure_many(design: CamDesign, centres: np.ndarray, *, grid: int = 2
     Returns
     -------
     list of PressureReport
-        One per centre, in order; each equals ``check_pressure(design, centre)``.
+        One per centre, in order; each is ``check_pressure(design, centre)`` to
+        rounding (the angles to a few units in the last place; the cam angle
+        of a flat maximum to what its flatness allows).
 
     Raises
     ------
     InputError
-        ``centres`` is not a finite array of shape (k, 2) or (2,), or ``grid`` is below 2.
+        ``centres`` is not a finite array of shape (k, 2) or (2,), or ``grid`` is not a positive integer.
     """
     C = _as_centres(centres)
-    if isinstance(grid, bool) or not isinstance(grid, (int, np.integer)) or grid < 2:
-        raise InputError("grid", f"must be an integer >= 2, got {grid!r}")
+    if isinstance(grid, bool) or not isinstance(grid, (int, np.integer)) or grid < 1:
+        raise InputError("grid", f"must be a positive integer, got {show_value(grid)}")
     k = len(C)
     prog = design.program
     rise, rise_at = np.full(k, np.nan), np.full(k, np.nan)
