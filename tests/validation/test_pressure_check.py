@@ -176,3 +176,10 @@ def test_bad_centres_are_refused(bad):
 def test_one_centre_only():
     with pytest.raises(InputError):
         check_pressure(rocker(), [[0.0, -60.0], [0.0, -70.0]])
+
+
+@pytest.mark.parametrize("grid", [0, -3, 2.5, True])
+def test_bad_grid_is_refused(grid):
+    with pytest.raises(InputError) as exc:
+        check_pressure(rocker(), [0.0, -60.0], grid=grid)
+    assert exc.value.field == "grid"
