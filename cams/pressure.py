@@ -19,8 +19,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from cams.design import CamDesign
+from laws.errors import InputError, show_value
 
-__all__ = ["pressure_angle", "contact_normal", "PressureReport", "check_pressure"]
+__all__ = ["pressure_angle", "contact_normal", "PressureReport", "check_pressure", "check_pressure_many"]
 
 
 def contact_normal(design: CamDesign, centre: np.ndarray, s: np.ndarray, ds: np.ndarray):
@@ -102,32 +103,146 @@ class PressureReport:
     ok: bool
 
 
-def _phase_max(design: CamDesign, centre, i: int, grid: int) -> tuple[float, float]:
+#: Points of every bracket at each zoom step (the bracket shrinks to two of
+#: its ``ZOOM_POINTS - 1`` intervals: tenfold).
+ZOOM_POINTS = 21
+#: Zoom steps: the bracket, two sampling steps wide, ends 1e-10 times as wide.
+ZOOM_STEPS = 10
+#: Sampled positions (centres times positions) evaluated at once.
+CHUNK = 200_000
+
+
+def _angles(design: CamDesign, i: int, centres: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """Pressure angle (radians) in phase ``i``; -1 where undefined (below every angle).
+
+    ``centres`` has shape ``u.shape + (2,)`` (one centre per position) or
+    broadcasts to it.
+    """
+    m = design.program.evaluate_phase(i, u.ravel())
+    n, e, _ = contact_normal(design, centres, m.s.reshape(u.shape), m.ds.reshape(u.shape))
+    g = np.arccos(np.clip(np.sum(n * e, axis=-1), -1.0, 1.0))
+    return np.nan_to_num(g, nan=-1.0)
+
+
+def _phase_max(design: CamDesign, centres: np.ndarray, i: int, grid: int) -> tuple[np.ndarray, np.ndarray]:
+    """Largest pressure angle in phase ``i`` for each of the centres (shape (k, 2)), and its normalized position.
+
+    Every local maximum of the sampled angle (the phase ends included: the
+    angle may jump at a join between phases, where each side is its own
+    one-sided limit) is refined, all at once, by zooming into its bracket of
+    two sampling steps; the largest refined value wins. Refining only the
+    highest sample would miss a second peak that the sampling lowered.
+
+    Returns
+    -------
+    g, u : ndarray, shape (k,)
+        Radians (-1 where the angle is undefined throughout) and positions in [0, 1].
+    """
     u = np.linspace(0.0, 1.0, grid + 1)
-    g = pressure_angle(design, centre, i, u)
-    if np.all(np.isnan(g)):
-        return float("nan"), float(design.program.starts[i])
-    k = int(np.nanargmax(g))
-    best_u, best = u[k], g[k]
-    lo, hi = u[max(k - 1, 0)], u[min(k + 1, grid)]
-    # zoom in on the bracket: 21 points a step, the bracket shrinks tenfold each time
-    for _ in range(6):
-        x = np.linspace(lo, hi, 21)
-        gx = np.nan_to_num(pressure_angle(design, centre, i, x), nan=-1.0)
-        j = int(np.argmax(gx))
-        if gx[j] > best:
-            best_u, best = float(x[j]), float(gx[j])
-        lo, hi = x[max(j - 1, 0)], x[min(j + 1, 20)]
-    phi = design.program.starts[i] + best_u * design.program.phases[i].angle
-    return float(best), float(phi)
+    g = _angles(design, i, centres[:, None, :], np.broadcast_to(u, (len(centres), grid + 1)))
+    low = np.full((len(centres), 1), -np.inf)
+    left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
+    c, k = np.nonzero((g >= left) & (g >= right) & (g >= 0.0))
+    best_g, best_u = g[c, k], u[k]
+    lo, hi = u[np.maximum(k - 1, 0)], u[np.minimum(k + 1, grid)]
+    t = np.linspace(0.0, 1.0, ZOOM_POINTS)
+    rows = np.arange(len(c))
+    for _ in range(ZOOM_STEPS):
+        x = lo[:, None] + (hi - lo)[:, None] * t
+        gx = _angles(design, i, centres[c][:, None, :], x)
+        j = np.argmax(gx, axis=1)
+        better = gx[rows, j] > best_g
+        best_g = np.where(better, gx[rows, j], best_g)
+        best_u = np.where(better, x[rows, j], best_u)
+        lo, hi = x[rows, np.maximum(j - 1, 0)], x[rows, np.minimum(j + 1, ZOOM_POINTS - 1)]
+    # the best peak of each centre: sort by (centre, value), keep the last of each centre
+    out_g, out_u = np.full(len(centres), -1.0), np.zeros(len(centres))
+    order = np.lexsort((best_g, c))
+    out_g[c[order]], out_u[c[order]] = best_g[order], best_u[order]
+    return out_g, out_u
+
+
+def _as_centres(centres) -> np.ndarray:
+    """Centres as a finite float array of shape (k, 2), else :class:`InputError`."""
+    try:
+        C = np.asarray(centres, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError("centre", f"must be numbers [x, y] or an array of shape (k, 2), "
+                                   f"got a {type(centres).__name__} that is not") from None
+    if C.ndim not in (1, 2) or C.shape[-1] != 2:
+        raise InputError("centre", f"must be [x, y] or an array of shape (k, 2), got shape {C.shape}")
+    if not np.all(np.isfinite(C)):
+        raise InputError("centre", "must be finite numbers, got infinity or NaN")
+    return C.reshape(-1, 2)
+
+
+def check_pressure_many(design: CamDesign, centres: np.ndarray, *, grid: int = 2000,
+                        tol: float = 1e-7) -> list[PressureReport]:
+    """:func:`check_pressure` for many centres at once, vectorized.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centres : array_like, shape (k, 2) or (2,)
+        Cam centres O in the follower's fixed frame (:mod:`cams.follower`),
+        length unit.
+    grid, tol
+        As in :func:`check_pressure`.
+
+    Returns
+    -------
+    list of PressureReport
+        One per centre, in order; each is ``check_pressure(design, centre)`` to
+        rounding (the angles to a few units in the last place; the cam angle
+        of a flat maximum to what its flatness allows).
+
+    Raises
+    ------
+    InputError
+        ``centres`` is not a finite array of shape (k, 2) or (2,), or ``grid`` is not a positive integer.
+    """
+    C = _as_centres(centres)
+    if isinstance(grid, bool) or not isinstance(grid, (int, np.integer)) or grid < 1:
+        raise InputError("grid", f"must be a positive integer, got {show_value(grid)}")
+    k = len(C)
+    prog = design.program
+    rise, rise_at = np.full(k, np.nan), np.full(k, np.nan)
+    ret, ret_at = np.full(k, np.nan), np.full(k, np.nan)
+    block = max(1, CHUNK // (grid + 1))
+    for i, p in enumerate(prog.phases):
+        if p.kind == "dwell":
+            continue
+        g, u = np.concatenate([np.stack(_phase_max(design, C[a:a + block], i, grid), axis=1)
+                               for a in range(0, k, block)] or [np.empty((0, 2))]).T
+        g = np.where(g >= 0.0, g, np.nan)
+        at = prog.starts[i] + u * p.angle
+        worst, where = (rise, rise_at) if p.kind == "rise" else (ret, ret_at)
+        higher = g > np.where(np.isnan(worst), -np.inf, worst)
+        worst[higher], where[higher] = g[higher], at[higher]
+    lim = design.limits
+    form = lim.closure == "form"
+    out = []
+    for a in range(k):
+        r = None if np.isnan(rise[a]) else float(rise[a])
+        b = None if np.isnan(ret[a]) else float(ret[a])
+        ok = r is None or r <= lim.pressure_angle + tol
+        if form and b is not None:
+            ok = ok and b <= lim.return_limit + tol
+        out.append(PressureReport(r, None if r is None else float(rise_at[a]), b,
+                                  None if b is None else float(ret_at[a]), lim.pressure_angle,
+                                  lim.return_limit if form else None, bool(ok)))
+    return out
 
 
 def check_pressure(design: CamDesign, centre: np.ndarray, *, grid: int = 2000, tol: float = 1e-7) -> PressureReport:
     """Pressure angle over the whole cycle for the centre ``centre``.
 
-    Every rise and return phase is sampled on ``grid + 1`` positions and the
-    largest value refined by zooming into its bracket (tenfold a step). ``ok`` is True when the
-    constrained phases stay within their limits plus ``tol`` radians.
+    Every rise and return phase is sampled on ``grid + 1`` positions and every
+    local maximum of the samples (phase ends included) refined by zooming
+    into its bracket of two steps (tenfold a step, :data:`ZOOM_STEPS` steps);
+    the largest wins. ``ok`` is True when the constrained phases stay within
+    their limits plus ``tol`` radians. :func:`check_pressure_many` does the
+    same for many centres at once.
 
     Parameters
     ----------
@@ -150,21 +265,7 @@ def check_pressure(design: CamDesign, centre: np.ndarray, *, grid: int = 2000, t
         throughout. The return is checked against its limit only for form
         closure (``return_limit`` is None otherwise).
     """
-    rise = ret = None
-    rise_at = ret_at = None
-    for i, p in enumerate(design.program.phases):
-        if p.kind == "dwell":
-            continue
-        g, at = _phase_max(design, centre, i, grid)
-        if np.isnan(g):
-            continue
-        if p.kind == "rise" and (rise is None or g > rise):
-            rise, rise_at = g, at
-        if p.kind == "return" and (ret is None or g > ret):
-            ret, ret_at = g, at
-    lim = design.limits
-    ok = rise is None or rise <= lim.pressure_angle + tol
-    if lim.closure == "form" and ret is not None:
-        ok = ok and ret <= lim.return_limit + tol
-    return PressureReport(rise, rise_at, ret, ret_at, lim.pressure_angle,
-                          lim.return_limit if lim.closure == "form" else None, bool(ok))
+    C = _as_centres(centre)
+    if len(C) != 1:
+        raise InputError("centre", f"must be one point [x, y], got shape {np.shape(centre)}")
+    return check_pressure_many(design, C, grid=grid, tol=tol)[0]

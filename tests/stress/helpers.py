@@ -30,7 +30,7 @@ import numpy as np
 import pytest
 
 from cams.designfile import design_from_dict
-from cams.pressure import check_pressure
+from cams.pressure import check_pressure, check_pressure_many
 from laws.errors import CamsError, InfeasibleError, InputError
 from optimize.solve import solve
 from tests.conftest import rocker_dict as base_rocker_dict
@@ -271,35 +271,6 @@ def _coarse_excess(design, centres: np.ndarray, grid: int = 400) -> np.ndarray:
     return worst
 
 
-def _refined_excess(design, centre: np.ndarray, grid: int = 2000, peaks: int = 8) -> float:
-    """Largest pressure angle minus its limit, every local maximum of the sampled cycle zoomed in (radians).
-
-    :func:`cams.pressure.pressure_angle` on ``grid + 1`` positions per
-    constrained phase, then each of the ``peaks`` highest local maxima is
-    zoomed tenfold six times (21 points a bracket); a lone global maximum
-    would miss a second peak that the sampling lowered.
-    """
-    from cams.pressure import pressure_angle
-
-    worst = -np.inf
-    u = np.linspace(0.0, 1.0, grid + 1)
-    for i, limit in design.constrained_phases():
-        g = np.nan_to_num(pressure_angle(design, centre, i, u), nan=-1.0)
-        local = np.flatnonzero((g >= np.roll(g, 1)) & (g >= np.roll(g, -1)))
-        local = np.union1d(local, [0, grid])
-        for k in local[np.argsort(-g[local])][:peaks]:
-            lo, hi = u[max(k - 1, 0)], u[min(k + 1, grid)]
-            best = g[k]
-            for _ in range(6):
-                x = np.linspace(lo, hi, 21)
-                gx = np.nan_to_num(pressure_angle(design, centre, i, x), nan=-1.0)
-                j = int(np.argmax(gx))
-                best = max(best, gx[j])
-                lo, hi = x[max(j - 1, 0)], x[min(j + 1, 20)]
-            worst = max(worst, best - limit)
-    return float(worst)
-
-
 def assert_minimal(result, shrink: float = 1e-6) -> None:
     """No admissible centre at ``R0 (1 - shrink)`` from the roller's start point (minimum R0 answers).
 
@@ -307,9 +278,9 @@ def assert_minimal(result, shrink: float = 1e-6) -> None:
     of the answer's direction. Each is judged by the pressure angle over the
     cycle by kinematic inversion (:mod:`cams.pressure`, no formula of the
     zone): first sampled (:func:`_coarse_excess`), then the few that sampling
-    cannot reject with every local maximum zoomed in (:func:`_refined_excess`),
-    with no tolerance. Any that passes is a smaller admissible cam: the answer
-    was not minimal.
+    cannot reject by :func:`cams.pressure.check_pressure_many` (every local
+    maximum refined), all at once, with no tolerance. Any that passes is a
+    smaller admissible cam: the answer was not minimal.
     """
     design = result.design
     A0 = design.follower.position(0.0)
@@ -318,8 +289,8 @@ def assert_minimal(result, shrink: float = 1e-6) -> None:
     a0 = math.atan2(d[1], d[0])
     ang = np.concatenate([np.linspace(0, 2 * np.pi, 360, endpoint=False), a0 + np.radians(np.linspace(-1, 1, 161))])
     pts = A0 + rho * np.stack([np.cos(ang), np.sin(ang)], axis=1)
-    excess = _coarse_excess(design, pts)
-    for p in pts[excess <= 0]:
-        assert _refined_excess(design, p) > 0, (
+    maybe = pts[_coarse_excess(design, pts) <= 0]
+    for p, rep in zip(maybe, check_pressure_many(design, maybe, tol=0.0)):
+        assert not rep.ok, (
             f"a centre at R0 (1 - {shrink:g}) = {rho!r} is admissible: {p.tolist()} "
             f"(answer R0 = {result.R0!r}, error bound {result.error_bound!r})")

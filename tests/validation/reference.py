@@ -200,11 +200,13 @@ def pressure_angles(design, centre, phase: int, u) -> np.ndarray:
     return np.arccos(np.clip(c, -1.0, 1.0))
 
 
-def max_pressure(design, centre, *, n: int = 2000, all_phases: bool = False) -> dict[int, float]:
+def max_pressure(design, centre, *, n: int = 2000, all_phases: bool = False, peaks: int = 8) -> dict[int, float]:
     """Largest reference pressure angle of every limited phase: {phase: radians}.
 
-    ``n + 1`` evenly spaced positions per phase, the largest refined by a
-    bounded scalar search between its neighbours. ``all_phases``: every rise
+    ``n + 1`` evenly spaced positions per phase; each of the ``peaks`` highest
+    local maxima (phase ends included) refined by a bounded scalar search
+    between its neighbours (the highest sample alone would miss a second peak
+    that the sampling lowered). ``all_phases``: every rise
     and return, limited or not (a force-closed return: the cam's outward
     normal against the roller's returning velocity, the same angle).
     """
@@ -217,12 +219,14 @@ def max_pressure(design, centre, *, n: int = 2000, all_phases: bool = False) -> 
         phases = [i for i, _, _ in spec.constrained()]
     for i in phases:
         g = pressure_angles(design, centre, i, u)
-        k = int(np.argmax(g))
-        best = float(g[k])
-        lo, hi = u[max(k - 1, 0)], u[min(k + 1, n)]
-        r = minimize_scalar(lambda x: -float(pressure_angles(design, centre, i, [x])[0]),
-                            bounds=(lo, hi), method="bounded", options={"xatol": 1e-12})
-        out[i] = max(best, float(-r.fun))
+        best = float(np.max(g))
+        local = np.flatnonzero((g >= np.r_[-1.0, g[:-1]]) & (g >= np.r_[g[1:], -1.0]))
+        for k in local[np.argsort(-g[local])][:peaks]:
+            lo, hi = u[max(k - 1, 0)], u[min(k + 1, n)]
+            r = minimize_scalar(lambda x: -float(pressure_angles(design, centre, i, [x])[0]),
+                                bounds=(lo, hi), method="bounded", options={"xatol": 1e-12})
+            best = max(best, float(-r.fun))
+        out[i] = best
     return out
 
 
