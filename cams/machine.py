@@ -37,6 +37,7 @@ from math import gcd
 import numpy as np
 from scipy.optimize import brentq
 
+from cams.cam import Cam
 from cams.design import CamDesign
 from cams.follower import Rocker
 from cams.linkage.analysis import WORKING, Machine, StrokeReport, analyse
@@ -630,7 +631,12 @@ class MachineResult:
 
     ``bore``: with ``[cam] bore_radius``, the profile check of the bore:
     ``{"bore_radius", "min_work_radius", "clear"}`` (lengths in the file's
-    unit; ``clear``: the working profile's smallest radius exceeds the bore's).
+    unit; ``clear``: the working profile's smallest radius exceeds the bore's;
+    None when no profile could be built).
+
+    ``assessment``: the feed cam judged by the rule every command shares
+    (:func:`cams.assess.assess_cam`): verified, buildable (a working profile,
+    no undercut, a valid closed profile, the bore, ``[dynamics]``) and certified.
     """
 
     spec: MachineSpec
@@ -640,6 +646,7 @@ class MachineResult:
     solve: object  # optimize.solve.SolveResult
     diagram: CycleDiagram
     bore: dict | None = None
+    assessment: object = None  # cams.assess.Assessment
 
     @property
     def overlap(self) -> bool:
@@ -666,10 +673,9 @@ class MachineResult:
 
     @property
     def ok(self) -> bool:
-        """No overlap, the cam's pressure angle verified, a cam to make (R0 above the roller radius) and the bore
-        (if given) clear of the profile."""
-        return (not self.overlap and bool(self.solve.verified) and self.solve.buildable
-                and (self.bore is None or bool(self.bore["clear"])))
+        """No overlap and a usable feed cam (:attr:`cams.assess.Assessment.usable`: certified, verified and
+        buildable, the bore included), as every other command judges a cam."""
+        return not self.overlap and bool(self.assessment.usable)
 
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the file's unit, angles in degrees."""
@@ -685,6 +691,7 @@ class MachineResult:
             "drive": self.spec.drive.to_dict(),
             "timing": {**self.timing.to_dict(), "margin_deg": _deg(self.spec.timing.margin), "placement": self.spec.timing.placement},
             "cam": self.solve.to_dict(),
+            **self.assessment.to_dict(),
             "overlap": self.overlap,
             "bore": self.bore,
             "notes": self.notes,
@@ -715,15 +722,18 @@ def design_machine(spec: MachineSpec, *, method: str | None = None) -> MachineRe
     res = solve(design, objective=design.extra.get("objective", "R0"))
     unit = "rad" if isinstance(spec.cam.follower, Rocker) else spec.units
     dia = cycle_diagram(spec.linkage, win, spec.cutting, spec.cam.program, tm, follower_unit=unit)
-    return MachineResult(spec, win.stroke, win, tm, res, dia, _bore(design, res.centre))
+    cam = Cam(design)
+    cam.__dict__["solution"] = res  # the cam just sized: assessed, not solved again
+    assessment = cam.assessment  # one rule for every command (cams.assess): verified, buildable, certified
+    return MachineResult(spec, win.stroke, win, tm, res, dia, _bore(cam), assessment)
 
 
-def _bore(design: CamDesign, centre) -> dict | None:
-    """The profile check of ``[cam] bore_radius`` (None without one): the working profile's smallest radius vs the bore."""
-    from cams.profile import build_profile, profile_options
-
-    opts = profile_options(design)
-    if opts.bore_radius is None:
+def _bore(cam: Cam) -> dict | None:
+    """The profile check of ``[cam] bore_radius`` (None without one, or without a profile): the working profile's
+    smallest radius vs the bore."""
+    bore = cam.options.bore_radius
+    checks = cam.__dict__.get("checks")  # None: a knife edge in a groove, or no profile at the tolerance
+    if bore is None or checks is None:
         return None
-    rmin = build_profile(design, centre, tolerance=opts.tolerance).min_work_radius
-    return {"bore_radius": float(opts.bore_radius), "min_work_radius": float(rmin), "clear": bool(rmin > opts.bore_radius)}
+    rmin = cam.profile.min_work_radius
+    return {"bore_radius": float(bore), "min_work_radius": float(rmin), "clear": bool(rmin > bore)}

@@ -17,7 +17,30 @@ from cams.design import CamDesign
 from optimize.planar import EPS
 from optimize.zone import max_violation, sample_wedges
 
-__all__ = ["admissible_arcs", "best_on_circle", "violation_function", "crossing_seed"]
+__all__ = ["admissible_arcs", "best_on_circle", "violation_function", "crossing_seed", "round_off",
+           "admissible_at_distance"]
+
+
+def round_off(design: CamDesign, magnitude: float) -> float:
+    """Rounding allowed on the violation ``G(O)`` of a centre whose coordinates are of size ``magnitude``.
+
+    ``G`` compares ``n . O`` with the zone lines' offsets, of the order of
+    ``|O|`` near the lines that bind and of the design's size
+    (``design.scale``) otherwise; the tolerance follows both, never a fixed
+    fraction of the follower's size alone.
+
+    Parameters
+    ----------
+    design : CamDesign
+    magnitude : float
+        Size of the coordinates compared (length unit), e.g. ``|O|_1``.
+
+    Returns
+    -------
+    float
+        Length unit.
+    """
+    return EPS * (float(magnitude) + design.scale)
 
 
 def violation_function(design: CamDesign, samples: int | None) -> Callable[[np.ndarray], float]:
@@ -95,24 +118,102 @@ def admissible_arcs(
     G = violation_function(design, samples)
     at = lambda a: G(centre + radius * np.array([np.cos(a), np.sin(a)]))  # noqa: E731
     # a seed is admissible up to the rounding of the numbers compared (not a fraction of the follower's size)
-    tol = EPS * (float(np.abs(centre).sum()) + 2.0 * radius + design.scale)
+    tol = round_off(design, float(np.abs(centre).sum()) + 2.0 * radius)
     for s in seeds:
         covered = any((s - a) % (2 * np.pi) <= (b - a) + 1e-15 for a, b in arcs)
         if covered or at(s) > tol:
             continue
-        ends = []
+        ends, reach = [], []
         for sign in (-1.0, 1.0):
-            d = 1e-12
-            inner = s
-            while d < np.pi and at(s + sign * d) <= 0:
-                inner = s + sign * d
-                d *= 4.0
-            if d >= np.pi:
+            # walk away from the seed in growing steps until a point outside: the arc's end lies in the last step
+            d, inner, outer = 1e-12, 0.0, None
+            while outer is None and inner < 2 * np.pi:
+                if at(s + sign * d) > 0:
+                    outer = d
+                else:
+                    inner, d = d, min(4.0 * d, 2 * np.pi)
+            if outer is None:  # admissible all the way round
                 return [(0.0, 2 * np.pi)]
-            lo, hi = sorted((inner, s + sign * d))
-            ends.append(_refine(at, lo, hi) if at(lo) * at(hi) <= 0 else inner)
+            lo, hi = sorted((s + sign * inner, s + sign * outer))
+            ends.append(_refine(at, lo, hi) if at(lo) * at(hi) <= 0 else s + sign * inner)
+            reach.append(inner)
+        if sum(reach) >= 2 * np.pi:
+            return [(0.0, 2 * np.pi)]
         arcs.append((ends[0], ends[1]))
     return arcs
+
+
+def admissible_at_distance(
+    design: CamDesign,
+    centre: np.ndarray,
+    radius: float,
+    target: np.ndarray,
+    distance: float,
+    *,
+    samples: int | None = None,
+    seeds: tuple[float, ...] = (),
+) -> list[np.ndarray]:
+    """Admissible points of the circle (``centre``, ``radius``) at ``distance`` from ``target``.
+
+    The crossings of the two circles, each kept when its angle lies on an
+    admissible arc (:func:`admissible_arcs`, whose ends are refined on the
+    zone): no tolerance on the violation. The angle's own round-off follows
+    the conditioning of the crossing (two nearly concentric circles cross at
+    an angle known only to ``eps * radius / |centre - target|``); a crossing
+    within it of an arc's end is moved onto that end.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Centre of the circle, the follower's fixed frame, length unit (the
+        rocker pivot for a fixed L).
+    radius : float
+        Its radius, length unit.
+    target : array_like, shape (2,)
+        The point the distance is measured from, same frame (the roller
+        centre A0 for R0).
+    distance : float
+        Length unit.
+    samples : int or None, optional
+        As :func:`admissible_arcs`.
+    seeds : tuple of float, optional
+        Admissible angles on the circle, radians (see :func:`admissible_arcs`).
+
+    Returns
+    -------
+    list of ndarray, shape (2,)
+        Zero, one or two admissible points, same frame.
+    """
+    centre, target = np.asarray(centre, float), np.asarray(target, float)
+    v = target - centre
+    d = float(np.linalg.norm(v))
+    if not d > 0:
+        return []
+    eps = np.finfo(float).eps
+    # |centre + radius u - target| = distance  <=>  cos(t - base) = k; (r - D)(r + D) keeps the digits of r ~ D
+    k = ((radius - distance) * (radius + distance) + d * d) / (2.0 * radius * d)
+    dk = 8 * eps * (radius * radius + distance * distance + d * d) / (2.0 * radius * d)
+    if abs(k) > 1 + dk:
+        return []
+    k = min(max(k, -1.0), 1.0)
+    w = float(np.arccos(k))
+    dt = dk / max(np.sin(w), np.sqrt(dk)) + 8 * eps * 2 * np.pi  # the angle's round-off
+    base = float(np.arctan2(v[1], v[0]))
+    arcs = admissible_arcs(design, centre, radius, samples=samples, seeds=seeds)
+    out = []
+    for t in {base + w, base - w}:
+        for a, b in arcs:
+            x = a + (t - a) % (2 * np.pi)  # in [a, a + 2 pi)
+            if x <= b + dt:
+                x = min(x, b)
+            elif x >= a + 2 * np.pi - dt:
+                x = a
+            else:
+                continue
+            out.append(centre + radius * np.array([np.cos(x), np.sin(x)]))
+            break
+    return out
 
 
 def crossing_seed(centre: np.ndarray, radius: float, inner: np.ndarray, outer: np.ndarray) -> float | None:

@@ -430,7 +430,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
 
     L_fixed = lim.centre_distance
     floor = lim.min_base_radius
-    from optimize.circle import best_on_circle, violation_function
+    from optimize.circle import admissible_at_distance, best_on_circle, round_off, violation_function
 
     G = violation_function(design, samples)
     sol: CentreSolution | None = None
@@ -444,7 +444,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
             mode = "floor_R0"
             if extra is not None:
                 cands = [np.array([_offset_x(f.offset), sg * np.sqrt(max(floor**2 - f.offset**2, 0.0))]) for sg in (1, -1)]
-                cands = [p for p in cands if floor >= abs(f.offset) and G(p) <= 1e-9 * design.scale]
+                cands = [p for p in cands if floor >= abs(f.offset) and G(p) <= round_off(design, np.abs(p).sum())]
                 if not cands:
                     raise InfeasibleError("limits.min_base_radius", f"R0 = {floor:g} with offset {f.offset:g} is not admissible")
                 centre = min(cands, key=G)
@@ -475,16 +475,11 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
         if floor is not None and least >= floor:
             notes.append(f"constructive floor {floor:g} mm below the least R0 at this L ({least:.6g} mm): not binding")
         elif floor is not None:
-            # R0 raised to the floor: the crossings of the circles |O - pivot| = L and |O - A0| = floor
-            d = np.linalg.norm(A0 - f.pivot)
-            a = (L_fixed**2 - floor**2 + d**2) / (2 * d)
-            hh = L_fixed**2 - a**2
-            cands = []
-            if hh >= 0:
-                base = f.pivot + a * (A0 - f.pivot) / d
-                perp = np.array([-(A0 - f.pivot)[1], (A0 - f.pivot)[0]]) / d
-                cands = [base + sg * np.sqrt(hh) * perp for sg in (1, -1)]
-            cands = [p for p in cands if G(p) <= 1e-9 * design.scale]
+            # R0 raised to the floor: the crossings of the circles |O - pivot| = L and |O - A0| = floor that lie
+            # on the admissible arcs of the L circle (the least-R0 centre's arc found again from its angle)
+            rel = centre - f.pivot
+            cands = admissible_at_distance(design, f.pivot, L_fixed, A0, floor, samples=samples,
+                                           seeds=(float(np.arctan2(rel[1], rel[0]) % (2 * np.pi)),))
             if not cands:
                 raise InfeasibleError("limits.min_base_radius",
                                       f"R0 = {floor:g} is not admissible at L = {L_fixed:g} (the least R0 there is "

@@ -406,7 +406,6 @@ def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, H, iters: int) -> Peaks:
         x = a + (b - a) * tau
         j = jk // 2
         cuts = np.searchsorted(j, np.arange(len(t.phases) + 1)).tolist()  # candidates come sorted by phase
-        tol_v = 1e-15 * t.scale
         mo = np.empty((4, len(a)))
         for _ in range(iters):
             for jj in range(len(t.phases)):
@@ -430,7 +429,8 @@ def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, H, iters: int) -> Peaks:
             np.copyto(b, x, where=~up)
             concave = d2 < 0
             dphi = -d1 / np.where(concave, d2, -1.0)
-            active &= ~(concave & (0.5 * d1 * dphi <= tol_v))
+            # done when a Newton step would gain less than the round-off of the values it compares (|n.O|, |offset|)
+            active &= ~(concave & (0.5 * d1 * dphi <= 1e-15 * (np.abs(p) + np.abs(off))))
             if not active.any():
                 break
             xn = x + dphi / ang

@@ -41,6 +41,8 @@ def _inside(a_deg: float, window, tol: float = 0.6) -> bool:
 @pytest.fixture(params=["ccw", "cw"])
 def machine_file(tmp_path, request):
     text = SLOTTING.read_text(encoding="utf-8").replace('crank_rotation = "ccw"', f'crank_rotation = "{request.param}"', 1)
+    if request.param == "cw":  # the cam turns the other way: the follower mirrored keeps the example's cam (no undercut)
+        text = text.replace('rise_direction = "cw"', 'rise_direction = "ccw"', 1)
     f = tmp_path / f"slotting_{request.param}.toml"
     f.write_text(text + RESISTANCE, encoding="utf-8")
     return f

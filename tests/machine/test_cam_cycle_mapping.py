@@ -77,6 +77,16 @@ _PUMP_SHORT_PROGRAM = ('angle = 20\n[[motion]]\nphase = "dwell"\nangle = 5\n[[mo
                        'law = "cycloidal"\nangle = 20')
 
 
+def _mirrored(text: str) -> str:
+    """The pump's follower swinging the other way: the mirror image of the example's cam.
+
+    With the cam turning with the crank (clockwise: shaft, or an internal mesh) the example's follower
+    (rise clockwise, roller 12 mm) undercuts, so ``cams machine`` rightly fails; the mirror image of the
+    example's cam (which turns counter-clockwise) is the same buildable cam.
+    """
+    return _replace(text, 'rise_direction = "cw"', 'rise_direction = "ccw"')
+
+
 def _variants() -> dict[str, str]:
     """Machine files of the cases by name (text)."""
     pump = PUMP.read_text(encoding="utf-8")
@@ -85,12 +95,12 @@ def _variants() -> dict[str, str]:
         "slotting-shaft": SLOTTING.read_text(encoding="utf-8"),
         "slotting-shaft-forces": SLOTTING_FORCES.read_text(encoding="utf-8"),
         "pump-gears-external": pump,
-        "pump-gears-internal": _replace(pump, 'mesh = "external"', 'mesh = "internal"'),
-        "pump-shaft": _replace(pump, _PUMP_GEARS, 'kind = "shaft"'),
+        "pump-gears-internal": _mirrored(_replace(pump, 'mesh = "external"', 'mesh = "internal"')),
+        "pump-shaft": _mirrored(_replace(pump, _PUMP_GEARS, 'kind = "shaft"')),
         # ratio 1/3: the pattern repeats every 3 crank turns (a 25 degree rise = 75 crank degrees fits the window)
         "pump-gears-external-1to3": _replace(_replace(pump, "z_cam = 40", "z_cam = 60"), "angle = 40", "angle = 25"),
         "pump-gears-external-short": short,
-        "pump-gears-internal-short": _replace(short, 'mesh = "external"', 'mesh = "internal"'),
+        "pump-gears-internal-short": _mirrored(_replace(short, 'mesh = "external"', 'mesh = "internal"')),
     }
 
 
