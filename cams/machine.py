@@ -640,7 +640,6 @@ class MachineResult:
     solve: object  # optimize.solve.SolveResult
     diagram: CycleDiagram
     bore: dict | None = None
-    assessment: object = None  # cams.assess.Assessment of the cam: the rule every command applies
 
     @property
     def overlap(self) -> bool:
@@ -667,10 +666,10 @@ class MachineResult:
 
     @property
     def ok(self) -> bool:
-        """No overlap, and the cam usable by the rule of every command (:mod:`cams.assess`: verified, and
-        buildable: a working profile, no undercut, a valid closed profile, the bore clear, ``[dynamics]``)."""
-        usable = self.solve.verified and self.solve.buildable if self.assessment is None else self.assessment.usable
-        return (not self.overlap and bool(usable) and (self.bore is None or bool(self.bore["clear"])))
+        """No overlap, the cam's pressure angle verified, a cam to make (R0 above the roller radius) and the bore
+        (if given) clear of the profile."""
+        return (not self.overlap and bool(self.solve.verified) and self.solve.buildable
+                and (self.bore is None or bool(self.bore["clear"])))
 
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the file's unit, angles in degrees."""
@@ -685,7 +684,7 @@ class MachineResult:
             "windows": self.windows.to_dict(),
             "drive": self.spec.drive.to_dict(),
             "timing": {**self.timing.to_dict(), "margin_deg": _deg(self.spec.timing.margin), "placement": self.spec.timing.placement},
-            "cam": {**self.solve.to_dict(), **({} if self.assessment is None else self.assessment.to_dict())},
+            "cam": self.solve.to_dict(),
             "overlap": self.overlap,
             "bore": self.bore,
             "notes": self.notes,
@@ -708,18 +707,15 @@ def design_machine(spec: MachineSpec, *, method: str | None = None) -> MachineRe
         With ``[cam] bore_radius`` its ``bore`` compares the bore with the
         sized cam's working profile (as ``cams check`` does).
     """
-    from cams.cam import Cam
     from optimize.solve import solve
 
     win = windows(spec.linkage, spec.cutting)
     tm = place_cam(win, spec.cam.program, spec.drive, spec.timing)
     design = spec.cam if method is None else spec.cam.with_(method=method)
     res = solve(design, objective=design.extra.get("objective", "R0"))
-    cam = Cam(design)
-    cam.__dict__["solution"] = res  # solved once: the assessment checks this cam's profile and dynamics
     unit = "rad" if isinstance(spec.cam.follower, Rocker) else spec.units
     dia = cycle_diagram(spec.linkage, win, spec.cutting, spec.cam.program, tm, follower_unit=unit)
-    return MachineResult(spec, win.stroke, win, tm, res, dia, _bore(design, res.centre), cam.assessment)
+    return MachineResult(spec, win.stroke, win, tm, res, dia, _bore(design, res.centre))
 
 
 def _bore(design: CamDesign, centre) -> dict | None:

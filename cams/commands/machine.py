@@ -19,7 +19,7 @@ def _iv(iv) -> str:
 
 def print_machine(rep: dict) -> None:
     """Readable summary of a machine report (as from ``MachineResult.to_dict``)."""
-    from cams.commands.solve import print_assessment, print_summary
+    from cams.commands.solve import print_summary
 
     u = rep["units"]
     lk = rep["linkage"]
@@ -57,8 +57,6 @@ def print_machine(rep: dict) -> None:
     for n in rep.get("notes", []):
         print(f"  note: {n}")
     print_summary(rep["cam"])
-    if "buildable" in rep["cam"] and "failures" in rep["cam"]:
-        print_assessment(rep["cam"])
 
 
 def print_forces(rep: dict) -> None:

@@ -81,20 +81,16 @@ def _variants() -> dict[str, str]:
     """Machine files of the cases by name (text)."""
     pump = PUMP.read_text(encoding="utf-8")
     short = _replace(_replace(pump, _PUMP_PROGRAM, _PUMP_SHORT_PROGRAM), 'placement = "centre"', 'placement = "early"')
-    # the cam turning the other way (internal mesh, same shaft) is undercut under the 12 mm roller (its pitch
-    # curve turns at 9.5 mm): a smaller roller keeps every case a usable cam, the timing is the same
-    small = _replace(pump, "roller_radius = 12.0", "roller_radius = 8.0")
-    short_small = _replace(short, "roller_radius = 12.0", "roller_radius = 8.0")
     return {
         "slotting-shaft": SLOTTING.read_text(encoding="utf-8"),
         "slotting-shaft-forces": SLOTTING_FORCES.read_text(encoding="utf-8"),
         "pump-gears-external": pump,
-        "pump-gears-internal": _replace(small, 'mesh = "external"', 'mesh = "internal"'),
-        "pump-shaft": _replace(small, _PUMP_GEARS, 'kind = "shaft"'),
+        "pump-gears-internal": _replace(pump, 'mesh = "external"', 'mesh = "internal"'),
+        "pump-shaft": _replace(pump, _PUMP_GEARS, 'kind = "shaft"'),
         # ratio 1/3: the pattern repeats every 3 crank turns (a 25 degree rise = 75 crank degrees fits the window)
         "pump-gears-external-1to3": _replace(_replace(pump, "z_cam = 40", "z_cam = 60"), "angle = 40", "angle = 25"),
         "pump-gears-external-short": short,
-        "pump-gears-internal-short": _replace(short_small, 'mesh = "external"', 'mesh = "internal"'),
+        "pump-gears-internal-short": _replace(short, 'mesh = "external"', 'mesh = "internal"'),
     }
 
 
