@@ -109,7 +109,8 @@ def main(argv: list[str] | None = None) -> int:
         sys.stderr.close()
         return EXIT_OK
     except OSError as e:
-        print(f"cams {args.command}: error: {e.filename or ''}: {e.strerror or e}", file=sys.stderr)
+        # the commands' files name their option (cams.files); an error without a file name is a standard stream's
+        print(f"cams {args.command}: error: {e.filename or 'standard output'}: {e.strerror or e}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except MemoryError:
         print(f"cams {args.command}: error: out of memory; use fewer samples or a lighter method", file=sys.stderr)

@@ -16,6 +16,7 @@ from __future__ import annotations
 import contextlib
 import copy
 import itertools
+import math
 import os
 import re
 import signal
@@ -29,10 +30,13 @@ import numpy as np
 from laws.errors import CamsError, InputError
 
 __all__ = ["parse_vary", "key_parts", "sweep", "SweepResult", "COLUMNS", "COLUMN_UNITS", "csv_header", "csv_row",
-           "MAX_WORKERS_PER_CPU"]
+           "MAX_WORKERS_PER_CPU", "MAX_DESIGNS"]
 
 #: At most this many processes per core (and never more than designs).
 MAX_WORKERS_PER_CPU = 4
+
+#: At most this many designs in one sweep (the product of the varied keys' counts): about an hour on two cores.
+MAX_DESIGNS = 100_000
 
 #: Result columns after the varied keys.
 COLUMNS = ("R0", "L", "offset", "centre_x", "centre_y", "max_pressure_rise", "max_pressure_return",
@@ -87,11 +91,16 @@ def parse_vary(spec: str) -> tuple[str, np.ndarray]:
             n = int(n)
             if n < 1:
                 raise ValueError
-            vals = np.linspace(float(a), float(b), n)
+            if n > MAX_DESIGNS:
+                vals = None
+            else:
+                vals = np.linspace(float(a), float(b), n)
         else:
             vals = np.array([float(v) for v in rng.split(",")])
     except ValueError:
         raise InputError("--vary", f"{spec!r}: range must be a:b:n (n >= 1) or a list of numbers") from None
+    if vals is None:
+        raise InputError("--vary", f"{spec!r}: at most {MAX_DESIGNS:,} values, got {n:,}")
     if not np.all(np.isfinite(vals)):
         raise InputError("--vary", f"{spec!r}: values must be finite numbers")
     if not key:
@@ -324,6 +333,9 @@ def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None 
             same = "" if seen[parts] == k else f" (as {seen[parts]!r})"
             raise InputError("--vary", f"{k!r} is varied twice{same}; give each key once with all its values")
         seen[parts] = k
+    count = math.prod(len(v) for _, v in vary)
+    if count > MAX_DESIGNS:
+        raise InputError("--vary", f"the sweep has {count:,} designs; at most {MAX_DESIGNS:,} are accepted")
     combos = list(itertools.product(*[v for _, v in vary]))
     fo = base.get("follower")
     if isinstance(fo, dict) and fo.get("face") == "flat":

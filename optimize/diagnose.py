@@ -195,15 +195,33 @@ def _attained(R0_at: Callable[[float], float | None], bound: float, span: float)
     return True
 
 
-def relaxations(design: CamDesign, extra=None) -> list[Relaxation]:
+def _misses_L(design: CamDesign, L: float) -> bool:
+    """True when no admissible centre lies at centre distance ``L`` from the pivot (length): the zone is empty
+    or ``L`` is outside its range (:func:`optimize.solve.admissible_L_range`)."""
+    from optimize.solve import admissible_L_range
+
+    if zone_empty(design):
+        return True
+    try:
+        lo, hi = admissible_L_range(design)
+    except InfeasibleError:
+        return True
+    return not lo <= L <= hi
+
+
+def relaxations(design: CamDesign, extra=None, L: float | None = None) -> list[Relaxation]:
     """Every limit that alone can make the empty zone non-empty, with its nearest feasible value.
 
     Parameters
     ----------
     design : CamDesign
-        A design whose zone (with ``extra``) is empty.
+        A design whose zone (with ``extra``) is empty, or with no admissible centre at distance ``L`` from
+        the pivot.
     extra : (N, c), optional
         Additional half-planes held (the line of a fixed offset).
+    L : float, optional
+        A fixed centre distance held (rocker, length): the zone must reach the circle of radius ``L`` about
+        the pivot. A bounded circle: the bound is attained.
 
     Returns
     -------
@@ -212,6 +230,11 @@ def relaxations(design: CamDesign, extra=None) -> list[Relaxation]:
     """
     lim = design.limits
     out = []
+    if L is None:
+        empty = zone_empty
+    else:
+        def empty(d: CamDesign, extra=None) -> bool:  # L held: the zone must reach its circle
+            return _misses_L(d, L)
     loose = math.radians(LOOSEST_DEG)
     fields = ["limits.pressure_angle"]
     if lim.closure == "form" and any(p.kind == "return" for p in design.program.phases):
@@ -225,27 +248,29 @@ def relaxations(design: CamDesign, extra=None) -> list[Relaxation]:
         def with_value(v, key=key):
             return design.with_(limits=replace(lim, **{key: v}))
 
-        if zone_empty(with_value(loose), extra):
+        if empty(with_value(loose), extra):
             continue
-        bound = _bisect(lambda v: zone_empty(with_value(v), extra), loose, given, math.radians(ANGLE_TOL_DEG))
-        attained = extra is not None or _attained(lambda v: least_R0(with_value(v)), bound, loose - bound)
+        bound = _bisect(lambda v: empty(with_value(v), extra), loose, given, math.radians(ANGLE_TOL_DEG))
+        attained = extra is not None or L is not None or _attained(lambda v: least_R0(with_value(v)), bound,
+                                                                    loose - bound)
         out.append(Relaxation(name, given, bound, attained))
     if not out and len(fields) == 2:
         def both(v):
             return design.with_(limits=replace(lim, pressure_angle=v, return_pressure_angle=v))
 
         given = max(lim.pressure_angle, lim.return_limit)
-        if given < loose and not zone_empty(both(loose), extra):
-            bound = _bisect(lambda v: zone_empty(both(v), extra), loose, given, math.radians(ANGLE_TOL_DEG))
-            attained = _attained(lambda v: least_R0(both(v)), bound, loose - bound)
+        if given < loose and not empty(both(loose), extra):
+            bound = _bisect(lambda v: empty(both(v), extra), loose, given, math.radians(ANGLE_TOL_DEG))
+            attained = L is not None or _attained(lambda v: least_R0(both(v)), bound, loose - bound)
             out.append(Relaxation("limits.pressure_angle", given, bound, attained, joint=True))
     if isinstance(design.follower, Rocker) and lim.safety_factor > 1.0:
         def with_k(v):
             return design.with_(limits=replace(lim, safety_factor=v))
 
-        if not zone_empty(with_k(1.0), extra):
-            bound = _bisect(lambda v: zone_empty(with_k(v), extra), 1.0, lim.safety_factor, K_TOL)
-            attained = extra is not None or _attained(lambda v: least_R0(with_k(v)), bound, 1.0 - bound)
+        if not empty(with_k(1.0), extra):
+            bound = _bisect(lambda v: empty(with_k(v), extra), 1.0, lim.safety_factor, K_TOL)
+            attained = extra is not None or L is not None or _attained(lambda v: least_R0(with_k(v)), bound,
+                                                                        1.0 - bound)
             out.append(Relaxation("limits.safety_factor", lim.safety_factor, bound, attained))
     return sorted(out, key=lambda x: x.change)
 
@@ -286,7 +311,7 @@ def _where(design: CamDesign, r: Relaxation) -> str:
     return "on the rise and the return" if both else "on the rise"
 
 
-def explain_infeasible(design: CamDesign, extra=None) -> InfeasibleError | None:
+def explain_infeasible(design: CamDesign, extra=None, L: float | None = None) -> InfeasibleError | None:
     """One-line error naming the limit that binds and its nearest feasible value, the others held.
 
     Parameters
@@ -295,6 +320,8 @@ def explain_infeasible(design: CamDesign, extra=None) -> InfeasibleError | None:
         A design for which a solver found no admissible centre.
     extra : (N, c), optional
         The half-planes of a fixed offset (``optimize.solve._offset_line``).
+    L : float, optional
+        The fixed centre distance ``limits.centre_distance`` (rocker, length), held with the other limits.
 
     Returns
     -------
@@ -306,8 +333,14 @@ def explain_infeasible(design: CamDesign, extra=None) -> InfeasibleError | None:
     """
     if not zone_empty(design, extra):
         return None
-    found = relaxations(design, extra)
+    found = relaxations(design, extra, L)
+    held = "other limits held" if L is None else f"other limits and L = {L:g} mm held"
     if not found:
+        if L is not None:
+            free = explain_infeasible(design, extra)
+            return InfeasibleError("limits.pressure_angle", f"no cam centre satisfies the limits at L = {L:g} mm, "
+                                   "and no limit relaxed alone with L held makes one admissible; without "
+                                   f"limits.centre_distance, {free}")
         return InfeasibleError("limits.pressure_angle", "no cam centre satisfies the limits, and no limit relaxed "
                                f"(pressure angles up to {LOOSEST_DEG:g} deg, K_C down to 1) makes one admissible")
     r = found[0]
@@ -316,9 +349,9 @@ def explain_infeasible(design: CamDesign, extra=None) -> InfeasibleError | None:
         return InfeasibleError(r.field, f"no cam centre satisfies {math.degrees(lim.pressure_angle):.6g} deg on the "
                                f"rise and {math.degrees(lim.return_limit):.6g} deg on the return, and no limit relaxed "
                                "alone is enough; with limits.return_pressure_angle equal to it, "
-                               f"{_sentence(r)} (other limits held)")
+                               f"{_sentence(r)} ({held})")
     given = f"{r.given:g}" if r.field == "limits.safety_factor" else f"{math.degrees(r.given):.6g} deg"
-    msg = f"no cam centre satisfies {given} {_where(design, r)}; {_sentence(r)} (other limits held)"
+    msg = f"no cam centre satisfies {given} {_where(design, r)}; {_sentence(r)} ({held})"
     for o in found[1:]:
         msg += f"; or {o.field}: {_sentence(o)}"
     return InfeasibleError(r.field, msg)

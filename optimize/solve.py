@@ -463,7 +463,12 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
         centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples)
         if centre is None:
             # a narrow arc near the least L: seed it from the min-L centre (convexity)
-            near = nearest(design, f.pivot, method=method).centre
+            try:
+                near = nearest(design, f.pivot, method=method).centre
+            except InfeasibleError as e:  # an empty zone: the limit that binds with L held too
+                from optimize.diagnose import explain_infeasible
+
+                raise (explain_infeasible(design, L=L_fixed) or e) from e
             centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples,
                                     seeds=_seeds(design, f.pivot, L_fixed, near))
         if centre is None:

@@ -1,7 +1,7 @@
 """The allowable-centre zone: one wedge of admissible cam centres per position.
 
-Geometry (DOMAIN.md, seed 001 eqs. 3.15-3.22)
-----------------------------------------------
+Geometry (seed 001 eqs. 3.15-3.22)
+----------------------------------
 For a follower whose roller centre A moves with the analogue velocity
 ``V = dA/dphi``, the relative velocity of A with respect to a cam turning with
 sense ``eps`` about a centre O is ``|w| (V - eps k x (A - O))

@@ -7,7 +7,8 @@ Three rules, over every tracked text file:
   not);
 * no absolute path into a user's or a workspace's folders (the usual top-level folders of such trees);
 * a path named in the text (``folder/file.ext``) has its folder inside the repository: relative to the root,
-  to the file's folder, or as the end of a tracked folder (``linkage/machines.py`` for ``cams/linkage/``).
+  to the file's folder, or as the end of a tracked folder (``linkage/machines.py`` for ``cams/linkage/``);
+* a Markdown document named alone (``files.md``) is the name of a tracked file: a reader can open it.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ _HOME_ROOTS = ("work", "home", "Users", "mnt", "srv", "opt", "root", "tmp", "wor
 _ABSOLUTE = re.compile(r"(?<![\w.~/-])/(?:" + "|".join(_HOME_ROOTS) + r")/[\w.-]")
 _CLIMB = re.compile(r"(?<![\w.])((?:\.\./)+[\w.-]+(?:/[\w.-]+)*)")
 _NAMED = re.compile(r"(?<![\w./-])([\w-]+(?:/[\w.-]+)+)\.(?:md|toml|py|txt|csv|json|png|svg|dxf|html|pdf)\b")
+_DOCUMENT = re.compile(r"(?<![\w./-])([\w-]+\.md)\b")
 
 
 def _tracked() -> list[Path]:
@@ -57,7 +59,9 @@ def _inside(p: Path) -> bool:
 
 def outside_references(files: list[Path]) -> list[str]:
     """``file:line: reference`` for every reference to a path outside the repository."""
-    folders = {str(f.parent.relative_to(ROOT)) for f in _tracked()}
+    tracked = _tracked()
+    folders = {str(f.parent.relative_to(ROOT)) for f in tracked}
+    names = {f.name for f in tracked}
     bad = []
     for f in files:
         text = _text(f)
@@ -75,6 +79,7 @@ def outside_references(files: list[Path]) -> list[str]:
                 if not ((ROOT / folder).is_dir() or (f.parent / folder).is_dir()
                         or any(d == folder or d.endswith("/" + folder) for d in folders)):
                     bad.append(f"{rel}:{n}: {m.group(0)}")
+            bad += [f"{rel}:{n}: {m.group(1)}" for m in _DOCUMENT.finditer(line) if m.group(1) not in names]
     return bad
 
 
@@ -86,13 +91,15 @@ def test_no_tracked_file_refers_outside_the_repository():
 
 # the probes are pieced together so that this file's own lines name no outside path
 @pytest.mark.parametrize("line, found", [
-    ("see [notes](" + "/".join(["..", "..", "elsewhere", "NOTES.md"]) + ")", True),
+    ("see [notes](" + "/".join(["..", "..", "elsewhere", "NOTES" + ".md"]) + ")", True),
     ("the sources are in /" + "home/someone/cams", True),
     ("the seeds are in /" + "work/seeds/", True),
     ("the geometry is in notes/design/GEOMETRY" + ".md", True),
     ("written to /dev/stdout or /dev/full", False),
     ("see [the test](../tests/test_standalone.py)", False),
     ("the machines are in linkage/machines.py", False),
+    ("geometry (" + "DOMAIN" + ".md, seed 001)", True),
+    ("every key in files.md and README.md", False),
 ])
 def test_the_rules_find_what_they_should(tmp_path, line, found):
     """The rules on one line placed in docs/ (a file that is not tracked, so it is written inside the repository

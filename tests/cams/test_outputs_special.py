@@ -224,3 +224,15 @@ def test_new_to_standard_output_prints_the_template_only(tmp_path):
     assert main(["new", "rocker", "--out", str(fifo)]) == 0
     reader.join(timeout=60)
     assert got == [text]
+
+
+@pytest.mark.parametrize("args", [["solve", str(DESIGN), "--json"], ["laws", "--json"], ["solve", str(DESIGN)]])
+def test_full_standard_output_is_an_error_naming_it(args):
+    """Standard output on a full device (``cams solve --json > /dev/full``): exit 2 and one line naming standard
+    output (before: ``cams solve: error: : No space left on device``, an empty name)."""
+    with open("/dev/full", "w") as out:
+        r = subprocess.run([sys.executable, "-m", "cams.cli", *args], stdout=out, stderr=subprocess.PIPE,
+                           text=True, cwd=ROOT, timeout=120)
+    err = r.stderr.strip()
+    assert r.returncode == 2 and len(err.splitlines()) == 1, err
+    assert "standard output: No space left on device" in err and ": :" not in err

@@ -8,7 +8,7 @@ import pytest
 
 from cams.cli import main
 from cams.designfile import design_from_dict
-from cams.sweep import parse_vary, sweep
+from cams.sweep import MAX_DESIGNS, parse_vary, sweep
 from laws.errors import InputError
 from optimize.solve import solve
 from tests.conftest import EXAMPLES, rocker_dict
@@ -76,3 +76,16 @@ def test_unknown_table_in_vary_is_an_error_and_integers_stay_integers(tmp_path, 
     res = sweep(rocker_dict(), [("solve.samples", np.array([60.0, 120.0]))], method="convex", workers=1)
     assert [r["error"] for r in res.rows] == [None, None]
     assert res.rows[0]["solve.samples"] == 60 and isinstance(res.rows[0]["solve.samples"], int)
+
+
+def test_number_of_designs_is_bounded(tmp_path, capsys):
+    # issue 12, item 5: a count of 1e11 ran out of memory ("use fewer samples"), a product of ranges ran for days
+    out = tmp_path / "s.csv"
+    rc = main(["sweep", str(EXAMPLES / "rocker_force.toml"), "--vary", "follower.arm=100:120:100000000000",
+               "--out", str(out), "--jobs", "1", "--quiet"])
+    err = capsys.readouterr().err
+    assert rc == 2 and "--vary" in err and f"{MAX_DESIGNS:,}" in err and "samples" not in err
+    assert not out.exists()
+    big = np.linspace(30.0, 50.0, 1000)
+    with pytest.raises(InputError, match=f"--vary.*{MAX_DESIGNS:,}"):
+        sweep(rocker_dict(), [("limits.pressure_angle", big), ("follower.arm", big + 70.0)], workers=1)

@@ -135,7 +135,8 @@ def test_safety_factor_is_not_offered_when_it_cannot_help():
 
 
 def test_fixed_L_with_an_empty_zone_names_the_limit(capsys, tmp_path):
-    """A fixed L (whose range needs a non-empty zone) on the command line: one line, exit 2, the rise limit."""
+    """A fixed L (whose range needs a non-empty zone) on the command line: one line, exit 2, the rise limit,
+    its least value with L held (the zone alone would reach 7.5 deg only far from the pivot)."""
     text = (EXAMPLES / "rocker_force.toml").read_text()
     text = re.sub(r"pressure_angle = [0-9.]+", "pressure_angle = 7", text)
     text = text.replace("[limits]", "[limits]\ncentre_distance = 100")
@@ -144,7 +145,40 @@ def test_fixed_L_with_an_empty_zone_names_the_limit(capsys, tmp_path):
     assert main(["solve", str(f)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1
-    assert "limits.pressure_angle" in err and "infimum is 7.5000 deg" in err
+    assert "limits.pressure_angle" in err and "L = 100 mm held" in err and "not attained" not in err
+    assert _value(err, "least feasible") > 45.0  # L = 100 is below the least L at 45 deg (110.485 mm)
+
+
+def _admissible_on_circle(design, L: float, n: int = 20000) -> np.ndarray:
+    """Centres at distance L from the pivot (n evenly round) that the validation reference finds admissible."""
+    a = np.linspace(0.0, 2.0 * np.pi, n, endpoint=False)
+    P = design.follower.pivot + L * np.stack([np.cos(a), np.sin(a)], axis=1)
+    return P[ReferenceZone(design, 200).admissible(P)]
+
+
+@pytest.mark.parametrize("L", [200.0, 400.0])
+def test_fixed_L_least_limit_is_that_of_the_circle(L):
+    """Issue 12, item 12, with limits.centre_distance: the least feasible limit holds L too.
+
+    Before: "the infimum is 7.5000 deg, not attained: every larger value is feasible ... (other limits held)",
+    false at a fixed L (10 deg is not feasible at L = 200 mm). Brute force on the circle of radius L about the
+    pivot (the validation reference): no admissible centre 0.01 deg below the value, some 0.01 deg above,
+    confirmed by check_pressure; the printed value itself is solved and verified.
+    """
+    dct = rocker_dict(limits={"pressure_angle": 7, "centre_distance": L})
+    e = _error(dct)
+    msg = str(e)
+    assert e.field == "limits.pressure_angle" and f"L = {L:g} mm held" in msg and "not attained" not in msg
+    least = _value(msg, "least feasible")
+    d = design_from_dict(dct)
+    assert least > 7.5
+    below = d.with_(limits=replace(d.limits, pressure_angle=np.radians(least - 0.01)))
+    above = d.with_(limits=replace(d.limits, pressure_angle=np.radians(least + 0.01)))
+    assert len(_admissible_on_circle(below, L)) == 0
+    found = _admissible_on_circle(above, L)
+    assert len(found) > 0 and check_pressure(above, found[len(found) // 2]).ok
+    r = solve(d.with_(limits=replace(d.limits, pressure_angle=np.radians(least))))
+    assert r.L == pytest.approx(L, rel=1e-9) and r.pressure.ok
 
 
 @pytest.mark.parametrize("method", ["convex", "exhaustive"])

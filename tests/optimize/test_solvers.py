@@ -30,7 +30,7 @@ def test_exhaustive_and_convex_give_the_same_apex(dct):
 
 
 def test_nearest_point_on_an_edge_beats_the_seed_apex():
-    """Same senses, force closure: the nearest admissible point lies on one line (DOMAIN.md).
+    """Same senses, force closure: the nearest admissible point lies on one line.
 
     The seed's candidates alone (every t-t line crossed with every t1-t1
     line, the nearest admissible one: computed here with the planar
