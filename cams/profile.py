@@ -549,7 +549,8 @@ def smallest_cam_radius(design: CamDesign, centre: np.ndarray, *, grid: int = 51
     is the inner offset ``P - r n`` of the pitch curve, so its distance from
     the centre is ``min |P| - r``, reached where ``|P|`` is smallest (there the
     normal is radial); ``|P| = |A - O|`` is scanned on ``grid`` steps per phase
-    and each phase's minimum refined by six tenfold zooms.
+    and the minimum of each phase that can hold the smallest (within twice its
+    largest step of the scan's lowest) refined by six tenfold zooms.
 
     Parameters
     ----------
@@ -566,10 +567,15 @@ def smallest_cam_radius(design: CamDesign, centre: np.ndarray, *, grid: int = 51
         centre: no cam) and the cam angle where it is reached (radians). A
         knife edge gives the pitch curve's smallest radius.
     """
+    u = np.linspace(0.0, 1.0, grid + 1)
+    scans = [np.linalg.norm(pitch_phase(design, centre, i, u).point, axis=1) for i in range(len(design.program.phases))]
+    lowest = min(float(d.min()) for d in scans)
     best, best_phi = np.inf, 0.0
-    for i in range(len(design.program.phases)):
-        u = np.linspace(0.0, 1.0, grid + 1)
-        d = np.linalg.norm(pitch_phase(design, centre, i, u).point, axis=1)
+    for i, d in enumerate(scans):
+        # between two samples |P| falls below the lower one by less than the largest step of the scan (twice
+        # that, to be safe): only the phases that can hold the minimum are refined
+        if d.min() > lowest + 2.0 * float(np.max(np.abs(np.diff(d)))):
+            continue
         k = int(np.argmin(d))
         bu, bd = u[k], d[k]
         lo, hi = u[max(k - 1, 0)], u[min(k + 1, grid)]
