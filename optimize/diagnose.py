@@ -365,14 +365,17 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
     names the limit that binds and its nearest feasible value. When the
     continuous zone is not empty after all (a centre inside it, confirmed by
     :func:`cams.pressure.check_pressure`), the solver failed: the error says so
-    (field ``solve.method``) and gives that centre's R0. Every other error
-    passes unchanged.
+    (field ``solve.method``) and gives that centre's R0. A result that is not
+    certified because no feasible centre was found near it (``certified`` False,
+    ``error_bound`` None) is checked the same way: when the zone is empty or
+    its infimum is not attained (the cam grows without bound), that diagnosis
+    is raised instead of the unproven result. Every other error passes unchanged.
     """
 
     @functools.wraps(solver)
     def wrapper(design: CamDesign, target: np.ndarray, *args, extra=None, **kw):
         try:
-            return solver(design, target, *args, extra=extra, **kw)
+            sol = solver(design, target, *args, extra=extra, **kw)
         except InfeasibleError as e:
             if e.field not in ("limits.pressure_angle", "follower.offset"):
                 raise
@@ -382,6 +385,11 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
             if why is None:
                 raise
             raise why from e
+        if sol.certified is False and sol.error_bound is None:
+            why = explain_infeasible(design, extra)
+            if why is not None:
+                raise why
+        return sol
 
     return wrapper
 

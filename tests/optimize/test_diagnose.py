@@ -268,3 +268,22 @@ def test_random_rockers_infimum_is_half_the_swing_or_attained_below():
             assert _value(msg, "least feasible") <= half + 1e-3, msg
             seen["attained"] += 1
     assert seen["not"] >= 6  # the attained case: also test_attained_least_value_of_a_bounded_zone
+
+
+def test_limit_at_half_the_swing_is_diagnosed_not_left_uncertified(capsys, tmp_path):
+    """A form-closed rocker, swing 60 deg, limit 30 deg = psi / 2: the zone's infimum, not attained (the wedges
+    share a direction to infinity only above psi / 2; the cam grows without bound as the limit falls to it).
+    Before: exit 1, "not certified: ... R0 (1.05e7 mm) ... no feasible centre was found near it; try --method
+    convex". Now the diagnosis, exit 2, one line; 0.5 deg above the infimum a cam is found and checked."""
+    text = (EXAMPLES / "rocker_force.toml").read_text()
+    text = re.sub(r"swing = [0-9.]+", "swing = 60", text)
+    text = re.sub(r"pressure_angle = [0-9.]+", "pressure_angle = 30", text)
+    text = re.sub(r'closure = "[a-z]+"', 'closure = "form"', text)
+    f = tmp_path / "d.toml"
+    f.write_text(text)
+    assert main(["solve", str(f)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "limits.pressure_angle" in err and "not attained" in err
+    assert _value(err, "infimum") == pytest.approx(30.0, abs=2e-4)  # psi / 2
+    f.write_text(text.replace("pressure_angle = 30", "pressure_angle = 30.5"))
+    assert main(["solve", str(f)]) == 0
