@@ -170,6 +170,7 @@ class CamDesign:
             if not rocker and f.offset is not None:
                 raise InputError("cam.centre", "fixes the offset already (e = -x): remove follower.offset")
             c = np.asarray(c, float)
+            # refuses only a centre within rounding of A0 (R0 = 0) or of the pivot; any other is judged by the checks
             if np.linalg.norm(c - f.position(0.0)) <= 1e-12 * self.scale:
                 raise InputError("cam.centre", "is the roller centre at the near dwell (R0 = 0); the cam centre "
                                  "must lie away from it")
@@ -228,6 +229,7 @@ class CamDesign:
         else:
             e = float(f.offset)
             return (np.array([-e, -np.sqrt(R0**2 - e**2)]) + A0,)
+        # only merges the two crossings of tangent circles; both candidates are on both circles and judged anyway
         if h <= 1e-12 * self.scale:
             return (base,)
         return (base + h * v, base - h * v)

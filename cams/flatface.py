@@ -838,9 +838,22 @@ class FlatFaceSolution:
         return {k: np.concatenate(v) for k, v in out.items()}
 
     @property
+    def rho_tolerance(self) -> float:
+        """Round-off allowed on ``min_rho`` (length unit).
+
+        ``rho`` sums terms of the size of R0 (and of L for a rocker): where the
+        convexity binds, ``s''`` is about ``-R0``, so a cam far larger than its
+        follower (tiny rise angles) loses ``eps * R0`` on ``rho``. The
+        tolerance follows those magnitudes, not the follower's size alone.
+        """
+        L = float(getattr(self.design.follower, "centre_distance", 0.0))
+        size = abs(self.R0) + abs(L) + abs(self.design.min_radius)
+        return 1e-9 * self.design.scale + 64 * np.finfo(float).eps * size
+
+    @property
     def verified(self) -> bool:
-        """True when the profile at R0 is convex enough: ``min_rho >= min_radius`` (to round-off)."""
-        return bool(self.min_rho >= self.design.min_radius - 1e-9 * self.design.scale)
+        """True when the profile at R0 is convex enough: ``min_rho >= min_radius`` (to :attr:`rho_tolerance`)."""
+        return bool(self.min_rho >= self.design.min_radius - self.rho_tolerance)
 
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the design's unit, angles in degrees."""
@@ -992,7 +1005,7 @@ def check_flat_face(design, solution: FlatFaceSolution, profile: FlatFaceProfile
     from cams.profile import default_bore_radius
 
     rmin = design.min_radius
-    ok = solution.min_rho >= rmin - 1e-9 * design.scale
+    ok = solution.min_rho >= rmin - solution.rho_tolerance
     checks = [Check("convexity", bool(ok), float(solution.min_rho), _deg(solution.min_rho_at), float(rmin), "mm",
                     f"smallest radius of curvature of the profile {solution.min_rho:.6g} (limit {rmin:g})"),
               _polygon_check("profile_polygon", profile.work, profile.phi)]

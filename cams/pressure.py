@@ -56,6 +56,8 @@ def contact_normal(design: CamDesign, centre: np.ndarray, s: np.ndarray, ds: np.
     # outward normal: W turned by eps * 90 degrees
     n = eps * np.stack([-W[..., 1], W[..., 0]], axis=-1)
     norm = np.linalg.norm(n, axis=-1, keepdims=True)
+    # |n| = |W| is of the size of |A - O| and of the follower's motion (both scale with the unit); it is
+    # near 0 only at the degenerate A = O, so a fraction of the follower's size cannot mislabel a defined normal
     defined = norm > 1e-12 * design.scale
     n = np.where(defined, n / np.where(defined, norm, 1.0), np.nan)
     e = T / np.linalg.norm(T, axis=-1, keepdims=True)

@@ -89,7 +89,7 @@ def interior_point(design: CamDesign, near: np.ndarray) -> tuple[np.ndarray, flo
         from optimize.zone import sample_wedges
 
         N, c = sample_wedges(design, 128).lines()
-        # maximize r: N x + r <= c, 0 <= r <= scale
+        # maximize r: N x + r <= c, 0 <= r <= scale (a cap on the slack sought, not a tolerance: any r > 0 will do)
         res = linprog(
             np.array([0.0, 0.0, -1.0]),
             A_ub=np.hstack([N, np.ones((len(N), 1))]),

@@ -28,7 +28,7 @@ def _solve(design, objective, samples, extra):
 
     W = sample_wedges(design, samples)
     N, c = W.lines()
-    s = design.scale
+    s = design.scale  # a unit for the variables, not a tolerance: the result is checked on the continuum after
     x = cp.Variable(2)
     cons = [N @ x <= c / s]
     if extra is not None and len(extra[0]):

@@ -94,7 +94,9 @@ def zone_margin(design: CamDesign, extra=None, *, box: float = 1e6, iters: int =
     cutting planes: a linear program ``min t`` with ``N O - c <= t`` over the
     lines sampled at 64 steps per phase and the worst lines of the continuum
     added at each step (scipy's HiGHS), centres within ``box`` times the
-    design's scale of the roller's start point A0.
+    design's scale of the roller's start point A0, the box widened a
+    thousandfold while the zone's best point presses on it (up to 1e12 times
+    the scale: a cam far larger than its follower).
 
     Parameters
     ----------
@@ -109,16 +111,30 @@ def zone_margin(design: CamDesign, extra=None, *, box: float = 1e6, iters: int =
     centre : ndarray, shape (2,)
         The centre where ``G = upper`` (the follower's fixed frame).
     """
+    scale = design.scale
+    half = box * scale
+    while True:
+        lower, upper, best = _margin_in_box(design, extra, half, iters)
+        # a zone that starts beyond the box (a cam far larger than its follower: tiny phases) is not
+        # empty: widen the box while the best point presses on it, up to R0 ~ 1e12 times the follower
+        if not (lower > 0 and np.max(np.abs(best - design.follower.position(0.0))) >= half * (1 - 1e-9)
+                and half < 1e12 * scale):
+            return lower, upper, best
+        half *= 1e3
+
+
+def _margin_in_box(design: CamDesign, extra, half: float, iters: int) -> tuple[float, float, np.ndarray]:
+    """:func:`zone_margin` for centres within ``half`` (length unit) of A0 on each axis."""
     from scipy.optimize import linprog
 
+    from optimize.circle import round_off
     from optimize.zone import sample_wedges, scan_peaks, zone_table
 
-    scale = design.scale
     A0 = design.follower.position(0.0)
     N, c = sample_wedges(design, 64).lines()
     eN = np.zeros((0, 2)) if extra is None else np.asarray(extra[0], float)
     ec = np.zeros(0) if extra is None else np.asarray(extra[1], float)
-    bounds = [(A0[0] - box * scale, A0[0] + box * scale), (A0[1] - box * scale, A0[1] + box * scale), (None, None)]
+    bounds = [(A0[0] - half, A0[0] + half), (A0[1] - half, A0[1] + half), (None, None)]
     t = zone_table(design)
     lower, upper, best = -np.inf, np.inf, A0
     for _ in range(iters):
@@ -133,7 +149,9 @@ def zone_margin(design: CamDesign, extra=None, *, box: float = 1e6, iters: int =
         g = float(np.max(pk.value))
         if g < upper:
             upper, best = g, O
-        if upper - lower <= 1e-9 * scale or lower > 0 or upper <= 0:
+        # G's rounding follows |O| (up to the box's size), not the follower's size alone
+        if upper - lower <= max(1e-9 * design.scale, round_off(design, float(np.abs(O).sum()))) \
+                or lower > 0 or upper <= 0:
             break
         bad = pk.value > lower
         N = np.vstack([N, np.stack([pk.nx[bad], pk.ny[bad]], axis=1)])
@@ -365,14 +383,17 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
     names the limit that binds and its nearest feasible value. When the
     continuous zone is not empty after all (a centre inside it, confirmed by
     :func:`cams.pressure.check_pressure`), the solver failed: the error says so
-    (field ``solve.method``) and gives that centre's R0. Every other error
-    passes unchanged.
+    (field ``solve.method``) and gives that centre's R0. A result that is not
+    certified because no feasible centre was found near it (``certified`` False,
+    ``error_bound`` None) is checked the same way: when the zone is empty or
+    its infimum is not attained (the cam grows without bound), that diagnosis
+    is raised instead of the unproven result. Every other error passes unchanged.
     """
 
     @functools.wraps(solver)
     def wrapper(design: CamDesign, target: np.ndarray, *args, extra=None, **kw):
         try:
-            return solver(design, target, *args, extra=extra, **kw)
+            sol = solver(design, target, *args, extra=extra, **kw)
         except InfeasibleError as e:
             if e.field not in ("limits.pressure_angle", "follower.offset"):
                 raise
@@ -382,6 +403,11 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
             if why is None:
                 raise
             raise why from e
+        if sol.certified is False and sol.error_bound is None:
+            why = explain_infeasible(design, extra)
+            if why is not None:
+                raise why
+        return sol
 
     return wrapper
 

@@ -182,7 +182,9 @@ def nearest_exact(
         bound = upper - lower
         certified = bool(bound <= CERT_RTOL * upper + EPS * _magnitude(T, centre))
     prog = design.program
-    near = np.nonzero(pk.value >= -1e-9 * design.scale)[0]
+    # binding: within the rounding of the numbers compared (as for adding a cut), not a fraction of the
+    # follower's size, which a cam 1e7 times larger than its follower exceeds
+    near = np.nonzero(pk.value >= -allowed(pk.offset))[0]
     near = near[np.argsort(-pk.value[near], kind="stable")]
     binding = tuple(
         Binding(t.phases[pk.j[k]], float(prog.starts[t.phases[pk.j[k]]] + pk.u[k] * t.angle[pk.j[k]]),

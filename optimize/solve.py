@@ -230,6 +230,7 @@ def _lmax(design: CamDesign) -> float:
     if _recession_direction(design) is not None:
         return float("inf")
     N, c = sample_wedges(design, 512).lines()
+    # a bounded zone reaching beyond this box (100 times the follower) would be clipped, L max too small (open)
     s = 100 * design.scale
     poly = clip_polygon(N, c, (-s, -s, s, s))
     return float(np.max(np.linalg.norm(poly, axis=1))) if len(poly) else 0.0

@@ -268,3 +268,42 @@ def test_random_rockers_infimum_is_half_the_swing_or_attained_below():
             assert _value(msg, "least feasible") <= half + 1e-3, msg
             seen["attained"] += 1
     assert seen["not"] >= 6  # the attained case: also test_attained_least_value_of_a_bounded_zone
+
+
+def test_limit_at_half_the_swing_is_diagnosed_not_left_uncertified(capsys, tmp_path):
+    """A form-closed rocker, swing 60 deg, limit 30 deg = psi / 2: the zone's infimum, not attained (the wedges
+    share a direction to infinity only above psi / 2; the cam grows without bound as the limit falls to it).
+    Before: exit 1, "not certified: ... R0 (1.05e7 mm) ... no feasible centre was found near it; try --method
+    convex". Now the diagnosis, exit 2, one line; 0.5 deg above the infimum a cam is found and checked."""
+    text = (EXAMPLES / "rocker_force.toml").read_text()
+    text = re.sub(r"swing = [0-9.]+", "swing = 60", text)
+    text = re.sub(r"pressure_angle = [0-9.]+", "pressure_angle = 30", text)
+    text = re.sub(r'closure = "[a-z]+"', 'closure = "form"', text)
+    f = tmp_path / "d.toml"
+    f.write_text(text)
+    assert main(["solve", str(f)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "limits.pressure_angle" in err and "not attained" in err
+    assert _value(err, "infimum") == pytest.approx(30.0, abs=2e-4)  # psi / 2
+    f.write_text(text.replace("pressure_angle = 30", "pressure_angle = 30.5"))
+    assert main(["solve", str(f)]) == 0
+
+
+def test_zone_far_beyond_a_million_follower_sizes_is_not_empty():
+    """A translating groove cam with a rise and a return of 1e-4 deg: its zone starts about 5.8e7 mm from A0,
+    beyond the LP's first box (1e6 times the 30 mm stroke). Before: ``zone_empty`` said True (a false
+    "no cam centre satisfies the limits" whenever a solver failed). Reference: a centre found by the exact
+    method and confirmed admissible by ``check_pressure`` over every cam angle."""
+    from optimize.diagnose import zone_empty
+    from optimize.exact import nearest_exact
+
+    d = design_from_dict({
+        "name": "tiny phases", "follower": {"kind": "translating", "stroke": 30.0, "roller_radius": 8.0},
+        "cam": {"rotation": "ccw"},
+        "motion": [{"phase": "rise", "law": "cycloidal", "angle": 1e-4}, {"phase": "dwell", "angle": 179.9999},
+                   {"phase": "return", "law": "poly345", "angle": 1e-4}, {"phase": "dwell"}],
+        "limits": {"pressure_angle": 30, "closure": "form"}})
+    sol = nearest_exact(d, d.follower.position(0.0))
+    assert sol.objective > 1e6 * d.scale and check_pressure(d, sol.centre).ok
+    assert not zone_empty(d)
+    assert explain_infeasible(d, None) is None

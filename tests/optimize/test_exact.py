@@ -180,3 +180,28 @@ def test_convex_bound_holds_at_large_magnitudes():
     cv = solve(design.with_(samples=360), method="convex")
     assert cv.R0 <= ex.R0 + ex.error_bound
     assert ex.R0 - cv.R0 <= cv.error_bound
+
+
+@pytest.mark.parametrize("unit", [1e-3, 1.0, 1e3])
+@pytest.mark.parametrize("law", ["cycloidal", "harmonic"])
+def test_binding_of_a_cam_far_larger_than_its_follower_at_every_unit_scale(unit, law):
+    """A rise and a return of 3e-6 deg: R0 ~ 6e7 times the stroke. Before: the binding list kept constraints
+    within 1e-9 of the follower's size, less than the rounding of values of size R0: one or no binding
+    constraint, depending on the unit. Reference: the largest pressure angle of each phase at the centre
+    found (:func:`cams.pressure.pressure_angle` on a dense grid) reaches the 30 deg limit in both, so both
+    the rise's and the return's lines bind, at every unit scale."""
+    from cams.pressure import pressure_angle
+
+    a = 3e-6
+    d = design_from_dict({
+        "name": "x", "follower": {"kind": "translating", "stroke": 30.0 * unit, "roller_radius": 8.0 * unit},
+        "cam": {"rotation": "ccw"},
+        "motion": [{"phase": "rise", "law": law, "angle": a}, {"phase": "dwell", "angle": 180 - a},
+                   {"phase": "return", "law": "poly345", "angle": a}, {"phase": "dwell"}],
+        "limits": {"pressure_angle": 30, "closure": "form"}})
+    sol = nearest_exact(d, d.follower.position(0.0))
+    assert sol.certified and sol.objective > 1e7 * d.scale
+    u = np.linspace(0.0, 1.0, 20001)
+    for i in (0, 2):
+        assert np.degrees(np.max(pressure_angle(d, sol.centre, i, u))) == pytest.approx(30.0, abs=1e-4)
+    assert sorted((b.phase, b.side) for b in sol.binding) == [(0, 0), (2, 1)]
