@@ -148,7 +148,7 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
             fail("knife edge in a groove", "a knife edge cannot run in a groove: form closure needs "
                  "follower.roller_radius > 0")
     if checks is not None:
-        from cams.words import fault_words
+        from cams.words import fault_words, off_by
 
         for c in checks.checks:
             if c.passed:
@@ -159,7 +159,8 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
                     verified = False
                     failures.insert(0, ("not verified", f"not verified: {words}: {c.message}"))
             else:
-                fail(words, f"{words}: {c.message}" if c.message else words)
+                line = f"{words}: {c.message}" if c.message else words
+                fail(words, line + off_by(c.worst, c.limit, c.unit))  # by how much, as cams check says it
     elif no_profile is not None:
         fail("no profile", f"no profile: {no_profile}")
     elif not flat and not knife_in_groove(design):

@@ -146,13 +146,6 @@ def _run_flat(args, cam) -> int:
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
 
-def _chosen_notes(report, rep: dict) -> None:
-    """A chosen cam's failing profile checks (as ``cams check`` finds them) as notes saying by how much."""
-    from cams.commands.check import failure_text
-
-    rep["notes"] += [failure_text(c.to_dict()) for c in report.checks if not c.passed and not c.name.startswith("jamming")]
-
-
 def run(args) -> int:
     from cams.cam import Cam
     from cams.designfile import load_design
@@ -181,9 +174,6 @@ def run(args) -> int:
     rep["forces"] = forces
     # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
     a = cam.assessment
-    checks = cam.__dict__.get("checks")  # None: a knife edge in a groove, or no profile at the tolerance
-    if result.mode == "chosen" and checks is not None:
-        _chosen_notes(checks, rep)
     rep.update(a.to_dict())
     if args.json:
         if forces is not None:

@@ -177,7 +177,7 @@ def test_a_chosen_cam_that_undercuts_fails_in_solve_with_by_how_much(tmp_path, c
     code, out, _ = _run(capsys, "solve", str(_file(tmp_path, big_roller)))
     assert code == 1
     assert "verified: yes" in out  # the pressure angle is the minimum's: only the profile fails
-    m = re.search(r"check undercut fails: ([\d.]+) mm .*\(limit ([\d.]+) mm\): off by ([\d.]+) mm", out)
+    m = re.search(r"FAIL: undercut: .* ([\d.]+) mm vs roller radius ([\d.]+) mm: off by ([\d.]+) mm", out)
     assert m, out
     rho, limit, by = map(float, m.groups())
     assert limit == pytest.approx(1.5 * res.R0, abs=1e-4) and by == pytest.approx(limit - rho, abs=2e-4)
@@ -320,3 +320,21 @@ def test_a_chosen_cam_gets_its_forces_from_dynamics(tmp_path, capsys):
     assert code == code_sized
     for k in ("max_contact_force", "max_torque", "jump_rpm"):
         assert chosen["forces"][k] == pytest.approx(sized["forces"][k], rel=1e-9), k
+
+
+def test_a_failing_check_of_a_chosen_cam_is_said_once_as_cams_check_says_it(tmp_path, capsys):
+    """Each failed profile check is one FAIL line, carrying the excess ``cams check`` states; no note repeats it."""
+    d, res = _minimum("rocker_force.toml")
+    big_roller = _chosen(d, centre=res.centre)
+    big_roller["follower"]["roller_radius"] = 1.5 * res.R0
+    path = str(_file(tmp_path, big_roller))
+    code, out, _ = _run(capsys, "solve", path)
+    assert code == 1
+    lines = out.splitlines()
+    assert [ln for ln in lines if "undercut" in ln] == [next(ln for ln in lines if "FAIL: undercut" in ln)], out
+    assert len([ln for ln in lines if "crosses itself" in ln or "profile_polygon" in ln]) == 1, out
+    by = float(re.search(r"FAIL: undercut: .*: off by ([\d.]+) mm", out).group(1))
+    code, check_out, _ = _run(capsys, "check", path)
+    assert code == 1
+    line = next(ln for ln in check_out.splitlines() if ln.lstrip().startswith("FAIL") and "undercut" in ln)
+    assert float(re.search(r"off by ([\d.]+) mm", line).group(1)) == pytest.approx(by, abs=1e-6)
