@@ -126,9 +126,13 @@ def print_flat_summary(rep: dict) -> None:
 
 
 def print_assessment(a: dict, indent: str = "  ", file=None) -> None:
-    """The buildable line beside verified (from ``Assessment.to_dict``), with what fails."""
-    print(f"{indent}buildable: {'yes' if a['buildable'] else 'NO'}; usable: "
-          f"{'yes' if a['verified'] and a['buildable'] else 'NO'}", file=file)
+    """The buildable line beside verified (from ``Assessment.to_dict``), with what fails.
+
+    ``usable`` is :attr:`cams.assess.Assessment.usable`, the exit code's rule: certified (a ``certified`` key is
+    present only when false), verified and buildable.
+    """
+    usable = a.get("certified", True) is not False and a["verified"] and a["buildable"]
+    print(f"{indent}buildable: {'yes' if a['buildable'] else 'NO'}; usable: {'yes' if usable else 'NO'}", file=file)
     for f in a["failures"]:
         print(f"{indent}FAIL: {f}", file=file)
 
