@@ -9,19 +9,12 @@ from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_met
 from cams.words import bore_text, check_words, deg, length_format, off_by
 from cams.words import check_value as _fmt
 
-__all__ = ["register", "print_checks", "failure_text"]
+__all__ = ["register", "print_checks"]
 
 
 def _by(c: dict) -> str:
     """How far a failed check's worst value is on the wrong side of its limit (:func:`cams.words.off_by`)."""
     return "" if c["passed"] else off_by(c["worst"], c["limit"], c["unit"])
-
-
-def failure_text(c: dict) -> str:
-    """One line for a failed check (from ``Check.to_dict``): its value, limit, where and by how much."""
-    at = "" if c["at_deg"] is None else f" at cam angle {c['at_deg']:.4f} deg"
-    lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'])})"
-    return f"check {c['name']} fails: {_fmt(c['worst'], c['unit'])}{at}{lim}{_by(c)}"
 
 
 def print_checks(rep: dict) -> None:

@@ -7,15 +7,9 @@ import json
 import sys
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
-from cams.words import binding_text, deg, spring_text
-from cams.words import length_format as _length_format
+from cams.words import binding_text, deg, length_format, spring_text
 
 __all__ = ["register", "print_summary", "print_flat_summary", "print_cam_forces", "print_assessment"]
-
-
-def length_format(scale: float) -> str:
-    """Format spec for lengths of a design of size ``scale`` (:func:`cams.words.length_format`)."""
-    return _length_format(scale)
 
 
 def print_summary(rep: dict) -> None:
