@@ -130,7 +130,12 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
                          + ("do not meet (no feasible centre near it)" if eb is None else f"differ by {eb:.3g} mm")))
     verified = bool(solution.verified)
     if not verified:
-        failures.append(("not verified", "not verified: the independent check finds a limit exceeded"))
+        which = ["the independent check finds a limit exceeded"]
+        if getattr(solution, "pressure", None) is not None:  # a roller's cam: which limit and by how much
+            from optimize.solve import pressure_failures
+
+            which = pressure_failures(solution.pressure) or which
+        failures.append(("not verified", "not verified: " + "; ".join(which)))
     buildable = True
 
     def fail(short: str, line: str) -> None:

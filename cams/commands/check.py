@@ -55,7 +55,7 @@ def run(args) -> int:
     rep["passed"] = passed
     notes: list[str] = []
     if getattr(design, "chosen", False) and not is_flat(design):  # how the chosen cam's centre was found
-        notes = [n for n in cam.solution.notes if not n.startswith(("rise pressure", "return pressure"))]
+        notes = [n for n in cam.solution.notes if not any(n in f for f in a.failures)]  # said once, on its FAIL line
     if notes:
         rep["notes"] = notes
     if args.json:

@@ -43,7 +43,8 @@ def print_summary(rep: dict) -> None:
     if fo:
         print_cam_forces(fo, follower=rep["follower"])
     for n in rep["notes"]:
-        print(f"  note: {n}")
+        if not any(n in f for f in rep.get("failures", ())):  # said once, on its FAIL line
+            print(f"  note: {n}")
 
 
 def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translating") -> None:

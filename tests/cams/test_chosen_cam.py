@@ -338,3 +338,18 @@ def test_a_failing_check_of_a_chosen_cam_is_said_once_as_cams_check_says_it(tmp_
     assert code == 1
     line = next(ln for ln in check_out.splitlines() if ln.lstrip().startswith("FAIL") and "undercut" in ln)
     assert float(re.search(r"off by ([\d.]+) mm", line).group(1)) == pytest.approx(by, abs=1e-6)
+
+
+@pytest.mark.parametrize("command", ["solve", "check"])
+def test_not_verified_says_which_limit_and_by_how_much_once(tmp_path, capsys, command):
+    """The not verified FAIL line names the exceeded limit and the excess, which the independent check finds; no
+    note repeats it."""
+    d, res = _minimum("rocker_force.toml")
+    small = _chosen(d, R0=0.99 * res.R0, L=res.L)
+    code, out, _ = _run(capsys, command, str(_file(tmp_path, small)))
+    assert code == 1
+    hits = [ln for ln in out.splitlines() if "rise pressure angle" in ln and "exceeds the limit" in ln]
+    assert len(hits) == 1 and hits[0].lstrip().startswith("FAIL: not verified: rise pressure angle"), out
+    value, by = map(float, re.search(r"angle ([\d.]+) deg exceeds the limit [\d.]+ deg by ([\d.]+) deg", hits[0]).groups())
+    ref, _ = _largest_rise_pressure_angle(small, solve(design_from_dict(small)).centre)
+    assert value == pytest.approx(ref, abs=2e-4) and by == pytest.approx(ref - d["limits"]["pressure_angle"], abs=2e-4)
