@@ -293,3 +293,19 @@ def test_a_not_certified_answer_is_never_printed_usable(tmp_path, capsys, monkey
     line = next(ln for ln in out.splitlines() if "usable:" in ln)
     assert "buildable: yes" in line and line.rstrip().endswith("usable: NO"), out
     assert "FAIL: not certified" in out
+
+
+def test_sweep_counts_a_not_certified_row_as_failing(capsys, tmp_path, monkeypatch):
+    """A row whose exact answer is not certified is not usable (:attr:`Assessment.usable`): counted, exit 1."""
+    import dataclasses
+
+    import optimize.solve as solve_module
+    from cams.files import read_toml
+    from cams.sweep import sweep
+
+    real = solve_module.solve
+    monkeypatch.setattr(solve_module, "solve", lambda *a, **k: dataclasses.replace(real(*a, **k), certified=False))
+    res = sweep(read_toml(EXAMPLES / "rocker_force.toml"), [("limits.pressure_angle", np.array([44.0, 45.0]))],
+                workers=1)
+    assert all(r["verified"] and r["buildable"] and "not certified" in r["failures"] for r in res.rows)
+    assert res.failed == 2
