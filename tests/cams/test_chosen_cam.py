@@ -194,6 +194,15 @@ def test_report_of_a_failing_chosen_cam_exits_1(tmp_path, capsys):
     assert re.search(r"rise pressure angle [\d.]+ deg exceeds the limit 30.0000 deg by [\d.]+ deg", page)
 
 
+def test_report_says_a_failing_chosen_cam_excess_once(tmp_path, capsys):
+    """The report's 'fails' row names the exceeded limit; no note row repeats it (as solve and check)."""
+    d, res = _minimum("translating_force.toml")
+    small = _chosen(d, R0=0.95 * res.R0, offset=res.offset)
+    assert _run(capsys, "report", str(_file(tmp_path, small)), "--out", str(tmp_path / "rep"))[0] == 1
+    page = (tmp_path / "rep" / "report.html").read_text(encoding="utf-8")
+    assert len(re.findall(r"rise pressure angle [\d.]+ deg exceeds the limit 30.0000 deg", page)) == 1
+
+
 # -- two centres of (R0, L) -----------------------------------------------------------------------------------
 
 
