@@ -130,7 +130,12 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
                          + ("do not meet (no feasible centre near it)" if eb is None else f"differ by {eb:.3g} mm")))
     verified = bool(solution.verified)
     if not verified:
-        failures.append(("not verified", "not verified: the independent check finds a limit exceeded"))
+        which = ["the independent check finds a limit exceeded"]
+        if getattr(solution, "pressure", None) is not None:  # a roller's cam: which limit and by how much
+            from optimize.solve import pressure_failures
+
+            which = pressure_failures(solution.pressure) or which
+        failures.append(("not verified", "not verified: " + "; ".join(which)))
     buildable = True
 
     def fail(short: str, line: str) -> None:
@@ -148,7 +153,7 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
             fail("knife edge in a groove", "a knife edge cannot run in a groove: form closure needs "
                  "follower.roller_radius > 0")
     if checks is not None:
-        from cams.words import fault_words
+        from cams.words import fault_words, off_by
 
         for c in checks.checks:
             if c.passed:
@@ -159,7 +164,8 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
                     verified = False
                     failures.insert(0, ("not verified", f"not verified: {words}: {c.message}"))
             else:
-                fail(words, f"{words}: {c.message}" if c.message else words)
+                line = f"{words}: {c.message}" if c.message else words
+                fail(words, line + off_by(c.worst, c.limit, c.unit))  # by how much, as cams check says it
     elif no_profile is not None:
         fail("no profile", f"no profile: {no_profile}")
     elif not flat and not knife_in_groove(design):

@@ -263,15 +263,6 @@ class RigidImpact:
                 "unit": self.unit, "effect": self.effect}
 
 
-def force_text(x, digits: int = 6) -> str:
-    """A force or torque for reports: ``inf`` (a rigid impact) and None (its JSON form) as ``UNBOUNDED``."""
-    if x is None or x == float("inf"):
-        return "UNBOUNDED"
-    if x == float("-inf"):
-        return "-UNBOUNDED"
-    return f"{x:.{digits}g}"
-
-
 def jump_text(rpm, digits: int = 6) -> str:
     """A jump speed for reports: ``"168.6 rpm"``, or ``"none ..."`` when nothing pulls the follower off the cam
     (no deceleration: the speed is infinite, or None from JSON)."""

@@ -156,7 +156,7 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         ("verified (independent pressure-angle check)", "yes" if r["verified"] else "NO"),
     ]
     results += _assessment_rows(cam)
-    results += [("note", n) for n in r["notes"]]
+    results += [("note", n) for n in r["notes"] if not any(n in f for f in cam.assessment.failures)]  # said once
     sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
     df = cam.forces if "dynamics" in d.extra else None
     if df is not None:

@@ -219,8 +219,12 @@ class SweepResult:
 
     @property
     def failed(self) -> int:
-        """Rows that are not usable: no solution (an ``error``), not verified or not buildable."""
-        return sum(1 for r in self.rows if r["error"] or not (r["verified"] and r["buildable"]))
+        """Rows that are not usable: no solution (an ``error``), or an assessment with failures.
+
+        A row's ``failures`` are its :class:`cams.assess.Assessment`'s, empty exactly when it is usable
+        (certified, verified and buildable).
+        """
+        return sum(1 for r in self.rows if r["error"] or r["failures"])
 
     @property
     def per_second(self) -> float:

@@ -34,6 +34,8 @@ __all__ = [
     "fault_words",
     "phase_words",
     "bore_text",
+    "check_value",
+    "off_by",
 ]
 
 #: Decimals of an angle in degrees, everywhere.
@@ -210,3 +212,35 @@ def bore_text(radius: float, suggested: bool) -> str:
     if suggested:
         return f"suggested bore radius {length(radius)} (not checked, not in the files: set [cam] bore_radius)"
     return f"bore radius {length(radius)}"
+
+
+def check_value(x: float | None, unit: str, f: str = ".6f") -> str:
+    """A check's value (:class:`cams.checks.Check`): lengths in mm with format ``f``, angles by :func:`deg`, counts.
+
+    >>> check_value(2.0, "")
+    '2'
+    >>> check_value(6.6203969, "mm")
+    '6.620397 mm'
+    """
+    if x is None:
+        return "-"
+    if not unit and float(x).is_integer():
+        return str(int(x))
+    if unit == "deg":
+        return deg(x)
+    if unit == "mm":
+        return f"{x:{f}} mm"
+    return f"{number(x)} {unit}".rstrip()
+
+
+def off_by(worst: float | None, limit: float | None, unit: str) -> str:
+    """How far a failed check's ``worst`` value is on the wrong side of its ``limit``: ``": off by 6.620397 mm"``.
+
+    "" when either is unknown.
+
+    >>> off_by(13.240793, 19.86119, "mm")
+    ': off by 6.620397 mm'
+    """
+    if worst is None or limit is None:
+        return ""
+    return f": off by {check_value(abs(worst - limit), unit)}"

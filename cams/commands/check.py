@@ -6,36 +6,15 @@ import argparse
 import json
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
-from cams.words import bore_text, check_words, deg, length_format, number
+from cams.words import bore_text, check_words, deg, length_format, off_by
+from cams.words import check_value as _fmt
 
-__all__ = ["register", "print_checks", "failure_text"]
-
-
-def _fmt(x, unit: str, f: str = ".6f") -> str:
-    """A check's value: lengths as every command prints them (``f``), angles in degrees, counts as integers."""
-    if x is None:
-        return "-"
-    if not unit and float(x).is_integer():
-        return str(int(x))
-    if unit == "deg":
-        return deg(x)
-    if unit == "mm":
-        return f"{x:{f}} mm"
-    return f"{number(x)} {unit}".rstrip()
+__all__ = ["register", "print_checks"]
 
 
 def _by(c: dict) -> str:
-    """How far a failed check's worst value is on the wrong side of its limit, with its unit ("" when unknown)."""
-    if c["passed"] or c["worst"] is None or c["limit"] is None:
-        return ""
-    return f": off by {_fmt(abs(c['worst'] - c['limit']), c['unit'])}"
-
-
-def failure_text(c: dict) -> str:
-    """One line for a failed check (from ``Check.to_dict``): its value, limit, where and by how much."""
-    at = "" if c["at_deg"] is None else f" at cam angle {c['at_deg']:.4f} deg"
-    lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'])})"
-    return f"check {c['name']} fails: {_fmt(c['worst'], c['unit'])}{at}{lim}{_by(c)}"
+    """How far a failed check's worst value is on the wrong side of its limit (:func:`cams.words.off_by`)."""
+    return "" if c["passed"] else off_by(c["worst"], c["limit"], c["unit"])
 
 
 def print_checks(rep: dict) -> None:
@@ -76,7 +55,7 @@ def run(args) -> int:
     rep["passed"] = passed
     notes: list[str] = []
     if getattr(design, "chosen", False) and not is_flat(design):  # how the chosen cam's centre was found
-        notes = [n for n in cam.solution.notes if not n.startswith(("rise pressure", "return pressure"))]
+        notes = [n for n in cam.solution.notes if not any(n in f for f in a.failures)]  # said once, on its FAIL line
     if notes:
         rep["notes"] = notes
     if args.json:

@@ -7,15 +7,9 @@ import json
 import sys
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
-from cams.words import binding_text, deg, spring_text
-from cams.words import length_format as _length_format
+from cams.words import binding_text, deg, length_format, spring_text
 
 __all__ = ["register", "print_summary", "print_flat_summary", "print_cam_forces", "print_assessment"]
-
-
-def length_format(scale: float) -> str:
-    """Format spec for lengths of a design of size ``scale`` (:func:`cams.words.length_format`)."""
-    return _length_format(scale)
 
 
 def print_summary(rep: dict) -> None:
@@ -49,7 +43,8 @@ def print_summary(rep: dict) -> None:
     if fo:
         print_cam_forces(fo, follower=rep["follower"])
     for n in rep["notes"]:
-        print(f"  note: {n}")
+        if not any(n in f for f in rep.get("failures", ())):  # said once, on its FAIL line
+            print(f"  note: {n}")
 
 
 def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translating") -> None:
@@ -126,9 +121,13 @@ def print_flat_summary(rep: dict) -> None:
 
 
 def print_assessment(a: dict, indent: str = "  ", file=None) -> None:
-    """The buildable line beside verified (from ``Assessment.to_dict``), with what fails."""
-    print(f"{indent}buildable: {'yes' if a['buildable'] else 'NO'}; usable: "
-          f"{'yes' if a['verified'] and a['buildable'] else 'NO'}", file=file)
+    """The buildable line beside verified (from ``Assessment.to_dict``), with what fails.
+
+    ``usable`` is :attr:`cams.assess.Assessment.usable`, the exit code's rule: certified (a ``certified`` key is
+    present only when false), verified and buildable.
+    """
+    usable = a.get("certified", True) is not False and a["verified"] and a["buildable"]
+    print(f"{indent}buildable: {'yes' if a['buildable'] else 'NO'}; usable: {'yes' if usable else 'NO'}", file=file)
     for f in a["failures"]:
         print(f"{indent}FAIL: {f}", file=file)
 
@@ -144,13 +143,6 @@ def _run_flat(args, cam) -> int:
         print_flat_summary(rep)
         print_assessment(rep)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
-
-
-def _chosen_notes(report, rep: dict) -> None:
-    """A chosen cam's failing profile checks (as ``cams check`` finds them) as notes saying by how much."""
-    from cams.commands.check import failure_text
-
-    rep["notes"] += [failure_text(c.to_dict()) for c in report.checks if not c.passed and not c.name.startswith("jamming")]
 
 
 def run(args) -> int:
@@ -181,9 +173,6 @@ def run(args) -> int:
     rep["forces"] = forces
     # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
     a = cam.assessment
-    checks = cam.__dict__.get("checks")  # None: a knife edge in a groove, or no profile at the tolerance
-    if result.mode == "chosen" and checks is not None:
-        _chosen_notes(checks, rep)
     rep.update(a.to_dict())
     if args.json:
         if forces is not None:

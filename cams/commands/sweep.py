@@ -43,10 +43,10 @@ def _run(args) -> int:
                 w.writerow(csv_row(r))
 
     atomic_write(out, "--out", write)
-    # one rule for every command (cams.assess): a row without a solution, not verified or not buildable fails
+    # one rule for every command (cams.assess): a row without a solution, or not usable (certified, verified, buildable)
     none = sum(1 for r in res.rows if r["error"])
     print(f"{out}: {len(res.rows)} designs ({res.failed} infeasible: {none} without a solution, "
-          f"{res.failed - none} not verified or not buildable) in {res.seconds:.2f} s, "
+          f"{res.failed - none} not certified, not verified or not buildable) in {res.seconds:.2f} s, "
           f"{res.per_second:.1f} designs/s on {res.workers} process(es)", file=sys.stderr)
     return EXIT_OK if res.failed == 0 else EXIT_CHECK_FAILED
 

@@ -177,7 +177,7 @@ def test_a_chosen_cam_that_undercuts_fails_in_solve_with_by_how_much(tmp_path, c
     code, out, _ = _run(capsys, "solve", str(_file(tmp_path, big_roller)))
     assert code == 1
     assert "verified: yes" in out  # the pressure angle is the minimum's: only the profile fails
-    m = re.search(r"check undercut fails: ([\d.]+) mm .*\(limit ([\d.]+) mm\): off by ([\d.]+) mm", out)
+    m = re.search(r"FAIL: undercut: .* ([\d.]+) mm vs roller radius ([\d.]+) mm: off by ([\d.]+) mm", out)
     assert m, out
     rho, limit, by = map(float, m.groups())
     assert limit == pytest.approx(1.5 * res.R0, abs=1e-4) and by == pytest.approx(limit - rho, abs=2e-4)
@@ -192,6 +192,15 @@ def test_report_of_a_failing_chosen_cam_exits_1(tmp_path, capsys):
     page = (tmp_path / "rep" / "report.html").read_text(encoding="utf-8")
     assert "the chosen cam is checked, not sized" in page and "chosen base radius R0" in page
     assert re.search(r"rise pressure angle [\d.]+ deg exceeds the limit 30.0000 deg by [\d.]+ deg", page)
+
+
+def test_report_says_a_failing_chosen_cam_excess_once(tmp_path, capsys):
+    """The report's 'fails' row names the exceeded limit; no note row repeats it (as solve and check)."""
+    d, res = _minimum("translating_force.toml")
+    small = _chosen(d, R0=0.95 * res.R0, offset=res.offset)
+    assert _run(capsys, "report", str(_file(tmp_path, small)), "--out", str(tmp_path / "rep"))[0] == 1
+    page = (tmp_path / "rep" / "report.html").read_text(encoding="utf-8")
+    assert len(re.findall(r"rise pressure angle [\d.]+ deg exceeds the limit 30.0000 deg", page)) == 1
 
 
 # -- two centres of (R0, L) -----------------------------------------------------------------------------------
@@ -320,3 +329,36 @@ def test_a_chosen_cam_gets_its_forces_from_dynamics(tmp_path, capsys):
     assert code == code_sized
     for k in ("max_contact_force", "max_torque", "jump_rpm"):
         assert chosen["forces"][k] == pytest.approx(sized["forces"][k], rel=1e-9), k
+
+
+def test_a_failing_check_of_a_chosen_cam_is_said_once_as_cams_check_says_it(tmp_path, capsys):
+    """Each failed profile check is one FAIL line, carrying the excess ``cams check`` states; no note repeats it."""
+    d, res = _minimum("rocker_force.toml")
+    big_roller = _chosen(d, centre=res.centre)
+    big_roller["follower"]["roller_radius"] = 1.5 * res.R0
+    path = str(_file(tmp_path, big_roller))
+    code, out, _ = _run(capsys, "solve", path)
+    assert code == 1
+    lines = out.splitlines()
+    assert [ln for ln in lines if "undercut" in ln] == [next(ln for ln in lines if "FAIL: undercut" in ln)], out
+    assert len([ln for ln in lines if "crosses itself" in ln or "profile_polygon" in ln]) == 1, out
+    by = float(re.search(r"FAIL: undercut: .*: off by ([\d.]+) mm", out).group(1))
+    code, check_out, _ = _run(capsys, "check", path)
+    assert code == 1
+    line = next(ln for ln in check_out.splitlines() if ln.lstrip().startswith("FAIL") and "undercut" in ln)
+    assert float(re.search(r"off by ([\d.]+) mm", line).group(1)) == pytest.approx(by, abs=1e-6)
+
+
+@pytest.mark.parametrize("command", ["solve", "check"])
+def test_not_verified_says_which_limit_and_by_how_much_once(tmp_path, capsys, command):
+    """The not verified FAIL line names the exceeded limit and the excess, which the independent check finds; no
+    note repeats it."""
+    d, res = _minimum("rocker_force.toml")
+    small = _chosen(d, R0=0.99 * res.R0, L=res.L)
+    code, out, _ = _run(capsys, command, str(_file(tmp_path, small)))
+    assert code == 1
+    hits = [ln for ln in out.splitlines() if "rise pressure angle" in ln and "exceeds the limit" in ln]
+    assert len(hits) == 1 and hits[0].lstrip().startswith("FAIL: not verified: rise pressure angle"), out
+    value, by = map(float, re.search(r"angle ([\d.]+) deg exceeds the limit [\d.]+ deg by ([\d.]+) deg", hits[0]).groups())
+    ref, _ = _largest_rise_pressure_angle(small, solve(design_from_dict(small)).centre)
+    assert value == pytest.approx(ref, abs=2e-4) and by == pytest.approx(ref - d["limits"]["pressure_angle"], abs=2e-4)

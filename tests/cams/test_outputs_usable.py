@@ -272,3 +272,40 @@ def test_a_result_that_is_not_certified_is_not_usable():
     assert not a.usable and not a.certified and a.verified and a.buildable
     assert a.to_dict()["certified"] is False
     assert a.failures[0] == "not certified: the exact method's bounds on the size differ by 0.001 mm"
+
+
+@pytest.mark.parametrize("command", ["check", "profile"])
+def test_a_not_certified_answer_is_never_printed_usable(tmp_path, capsys, monkeypatch, command):
+    """``usable`` printed beside ``buildable`` is the exit code's rule (:attr:`Assessment.usable`): an exact answer whose
+    bounds disagree is not usable even when it is verified and buildable."""
+    import dataclasses
+
+    import optimize.solve as solve_module
+
+    real = solve_module.solve
+    monkeypatch.setattr(solve_module, "solve", lambda *a, **k: dataclasses.replace(real(*a, **k), certified=False))
+    argv = [command, str(EXAMPLES / "rocker_force.toml")]
+    if command == "profile":
+        argv += ["--csv", str(tmp_path / "p.csv"), "--allow-failed"]
+    code = main(argv)
+    out = capsys.readouterr().out
+    assert code == 1
+    line = next(ln for ln in out.splitlines() if "usable:" in ln)
+    assert "buildable: yes" in line and line.rstrip().endswith("usable: NO"), out
+    assert "FAIL: not certified" in out
+
+
+def test_sweep_counts_a_not_certified_row_as_failing(capsys, tmp_path, monkeypatch):
+    """A row whose exact answer is not certified is not usable (:attr:`Assessment.usable`): counted, exit 1."""
+    import dataclasses
+
+    import optimize.solve as solve_module
+    from cams.files import read_toml
+    from cams.sweep import sweep
+
+    real = solve_module.solve
+    monkeypatch.setattr(solve_module, "solve", lambda *a, **k: dataclasses.replace(real(*a, **k), certified=False))
+    res = sweep(read_toml(EXAMPLES / "rocker_force.toml"), [("limits.pressure_angle", np.array([44.0, 45.0]))],
+                workers=1)
+    assert all(r["verified"] and r["buildable"] and "not certified" in r["failures"] for r in res.rows)
+    assert res.failed == 2
