@@ -22,8 +22,11 @@ def print_summary(rep: dict) -> None:
         print(f"{rep['name']}: {rep['follower']} follower, method {rep['method']}, {rep['mode']}")
     print(f"  R0      = {rep['R0']:{f}} {unit}  (pitch curve's base radius: cam centre to roller centre)")
     cr = rep.get("smallest_cam_radius")
-    if cr is not None:
+    if cr is not None and cr > 0:
         print(f"  Rmin    = {cr:{f}} {unit}  (the cam's own smallest radius, on the working profile)")
+    elif cr is not None:  # the roller reaches the cam centre: there is no cam body to measure
+        print(f"  Rmin    = none: the roller reaches past the cam centre (smallest pitch radius - roller radius "
+              f"= {cr:{f}} {unit})")
     if rep["L"] is not None:
         print(f"  L       = {rep['L']:{f}} {unit}")
     if rep["offset"] is not None:
@@ -42,8 +45,11 @@ def print_summary(rep: dict) -> None:
     fo = rep.get("forces")
     if fo:
         print_cam_forces(fo, follower=rep["follower"])
+    failures = rep.get("failures", ())
     for n in rep["notes"]:
-        if not any(n in f for f in rep.get("failures", ())):  # said once, on its FAIL line
+        said = any(n in f for f in failures) or (  # said once, on its FAIL line
+            n.startswith("not buildable: R0") and any(f.startswith("no working profile") for f in failures))
+        if not said:
             print(f"  note: {n}")
 
 

@@ -309,3 +309,19 @@ def test_sweep_counts_a_not_certified_row_as_failing(capsys, tmp_path, monkeypat
                 workers=1)
     assert all(r["verified"] and r["buildable"] and "not certified" in r["failures"] for r in res.rows)
     assert res.failed == 2
+
+
+def test_a_roller_past_the_centre_has_no_smallest_radius_and_is_said_once(capsys, tmp_path):
+    """A roller larger than R0: Rmin is 'none' (no negative radius), the missing base circle one FAIL line."""
+    f = tmp_path / "d.toml"
+    f.write_text((EXAMPLES / "rocker_force.toml").read_text().replace("roller_radius = 10.0", "roller_radius = 20.0"))
+    rc = main(["solve", str(f)])
+    out = capsys.readouterr().out
+    rc_json = main(["solve", str(f), "--json"])
+    rep = json.loads(capsys.readouterr().out)
+    assert rc == rc_json == 1 and rep["R0"] < 20.0
+    # the JSON keeps the signed value: the smallest pitch radius (about R0 here) less the roller
+    assert rep["smallest_cam_radius"] < 0 and rep["smallest_cam_radius"] == pytest.approx(rep["R0"] - 20.0, abs=1e-6)
+    (line,) = [ln for ln in out.splitlines() if ln.lstrip().startswith("Rmin")]
+    assert "none: the roller reaches past the cam centre" in line
+    assert sum("R0 = " in ln and "roller radius" in ln for ln in out.splitlines()) == 1
