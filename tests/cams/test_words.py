@@ -153,6 +153,39 @@ def test_smallest_cam_radius_below_R0_less_roller_when_the_rocker_swings_in():
     assert r < res.R0 - d.follower.roller_radius - 1e-3 or r == pytest.approx(res.R0 - d.follower.roller_radius)
 
 
+def _swept_radius_at(design, centre, phi_deg: float) -> float:
+    """``|A(phi) - O| - r`` at one cam angle (degrees), from the fixed frame as in :func:`_dense_smallest_radius`."""
+    s = design.program.evaluate(np.radians([phi_deg])).s
+    return float(np.linalg.norm(design.follower.position(s)[0] - np.asarray(centre)) - design.follower.roller_radius)
+
+
+@pytest.mark.parametrize("key", sorted(DESIGNS))
+def test_smallest_cam_radius_at_deg_is_where_it_is_reached(key):
+    """The JSON's ``smallest_cam_radius_at_deg``: the swept roller reaches the smallest radius at that cam angle."""
+    d = design_from_dict(DESIGNS[key])
+    res = solve(d)
+    rep = res.to_dict()
+    at = rep["smallest_cam_radius_at_deg"]
+    assert 0.0 <= at <= 360.0
+    assert _swept_radius_at(d, res.centre, at) == pytest.approx(rep["smallest_cam_radius"], abs=1e-9 * d.scale)
+
+
+def test_smallest_cam_radius_and_its_angle_inside_the_rise_against_the_dense_argmin():
+    """A centre the rise brings the roller nearest to (not the dwell): radius and angle are the dense argmin's."""
+    from cams.profile import smallest_cam_radius
+
+    d = design_from_dict(rocker_dict(follower={"swing": 30.0}, limits={"pressure_angle": 40}))
+    A = d.follower.position(d.program.evaluate(np.radians([30.0])).s)[0]  # the roller centre a third into the rise
+    centre = A + np.array([0.0, 30.0]) * np.sign(A[1] - d.follower.position(0.0)[1] or 1.0)
+    r, at = smallest_cam_radius(d, centre)
+    phi = np.linspace(0.0, 360.0, 720_001)
+    dist = np.linalg.norm(d.follower.position(d.program.evaluate(np.radians(phi)).s) - centre, axis=1)
+    k = int(np.argmin(dist))
+    assert 0.0 < phi[k] < np.degrees(d.program.phases[0].angle)  # inside the rise, one point
+    assert r == pytest.approx(dist[k] - d.follower.roller_radius, abs=1e-7 * d.scale)
+    assert np.degrees(at) == pytest.approx(phi[k], abs=2e-3)
+
+
 def _main(capsys, *argv):
     from cams.cli import main
 
