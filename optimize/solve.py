@@ -154,6 +154,32 @@ def _no_base_circle(R0: float, roller_radius: float, remedy: str) -> list[str]:
             f"profile would have no base circle); {remedy}"]
 
 
+def _result(design: CamDesign, centre, pressure: PressureReport, margin: float, notes: list[str], remedy: str,
+            **how) -> SolveResult:
+    """A :class:`SolveResult` of the cam centred at ``centre`` (fixed frame, mm), sized or chosen alike.
+
+    R0, L and the offset are read off the centre; the notes gain the
+    independent check's failures (by how much) and, when R0 is not larger
+    than the roller, that there is no base circle (with ``remedy``). ``how``
+    holds the solver's fields (method, samples, mode, binding, error bound,
+    seconds, certified).
+    """
+    f = design.follower
+    R0 = float(np.linalg.norm(centre - f.position(0.0)))
+    notes = [*notes, *pressure_failures(pressure), *_no_base_circle(R0, f.roller_radius, remedy)]
+    return SolveResult(
+        design=design,
+        centre=np.asarray(centre, float),
+        R0=R0,
+        L=float(np.linalg.norm(centre - f.pivot)) if isinstance(f, Rocker) else None,
+        offset=_offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
+        pressure=pressure,
+        margin=float(margin),
+        notes=tuple(notes),
+        **how,
+    )
+
+
 def _offset_x(v: float) -> float:
     """The fixed offset's sign convention, ``x_O = -e``, read either way.
 
@@ -335,26 +361,9 @@ def _solve_chosen(design: CamDesign) -> SolveResult:
     from optimize.circle import violation_function
 
     margin = -violation_function(design, None)(centre)
-    A0 = f.position(0.0)
-    R0 = float(np.linalg.norm(centre - A0))
-    notes += pressure_failures(pressure)
-    notes += _no_base_circle(R0, f.roller_radius, "choose a larger cam or a smaller roller")
-    return SolveResult(
-        design=design,
-        centre=np.asarray(centre, float),
-        R0=R0,
-        L=float(np.linalg.norm(centre - f.pivot)) if isinstance(f, Rocker) else None,
-        offset=_offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
-        method=None,
-        samples=None,
-        mode="chosen",
-        binding=(),
-        error_bound=None,
-        seconds=time.perf_counter() - t0,
-        pressure=pressure,
-        margin=float(margin),
-        notes=tuple(notes),
-    )
+    return _result(design, centre, pressure, margin, notes, "choose a larger cam or a smaller roller",
+                   method=None, samples=None, mode="chosen", binding=(), error_bound=None,
+                   seconds=time.perf_counter() - t0)
 
 
 def _solve_flat(design, method: str | None, objective: str | None):
@@ -519,22 +528,6 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
     pressure = check_pressure(design, centre)
     if not pressure.ok and R0 < 1e-6 * travel and method == "exact":
         raise vanishing
-    notes += pressure_failures(pressure)  # a sized cam that fails the independent check says by how much, too
-    notes += _no_base_circle(R0, f.roller_radius, "set limits.min_base_radius or a smaller roller")
-    return SolveResult(
-        design=design,
-        centre=np.asarray(centre, float),
-        R0=R0,
-        L=float(np.linalg.norm(centre - f.pivot)) if isinstance(f, Rocker) else None,
-        offset=_offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
-        method=method,
-        samples=samples,
-        mode=mode,
-        binding=binding,
-        error_bound=error_bound,
-        seconds=seconds,
-        pressure=pressure,
-        margin=float(margin),
-        notes=tuple(notes),
-        certified=certified,
-    )
+    return _result(design, centre, pressure, margin, notes, "set limits.min_base_radius or a smaller roller",
+                   method=method, samples=samples, mode=mode, binding=binding, error_bound=error_bound,
+                   seconds=seconds, certified=certified)
