@@ -339,7 +339,6 @@ def _solve_chosen(design: CamDesign) -> SolveResult:
     (:func:`excess`, from the independent check) is smaller is taken and a
     note names both; a tie (within :data:`TIE` radians) is refused, naming both.
     """
-    f = design.follower
     t0 = time.perf_counter()
     cands = design.chosen_centres()
     checked = [(c, check_pressure(design, c)) for c in cands]
