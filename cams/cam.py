@@ -32,14 +32,28 @@ class Cam:
         Overrides the design's ``[solve] method`` (roller followers).
     tolerance : float, optional
         Chord tolerance of the profile (length), overriding ``[profile] tolerance``.
+    solution : SolveResult, optional
+        A solution already found for ``design`` (e.g. by a machine's timing):
+        taken as the cam's, not solved again.
     """
 
     def __init__(self, design: CamDesign, *, objective: str | None = None, method: str | None = None,
-                 tolerance: float | None = None):
+                 tolerance: float | None = None, solution=None):
         self.design = design
         self.objective = objective or design.extra.get("objective", "R0")
         self.method = method
         self.tolerance = tolerance
+        if solution is not None:
+            self.__dict__["solution"] = solution  # what the cached property would hold
+
+    def computed(self, name: str):
+        """The lazy attribute ``name`` if it has been computed, else None (computes nothing).
+
+        E.g. ``computed("checks")`` after :attr:`assessment`: None when no
+        profile could be built (a knife edge in a groove, a tolerance the
+        profile cannot carry).
+        """
+        return self.__dict__.get(name)
 
     @property
     def flat(self) -> bool:
@@ -117,17 +131,27 @@ class Cam:
         return check_profile(self.design, self.solution.centre, options=self.options, profile=self.profile)
 
     @cached_property
+    def _forces(self):
+        """``(DesignForces or None, note or None)`` of :func:`cams.camforces.design_forces`, computed once."""
+        if self.flat:
+            return None, None
+        from cams.camforces import design_forces
+
+        return design_forces(self.design, self.solution.centre)
+
+    @property
     def forces(self):
         """Spring, contact force, torque and jump speed (:class:`cams.camforces.DesignForces`).
 
         ``None`` without a ``[dynamics]`` table, for a form-closed cam or
         without a cam speed (see :func:`cams.camforces.design_forces`).
         """
-        if self.flat:
-            return None
-        from cams.camforces import design_forces
+        return self._forces[0]
 
-        return design_forces(self.design, self.solution.centre)[0]
+    @property
+    def forces_note(self) -> str | None:
+        """Why there are no forces where a ``[dynamics]`` table asks for them (form closure, no rpm), else None."""
+        return self._forces[1]
 
     @cached_property
     def assessment(self):

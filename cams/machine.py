@@ -722,8 +722,7 @@ def design_machine(spec: MachineSpec, *, method: str | None = None) -> MachineRe
     res = solve(design, objective=design.extra.get("objective", "R0"))
     unit = "rad" if isinstance(spec.cam.follower, Rocker) else spec.units
     dia = cycle_diagram(spec.linkage, win, spec.cutting, spec.cam.program, tm, follower_unit=unit)
-    cam = Cam(design)
-    cam.__dict__["solution"] = res  # the cam just sized: assessed, not solved again
+    cam = Cam(design, solution=res)  # the cam just sized: assessed, not solved again
     assessment = cam.assessment  # one rule for every command (cams.assess): verified, buildable, certified
     return MachineResult(spec, win.stroke, win, tm, res, dia, _bore(cam), assessment)
 
@@ -732,7 +731,7 @@ def _bore(cam: Cam) -> dict | None:
     """The profile check of ``[cam] bore_radius`` (None without one, or without a profile): the working profile's
     smallest radius vs the bore."""
     bore = cam.options.bore_radius
-    checks = cam.__dict__.get("checks")  # None: a knife edge in a groove, or no profile at the tolerance
+    checks = cam.computed("checks")  # None: a knife edge in a groove, or no profile at the tolerance
     if bore is None or checks is None:
         return None
     rmin = cam.profile.min_work_radius

@@ -48,7 +48,7 @@ def run(args) -> int:
     cam = Cam(design, method=None if is_flat(design) else args.method, tolerance=args.tolerance)
     cam.options  # bad options fail before solving
     a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
-    report = cam.__dict__.get("checks")  # None: a knife edge in a groove, or no profile at the tolerance
+    report = cam.computed("checks")  # None: a knife edge in a groove, or no profile at the tolerance
     rep = {"name": design.name, "passed": False, "checks": []} if report is None else report.to_dict()
     rep.update(a.to_dict())
     passed = a.usable and report is not None and report.passed

@@ -165,10 +165,9 @@ def run(args) -> int:
         return _not_certified(args, rep)
     forces = None
     if "dynamics" in design.extra:
-        from cams.camforces import design_forces, impact_note
+        from cams.camforces import impact_note
 
-        df, note = design_forces(design, result.centre)
-        cam.__dict__["forces"] = df  # computed once: the assessment reads it
+        df, note = cam.forces, cam.forces_note  # computed once: the assessment reads them too
         if note:
             rep["notes"].append(note)
         if df is not None:

@@ -34,3 +34,17 @@ def test_report_has_a_forces_page():
     titles = [t for t, _ in report_sections(Cam.from_file(FILE))]
     assert titles[-1] == "Forces at the cam"
     assert "Forces at the cam" not in [t for t, _ in report_sections(Cam.from_file(EXAMPLES / "rocker_force.toml"))]
+
+
+def test_cams_solve_computes_the_forces_once(monkeypatch, capsys):
+    """The forces printed and the assessment's [dynamics] check come from one call (Cam.forces, Cam.forces_note)."""
+    import cams.camforces
+    from cams.cli import main
+    from tests.conftest import EXAMPLES
+
+    calls = []
+    real = cams.camforces.design_forces
+    monkeypatch.setattr(cams.camforces, "design_forces", lambda *a, **k: calls.append(1) or real(*a, **k))
+    assert main(["solve", str(EXAMPLES / "slotting_feed_cam.toml")]) == 0
+    out = capsys.readouterr().out
+    assert len(calls) == 1 and "contact force" in out
