@@ -91,9 +91,7 @@ class Cam:
     def options(self):
         """Profile settings from the design file (:class:`cams.profile.ProfileOptions`)."""
         if self.flat:
-            from cams.profile import ProfileOptions
-
-            from cams.profile import resolve_tolerance
+            from cams.profile import ProfileOptions, resolve_tolerance
 
             raw = self.design.extra.get("raw", {}) if isinstance(self.design.extra, dict) else {}
             given = raw.get("profile", {}).get("tolerance") if isinstance(raw.get("profile"), dict) else None
