@@ -54,7 +54,7 @@ CLI_TARGET = 1.0
 def whole_design(repeats: int) -> list[dict]:
     """Solve, profile (1 um chord tolerance) and check each example, timed per stage."""
     from cams.cam import Cam
-    from cams.designfile import load_design
+    from cams.io.designfile import load_design
     from optimize import zone
 
     rows = []
@@ -154,7 +154,7 @@ def imports() -> dict:
 
 def sweep_designs(size: int) -> dict:
     """``size`` designs through :func:`cams.sweep.sweep` on every core."""
-    from cams.files import read_toml
+    from cams.io.files import read_toml
     from cams.sweep import sweep
 
     base = read_toml(ROOT / "examples" / "rocker_force.toml")

@@ -11,7 +11,7 @@ numpy is imported):
   ``--repeats`` runs at a range of tolerances, "cold" (the design's zone table
   built inside each run, what a new design costs) and "warm" (table cached);
   its relative error of R0 against a reference, the exact method at
-  ``tol=1e-13`` (checked independently: :func:`cams.pressure.check_pressure`
+  ``tol=1e-13`` (checked independently: :func:`cams.verify.pressure.check_pressure`
   must find the reference centre admissible and the limit reached);
 * the tolerance at which the exact method's relative error stays below 1e-9
   on every design, and its median time there;
@@ -52,8 +52,8 @@ import numpy as np  # noqa: E402
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from cams.designfile import design_from_dict  # noqa: E402
-from cams.pressure import check_pressure  # noqa: E402
+from cams.io.designfile import design_from_dict  # noqa: E402
+from cams.verify.pressure import check_pressure  # noqa: E402
 from optimize import zone  # noqa: E402
 from optimize.exact import nearest_exact  # noqa: E402
 from optimize.exhaustive import nearest_exhaustive  # noqa: E402

@@ -1,7 +1,7 @@
 """One definition of a usable cam, shared by every command: verified and buildable.
 
 ``verified`` keeps its meaning: the independent pressure-angle check of the
-solver's answer (:func:`cams.pressure.check_pressure`; for a flat face, its
+solver's answer (:func:`cams.verify.pressure.check_pressure`; for a flat face, its
 radius of curvature against ``limits.min_radius``). ``buildable`` says a cam
 can be made and run as designed; it is false when any of these fails:
 
@@ -10,13 +10,13 @@ can be made and run as designed; it is false when any of these fails:
 * form closure has a roller: a knife edge (roller radius 0) cannot run in a
   groove;
 * every check of the finished profile except those of the verified side
-  (:func:`cams.checks.check_profile`; flat face
-  :func:`cams.flatface.check_flat_face`): no undercut or sharp point, the
+  (:func:`cams.checks.profile.check_profile`; flat face
+  :func:`cams.profile.flat.check_flat_face`): no undercut or sharp point, the
   groove's outer wall, the user's least radius of curvature, a valid closed
   profile round the cam centre, the bore given by ``[cam] bore_radius``
   inside the cam;
 * the ``[dynamics]`` table, when given: the follower keeps contact, does not
-  jam and meets no rigid impact (:attr:`cams.camforces.CamForces.ok`).
+  jam and meets no rigid impact (:attr:`cams.dynamics.forces.CamForces.ok`).
 
 A design is usable when it is both; every command exits 1 otherwise.
 """
@@ -87,7 +87,7 @@ def knife_in_groove(design) -> bool:
 
 
 def _dynamics_failure(forces) -> str | None:
-    """Why the cam forces (:class:`cams.camforces.CamForces`) fail, or None."""
+    """Why the cam forces (:class:`cams.dynamics.forces.CamForces`) fail, or None."""
     if forces.ok:
         return None
     why = []
@@ -106,12 +106,12 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     Parameters
     ----------
     design : CamDesign or FlatFaceDesign
-    solution : optimize.solve.SolveResult or cams.flatface.FlatFaceSolution
+    solution : optimize.solve.SolveResult or cams.profile.flat.FlatFaceSolution
         Its ``verified`` is the verified side.
     checks : CheckReport or FlatCheckReport, optional
         The checks of the finished profile; None only when no profile can be
         built (a knife edge in a groove).
-    forces : cams.camforces.DesignForces, optional
+    forces : cams.dynamics.forces.DesignForces, optional
         The ``[dynamics]`` results (None without a ``[dynamics]`` table or where
         it does not apply).
     no_profile : str, optional
@@ -179,7 +179,7 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
 
 def assess_cam(cam) -> Assessment:
     """Assess a :class:`cams.cam.Cam`: its solution, the checks of its profile, its ``[dynamics]`` forces."""
-    from cams.profile import ProfileSizeError
+    from cams.profile.roller import ProfileSizeError
 
     checks, no_profile = None, None
     if not knife_in_groove(cam.design):

@@ -4,10 +4,10 @@
 the zone (once); ``tradeoff`` needs the zone but not the profile; the motion
 diagrams need only the program. Every result is computed once and reused.
 
-A flat-faced follower's design (:class:`cams.design.FlatFaceDesign`) has the
-same attributes: ``solution`` is a :class:`cams.flatface.FlatFaceSolution`
-(size from convexity), ``profile`` a :class:`cams.flatface.FlatFaceProfile`,
-``checks`` a :class:`cams.flatface.FlatCheckReport`; it has no trade-off and
+A flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`) has the
+same attributes: ``solution`` is a :class:`cams.profile.flat.FlatFaceSolution`
+(size from convexity), ``profile`` a :class:`cams.profile.flat.FlatFaceProfile`,
+``checks`` a :class:`cams.profile.flat.FlatCheckReport`; it has no trade-off and
 no forces (both None).
 """
 
@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from functools import cached_property
 
-from cams.design import CamDesign
+from cams.model.design import CamDesign
 
 __all__ = ["Cam"]
 
@@ -63,7 +63,7 @@ class Cam:
     @classmethod
     def from_file(cls, path) -> "Cam":
         """Load a design file (no computation)."""
-        from cams.designfile import load_design
+        from cams.io.designfile import load_design
 
         return cls(load_design(path))
 
@@ -71,7 +71,7 @@ class Cam:
     def solution(self):
         """The sized cam (:class:`optimize.solve.SolveResult`), solved on first use."""
         if self.flat:
-            from cams.flatface import size_flat_face
+            from cams.profile.flat import size_flat_face
 
             return size_flat_face(self.design)
         from optimize.solve import solve
@@ -89,9 +89,9 @@ class Cam:
 
     @cached_property
     def options(self):
-        """Profile settings from the design file (:class:`cams.profile.ProfileOptions`)."""
+        """Profile settings from the design file (:class:`cams.profile.roller.ProfileOptions`)."""
         if self.flat:
-            from cams.profile import ProfileOptions, resolve_tolerance
+            from cams.profile.roller import ProfileOptions, resolve_tolerance
 
             raw = self.design.extra.get("raw", {}) if isinstance(self.design.extra, dict) else {}
             given = raw.get("profile", {}).get("tolerance") if isinstance(raw.get("profile"), dict) else None
@@ -99,7 +99,7 @@ class Cam:
                 given = self.design.tolerance
             tol, field = resolve_tolerance(given, self.tolerance)
             return ProfileOptions(tol, None, self.design.bore_radius, tolerance_field=field)
-        from cams.profile import profile_options
+        from cams.profile.roller import profile_options
 
         return profile_options(self.design, tolerance=self.tolerance)
 
@@ -107,12 +107,12 @@ class Cam:
     def profile(self):
         """The sampled pitch curve and working profile(s) at the design's chord tolerance."""
         if self.flat:
-            from cams.flatface import flat_face_profile
+            from cams.profile.flat import flat_face_profile
 
             opts = self.options
             return flat_face_profile(self.design, self.solution.R0, tolerance=opts.tolerance,
                                      field=opts.tolerance_field)
-        from cams.profile import build_profile
+        from cams.profile.roller import build_profile
 
         return build_profile(self.design, self.solution.centre, tolerance=self.options.tolerance,
                              field=self.options.tolerance_field)
@@ -121,28 +121,28 @@ class Cam:
     def checks(self):
         """Jamming, undercut, validity and bore checks of the finished profile."""
         if self.flat:
-            from cams.flatface import check_flat_face
+            from cams.profile.flat import check_flat_face
 
             return check_flat_face(self.design, self.solution, self.profile)
-        from cams.checks import check_profile
+        from cams.checks.profile import check_profile
 
         return check_profile(self.design, self.solution.centre, options=self.options, profile=self.profile)
 
     @cached_property
     def _forces(self):
-        """``(DesignForces or None, note or None)`` of :func:`cams.camforces.design_forces`, computed once."""
+        """``(DesignForces or None, note or None)`` of :func:`cams.dynamics.forces.design_forces`, computed once."""
         if self.flat:
             return None, None
-        from cams.camforces import design_forces
+        from cams.dynamics.forces import design_forces
 
         return design_forces(self.design, self.solution.centre)
 
     @property
     def forces(self):
-        """Spring, contact force, torque and jump speed (:class:`cams.camforces.DesignForces`).
+        """Spring, contact force, torque and jump speed (:class:`cams.dynamics.forces.DesignForces`).
 
         ``None`` without a ``[dynamics]`` table, for a form-closed cam or
-        without a cam speed (see :func:`cams.camforces.design_forces`).
+        without a cam speed (see :func:`cams.dynamics.forces.design_forces`).
         """
         return self._forces[0]
 

@@ -64,7 +64,7 @@ def main(argv: list[str] | None = None) -> int:
     Until the project's modules are loaded, Ctrl-C ends the process with one
     line on stderr and exit code 130; from then on it is a
     :class:`KeyboardInterrupt` that the command turns into the same (its
-    outputs whole or absent, see :mod:`cams.files`).
+    outputs whole or absent, see :mod:`cams.io.files`).
     """
     try:
         previous = signal.signal(signal.SIGINT, _interrupted_while_loading)
@@ -101,7 +101,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"cams {args.command}: error: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except KeyboardInterrupt:
-        # Ctrl-C: one line, the shell's exit code for SIGINT; outputs are whole or absent (cams.files)
+        # Ctrl-C: one line, the shell's exit code for SIGINT; outputs are whole or absent (cams.io.files)
         print(f"cams {args.command}: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
     except BrokenPipeError:
@@ -109,7 +109,7 @@ def main(argv: list[str] | None = None) -> int:
         sys.stderr.close()
         return EXIT_OK
     except OSError as e:
-        # the commands' files name their option (cams.files); an error without a file name is a standard stream's
+        # the commands' files name their option (cams.io.files); an error without a file name is a standard stream's
         print(f"cams {args.command}: error: {e.filename or 'standard output'}: {e.strerror or e}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except MemoryError:

@@ -185,7 +185,7 @@ def _number(v) -> int | float:
 def _solve_one(args) -> dict:
     base, keys, values, method = args
     from cams.cam import Cam
-    from cams.designfile import design_from_dict
+    from cams.io.designfile import design_from_dict
 
     d = copy.deepcopy(base)
     for k, v in zip(keys, values):
@@ -270,7 +270,7 @@ def _check_workers(workers) -> None:
 
 def _check_base(base: dict, keys: tuple[str, ...], combos: list) -> None:
     """Refuse a base design that is wrong whatever the varied keys are (exit 2, not a table of the same error)."""
-    from cams.designfile import design_from_dict
+    from cams.io.designfile import design_from_dict
 
     def probe(values):
         d = copy.deepcopy(base)

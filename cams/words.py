@@ -41,7 +41,7 @@ __all__ = [
 #: Decimals of an angle in degrees, everywhere.
 ANGLE_DECIMALS = 4
 
-#: The checks of :mod:`cams.checks` and :mod:`cams.flatface` in words (name: what it checks).
+#: The checks of :mod:`cams.checks.profile` and :mod:`cams.profile.flat` in words (name: what it checks).
 CHECK_WORDS = {
     "jamming_rise": "pressure angle, rise",
     "jamming_return": "pressure angle, return",
@@ -215,7 +215,7 @@ def bore_text(radius: float, suggested: bool) -> str:
 
 
 def check_value(x: float | None, unit: str, f: str = ".6f") -> str:
-    """A check's value (:class:`cams.checks.Check`): lengths in mm with format ``f``, angles by :func:`deg`, counts.
+    """A check's value (:class:`cams.checks.profile.Check`): lengths in mm with format ``f``, angles by :func:`deg`, counts.
 
     >>> check_value(2.0, "")
     '2'

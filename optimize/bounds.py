@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from cams.design import CamDesign
+from cams.model.design import CamDesign
 from optimize.zone import GRID, max_violation, scan_peaks, zone_table
 
 __all__ = ["interior_point", "push_inside"]
@@ -63,7 +63,7 @@ def interior_point(design: CamDesign, near: np.ndarray) -> tuple[np.ndarray, flo
     design : CamDesign
     near : ndarray, shape (2,)
         A cam centre to start from, the follower's fixed frame
-        (:mod:`cams.follower`), length unit.
+        (:mod:`cams.model.follower`), length unit.
 
     Returns
     -------
@@ -117,7 +117,7 @@ def push_inside(design: CamDesign, centre: np.ndarray, violation: float) -> np.n
     ----------
     design : CamDesign
     centre : array_like, shape (2,)
-        Cam centre, the follower's fixed frame (:mod:`cams.follower`), length unit.
+        Cam centre, the follower's fixed frame (:mod:`cams.model.follower`), length unit.
     violation : float
         Largest signed distance of ``centre`` outside the continuous zone
         (length unit; e.g. ``max_violation(design, centre)[0].value``).

@@ -13,7 +13,7 @@ from typing import Callable
 
 import numpy as np
 
-from cams.design import CamDesign
+from cams.model.design import CamDesign
 from optimize.planar import EPS
 from optimize.zone import max_violation, sample_wedges
 
@@ -58,7 +58,7 @@ def violation_function(design: CamDesign, samples: int | None) -> Callable[[np.n
     -------
     callable
         ``G(O) -> float`` for a cam centre ``O`` (shape (2,), the follower's
-        fixed frame of :mod:`cams.follower`): the largest signed distance of
+        fixed frame of :mod:`cams.model.follower`): the largest signed distance of
         ``O`` outside the zone's half-planes, length unit; positive outside,
         <= 0 inside (minus the smallest slack).
     """
@@ -92,7 +92,7 @@ def admissible_arcs(
     ----------
     design : CamDesign
     centre : array_like, shape (2,)
-        Centre of the circle in the follower's fixed frame (:mod:`cams.follower`),
+        Centre of the circle in the follower's fixed frame (:mod:`cams.model.follower`),
         length unit: the rocker pivot for a fixed L, the roller centre A0 at
         the near dwell for a fixed R0.
     radius : float

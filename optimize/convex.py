@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from cams.design import CamDesign
+from cams.model.design import CamDesign
 from laws.errors import InfeasibleError
 from optimize.planar import EPS, nearest_point
 from optimize.result import Binding, CentreSolution

@@ -36,8 +36,8 @@ from typing import Callable
 
 import numpy as np
 
-from cams.design import CamDesign
-from cams.follower import Rocker
+from cams.model.design import CamDesign
+from cams.model.follower import Rocker
 from laws.errors import InfeasibleError
 from optimize.result import CentreSolution
 
@@ -382,7 +382,7 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
     or ``follower.offset``) is replaced by :func:`explain_infeasible`'s, which
     names the limit that binds and its nearest feasible value. When the
     continuous zone is not empty after all (a centre inside it, confirmed by
-    :func:`cams.pressure.check_pressure`), the solver failed: the error says so
+    :func:`cams.verify.pressure.check_pressure`), the solver failed: the error says so
     (field ``solve.method``) and gives that centre's R0. A result that is not
     certified because no feasible centre was found near it (``certified`` False,
     ``error_bound`` None) is checked the same way: when the zone is empty or
@@ -414,7 +414,7 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
 
 def _solver_failed(design: CamDesign, extra, err: InfeasibleError) -> InfeasibleError | None:
     """The error of a solver that found no centre in a zone that is not empty, or None if unconfirmed."""
-    from cams.pressure import check_pressure
+    from cams.verify.pressure import check_pressure
 
     lower, upper, O = zone_margin(design, extra)
     if upper > 0 or not check_pressure(design, O).ok:

@@ -1,6 +1,6 @@
 """Data for the pictures of the allowable-centre zone (no plotting here).
 
-The pictures in :mod:`cams.plots` take these objects and only draw them.
+The pictures in :mod:`cams.present.plots` take these objects and only draw them.
 """
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from cams.design import CamDesign
+from cams.model.design import CamDesign
 from optimize.planar import clip_polygon
 from optimize.zone import phase_wedges, sample_wedges
 
@@ -70,7 +70,7 @@ def analogue_diagram(design: CamDesign, n: int = 121) -> list[AnalogueCurve]:
     list of AnalogueCurve
         One per rise or return phase, in program order: roller centres ``A``
         and instant points ``D`` in the follower's fixed frame
-        (:mod:`cams.follower`), length unit; ``phi`` cam angles, radians from
+        (:mod:`cams.model.follower`), length unit; ``phi`` cam angles, radians from
         the start of the cycle.
     """
     base = design.with_(limits=replace(design.limits, safety_factor=1.0)) if design.limits.safety_factor != 1 else design
@@ -130,7 +130,7 @@ def zone_drawing(
     Returns
     -------
     ZoneDrawing
-        In the follower's fixed frame (:mod:`cams.follower`), length unit: the
+        In the follower's fixed frame (:mod:`cams.model.follower`), length unit: the
         view box holds ``centre``, the frame's origin (the rocker pivot, or
         A0 of a translating follower), the analogue curves and
         ``extra_points`` with 15 % of their span as margin; ``lines`` holds,

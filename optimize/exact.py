@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from cams.design import CamDesign
+from cams.model.design import CamDesign
 from laws.errors import CamsError, InfeasibleError
 from optimize.bounds import push_inside
 from optimize.planar import EPS, NearestPoint
@@ -79,7 +79,7 @@ def nearest_exact(
     design : CamDesign
     target : array_like, shape (2,)
         The roller centre at the near dwell (minimum R0) or the rocker pivot
-        (minimum L), the follower's fixed frame (:mod:`cams.follower`),
+        (minimum L), the follower's fixed frame (:mod:`cams.model.follower`),
         length unit.
     extra : (N, c), optional
         Additional half-planes ``N O <= c`` (e.g. a fixed offset as two).

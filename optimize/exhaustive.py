@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from cams.design import CamDesign
+from cams.model.design import CamDesign
 from laws.errors import InfeasibleError, InputError
 from optimize.planar import feasible_mask, line_crossings
 from optimize.result import Binding, CentreSolution
@@ -168,7 +168,7 @@ def nearest_exhaustive(
     design : CamDesign
     target : array_like, shape (2,)
         Roller centre at the near dwell (minimum R0) or rocker pivot (minimum
-        L), in the follower's fixed frame (:mod:`cams.follower`), length unit.
+        L), in the follower's fixed frame (:mod:`cams.model.follower`), length unit.
     samples : int
         Steps per constrained phase (``samples + 1`` positions with both ends).
     extra : (N, c), optional

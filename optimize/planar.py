@@ -243,7 +243,7 @@ def feasible_mask(points: np.ndarray, N: np.ndarray, c: np.ndarray, tol: float) 
     ----------
     points : ndarray, shape (k, 2)
         Points in the frame of the half-planes (for the solvers: cam centres
-        in the follower's fixed frame, :mod:`cams.follower`; length unit).
+        in the follower's fixed frame, :mod:`cams.model.follower`; length unit).
     N : ndarray, shape (m, 2)
         Unit normals, pointing out of the half-planes.
     c : ndarray, shape (m,)

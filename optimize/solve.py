@@ -13,7 +13,7 @@
 * a cam the designer chose (``[cam] base_radius`` with L or the offset, or
   ``[cam] centre``): nothing is sized, that cam is checked (mode ``"chosen"``).
 
-Every result is verified by :func:`cams.pressure.check_pressure`, which
+Every result is verified by :func:`cams.verify.pressure.check_pressure`, which
 recomputes the pressure angle over the whole cycle by kinematic inversion
 without the zone's formulas.
 """
@@ -25,9 +25,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from cams.design import CamDesign, METHODS
-from cams.follower import Rocker, Translating
-from cams.pressure import PressureReport, check_pressure
+from cams.model.design import CamDesign, METHODS
+from cams.model.follower import Rocker, Translating
+from cams.verify.pressure import PressureReport, check_pressure
 from laws.errors import InfeasibleError, InputError, check_option
 from optimize.diagnose import diagnosed
 from optimize.result import Binding, CentreSolution
@@ -44,7 +44,7 @@ class SolveResult:
     Attributes
     ----------
     centre : ndarray, shape (2,)
-        Cam centre in the follower's fixed frame (see :mod:`cams.follower`).
+        Cam centre in the follower's fixed frame (see :mod:`cams.model.follower`).
     R0 : float
         Base radius of the pitch curve: cam centre to the roller centre at the
         near dwell (length).
@@ -111,7 +111,7 @@ class SolveResult:
             the binding lines' cam angles, in degrees; the solver's mode,
             method, samples, error bound, margin, time (s) and notes.
         """
-        from cams.profile import smallest_cam_radius
+        from cams.profile.roller import smallest_cam_radius
 
         deg = lambda x: None if x is None else float(np.degrees(x))  # noqa: E731
         p = self.pressure
@@ -184,7 +184,7 @@ def _offset_x(v: float) -> float:
     """The fixed offset's sign convention, ``x_O = -e``, read either way.
 
     The follower axis (``x = 0`` of the translating follower's frame, see
-    :mod:`cams.follower`) lies ``e`` to the +X side of the cam centre ``O``, so
+    :mod:`cams.model.follower`) lies ``e`` to the +X side of the cam centre ``O``, so
     the centre's abscissa is ``x_O = -e`` and the offset of a centre is
     ``e = -x_O``: given ``e`` this returns ``x_O``, given ``x_O`` it returns ``e``
     (lengths, the design's unit).
@@ -209,7 +209,7 @@ def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None,
     ----------
     design : CamDesign
     target : ndarray, shape (2,)
-        Point to approach in the follower's fixed frame (:mod:`cams.follower`),
+        Point to approach in the follower's fixed frame (:mod:`cams.model.follower`),
         length unit: the roller centre A0 at the near dwell (minimum R0) or the
         rocker pivot, the origin (minimum L).
     method : {"exact", "convex", "exhaustive"}, optional
@@ -366,13 +366,13 @@ def _solve_chosen(design: CamDesign) -> SolveResult:
 
 
 def _solve_flat(design, method: str | None, objective: str | None):
-    """A flat face's cam (:func:`cams.flatface.size_flat_face`); it has no zone solver nor objective to choose."""
+    """A flat face's cam (:func:`cams.profile.flat.size_flat_face`); it has no zone solver nor objective to choose."""
     if method is not None:
         raise InputError("method", "does not apply to a flat-faced follower: its base radius follows from "
                          "convexity directly")
     if objective not in (None, "R0"):
         raise InputError("objective", "a flat-faced follower's cam is sized by R0 (convexity); only 'R0'")
-    from cams.flatface import size_flat_face
+    from cams.profile.flat import size_flat_face
 
     return size_flat_face(design)
 
@@ -386,7 +386,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
         Lengths in its unit, angles in radians; ``design.limits`` may fix the
         centre distance L (rocker) or a floor on R0, the follower a fixed
         offset (translating). A flat-faced follower's design is sized by
-        convexity (:func:`cams.flatface.size_flat_face`).
+        convexity (:func:`cams.profile.flat.size_flat_face`).
     method : {"exact", "convex", "exhaustive"}, optional
         Overrides ``design.method`` (roller followers; refused for a flat face).
     objective : {"R0", "L"}, optional
@@ -396,9 +396,9 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
 
     Returns
     -------
-    SolveResult or cams.flatface.FlatFaceSolution
+    SolveResult or cams.profile.flat.FlatFaceSolution
         For a flat face, the latter (what ``cams solve`` prints for it); else
-        The cam centre in the follower's fixed frame (:mod:`cams.follower`),
+        The cam centre in the follower's fixed frame (:mod:`cams.model.follower`),
         ``R0 = |O - A0|`` (A0 the roller centre at the near dwell), ``L = |O|``
         for a rocker (pivot at the origin), the offset ``e = -x_O`` for a
         translating follower (positive: the follower's axis on the +X side of

@@ -11,8 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cams.design import CamDesign
-from cams.follower import Rocker
+from cams.model.design import CamDesign
+from cams.model.follower import Rocker
 from laws.errors import InputError
 from optimize.circle import best_on_circle
 
@@ -23,7 +23,7 @@ __all__ = ["TradeOff", "tradeoff"]
 class TradeOff:
     """Pareto front of (L, R0): arrays of equal length, L increasing, R0 decreasing.
 
-    ``centres`` has shape (n, 2), fixed frame of :mod:`cams.follower`.
+    ``centres`` has shape (n, 2), fixed frame of :mod:`cams.model.follower`.
     """
 
     L: np.ndarray

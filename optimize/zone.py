@@ -65,8 +65,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from cams.design import CamDesign
-from cams.follower import Rocker
+from cams.model.design import CamDesign
+from cams.model.follower import Rocker
 
 __all__ = ["Wedges", "wedges", "phase_wedges", "sample_wedges", "max_violation", "ViolationPeak", "ZoneTable",
            "zone_table", "clear_cache", "Peaks", "scan_peaks", "GRID"]

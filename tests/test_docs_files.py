@@ -17,13 +17,13 @@ from pathlib import Path
 
 import pytest
 
-import cams.camforces as camforces
-import cams.design as design_mod
-import cams.designfile as designfile
-import cams.kinetostatics as kinetostatics
-import cams.machine as machine_mod
-import cams.machinefile as machinefile
-import cams.profile as profile_mod
+import cams.dynamics.forces as camforces
+import cams.model.design as design_mod
+import cams.io.designfile as designfile
+import cams.machine.kinetostatics as kinetostatics
+import cams.machine.timing as machine_mod
+import cams.machine.machinefile as machinefile
+import cams.profile.roller as profile_mod
 from laws.registry import LAWS
 
 DOC = Path(__file__).resolve().parents[1] / "docs" / "files.md"
@@ -79,7 +79,7 @@ def _missing(text: str, keys) -> list[str]:
 
 
 # --------------------------------------------------------------------------- design files
-#: Each key set of cams.designfile._KEYS and the section of the design-file part that documents it.
+#: Each key set of cams.io.designfile._KEYS and the section of the design-file part that documents it.
 DESIGN_SECTIONS = {
     "": "### Top level",
     "follower": "### `[follower]`",
@@ -97,7 +97,7 @@ DESIGN_SECTIONS = {
 
 
 def test_every_design_key_set_has_a_section():
-    """A new key set in cams.designfile._KEYS needs a section here (and in docs/files.md)."""
+    """A new key set in cams.io.designfile._KEYS needs a section here (and in docs/files.md)."""
     assert set(designfile._KEYS) == set(DESIGN_SECTIONS)
 
 
@@ -234,7 +234,7 @@ OPTION_MODULES = [designfile, design_mod, machinefile, machine_mod, kinetostatic
 @pytest.mark.parametrize("module", OPTION_MODULES, ids=lambda m: m.__name__)
 def test_option_words_documented(module):
     """Every word a loader accepts through check_option (closure, method, placement, ...) is in docs/files.md."""
-    extra = [importlib.import_module(n) for n in ("cams.flywheel", "cams.linkage.analysis", "optimize.solve")]
+    extra = [importlib.import_module(n) for n in ("cams.machine.flywheel", "cams.machine.linkage.analysis", "optimize.solve")]
     words = _call_args(module, "check_option", 2, [module, *extra])
     assert words, f"no check_option options found in {module.__name__}"
     assert _missing(_text(), [f'"{w}"' for w in words]) == []

@@ -29,24 +29,24 @@ DOCTEST_MODULES = [
     "laws.table",
     "laws.units",
     # linkage and machines
-    "cams.linkage",
-    "cams.linkage.primitives",
-    "cams.linkage.synthesis",
-    "cams.linkage.analysis",
-    "cams.linkage.machines",
-    "cams.machine",
-    "cams.machinefile",
+    "cams.machine.linkage",
+    "cams.machine.linkage.primitives",
+    "cams.machine.linkage.synthesis",
+    "cams.machine.linkage.analysis",
+    "cams.machine.linkage.machines",
+    "cams.machine.timing",
+    "cams.machine.machinefile",
     "cams.commands.machine",
     # forces
-    "cams.flywheel",
-    "cams.camforces",
-    "cams.kinetostatics",
+    "cams.machine.flywheel",
+    "cams.dynamics.forces",
+    "cams.machine.kinetostatics",
     # profiles
-    "cams.flatface",
+    "cams.profile.flat",
     "cams.words",
     "cams.sweep",
-    "cams.profile",
-    "cams.export",
+    "cams.profile.roller",
+    "cams.io.export",
 ]
 
 #: Modules checked for a complete ``__all__``.

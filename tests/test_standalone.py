@@ -7,7 +7,7 @@ Three rules, over every tracked text file:
   not);
 * no absolute path into a user's or a workspace's folders (the usual top-level folders of such trees);
 * a path named in the text (``folder/file.ext``) has its folder inside the repository: relative to the root,
-  to the file's folder, or as the end of a tracked folder (``linkage/machines.py`` for ``cams/linkage/``);
+  to the file's folder, or as the end of a tracked folder (``linkage/machines.py`` for ``cams/machine/linkage/``);
 * a Markdown document named alone (``files.md``) is the name of a tracked file: a reader can open it.
 """
 

@@ -40,7 +40,7 @@ def print_checks(rep: dict) -> None:
 def run(args) -> int:
     from cams.cam import Cam
     from cams.commands.solve import print_assessment
-    from cams.designfile import load_design
+    from cams.io.designfile import load_design
 
     design = load_design(args.file)
     if is_flat(design):

@@ -8,7 +8,7 @@ EXIT_INTERRUPTED = 130
 
 
 def is_flat(design) -> bool:
-    """True for a flat-faced follower's design (:class:`cams.design.FlatFaceDesign`)."""
+    """True for a flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`)."""
     return getattr(design, "face", "roller") == "flat"
 
 

@@ -68,7 +68,7 @@ def print_forces(rep: dict, *, follower: str = "rocker") -> None:
     """
     import math
 
-    from cams.camforces import jump_text
+    from cams.dynamics.forces import jump_text
     from cams.words import deg, force, spring_text, torque
 
     lk = rep.get("linkage")
@@ -137,8 +137,8 @@ def _check_plot_folder(path: str) -> None:
 
 
 def run(args) -> int:
-    from cams.machine import design_machine
-    from cams.machinefile import load_machine
+    from cams.machine.timing import design_machine
+    from cams.machine.machinefile import load_machine
 
     if args.plot is not None:
         _check_plot_folder(args.plot)
@@ -147,12 +147,12 @@ def run(args) -> int:
     rep = res.to_dict()
     forces = None
     if args.forces:
-        from cams.kinetostatics import machine_forces
+        from cams.machine.kinetostatics import machine_forces
 
         forces = machine_forces(spec, found=res)  # the windows and timing design_machine found
         rep["forces"] = forces.to_dict()
     if args.plot is not None:
-        from cams.files import ensure_folder
+        from cams.io.files import ensure_folder
 
         out = ensure_folder(args.plot, "--plot")
         path = out / f"{Path(args.file).stem}_cycle.png"
@@ -161,7 +161,7 @@ def run(args) -> int:
         if forces is not None:
             rep["plots"] += [str(p) for p in forces.plot(out, Path(args.file).stem, title=spec.name)]
     if args.json:
-        from cams.camforces import json_safe
+        from cams.dynamics.forces import json_safe
 
         print(json.dumps(json_safe(rep), indent=2, ensure_ascii=False, allow_nan=False))
     else:

@@ -10,13 +10,13 @@ __all__ = ["register", "run"]
 
 
 def run(args) -> int:
-    from cams.templates import TEMPLATES
+    from cams.io.templates import TEMPLATES
 
     text = TEMPLATES[f"{args.kind}_flat" if args.flat else args.kind]
     if args.out is None:
         print(text, end="")
         return EXIT_OK
-    from cams.files import atomic_write, check_output_path, output_kind, writes_stdout
+    from cams.io.files import atomic_write, check_output_path, output_kind, writes_stdout
 
     path = check_output_path(args.out, "--out")
     kind, target = output_kind(path)

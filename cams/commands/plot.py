@@ -36,7 +36,7 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Pat
     import matplotlib
 
     matplotlib.use("Agg", force=False)
-    from cams import plots
+    from cams.present import plots
 
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
@@ -80,7 +80,7 @@ def _only(spec: str | None) -> tuple[str, ...] | None:
 
 def run(args) -> int:
     from cams.cam import Cam
-    from cams.files import all_or_nothing, atomic_write, ensure_folder
+    from cams.io.files import all_or_nothing, atomic_write, ensure_folder
 
     which = _only(args.only)
     cam = Cam.from_file(args.file)
@@ -108,7 +108,7 @@ def run(args) -> int:
             print("cams plot: note: --animate: a knife edge cannot run in a groove, there is no profile to turn; "
                   "skipped", file=sys.stderr)
         elif args.animate:
-            from cams.plots import animate_profile
+            from cams.present.plots import animate_profile
 
             title = a.title()
             written.append(atomic_write(out / f"{_slug(cam.design.name)}_turn.gif", "--out",

@@ -13,7 +13,7 @@ __all__ = ["register"]
 
 def _check_outputs(args) -> None:
     """Refuse bad output paths before anything is computed: empty, unwritable, the design file, or one twice."""
-    from cams.files import check_output_paths
+    from cams.io.files import check_output_paths
 
     check_output_paths([(f"--{opt}", getattr(args, opt)) for opt in ("csv", "dxf", "svg")],
                        inputs=[("FILE", args.file)])
@@ -24,8 +24,8 @@ def _write(args, prof, bore, failing: str = "") -> list[str]:
 
     ``failing`` (the reasons a failing cam fails) marks the DXF and SVG as failing; a CSV is never marked.
     """
-    from cams.export import write_csv, write_dxf, write_svg
-    from cams.files import STDOUT, all_or_nothing
+    from cams.io.export import write_csv, write_dxf, write_svg
+    from cams.io.files import STDOUT, all_or_nothing
 
     written = []
     with all_or_nothing():
@@ -42,7 +42,7 @@ def _summary_stream(args):
     """Where the summary goes: stderr when a file is written to standard output, so the two do not mix."""
     import sys
 
-    from cams.files import writes_stdout
+    from cams.io.files import writes_stdout
 
     return sys.stderr if any(writes_stdout(getattr(args, o)) for o in ("csv", "dxf", "svg")) else sys.stdout
 
@@ -62,7 +62,7 @@ def _report(cam, prof, bore, given) -> dict:
         rep.update({"min_work_radius": prof.min_work_radius, "min_rho": sol.min_rho, "min_radius": design.min_radius,
                     "bore_radius": bore, "bore_suggested": given is None, "columns": "phi_deg,work_x,work_y"})
     else:
-        from cams.profile import smallest_cam_radius
+        from cams.profile.roller import smallest_cam_radius
 
         rep.update({"roller_radius": prof.roller_radius, "min_work_radius": prof.min_work_radius, "bore_radius": bore,
                     "bore_suggested": given is None,
@@ -77,8 +77,8 @@ def run(args) -> int:
     from cams.assess import knife_in_groove
     from cams.cam import Cam
     from cams.commands.solve import print_assessment
-    from cams.designfile import load_design
-    from cams.profile import default_bore_radius
+    from cams.io.designfile import load_design
+    from cams.profile.roller import default_bore_radius
 
     design = load_design(args.file)
     flat = is_flat(design)

@@ -13,8 +13,8 @@ __all__ = ["register", "run"]
 
 def run(args) -> int:
     from cams.cam import Cam
-    from cams.files import all_or_nothing, check_output_paths
-    from cams.report import write_report
+    from cams.io.files import all_or_nothing, check_output_paths
+    from cams.present.report import write_report
 
     cam = Cam.from_file(args.file)
     if not args.out.strip():

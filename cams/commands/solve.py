@@ -61,7 +61,7 @@ def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translati
     spring's units follow the ``follower`` kind: N/m and N, or N m/rad and
     N m for a rocker's torsional spring (:func:`cams.words.spring_text`).
     """
-    from cams.camforces import jump_text
+    from cams.dynamics.forces import jump_text
     from cams.words import force, torque
 
     sp = fo["spring"]
@@ -153,7 +153,7 @@ def _run_flat(args, cam) -> int:
 
 def run(args) -> int:
     from cams.cam import Cam
-    from cams.designfile import load_design
+    from cams.io.designfile import load_design
 
     design = load_design(args.file)
     cam = Cam(design, method=None if is_flat(design) else args.method)
@@ -165,7 +165,7 @@ def run(args) -> int:
         return _not_certified(args, rep)
     forces = None
     if "dynamics" in design.extra:
-        from cams.camforces import impact_note
+        from cams.dynamics.forces import impact_note
 
         df, note = cam.forces, cam.forces_note  # computed once: the assessment reads them too
         if note:
@@ -181,7 +181,7 @@ def run(args) -> int:
     rep.update(a.to_dict())
     if args.json:
         if forces is not None:
-            from cams.camforces import json_safe
+            from cams.dynamics.forces import json_safe
 
             rep["forces"] = json_safe(forces)  # an unbounded force (rigid impact) as null: strict JSON
         print(json.dumps(rep, indent=2))

@@ -16,9 +16,9 @@ from pathlib import Path
 import pytest
 
 from cams.cli import main
-from cams.designfile import MAX_SAMPLES, design_from_dict, load_design
-from cams.files import MAX_NUMBER
-from cams.machinefile import load_machine
+from cams.io.designfile import MAX_SAMPLES, design_from_dict, load_design
+from cams.io.files import MAX_NUMBER
+from cams.machine.machinefile import load_machine
 from laws.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -15,19 +15,19 @@ def test_motion_does_not_solve_and_results_are_reused(monkeypatch):
         calls["solve"] += 1
         return real_solve(*a, **k)
 
-    import cams.profile
+    import cams.profile.roller
 
-    real_build = cams.profile.build_profile
+    real_build = cams.profile.roller.build_profile
 
     def counting_build(*a, **k):
         calls["profile"] += 1
         return real_build(*a, **k)
 
     monkeypatch.setattr(optimize.solve, "solve", counting_solve)
-    monkeypatch.setattr(cams.profile, "build_profile", counting_build)
+    monkeypatch.setattr(cams.profile.roller, "build_profile", counting_build)
     cam = Cam.from_file(EXAMPLES / "rocker_force.toml")
     cam.motion(np.linspace(0, 6, 7))
-    from cams.plots import plot_motion
+    from cams.present.plots import plot_motion
 
     plot_motion(cam.design)
     assert calls == {"solve": 0, "profile": 0}

@@ -2,8 +2,8 @@
 
 References are independent of the code under test: the centres of (R0, L) come from plane geometry (two circle
 distances), and the pressure angle of a failing cam is recomputed here from the pitch curve by kinematic
-inversion with numerical derivatives (the frames of docs/files.md, not :mod:`cams.follower` nor
-:mod:`cams.pressure`).
+inversion with numerical derivatives (the frames of docs/files.md, not :mod:`cams.model.follower` nor
+:mod:`cams.verify.pressure`).
 """
 
 from __future__ import annotations
@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.designfile import design_from_dict
-from cams.files import read_toml
+from cams.io.designfile import design_from_dict
+from cams.io.files import read_toml
 from laws.errors import InputError
 from optimize.solve import solve
 from tests.conftest import EXAMPLES
@@ -231,7 +231,7 @@ def test_R0_and_L_name_both_centres_and_take_the_one_nearer_its_limit(tmp_path, 
 
 def test_two_equally_good_centres_are_refused_naming_both(monkeypatch):
     import optimize.solve as s
-    from cams.pressure import PressureReport
+    from cams.verify.pressure import PressureReport
 
     d, res = _minimum("rocker_force.toml")
     design = design_from_dict(_chosen(d, R0=res.R0, L=res.L))
@@ -304,7 +304,7 @@ def test_a_translating_chosen_cam_lies_below_the_roller():
 @pytest.mark.parametrize("kind, fixes", [("rocker", "# centre_distance = 130.0"), ("translating", "# offset = 0.0")])
 @pytest.mark.parametrize("form", ["base_radius", "centre"])
 def test_the_templates_chosen_cam_lines_uncommented_check_and_pass(tmp_path, capsys, kind, fixes, form):
-    from cams.templates import TEMPLATES
+    from cams.io.templates import TEMPLATES
 
     lines = TEMPLATES[kind].splitlines()
     assert any(ln.startswith(f"# {form} = ") for ln in lines)

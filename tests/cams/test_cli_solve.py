@@ -68,7 +68,7 @@ def test_usage_error_exit_2():
 def test_tiny_design_prints_its_digits(tmp_path, capsys):
     """A micrometre design keeps about seven significant digits (was R0 = 0.000000 mm)."""
     from cams.cli import main
-    from cams.designfile import load_design
+    from cams.io.designfile import load_design
     from optimize.solve import solve
     from tests.conftest import EXAMPLES
 

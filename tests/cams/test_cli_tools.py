@@ -7,7 +7,7 @@ import sys
 import pytest
 
 from cams.cli import build_parser, main
-from cams.designfile import load_design
+from cams.io.designfile import load_design
 from tests.conftest import EXAMPLES
 
 
@@ -30,7 +30,7 @@ def test_report_html_and_pdf(tmp_path, capsys, example):
     for word in ("Inputs", "Results", "Checks", "base radius R0", "data:image/png;base64,"):
         assert word in html
     from cams.cam import Cam
-    from cams.report import report_pages
+    from cams.present.report import report_pages
 
     pages = len(report_pages(Cam.from_file(EXAMPLES / example), figs=[])) + 4  # tables (flowed), four pictures
     pdf = (tmp_path / "report.pdf").read_bytes()
@@ -82,7 +82,7 @@ def test_written_files_have_the_usual_permissions(tmp_path):
 
 def test_animation_gif(tmp_path):
     from cams.cam import Cam
-    from cams.plots import animate_profile
+    from cams.present.plots import animate_profile
 
     p = animate_profile(Cam.from_file(EXAMPLES / "translating_force.toml"), tmp_path / "a.gif", frames=4)
     data = p.read_bytes()

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict, load_design
-from cams.follower import Rocker, Translating
+from cams.io.designfile import design_from_dict, load_design
+from cams.model.follower import Rocker, Translating
 from laws.errors import InputError
 from tests.conftest import EXAMPLES, rocker_dict
 
@@ -197,7 +197,7 @@ def test_journal_radius_refused_for_a_translating_follower_in_design_files():
 
 def test_limits_refuse_a_return_limit_under_force_closure_in_the_api():
     """The rule lives in Limits, so designs built in Python obey it as files do."""
-    from cams.design import Limits
+    from cams.model.design import Limits
 
     with pytest.raises(InputError) as e:
         Limits(np.radians(45), return_pressure_angle=np.radians(40))

@@ -7,9 +7,9 @@ import json
 import pytest
 
 from cams.cli import main
-from cams.design import FlatFaceDesign
-from cams.designfile import design_from_dict, load_design
-from cams.flatface import FlatRocker, FlatTranslating
+from cams.model.design import FlatFaceDesign
+from cams.io.designfile import design_from_dict, load_design
+from cams.profile.flat import FlatRocker, FlatTranslating
 from laws.errors import InputError
 from tests.conftest import EXAMPLES
 
@@ -271,7 +271,7 @@ def test_api_refuses_flat_faces_where_only_rollers_apply(tmp_path):
     """The sweep and the machine loader refuse a flat face with an InputError (not an AttributeError)."""
     import tomllib
 
-    from cams.machinefile import load_machine
+    from cams.machine.machinefile import load_machine
     from cams.sweep import sweep
 
     base = tomllib.loads(ROCKER.read_text(encoding="utf-8"))

@@ -1,4 +1,4 @@
-"""Flat-faced followers from design files, against brute force independent of cams.flatface.
+"""Flat-faced followers from design files, against brute force independent of cams.profile.flat.
 
 The brute force knows only the mechanism: the face is a line that the motion
 program (laws' evaluation) places in the fixed frame; turned into the cam's
@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.designfile import load_design
+from cams.io.designfile import load_design
 from tests.conftest import EXAMPLES
 
 TRANSLATING = EXAMPLES / "translating_flat.toml"

@@ -76,12 +76,12 @@ def test_report_refuses_an_output_that_is_a_folder_before_computing(tmp_path, ca
 
 def test_report_leaves_no_pdf_when_the_html_fails(tmp_path, capsys, monkeypatch):
     """The disk fills up while the page is written: the PDF, written first, must not remain."""
-    import cams.report
+    import cams.present.report
 
     def full_disk(*a, **k):
         raise OSError(28, "No space left on device")
 
-    monkeypatch.setattr(cams.report.base64, "b64encode", full_disk)
+    monkeypatch.setattr(cams.present.report.base64, "b64encode", full_disk)
     rc, stdout, err = _run(capsys, "report", EXAMPLES / "rocker_force.toml", "--out", tmp_path / "r")
     assert rc == 2 and err.startswith("cams report: error: --out: ") and "No space" in err
     assert stdout == ""

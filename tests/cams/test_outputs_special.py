@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.files import all_or_nothing, atomic_write, check_output_path
+from cams.io.files import all_or_nothing, atomic_write, check_output_path
 from laws.errors import InputError
 from tests.conftest import EXAMPLES
 
@@ -40,7 +40,7 @@ def _device(tmp_path, name: str, minor: int) -> Path:
 
 def _guard_descriptor(name: str) -> None:
     """Only a writer that streams to ``name`` may be pointed at it (a faulty one run as root replaces it)."""
-    from cams.files import output_kind
+    from cams.io.files import output_kind
 
     assert output_kind(name)[0] == "descriptor"
 
@@ -176,7 +176,7 @@ def test_two_standard_outputs_are_refused(tmp_path, capsys):
 
 
 def test_output_kinds():
-    from cams.files import output_kind
+    from cams.io.files import output_kind
 
     assert output_kind("-") == ("descriptor", 1)
     assert output_kind("/dev/stdout") == ("descriptor", 1)

@@ -179,7 +179,7 @@ def test_plot_draws_the_pictures_titled_failing_and_exits_1(designs, capsys, tmp
     import matplotlib
 
     matplotlib.use("Agg")
-    from cams import plots
+    from cams.present import plots
 
     titles = []
     real = plots.mark_failing
@@ -229,8 +229,8 @@ def test_sweep_checks_dynamics_as_solve_does(designs, capsys, tmp_path):
 
 def test_report_reports_buildable_and_exits_1(designs, capsys, tmp_path):
     from cams.cam import Cam
-    from cams.designfile import load_design
-    from cams.report import report_sections
+    from cams.io.designfile import load_design
+    from cams.present.report import report_sections
 
     cam = Cam(load_design(designs["bore"]))
     rows = dict(report_sections(cam)[1][1])
@@ -244,7 +244,7 @@ def test_plot_animation_of_a_failing_cam_is_titled(designs, capsys, tmp_path, mo
     import matplotlib
 
     matplotlib.use("Agg")
-    from cams import plots
+    from cams.present import plots
 
     titles = []
     real = plots.mark_failing
@@ -262,7 +262,7 @@ def test_a_result_that_is_not_certified_is_not_usable():
 
     from cams.assess import assess
     from cams.cam import Cam
-    from cams.designfile import load_design
+    from cams.io.designfile import load_design
 
     cam = Cam(load_design(EXAMPLES / "rocker_force.toml"))
     ok = assess(cam.design, cam.solution, checks=cam.checks)
@@ -300,7 +300,7 @@ def test_sweep_counts_a_not_certified_row_as_failing(capsys, tmp_path, monkeypat
     import dataclasses
 
     import optimize.solve as solve_module
-    from cams.files import read_toml
+    from cams.io.files import read_toml
     from cams.sweep import sweep
 
     real = solve_module.solve

@@ -14,4 +14,4 @@ def test_every_subpackage_is_distributed():
     on_disk = {str(p.parent.relative_to(ROOT)).replace("/", ".")
                for top in ("cams", "laws", "optimize") for p in (ROOT / top).rglob("__init__.py")}
     assert on_disk and on_disk <= shipped
-    assert {"cams.commands", "cams.linkage"} <= shipped
+    assert {"cams.commands", "cams.machine.linkage"} <= shipped

@@ -16,9 +16,9 @@ import pytest  # noqa: E402
 from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
 from matplotlib.text import Text  # noqa: E402
 
-from cams import plots  # noqa: E402
+from cams.present import plots  # noqa: E402
 from cams.cam import Cam  # noqa: E402
-from cams.designfile import design_from_dict  # noqa: E402
+from cams.io.designfile import design_from_dict  # noqa: E402
 from tests.conftest import EXAMPLES, rocker_dict  # noqa: E402
 
 ALL_EXAMPLES = sorted(p.stem for p in EXAMPLES.glob("*.toml"))
@@ -135,7 +135,7 @@ def _ink(fig) -> float:
 
 @pytest.mark.parametrize("name", ["slotting_feed_cam", "rocker_form", "rocker_flat"])
 def test_report_pages_are_filled_and_rows_do_not_overlap(name):
-    from cams.report import report_pages, report_sections
+    from cams.present.report import report_pages, report_sections
 
     cam = Cam.from_file(EXAMPLES / f"{name}.toml")
     sections = report_sections(cam)

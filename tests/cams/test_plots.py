@@ -5,7 +5,7 @@ import pytest
 from shapely.geometry import Point, Polygon
 
 from cams.cam import Cam
-from cams.plots import plot_motion, plot_pressure, plot_profile, plot_zone, save
+from cams.present.plots import plot_motion, plot_pressure, plot_profile, plot_zone, save
 from tests.conftest import EXAMPLES
 
 
@@ -46,7 +46,7 @@ def test_profile_picture_draws_the_exported_profile(cams_by_name):
 
 
 def test_motion_picture_marks_impacts():
-    from cams.designfile import design_from_dict
+    from cams.io.designfile import design_from_dict
     from tests.conftest import rocker_dict
 
     d = design_from_dict(rocker_dict(motion=[{"phase": "rise", "law": "harmonic", "angle": 100},

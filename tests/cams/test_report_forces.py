@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from cams.cam import Cam
-from cams.report import report_sections, write_report
+from cams.present.report import report_sections, write_report
 from tests.conftest import EXAMPLES
 
 FEED = EXAMPLES / "slotting_feed_cam.toml"

@@ -5,9 +5,9 @@ import json
 import pytest
 
 from cams.cam import Cam
-from cams.camforces import cam_forces, jump_speed
+from cams.dynamics.forces import cam_forces, jump_speed
 from cams.cli import main
-from cams.report import report_sections
+from cams.present.report import report_sections
 from tests.conftest import EXAMPLES
 
 FILE = EXAMPLES / "slotting_feed_cam.toml"
@@ -38,13 +38,13 @@ def test_report_has_a_forces_page():
 
 def test_cams_solve_computes_the_forces_once(monkeypatch, capsys):
     """The forces printed and the assessment's [dynamics] check come from one call (Cam.forces, Cam.forces_note)."""
-    import cams.camforces
+    import cams.dynamics.forces
     from cams.cli import main
     from tests.conftest import EXAMPLES
 
     calls = []
-    real = cams.camforces.design_forces
-    monkeypatch.setattr(cams.camforces, "design_forces", lambda *a, **k: calls.append(1) or real(*a, **k))
+    real = cams.dynamics.forces.design_forces
+    monkeypatch.setattr(cams.dynamics.forces, "design_forces", lambda *a, **k: calls.append(1) or real(*a, **k))
     assert main(["solve", str(EXAMPLES / "slotting_feed_cam.toml")]) == 0
     out = capsys.readouterr().out
     assert len(calls) == 1 and "contact force" in out

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from cams.sweep import MAX_DESIGNS, parse_vary, sweep
 from laws.errors import InputError
 from optimize.solve import solve

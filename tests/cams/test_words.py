@@ -1,7 +1,7 @@
 """Words a designer reads: the names of the binding lines, both radii of the cam, units and precision.
 
 The references here are independent of the printed text's code: the signed
-pressure angle is recomputed by kinematic inversion (``cams.pressure``), the
+pressure angle is recomputed by kinematic inversion (``cams.verify.pressure``), the
 cam's smallest radius by a dense sampling of the working profile.
 """
 
@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
-from cams.pressure import contact_normal
+from cams.io.designfile import design_from_dict
+from cams.verify.pressure import contact_normal
 from optimize.solve import solve
 from tests.conftest import rocker_dict
 
@@ -122,7 +122,7 @@ def _dense_smallest_radius(design, centre) -> float:
 
 @pytest.mark.parametrize("name", EXAMPLES_ROLLER)
 def test_smallest_cam_radius_against_dense_swept_rollers_examples(name, examples_dir):
-    from cams.designfile import load_design
+    from cams.io.designfile import load_design
 
     d = load_design(examples_dir / f"{name}.toml")
     res = solve(d)
@@ -142,7 +142,7 @@ def test_smallest_cam_radius_against_dense_swept_rollers_every_sense(key):
 
 def test_smallest_cam_radius_below_R0_less_roller_when_the_rocker_swings_in():
     """A rocker whose rise brings the roller nearer the cam centre: the cam is smallest inside the rise, not at R0 - r."""
-    from cams.profile import smallest_cam_radius
+    from cams.profile.roller import smallest_cam_radius
 
     d = design_from_dict(rocker_dict(follower={"swing": 30.0}, limits={"pressure_angle": 40},
                                      cam={"rotation": "cw"}))
@@ -172,7 +172,7 @@ def test_smallest_cam_radius_at_deg_is_where_it_is_reached(key):
 
 def test_smallest_cam_radius_and_its_angle_inside_the_rise_against_the_dense_argmin():
     """A centre the rise brings the roller nearest to (not the dwell): radius and angle are the dense argmin's."""
-    from cams.profile import smallest_cam_radius
+    from cams.profile.roller import smallest_cam_radius
 
     d = design_from_dict(rocker_dict(follower={"swing": 30.0}, limits={"pressure_angle": 40}))
     A = d.follower.position(d.program.evaluate(np.radians([30.0])).s)[0]  # the roller centre a third into the rise

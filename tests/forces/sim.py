@@ -7,7 +7,7 @@ follower's coordinate:
     m q'' = Q - (F0 + k q) - P,    Q = max(0, k_c p + c_c p')  while p = q_cam(t) - q > 0, else 0
 
 (``q_cam(t)``: the program's lift at the cam angle ``omega t``). Nothing here uses
-the closed-form contact force of :mod:`cams.camforces`: the follower may leave the
+the closed-form contact force of :mod:`cams.dynamics.forces`: the follower may leave the
 cam, and leaving it shows as a positive gap ``q - q_cam``, found by a solve_ivp
 event. Friction is left out: it changes the size of the contact force, not its sign.
 """
@@ -19,8 +19,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from cams.camforces import FollowerDynamics, _kinematics
-from cams.design import CamDesign
+from cams.dynamics.forces import FollowerDynamics, _kinematics
+from cams.model.design import CamDesign
 
 __all__ = ["Flight", "simulate"]
 

@@ -1,4 +1,4 @@
-"""Forces at a force-closed cam (cams.camforces): contact force, torque, spring, jump speed, jamming.
+"""Forces at a force-closed cam (cams.dynamics.forces): contact force, torque, spring, jump speed, jamming.
 
 The jump speed is confirmed by a time simulation of the follower on a stiff one-sided
 contact (tests/forces/sim.py) that knows nothing of the closed-form contact force.
@@ -9,8 +9,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.camforces import FollowerDynamics, Spring, cam_forces, jamming_limit, jump_speed, spring_for_contact
-from cams.designfile import design_from_dict, load_design
+from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, jamming_limit, jump_speed, spring_for_contact
+from cams.io.designfile import design_from_dict, load_design
 from tests.conftest import EXAMPLES, rocker_dict
 from laws.errors import InputError
 from optimize.solve import solve
@@ -68,7 +68,7 @@ def test_force_components(case):
 
 
 def test_pressure_angle_matches_cams_pressure(case):
-    from cams.pressure import pressure_angle
+    from cams.verify.pressure import pressure_angle
 
     name, design, centre, dyn = case
     f = cam_forces(design, centre, dyn, rpm=300)
@@ -118,7 +118,7 @@ def test_free_spring_is_the_linear_programmes_optimum(name, rpm):
     """The closed-form spring against scipy's LP solver (HiGHS) on the same sampled constraints."""
     from scipy.optimize import linprog
 
-    from cams.camforces import _grid, _kinematics, _omega
+    from cams.dynamics.forces import _grid, _kinematics, _omega
 
     design, dyn = CASES[name]
     sp = spring_for_contact(design, dyn, rpm=rpm, margin=1.25)

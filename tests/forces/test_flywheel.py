@@ -1,4 +1,4 @@
-"""The flywheel (cams.flywheel): seed 004's program output, seed 003's formula, the equation of motion.
+"""The flywheel (cams.machine.flywheel): seed 004's program output, seed 003's formula, the equation of motion.
 
 Seed 004 (pump with a swinging slotted lever, Mogilev 2006), section 1.13 "Проверка
 полученных результатов при помощи программы": n = 77 rev/min, delta = 0.1, and for the
@@ -15,7 +15,7 @@ What is recomputed, and how far:
   with the twelfth moment -1.6 instead of 1.6 it is 134.608 = 134.61. The text lost
   signs elsewhere ("12-й:1.6" has lost its space as well), so the tests take -1.6.
 * Flywheel from the excess work: J_F = dA / (omega_m^2 delta) gives 96.489 from 627.36,
-  the seed's 96.49 -- the program uses exactly the relation of cams.flywheel.
+  the seed's 96.49 -- the program uses exactly the relation of cams.machine.flywheel.
 * Excess work itself: the Wittenbauer tangents on the 12 positions give dA = 519.5 J
   (J_F = 79.9 kg m^2), joining the samples by straight lines 519.8 J (79.9), by a
   periodic cubic spline 707.9 J (108.9). The seed's 627.36 J (96.49) lies between: -17 %
@@ -34,7 +34,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from cams.flywheel import flywheel, rpm_to_omega
+from cams.machine.flywheel import flywheel, rpm_to_omega
 from laws.errors import InputError
 
 PHI12 = np.radians(np.arange(12) * 30.0)

@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.kinetostatics import ForceSpec, GasPressure, LinkMass, analyse_forces, machine_forces
-from cams.linkage.machines import CrankSlider
-from cams.machine import design_machine
-from cams.machinefile import machine_from_dict
+from cams.machine.kinetostatics import ForceSpec, GasPressure, LinkMass, analyse_forces, machine_forces
+from cams.machine.linkage.machines import CrankSlider
+from cams.machine.timing import design_machine
+from cams.machine.machinefile import machine_from_dict
 
 ROOT = Path(__file__).resolve().parents[2]
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"
@@ -136,7 +136,7 @@ def test_api_default_angles_cover_the_cycle():
 def test_gas_load_depends_on_the_crank_position_not_on_the_angles_asked():
     """A 720-degree table's phase is tied to the model's origin: the load at 10 deg is the same whatever other
     angles are asked for, and differs from the load at 370 deg (the other turn)."""
-    from cams.kinetostatics import build_model
+    from cams.machine.kinetostatics import build_model
 
     m = CrankSlider(crank=48.0, rod=192.0, rod_cg=64.0, rpm=3000)
     gas = GasPressure("slider", tuple(ANGLES), tuple(PRESSURE), bore=80.0, start=START, period=720.0)

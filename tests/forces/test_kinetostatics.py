@@ -1,4 +1,4 @@
-"""Linkage kinetostatics (cams.kinetostatics): equilibrium of every link, Zhukovsky's lever, friction, reduced quantities.
+"""Linkage kinetostatics (cams.machine.kinetostatics): equilibrium of every link, Zhukovsky's lever, friction, reduced quantities.
 
 Seed figures: seed 000 gives masses and moments of inertia and the accelerations of its
 plans at phi_1 = 60 deg, omega_1 = 200 rad/s, so its inertia loads m a_S and J_S epsilon
@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.kinetostatics import (
+from cams.machine.kinetostatics import (
     ConstantFriction,
     Friction,
     ForceSpec,
@@ -29,7 +29,7 @@ from cams.kinetostatics import (
     build_model,
     JOINTS,
 )
-from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
+from cams.machine.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError
 
 SLOTTING = SlottingMachine.from_course(2.0, 100.0, 150.0, 1.0, rpm=60)
@@ -214,7 +214,7 @@ def test_gas_force_toward_the_crank():
 
 def test_cutting_resistance_window():
     """The tool's resistance acts only in the cut, against the tool's motion; Mr has two values at the cut's ends."""
-    from cams.machine import CuttingZone, windows
+    from cams.machine.timing import CuttingZone, windows
 
     machine, spec = SPECS["slotting"]
     r = analyse_forces(machine, spec, samples=720, passes=1)

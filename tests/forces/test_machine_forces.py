@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.kinetostatics import GasPressure, Resistance, force_spec_from_dict, machine_forces
-from cams.machinefile import load_machine, machine_from_dict
+from cams.machine.kinetostatics import GasPressure, Resistance, force_spec_from_dict, machine_forces
+from cams.machine.machinefile import load_machine, machine_from_dict
 from laws.errors import InputError
 
 HERE = Path(__file__).resolve().parent
@@ -59,7 +59,7 @@ def test_machine_file_forces_table():
 
 def test_machine_forces_api():
     spec = load_machine(DATA)
-    from cams.machine import design_machine
+    from cams.machine.timing import design_machine
 
     res = design_machine(spec)
     mf = machine_forces(spec, res.solve.centre)
@@ -164,7 +164,7 @@ def test_machine_from_dict_keeps_the_cam_dynamics():
 
 
 def test_plotting_imports_matplotlib_lazily():
-    code = ("import sys, cams.kinetostatics, cams.flywheel, cams.camforces, cams.commands.machine; "
+    code = ("import sys, cams.machine.kinetostatics, cams.machine.flywheel, cams.dynamics.forces, cams.commands.machine; "
             "print('matplotlib' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True).stdout
     assert out.strip() == "False"
@@ -195,9 +195,9 @@ def test_hodographs_draw_the_reactions():
     """Each panel of the hodograph figure traces its pair's reaction vector (R_x, R_y) over the whole cycle."""
     import matplotlib.pyplot as plt
 
-    from cams.kinetostatics import machine_forces
-    from cams.machine import design_machine
-    from cams.machinefile import load_machine
+    from cams.machine.kinetostatics import machine_forces
+    from cams.machine.timing import design_machine
+    from cams.machine.machinefile import load_machine
 
     spec = load_machine(DATA)
     mf = machine_forces(spec, design_machine(spec).solve.centre)
@@ -225,10 +225,10 @@ def test_forces_reuse_what_the_machine_design_found(monkeypatch):
     """Given design_machine's result, machine_forces finds neither the machine's windows nor the cam's timing
     again (a resistance load still finds its own window: its approach and overrun are its own), and gives the
     same forces as when it finds them itself."""
-    import cams.machine as machine_mod
-    from cams.kinetostatics import machine_forces
-    from cams.machine import design_machine
-    from cams.machinefile import load_machine
+    import cams.machine.timing as machine_mod
+    from cams.machine.kinetostatics import machine_forces
+    from cams.machine.timing import design_machine
+    from cams.machine.machinefile import load_machine
 
     spec = load_machine(DATA)
     res = design_machine(spec)

@@ -8,9 +8,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from cams.camforces import FollowerDynamics, Spring, cam_forces, jump_speed, rigid_impacts
+from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, jump_speed, rigid_impacts
 from cams.cli import main
-from cams.designfile import load_design
+from cams.io.designfile import load_design
 from laws.units import rpm_to_omega
 from optimize.solve import solve
 

@@ -1,4 +1,4 @@
-"""The seeds' structural analysis, recomputed from the kinetostatic model (cams.kinetostatics).
+"""The seeds' structural analysis, recomputed from the kinetostatic model (cams.machine.kinetostatics).
 
 * seed 000, "Структурный анализ механизма": W = 3 n - 2 p1 - p2 = 3 * 5 - 2 * 7 - 0 = 1 with
   the pairs 0-1, 1-2, 2-3, 3-0, 1-4, 4-5, 5-0; the input link 1 and two groups of class II
@@ -7,7 +7,7 @@
   I(0;1), II(2;3), II(4;5); section 2.6 lists the revolute pairs O1, A, O2, C3 and the
   prismatic pairs A3, C5, E.
 
-The model's links are numbered as the seeds' (:data:`cams.kinetostatics.LINKS`, 1..5; ground 0).
+The model's links are numbered as the seeds' (:data:`cams.machine.kinetostatics.LINKS`, 1..5; ground 0).
 A statically determinate model has 3 n equations for 2 p reaction components and the
 balancing moment: 3 n = 2 p + 1 is W = 1 read the other way.
 """
@@ -17,8 +17,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.kinetostatics import ForceSpec, build_model
-from cams.linkage.machines import OpposedTwin, SlottedLeverPump
+from cams.machine.kinetostatics import ForceSpec, build_model
+from cams.machine.linkage.machines import OpposedTwin, SlottedLeverPump
 
 
 def _structure(machine):

@@ -8,9 +8,9 @@ from pathlib import Path
 import pytest
 
 from cams.cli import main
-from cams.linkage import analyse, dead_positions
-from cams.linkage.machines import CrankSlider, SlottedLeverPump, SlottingMachine
-from cams.linkage.synthesis import (
+from cams.machine.linkage import analyse, dead_positions
+from cams.machine.linkage.machines import CrankSlider, SlottedLeverPump, SlottingMachine
+from cams.machine.linkage.synthesis import (
     MAX_TIME_RATIO,
     slotted_lever_synthesis,
     slotting_rod_ratio_min,
@@ -93,7 +93,7 @@ def test_machine_file_time_ratio_out_of_range(tmp_path, capsys, path, K):
 
 
 def test_machine_file_large_pump_time_ratio():
-    from cams.machinefile import machine_from_dict
+    from cams.machine.machinefile import machine_from_dict
 
     d = tomllib.loads(PUMP.read_text(encoding="utf-8"))
     d["linkage"]["time_ratio"] = 600.0

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from scipy.optimize import fsolve
 
-from cams.linkage import AssemblyError, analyse, crank_slider_crank
-from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump
+from cams.machine.linkage import AssemblyError, analyse, crank_slider_crank
+from cams.machine.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump
 from laws.errors import InfeasibleError, InputError
 from tests.linkage.conftest import assert_close, numeric_angle_derivatives, numeric_derivatives
 

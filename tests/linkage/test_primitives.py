@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy.optimize import fsolve
 
-from cams.linkage import (
+from cams.machine.linkage import (
     Angle,
     AssemblyError,
     acute_angle,

@@ -37,10 +37,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from cams.linkage import analyse
-from cams.machine import windows
-from cams.machinefile import load_machine
-from cams.linkage.machines import OpposedTwin
+from cams.machine.linkage import analyse
+from cams.machine.timing import windows
+from cams.machine.machinefile import load_machine
+from cams.machine.linkage.machines import OpposedTwin
 
 ROOT = Path(__file__).resolve().parents[2]
 SLOTTING_FILE = ROOT / "examples" / "machines" / "slotting_machine.toml"

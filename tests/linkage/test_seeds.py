@@ -24,8 +24,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.linkage import analyse
-from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump
+from cams.machine.linkage import analyse
+from cams.machine.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump
 
 SEED_TOL = 0.10  # the seeds accept 3-10 % between graphical plans and analysis
 

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from laws.errors import show_value
-from cams.linkage.machines import CrankSlider
+from cams.machine.linkage.machines import CrankSlider
 from laws.errors import InputError
 
 

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from scipy.optimize import least_squares
 
-from cams.linkage import AssemblyError, analyse, dead_positions
-from cams.linkage.machines import SlottingMachine
+from cams.machine.linkage import AssemblyError, analyse, dead_positions
+from cams.machine.linkage.machines import SlottingMachine
 from laws.errors import InputError
 from tests.linkage.conftest import assert_close, numeric_angle_derivatives, numeric_derivatives
 

@@ -3,7 +3,7 @@
 ``cams machine`` reports the cam's timing (its mounting angle, the rises), the
 cutting window and, with ``--forces``, where the cam's force peaks fall, all
 in cycle angles (the crank's rotation from position 1). Here none of that is
-recomputed with :mod:`cams.machine`'s own formula. Instead the machine is run
+recomputed with :mod:`cams.machine.timing`'s own formula. Instead the machine is run
 by hand:
 
 * position 1 is found from the linkage's own motion (its output's dead
@@ -44,7 +44,7 @@ import pytest
 from scipy.optimize import brentq
 
 from cams.cli import main
-from cams.machinefile import load_machine
+from cams.machine.machinefile import load_machine
 from laws.program import Phase, Program
 
 ROOT = Path(__file__).resolve().parents[2]

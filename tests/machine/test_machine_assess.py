@@ -57,9 +57,9 @@ def test_undercut_feed_cam_is_reported_in_words_and_fails(tmp_path, capsys):
 def test_machine_result_ok_is_the_shared_usable(tmp_path):
     from cams.assess import assess_cam
     from cams.cam import Cam
-    from cams.designfile import load_design
-    from cams.machine import design_machine
-    from cams.machinefile import load_machine
+    from cams.io.designfile import load_design
+    from cams.machine.timing import design_machine
+    from cams.machine.machinefile import load_machine
 
     machine, design = _files(tmp_path, "25.0")
     res = design_machine(load_machine(machine))

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.machine import CuttingZone, Drive, Timing
+from cams.machine.timing import CuttingZone, Drive, Timing
 from laws.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -10,8 +10,8 @@ import json
 import pytest
 
 from cams.cli import main
-from cams.designfile import design_from_dict, load_design
-from cams.files import read_toml
+from cams.io.designfile import design_from_dict, load_design
+from cams.io.files import read_toml
 from optimize.solve import solve
 from tests.conftest import EXAMPLES
 
@@ -62,7 +62,7 @@ def test_method_and_samples_of_the_file_are_honoured():
 
 @pytest.mark.parametrize("name", ["translating_flat.toml", "rocker_flat.toml"])
 def test_flat_face_through_the_one_entry_point(name):
-    from cams.flatface import size_flat_face
+    from cams.profile.flat import size_flat_face
 
     design = load_design(EXAMPLES / name)
     res = solve(design)
@@ -80,13 +80,13 @@ def test_flat_face_refuses_a_method():
 
 @pytest.mark.parametrize("name", FILES)
 def test_check_design_api_equals_cams_check_json(capsys, name):
-    """``cams.checks.check_design(load_design(f))`` is what ``cams check f --json`` prints, flat faces included.
+    """``cams.checks.profile.check_design(load_design(f))`` is what ``cams check f --json`` prints, flat faces included.
 
     The command adds the one assessment every command applies (``verified``, ``buildable``, ``failures``, from
     :class:`cams.cam.Cam`) and its ``passed`` is the checks' and the assessment's together.
     """
     from cams.cam import Cam
-    from cams.checks import check_design
+    from cams.checks.profile import check_design
 
     code = main(["check", str(EXAMPLES / name), "--json"])
     cli = json.loads(capsys.readouterr().out)

@@ -9,7 +9,7 @@ Independent references:
   attained);
 * brute force: a grid of centres judged by the validation reference
   (``tests.validation.reference.ReferenceZone``: kinematic inversion, no zone
-  formulas), each admissible one confirmed by :func:`cams.pressure.check_pressure`:
+  formulas), each admissible one confirmed by :func:`cams.verify.pressure.check_pressure`:
   none is admissible just below the reported value, some are just above it.
 """
 
@@ -22,8 +22,8 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.designfile import design_from_dict
-from cams.pressure import check_pressure
+from cams.io.designfile import design_from_dict
+from cams.verify.pressure import check_pressure
 from laws.errors import InfeasibleError
 from optimize.diagnose import _attained, diagnosed, explain_infeasible, relaxations
 from optimize.solve import solve

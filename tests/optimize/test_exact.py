@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import optimize.exact as exact
-from cams.designfile import design_from_dict, load_design
+from cams.io.designfile import design_from_dict, load_design
 from optimize.exact import ExchangeInvariantError, nearest_exact
 from optimize.solve import solve
 from tests.conftest import EXAMPLES
@@ -188,9 +188,9 @@ def test_binding_of_a_cam_far_larger_than_its_follower_at_every_unit_scale(unit,
     """A rise and a return of 3e-6 deg: R0 ~ 6e7 times the stroke. Before: the binding list kept constraints
     within 1e-9 of the follower's size, less than the rounding of values of size R0: one or no binding
     constraint, depending on the unit. Reference: the largest pressure angle of each phase at the centre
-    found (:func:`cams.pressure.pressure_angle` on a dense grid) reaches the 30 deg limit in both, so both
+    found (:func:`cams.verify.pressure.pressure_angle` on a dense grid) reaches the 30 deg limit in both, so both
     the rise's and the return's lines bind, at every unit scale."""
-    from cams.pressure import pressure_angle
+    from cams.verify.pressure import pressure_angle
 
     a = 3e-6
     d = design_from_dict({

@@ -16,7 +16,7 @@ import random
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from laws.errors import InfeasibleError
 from optimize.exhaustive import candidates, first_admissible
 from optimize.planar import feasible_mask, nearest_point

@@ -16,8 +16,8 @@ import copy
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
-from cams.pressure import check_pressure
+from cams.io.designfile import design_from_dict
+from cams.verify.pressure import check_pressure
 from optimize.circle import admissible_arcs, best_on_circle, violation_function
 from optimize.solve import solve
 from tests.conftest import rocker_dict

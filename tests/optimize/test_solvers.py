@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from laws.errors import InfeasibleError, InputError
 from optimize.solve import admissible_L_range, solve
 from tests.conftest import rocker_dict
@@ -75,7 +75,7 @@ def test_sampled_answers_converge_to_exact_from_below(dct):
 
 def test_exact_is_tight():
     """Moving the exact centre towards A0 breaks the limit somewhere (the optimum is tight)."""
-    from cams.pressure import check_pressure
+    from cams.verify.pressure import check_pressure
 
     d = _d(SEED_FORM)
     r = solve(d)

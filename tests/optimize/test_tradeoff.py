@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
-from cams.pressure import check_pressure
+from cams.io.designfile import design_from_dict
+from cams.verify.pressure import check_pressure
 from optimize.solve import solve
 from optimize.tradeoff import tradeoff
 from tests.conftest import rocker_dict

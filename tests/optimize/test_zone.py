@@ -1,10 +1,10 @@
-"""The zone's wedges against the pressure-angle definition (cams.pressure)."""
+"""The zone's wedges against the pressure-angle definition (cams.verify.pressure)."""
 
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
-from cams.pressure import pressure_angle
+from cams.io.designfile import design_from_dict
+from cams.verify.pressure import pressure_angle
 from optimize.zone import max_violation, phase_wedges
 from tests.conftest import rocker_dict
 

@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict, load_design
+from cams.io.designfile import design_from_dict, load_design
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 NAMES = ("rocker_force", "rocker_form", "translating_force", "translating_form_centric")

@@ -1,4 +1,4 @@
-"""cams.checks: jamming from the profile, undercut and sharp points, polygon validity, bore."""
+"""cams.checks.profile: jamming from the profile, undercut and sharp points, polygon validity, bore."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import json
 import numpy as np
 import pytest
 
-from cams.checks import (
+from cams.checks.profile import (
     RECOMMENDED_ROLLER_FRACTION,
     check_design,
     check_profile,
@@ -15,8 +15,8 @@ from cams.checks import (
     curvature_extremes,
     pressure_from_profile,
 )
-from cams.pressure import check_pressure, pressure_angle
-from cams.profile import ProfileOptions, pitch_curve
+from cams.verify.pressure import check_pressure, pressure_angle
+from cams.profile.roller import ProfileOptions, pitch_curve
 from laws.errors import InputError
 
 ALL = ("rocker_force", "rocker_form", "translating_force", "translating_form_centric")

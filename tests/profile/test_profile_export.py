@@ -1,4 +1,4 @@
-"""cams.export: CSV, DXF (read back with ezdxf), SVG (parsed as XML); atomic writes."""
+"""cams.io.export: CSV, DXF (read back with ezdxf), SVG (parsed as XML); atomic writes."""
 
 from __future__ import annotations
 
@@ -10,9 +10,9 @@ import pytest
 import shapely
 from shapely.geometry import LineString
 
-from cams.export import csv_header, write_csv, write_dxf, write_svg
-from cams.files import check_output_path
-from cams.profile import build_profile, default_bore_radius
+from cams.io.export import csv_header, write_csv, write_dxf, write_svg
+from cams.io.files import check_output_path
+from cams.profile.roller import build_profile, default_bore_radius
 from laws.errors import InputError
 
 

@@ -1,4 +1,4 @@
-"""cams.checks: the vectorized search for the largest curvature and pressure angle.
+"""cams.checks.profile: the vectorized search for the largest curvature and pressure angle.
 
 The search (a grid per phase, then every bracket of a local maximum refined
 together on the analytic derivative) is compared with a brute force of a
@@ -17,10 +17,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import cams.checks as checks
-from cams.checks import MAX_STEPS, _maximize, _phase_maxima, _phase_rates, check_profile
-from cams.designfile import design_from_dict
-from cams.profile import pitch_phase
+import cams.checks.profile as checks
+from cams.checks.profile import MAX_STEPS, _maximize, _phase_maxima, _phase_rates, check_profile
+from cams.io.designfile import design_from_dict
+from cams.profile.roller import pitch_phase
 
 DENSE = 1_000_000
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

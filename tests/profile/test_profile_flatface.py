@@ -1,11 +1,11 @@
-"""cams.flatface: envelope of the face lines, curvature, face width, minimum base radius."""
+"""cams.profile.flat: envelope of the face lines, curvature, face width, minimum base radius."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from cams.flatface import (
+from cams.profile.flat import (
     min_base_radius_oscillating,
     min_base_radius_translating,
     oscillating_flat_face,

@@ -1,4 +1,4 @@
-"""cams.profile: pitch curve by inversion, working profile, curvature, adaptive sampling."""
+"""cams.profile.roller: pitch curve by inversion, working profile, curvature, adaptive sampling."""
 
 from __future__ import annotations
 
@@ -7,9 +7,9 @@ import pytest
 import shapely
 from shapely.geometry import LineString
 
-from cams.design import CamDesign
-from cams.follower import Rocker
-from cams.profile import (
+from cams.model.design import CamDesign
+from cams.model.follower import Rocker
+from cams.profile.roller import (
     ProfileOptions,
     build_profile,
     default_bore_radius,

@@ -9,7 +9,7 @@
   independent pressure-angle check.
 * :func:`zone_witness` looks for an admissible centre with a method the product
   does not use for solving (Chebyshev centre of a finely sampled zone by
-  ``scipy.optimize.linprog``), confirmed by :func:`cams.pressure.check_pressure`;
+  ``scipy.optimize.linprog``), confirmed by :func:`cams.verify.pressure.check_pressure`;
   it judges "infeasible" answers.
 * :func:`segment_witness` finds a point at a given distance from a reference on
   the segment between two admissible centres (admissible by convexity of the
@@ -29,8 +29,8 @@ from contextlib import contextmanager
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
-from cams.pressure import check_pressure, check_pressure_many
+from cams.io.designfile import design_from_dict
+from cams.verify.pressure import check_pressure, check_pressure_many
 from laws.errors import CamsError, InfeasibleError, InputError
 from optimize.solve import solve
 from tests.conftest import rocker_dict as base_rocker_dict
@@ -252,12 +252,12 @@ def to_toml(d: dict) -> str:
 def _coarse_excess(design, centres: np.ndarray, grid: int = 400) -> np.ndarray:
     """Largest pressure angle minus its limit over the sampled cycle, for many centres at once (radians).
 
-    By kinematic inversion (:func:`cams.pressure.contact_normal`, which shares
+    By kinematic inversion (:func:`cams.verify.pressure.contact_normal`, which shares
     no formula with the zone), on ``grid + 1`` positions per phase: a sampled
     maximum is below the true one, so a positive value proves the centre
     inadmissible.
     """
-    from cams.pressure import contact_normal
+    from cams.verify.pressure import contact_normal
 
     lim = design.limits
     u = np.linspace(0.0, 1.0, grid + 1)
@@ -276,9 +276,9 @@ def assert_minimal(result, shrink: float = 1e-6) -> None:
 
     Candidates: 360 points evenly round that circle and 161 within 1 degree
     of the answer's direction. Each is judged by the pressure angle over the
-    cycle by kinematic inversion (:mod:`cams.pressure`, no formula of the
+    cycle by kinematic inversion (:mod:`cams.verify.pressure`, no formula of the
     zone): first sampled (:func:`_coarse_excess`), then the few that sampling
-    cannot reject by :func:`cams.pressure.check_pressure_many` (every local
+    cannot reject by :func:`cams.verify.pressure.check_pressure_many` (every local
     maximum refined), all at once, with no tolerance. Any that passes is a
     smaller admissible cam: the answer was not minimal.
     """

@@ -14,7 +14,7 @@ import re
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from laws.errors import CamsError, InfeasibleError
 from optimize.solve import admissible_L_range, nearest
 
@@ -203,7 +203,7 @@ def test_fixed_L_with_floor(factor):
 def test_fixed_L_floor_between_least_and_reachable():
     """The README's design (L = 115, floor 30): the floor is below the least R0 at L = 115 (46.78), so R0 is that
     least R0; brute force over the circle with the independent pressure check finds nothing smaller."""
-    from cams.pressure import check_pressure_many
+    from cams.verify.pressure import check_pressure_many
 
     d = design_dict("rocker")
     base = check_outcome(_with(d, centre_distance=115.0))

@@ -13,7 +13,7 @@ import time
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from laws.errors import CamsError, InfeasibleError
 
 from .helpers import check_outcome, design_dict, guarded, zone_witness

@@ -8,7 +8,7 @@ x1e3, the exact minimum R0 must
   tied to a length;
 * be certified, with an error bound within 1e-9 of R0;
 * be minimal: no admissible centre at ``R0 (1 - 1e-6)`` from the roller's start
-  point, judged by the kinematic inversion of :mod:`cams.pressure`, which shares
+  point, judged by the kinematic inversion of :mod:`cams.verify.pressure`, which shares
   no formula with the solver (:func:`tests.stress.helpers.assert_minimal`).
 """
 
@@ -19,7 +19,7 @@ import random
 
 import pytest
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from laws.errors import CamsError
 
 from .helpers import assert_minimal, check_outcome

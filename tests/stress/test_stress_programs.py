@@ -12,8 +12,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.design import CamDesign, Limits
-from cams.follower import Rocker, Translating
+from cams.model.design import CamDesign, Limits
+from cams.model.follower import Rocker, Translating
 from laws.errors import CamsError
 from laws.program import Phase, Program
 from laws.registry import LAWS

@@ -17,7 +17,7 @@ import random
 from hypothesis import HealthCheck, given, note, settings
 from hypothesis import strategies as st
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from laws.errors import CamsError, InfeasibleError
 from laws.registry import LAWS
 

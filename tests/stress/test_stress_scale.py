@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from cams.cam import Cam
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from laws.errors import CamsError
 
 from .helpers import assert_finite_report, check_outcome, design_dict, guarded, walk

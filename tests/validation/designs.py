@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 
 
 def _motion(rise, dwell, ret) -> list:

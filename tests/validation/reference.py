@@ -1,9 +1,9 @@
 """Reference computations that share none of the product's formulas.
 
 Nothing here imports :mod:`optimize.zone`, :mod:`optimize.planar` or
-:mod:`cams.pressure`. Only the motion program (``laws``, the lift ``s(phi)``
+:mod:`cams.verify.pressure`. Only the motion program (``laws``, the lift ``s(phi)``
 of a phase) and the design's data (arm, senses, limits, read from the object
-built by :mod:`cams.designfile`) are taken from the product.
+built by :mod:`cams.io.designfile`) are taken from the product.
 
 The pressure angle is computed from positions only, by kinematic inversion:
 
@@ -93,7 +93,7 @@ class Spec:
 
 
 def spec_of(design) -> Spec:
-    """Read the data of a :class:`cams.design.CamDesign` (no formulas)."""
+    """Read the data of a :class:`cams.model.design.CamDesign` (no formulas)."""
     f = design.follower
     lim = design.limits
     ret = lim.pressure_angle if lim.return_pressure_angle is None else lim.return_pressure_angle

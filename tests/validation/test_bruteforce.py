@@ -36,7 +36,7 @@ from functools import lru_cache
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from optimize.solve import solve
 
 from .designs import BRUTE_DESIGNS, CENTRIC_DESIGNS
@@ -69,7 +69,7 @@ def _brute(name):
 def test_exact_centre_passes_reference_check(name):
     """The exact centre keeps the reference pressure angle within the limit (+1e-6 rad) on every limited phase.
 
-    Independent of cams.pressure (the product's own check): positions only,
+    Independent of cams.verify.pressure (the product's own check): positions only,
     finite-difference tangent of the inverted pitch curve.
     """
     d = _design(name)
@@ -148,7 +148,7 @@ def test_product_pressure_report_matches_reference(name):
     """SolveResult.pressure (the product's own check) equals the reference maxima, rise and return, to 1e-7 rad.
 
     Two independent computations of the same quantity: the product's analytic
-    relative velocity (cams.pressure) and the reference's finite differences
+    relative velocity (cams.verify.pressure) and the reference's finite differences
     of inverted positions. The return is compared under force closure too.
     """
     d = _design(name)

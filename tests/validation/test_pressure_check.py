@@ -1,4 +1,4 @@
-"""The independent pressure check (:mod:`cams.pressure`) against a brute force that shares none of its formulas.
+"""The independent pressure check (:mod:`cams.verify.pressure`) against a brute force that shares none of its formulas.
 
 The brute force inverts the mechanism on a million positions per phase: the
 roller centre's fixed path ``A(s)`` (:func:`.reference.path`, written from the
@@ -25,7 +25,7 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar
 
-from cams.pressure import check_pressure, check_pressure_many
+from cams.verify.pressure import check_pressure, check_pressure_many
 from laws.errors import InputError
 
 from .designs import BRUTE_DESIGNS, rocker, rocker_dict
@@ -119,7 +119,7 @@ def test_reference_max_pressure_refines_every_peak(two_peaks, n):
 
 def test_check_at_a_join_of_two_rises():
     """Two rises meeting with a jump of velocity: the largest angle sits at a phase end (one side of the join)."""
-    from cams.designfile import design_from_dict
+    from cams.io.designfile import design_from_dict
 
     dd = rocker_dict(limit=60.0)
     dd["motion"] = [{"phase": "rise", "law": "linear", "angle": 60.0, "height": 5.0},
@@ -136,7 +136,7 @@ def test_check_matches_brute_force_on_validation_designs():
     """Rise maxima of the validation designs at a few centres, default scan, against the brute force."""
     rng = np.random.default_rng(12)
     for name in ("rocker force, opposite senses", "rocker form, cam cw, long arm"):
-        from cams.designfile import design_from_dict
+        from cams.io.designfile import design_from_dict
 
         d = design_from_dict(BRUTE_DESIGNS[name])
         for c in rng.normal(size=(2, 2)) * d.scale:
@@ -147,7 +147,7 @@ def test_check_matches_brute_force_on_validation_designs():
 def test_many_equals_one_at_a_time():
     """The batched check gives, per centre, the one-at-a-time report (values to rounding, the same verdicts)."""
     rng = np.random.default_rng(7)
-    from cams.designfile import design_from_dict
+    from cams.io.designfile import design_from_dict
 
     for dd in BRUTE_DESIGNS.values():
         d = design_from_dict(dd)

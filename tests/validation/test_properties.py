@@ -12,7 +12,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from optimize.solve import solve
 
 from .designs import rocker_dict

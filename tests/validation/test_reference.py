@@ -27,7 +27,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 
 from .designs import rocker, translating_dict
 from .reference import ReferenceZone, max_pressure, path, pressure_angles, spec_of

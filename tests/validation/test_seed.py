@@ -29,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.designfile import design_from_dict
+from cams.io.designfile import design_from_dict
 from optimize.solve import solve
 
 from .designs import rocker_dict

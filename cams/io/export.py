@@ -1,6 +1,6 @@
 """Exports of a sampled cam profile for manufacturing: CSV, DXF, SVG.
 
-Everything is written in the cam frame of :mod:`cams.profile` (origin at the
+Everything is written in the cam frame of :mod:`cams.profile.roller` (origin at the
 cam centre, cam at ``phi = 0``), in the design's length unit (mm). Each file
 is written to a temporary file in the target's folder and moved into place
 with :func:`os.replace`, so a failed export leaves no partial file behind.
@@ -22,7 +22,7 @@ A cam that fails a check (:mod:`cams.assess`) is exported only when asked for
 ``FAILED`` and a ``<desc>`` gives the reasons. A CSV is not marked: its
 columns stay numbers only.
 
-A flat-faced follower's cam (:class:`cams.flatface.FlatFaceProfile`) has no
+A flat-faced follower's cam (:class:`cams.profile.flat.FlatFaceProfile`) has no
 pitch curve: its files hold the profile (``PROFILE``, the envelope of the face
 lines, CSV columns ``phi_deg,work_x,work_y``), the base circle (R0, the
 profile's distance from the centre at the near dwell) and the bore.
@@ -35,8 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
-from cams.files import atomic_write, check_output_path
-from cams.profile import Profile
+from cams.io.files import atomic_write, check_output_path
+from cams.profile.roller import Profile
 from laws.errors import InputError
 
 __all__ = ["write_csv", "write_dxf", "write_svg", "csv_header", "length_decimals", "LAYERS", "SIGNIFICANT_DIGITS"]

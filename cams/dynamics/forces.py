@@ -4,7 +4,7 @@ Model
 -----
 The follower is one rigid body with one coordinate ``q``: the swing ``psi``
 (rad) of a rocker or the lift ``s`` (m) of a translating follower, from the
-near dwell (:mod:`cams.follower`). The cam turns at a constant speed
+near dwell (:mod:`cams.model.follower`). The cam turns at a constant speed
 ``omega`` (rad/s), so ``q' = omega dq/dphi`` and ``q'' = omega^2 d2q/dphi^2``
 (``phi``: cam angle of :mod:`laws.program`). Acting on the follower, in the
 sense of ``q`` (the rise):
@@ -13,7 +13,7 @@ sense of ``q`` (the rise):
   curve's outward normal ``n`` (the roller turns freely: no tangential force),
   whose generalized force is ``N |dA/dq| cos(gamma)``; ``gamma`` is the pressure
   angle (angle between ``n`` and the roller centre's direction of motion
-  during the rise, as in :mod:`cams.pressure`), ``|dA/dq|`` the arm (m) of a
+  during the rise, as in :mod:`cams.verify.pressure`), ``|dA/dq|`` the arm (m) of a
   rocker or 1 for a translating follower;
 * the closing spring ``-(F0 + k q)``: preload ``F0`` at the near dwell and rate
   ``k`` (N and N/m, or N m and N m/rad for a rocker's torsional spring);
@@ -75,8 +75,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cams.design import CamDesign
-from cams.follower import Rocker
+from cams.model.design import CamDesign
+from cams.model.follower import Rocker
 from laws.errors import show_value
 from laws.errors import InputError
 from laws.errors import check_number as _num
@@ -276,8 +276,8 @@ def rigid_impacts(design: CamDesign) -> tuple[RigidImpact, ...]:
 
     Examples
     --------
-    >>> from cams.design import CamDesign, Limits
-    >>> from cams.follower import Translating
+    >>> from cams.model.design import CamDesign, Limits
+    >>> from cams.model.follower import Translating
     >>> from laws.program import Phase, Program
     >>> prog = Program((Phase("rise", np.pi, "linear"), Phase("return", np.pi, "cycloidal")), 20.0)
     >>> d = CamDesign(Translating(5.0, offset=0.0), prog, Limits(np.radians(30)))
@@ -322,8 +322,8 @@ def jamming_limit(design: CamDesign, dyn: FollowerDynamics) -> float:
 
     Examples
     --------
-    >>> from cams.design import CamDesign, Limits
-    >>> from cams.follower import Translating
+    >>> from cams.model.design import CamDesign, Limits
+    >>> from cams.model.follower import Translating
     >>> from laws.program import Phase, Program
     >>> prog = Program((Phase("rise", np.pi, "cycloidal"), Phase("return", np.pi, "cycloidal")), 20.0)
     >>> d = CamDesign(Translating(5.0, offset=0.0), prog, Limits(np.radians(30)))
@@ -360,7 +360,7 @@ class CamForces:
         rise (``N cos gamma``) and across it (``N sin gamma``), N.
     force : ndarray of complex
         The cam's force on the roller in the follower's fixed frame
-        (:mod:`cams.follower`), ``Fx + i Fy``, N.
+        (:mod:`cams.model.follower`), ``Fx + i Fy``, N.
     torque : ndarray
         Camshaft torque, N m (positive: the shaft drives).
     spring, inertia : ndarray
@@ -514,7 +514,7 @@ def cam_forces(
     f = design.follower
     mo = design.program.evaluate(phi)
     q, dq, d2q, arm = _kinematics(design, phi, dyn)
-    from cams.pressure import contact_normal
+    from cams.verify.pressure import contact_normal
 
     n, e, r = contact_normal(design, centre, mo.s, mo.ds)
     eps = design.cam_sense

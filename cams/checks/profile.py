@@ -1,7 +1,7 @@
 """Checks of a finished cam profile: jamming, undercut and sharp points, validity, bore.
 
 Every check is recomputed from the profile (the pitch curve of
-:mod:`cams.profile`), independently of the solver's zone formulas:
+:mod:`cams.profile.roller`), independently of the solver's zone formulas:
 
 * ``jamming_rise`` / ``jamming_return``: the pressure angle over the whole of
   every constrained phase (the rise; the return too under form closure),
@@ -39,8 +39,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from cams.design import CamDesign
-from cams.profile import (
+from cams.model.design import CamDesign
+from cams.profile.roller import (
     Profile,
     ProfileOptions,
     _cross,
@@ -183,7 +183,7 @@ def _pressure_rates(inv, eps: int, ds: np.ndarray) -> tuple[np.ndarray, np.ndarr
 
     Parameters
     ----------
-    inv : cams.profile._Inversion
+    inv : cams.profile.roller._Inversion
         The inverted motion at the positions.
     eps : {+1, -1}
         The cam's sense of rotation.
@@ -522,7 +522,7 @@ def check_profile(
         Cam centre in the fixed frame (``SolveResult.centre``), length unit.
     options : ProfileOptions, optional
         Tolerance, user minimum radius of curvature, bore radius; default from
-        the design file (:func:`cams.profile.profile_options`).
+        the design file (:func:`cams.profile.roller.profile_options`).
     profile : Profile, optional
         An already built profile of the same design and centre.
     grid : int
@@ -612,15 +612,15 @@ def check_solution(result, *, tolerance: float | None = None, options: ProfileOp
 def check_design(design: CamDesign, *, tolerance: float | None = None, method: str | None = None) -> CheckReport:
     """Solve ``design`` (:func:`optimize.solve.solve`) and check the profile of the solved centre.
 
-    A flat-faced follower's design (:class:`cams.design.FlatFaceDesign`) is
-    sized by convexity and checked by :func:`cams.flatface.check_flat_face`
-    (a :class:`cams.flatface.FlatCheckReport`); it takes no ``method``.
+    A flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`) is
+    sized by convexity and checked by :func:`cams.profile.flat.check_flat_face`
+    (a :class:`cams.profile.flat.FlatCheckReport`); it takes no ``method``.
     """
     from optimize.solve import solve
 
     if getattr(design, "face", "roller") == "flat":
-        from cams.flatface import check_flat_face, flat_face_profile
-        from cams.profile import resolve_tolerance
+        from cams.profile.flat import check_flat_face, flat_face_profile
+        from cams.profile.roller import resolve_tolerance
 
         tol, field = resolve_tolerance(design.tolerance, tolerance)  # bad options fail before sizing
         solution = solve(design, method=method)

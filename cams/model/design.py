@@ -1,7 +1,7 @@
 """A cam design: follower, motion program, cam, limits and solver options.
 
 Angles are radians inside every object here; the design file (TOML) and the
-command line speak degrees, and :func:`cams.designfile.load_design` converts.
+command line speak degrees, and :func:`cams.io.designfile.load_design` converts.
 """
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from cams.follower import Follower, Rocker, Translating
+from cams.model.follower import Follower, Rocker, Translating
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
@@ -83,7 +83,7 @@ class CamDesign:
     limits : Limits
     cam_sense : {+1, -1}
         Cam's sense of rotation: +1 counter-clockwise (seen in the frame of
-        :mod:`cams.follower`).
+        :mod:`cams.model.follower`).
     rpm : float or None
         Cam speed, revolutions per minute.
     name : str
@@ -96,7 +96,7 @@ class CamDesign:
         (translating); see :meth:`chosen_centres`.
     centre : (float, float) or None
         A chosen cam centre in the follower's fixed frame (length,
-        :mod:`cams.follower`): the cam is checked, not sized.
+        :mod:`cams.model.follower`): the cam is checked, not sized.
     """
 
     follower: Follower
@@ -260,11 +260,11 @@ class FlatFaceDesign:
     The pressure angle of a flat face is fixed by the geometry (zero for a
     translating face and for a rocker face through its pivot); the base
     radius is the smallest one whose profile keeps its radius of curvature at
-    least ``min_radius`` everywhere (see :mod:`cams.flatface`).
+    least ``min_radius`` everywhere (see :mod:`cams.profile.flat`).
 
     Parameters
     ----------
-    follower : cams.flatface.FlatTranslating or cams.flatface.FlatRocker
+    follower : cams.profile.flat.FlatTranslating or cams.profile.flat.FlatRocker
     program : Program
         Lift in radians (rocker swing) or length (translating stroke).
     min_radius : float
@@ -297,7 +297,7 @@ class FlatFaceDesign:
     face = "flat"
 
     def __post_init__(self):
-        from cams.flatface import FlatRocker, FlatTranslating
+        from cams.profile.flat import FlatRocker, FlatTranslating
 
         if self.cam_sense not in (1, -1):
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")

@@ -24,7 +24,7 @@ from scipy.optimize import brentq
 
 from laws.errors import InfeasibleError, check_option
 
-from cams.linkage.primitives import Slide
+from cams.machine.linkage.primitives import Slide
 
 __all__ = ["Machine", "StrokeReport", "dead_positions", "analyse", "WORKING"]
 

@@ -61,7 +61,7 @@ from scipy.interpolate import CubicSpline
 
 from laws.errors import show_value
 from laws.errors import InputError, check_option
-from laws.units import omega_to_rpm, rpm_to_omega  # rpm_to_omega re-exported (cams.flywheel.rpm_to_omega)
+from laws.units import omega_to_rpm, rpm_to_omega  # rpm_to_omega re-exported (cams.machine.flywheel.rpm_to_omega)
 
 __all__ = ["FlywheelResult", "flywheel", "INTERPOLATIONS", "rpm_to_omega"]
 

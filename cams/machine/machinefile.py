@@ -18,7 +18,7 @@ Schema (see ``examples/machines/``)::
                 time_ratio K (course data) must give the linkage that stroke and K (checked to 1e-9):
                   slotting:           1 < K < K_max(rod_ratio) = (180 + theta) / (180 - theta),
                                       theta = 2 acos(1 / (1 + 2 rod_ratio)) (8.2444 for rod_ratio 1;
-                                      cams.linkage.synthesis.slotting_time_ratio_limit), and K <= 1000
+                                      cams.machine.linkage.synthesis.slotting_time_ratio_limit), and K <= 1000
                   slotted_lever_pump: 1 < K <= 1000
                   crank_slider:       1e-6 rod <= stroke < the rod's reach
     [cutting]   approach, overrun (fractions of the stroke), working ("slow" | "fast" | "forward" | "backward")
@@ -26,12 +26,12 @@ Schema (see ``examples/machines/``)::
     [timing]    margin (degrees of crank angle), placement ("centre" | "early" | "late"),
                 follower_direction (degrees, frame; optional; only for a cam turning with the
                 crank: kind = "shaft" or equal gears meshing internally)
-    [follower], [[motion]], [limits], [solve], [dynamics]   as in a design file (cams/designfile.py);
+    [follower], [[motion]], [limits], [solve], [dynamics]   as in a design file (cams/io/designfile.py);
                 [dynamics] journal_radius for a rocker only
     [cam]       bore_radius only (checked against the sized cam's working profile by
-                cams.machine.design_machine): rotation and rpm follow from the crank and the drive
+                cams.machine.timing.design_machine): rotation and rpm follow from the crank and the drive
     [forces]    optional: masses, loads, friction and the flywheel's delta of the linkage
-                (cams.kinetostatics.force_spec_from_dict); parsed into ``spec.extra["forces"]``
+                (cams.machine.kinetostatics.force_spec_from_dict); parsed into ``spec.extra["forces"]``
 """
 
 from __future__ import annotations
@@ -40,12 +40,12 @@ from pathlib import Path
 
 import numpy as np
 
-from cams.designfile import design_from_dict
-from cams.files import check_document, check_keys, read_toml
-from cams.files import toml_number as _num
-from cams.files import toml_table as _table
-from cams.machine import CuttingZone, Drive, MachineSpec, Timing, check_follower_direction
-from cams.linkage.machines import CrankSlider, SlottedLeverPump, SlottingMachine
+from cams.io.designfile import design_from_dict
+from cams.io.files import check_document, check_keys, read_toml
+from cams.io.files import toml_number as _num
+from cams.io.files import toml_table as _table
+from cams.machine.timing import CuttingZone, Drive, MachineSpec, Timing, check_follower_direction
+from cams.machine.linkage.machines import CrankSlider, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError, check_option, show_value
 
 __all__ = ["load_machine", "machine_from_dict", "LINKAGE_TYPES"]
@@ -164,7 +164,7 @@ def machine_from_dict(d: dict) -> MachineSpec:
         The linkage (lengths in mm, crank sense +1 counter-clockwise, rpm as
         given), the cutting zone, the drive, the timing (margin and
         follower direction in radians) and the cam's design, built by
-        :func:`cams.designfile.design_from_dict` from the file's cam tables
+        :func:`cams.io.designfile.design_from_dict` from the file's cam tables
         with the cam's sense ``crank sense * drive sense`` and speed
         ``linkage.rpm * drive ratio`` (rev/min). ``extra`` holds the file as
         ``"raw"`` and, with a [forces] table, ``"forces"``.
@@ -231,7 +231,7 @@ def machine_from_dict(d: dict) -> MachineSpec:
     design = design_from_dict(dd)  # checks [dynamics] too (journal_radius: a rocker's only)
     extra = {"raw": d}
     if "forces" in d:
-        from cams.kinetostatics import force_spec_from_dict
+        from cams.machine.kinetostatics import force_spec_from_dict
 
         extra["forces"] = force_spec_from_dict(d["forces"], linkage.kind, units=units, cutting=cutting)
     return MachineSpec(name=name, linkage=linkage, cutting=cutting, drive=drive, timing=timing, cam=design, units=units, extra=extra)

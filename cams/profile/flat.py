@@ -22,7 +22,7 @@ radius of curvature are::
 with primes for d/dphi. The contact point lies on the face at ``p_theta``
 from the foot of the perpendicular from O.
 
-* Translating face (frame of :class:`cams.follower.Translating`: Y along the
+* Translating face (frame of :class:`cams.model.follower.Translating`: Y along the
   rise, the face perpendicular to it at ``y = s``, the cam centre at
   ``O = (-e, -R0)``): ``p = R0 + s``, ``theta' = -eps``, hence
   ``rho = R0 + s + s''`` and the contact lies at ``x = -e + eps s'`` on the
@@ -43,8 +43,8 @@ functions refuse such a program).
 
 Design files
 ------------
-``[follower] face = "flat"`` makes :func:`cams.designfile.design_from_dict`
-return a :class:`cams.design.FlatFaceDesign` (followers :class:`FlatTranslating`,
+``[follower] face = "flat"`` makes :func:`cams.io.designfile.design_from_dict`
+return a :class:`cams.model.design.FlatFaceDesign` (followers :class:`FlatTranslating`,
 :class:`FlatRocker`); :func:`size_flat_face` sizes it (base radius, face
 travel, pressure angle: :class:`FlatFaceSolution`), :func:`flat_face_profile`
 samples the cam within a chord tolerance and :func:`check_flat_face` checks it.
@@ -60,7 +60,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from cams.checks import ChecksMixin
+from cams.checks.profile import ChecksMixin
 from laws.errors import InputError
 from laws.program import Program
 
@@ -117,7 +117,7 @@ class FlatFaceProfile:
     name: str = "cam"
     tolerance: float | None = None
 
-    # the attributes cams.export reads (a flat face has no pitch curve and no groove)
+    # the attributes cams.io.export reads (a flat face has no pitch curve and no groove)
     pitch = None
     outer = None
     roller_radius = 0.0
@@ -128,12 +128,12 @@ class FlatFaceProfile:
 
     @property
     def work(self) -> np.ndarray:
-        """The cam profile (``point``), under the name :mod:`cams.export` uses."""
+        """The cam profile (``point``), under the name :mod:`cams.io.export` uses."""
         return self.point
 
     @property
     def R0(self) -> float:
-        """The base radius (``base_radius``), under the name :mod:`cams.export` uses."""
+        """The base radius (``base_radius``), under the name :mod:`cams.io.export` uses."""
         return self.base_radius
 
     @property
@@ -687,7 +687,7 @@ def _parts(design, R0: float):
 
 
 def flat_face_cam(design, base_radius: float, *, samples: int = 1440) -> FlatFaceProfile:
-    """The sampled cam of a flat-face design (:class:`cams.design.FlatFaceDesign`) at a base radius."""
+    """The sampled cam of a flat-face design (:class:`cams.model.design.FlatFaceDesign`) at a base radius."""
     fo = design.follower
     if fo.kind == "translating":
         cam = translating_flat_face(design.program, base_radius=base_radius, cam_sense=design.cam_sense,
@@ -711,10 +711,10 @@ def flat_face_profile(design, base_radius: float, *, tolerance: float | None = N
     radius rho is ``rho dtheta**2 / 8`` from it; the number of samples makes
     the largest such sagitta (estimated on 720 samples) at most ``tolerance``.
     Straight edges (where the follower's velocity jumps up) are exact. The
-    tolerance is at most 5 % of the base radius (:func:`cams.profile.cap_tolerance`;
+    tolerance is at most 5 % of the base radius (:func:`cams.profile.roller.cap_tolerance`;
     None: 1e-3, 0.1 % of the base radius when that is under 1 mm).
     """
-    from cams.profile import cap_tolerance
+    from cams.profile.roller import cap_tolerance
 
     tolerance = cap_tolerance(tolerance, base_radius, field)
     coarse = flat_face_cam(design, base_radius, samples=720)
@@ -741,7 +741,7 @@ class FlatFaceSolution:
 
     Attributes
     ----------
-    design : cams.design.FlatFaceDesign
+    design : cams.model.design.FlatFaceDesign
     R0 : float
         The base radius used: the convexity minimum ``R0_min``, or the floor
         ``limits.min_base_radius`` when larger, or the file's
@@ -888,7 +888,7 @@ class FlatFaceSolution:
 
 
 def size_flat_face(design) -> FlatFaceSolution:
-    """Size the cam of a flat-face design (:class:`cams.design.FlatFaceDesign`).
+    """Size the cam of a flat-face design (:class:`cams.model.design.FlatFaceDesign`).
 
     The base radius is the convexity minimum (:func:`min_base_radius_translating`,
     :func:`min_base_radius_oscillating` with ``design.min_radius``), raised to
@@ -969,7 +969,7 @@ class FlatCheckReport(ChecksMixin):
     Attributes
     ----------
     name : str
-    checks : tuple of cams.checks.Check
+    checks : tuple of cams.checks.profile.Check
         ``convexity`` (smallest radius of curvature >= ``limits.min_radius``),
         ``profile_polygon`` (the sampled profile is a simple closed curve round
         the cam centre) and ``bore`` (only with ``[cam] bore_radius``).
@@ -1001,8 +1001,8 @@ class FlatCheckReport(ChecksMixin):
 
 def check_flat_face(design, solution: FlatFaceSolution, profile: FlatFaceProfile) -> FlatCheckReport:
     """Check a sized flat-face cam: convexity (refined, not only at the samples), the polygon, the bore."""
-    from cams.checks import Check, _polygon_check
-    from cams.profile import default_bore_radius
+    from cams.checks.profile import Check, _polygon_check
+    from cams.profile.roller import default_bore_radius
 
     rmin = design.min_radius
     ok = solution.min_rho >= rmin - solution.rho_tolerance

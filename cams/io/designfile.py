@@ -16,10 +16,10 @@ Schema (see ``examples/``)::
     [solve]      method ("exact" | "convex" | "exhaustive"), samples, objective ("R0" | "L", rocker)
     [profile]    tolerance (chord, mm; default 0.001), min_curvature_radius (optional)
     [dynamics]   optional, force closure: mass, load, spring_rate, preload, friction,
-                 journal_radius, margin, max_spring_force (see cams.camforces.dynamics_from_dict);
-                 parsed into ``design.extra["dynamics"]`` (a cams.camforces.DynamicsSpec)
+                 journal_radius, margin, max_spring_force (see cams.dynamics.forces.dynamics_from_dict);
+                 parsed into ``design.extra["dynamics"]`` (a cams.dynamics.forces.DynamicsSpec)
 
-A flat-faced follower (``face = "flat"``) gives a :class:`cams.design.FlatFaceDesign`
+A flat-faced follower (``face = "flat"``) gives a :class:`cams.model.design.FlatFaceDesign`
 instead: its size is limited by convexity, not by a pressure angle::
 
     [follower]   kind, face = "flat"; translating: stroke, offset (default 0: it only
@@ -46,12 +46,12 @@ from pathlib import Path
 
 import numpy as np
 
-from cams.design import CamDesign, FlatFaceDesign, Limits
-from cams.files import check_document, check_keys, read_toml, toml_integer
-from cams.files import toml_number as _num
-from cams.files import toml_table as _table
-from cams.flatface import FlatRocker, FlatTranslating
-from cams.follower import Rocker, Translating, sense_of
+from cams.model.design import CamDesign, FlatFaceDesign, Limits
+from cams.io.files import check_document, check_keys, read_toml, toml_integer
+from cams.io.files import toml_number as _num
+from cams.io.files import toml_table as _table
+from cams.profile.flat import FlatRocker, FlatTranslating
+from cams.model.follower import Rocker, Translating, sense_of
 from laws.errors import InputError, check_option, show_value
 from laws.program import Phase, Program
 from laws.registry import get_law
@@ -256,7 +256,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
                **_dynamics(d, kind)},
     )
     # [profile] and the bore are checked on loading, so cams solve refuses what cams check would
-    from cams.profile import profile_options
+    from cams.profile.roller import profile_options
 
     profile_options(design)
     return design
@@ -430,7 +430,7 @@ def _dynamics(d: dict, kind: str) -> dict:
     """The optional [dynamics] table, as ``{"dynamics": DynamicsSpec}`` or ``{}`` (``kind``: the follower's)."""
     if "dynamics" not in d:
         return {}
-    from cams.camforces import dynamics_from_dict
+    from cams.dynamics.forces import dynamics_from_dict
 
     units = d.get("units", "mm")
     return {"dynamics": dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm", follower=kind)}

@@ -1,7 +1,7 @@
 """The cam in its machine: windows of the cycle, the cam's timing and the cycle diagram.
 
 The pipeline (:func:`design_machine`): the linkage's stroke analysis
-(:func:`cams.linkage.analyse`) -> the cutting and out-of-work windows on the
+(:func:`cams.machine.linkage.analyse`) -> the cutting and out-of-work windows on the
 crank's cycle (:func:`windows`) -> the cam's rises placed inside the
 out-of-work window with a margin, which fixes the cam's mounting angle
 (:func:`place_cam`) -> the cam sized as by ``cams solve``
@@ -38,9 +38,9 @@ import numpy as np
 from scipy.optimize import brentq
 
 from cams.cam import Cam
-from cams.design import CamDesign
-from cams.follower import Rocker
-from cams.linkage.analysis import WORKING, Machine, StrokeReport, analyse
+from cams.model.design import CamDesign
+from cams.model.follower import Rocker
+from cams.machine.linkage.analysis import WORKING, Machine, StrokeReport, analyse
 from laws.errors import show_value
 from laws.errors import InfeasibleError, InputError, check_option
 from laws.program import Program
@@ -88,7 +88,7 @@ class CuttingZone:
     overrun : float
         Fraction of H after the cut ends (overrun at the end), in [0, 1).
     working : {"slow", "fast", "forward", "backward"}
-        Which stroke is the working one (see :func:`cams.linkage.analyse`).
+        Which stroke is the working one (see :func:`cams.machine.linkage.analyse`).
     """
 
     approach: float = 0.0
@@ -256,7 +256,7 @@ def windows(machine: Machine, cutting: CuttingZone, *, samples: int = 720) -> Wi
     Parameters
     ----------
     machine : Machine
-        A linkage of :mod:`cams.linkage.machines`.
+        A linkage of :mod:`cams.machine.linkage.machines`.
     cutting : CuttingZone
         The cut as a part of the working stroke.
     samples : int, optional
@@ -605,7 +605,7 @@ class MachineSpec:
     ----------
     name : str
     linkage : Machine
-        One of :mod:`cams.linkage.machines`.
+        One of :mod:`cams.machine.linkage.machines`.
     cutting : CuttingZone
     drive : Drive
     timing : Timing

@@ -165,13 +165,13 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
 
 
 def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
-    """The rows of the forces page (a :class:`cams.camforces.DesignForces`).
+    """The rows of the forces page (a :class:`cams.dynamics.forces.DesignForces`).
 
     At a rigid impact (a velocity jump, e.g. a linear law) a force is not a
     number: it is said to be unbounded there, as ``cams solve`` does, with
     the finite values between the impacts on their own row.
     """
-    from cams.camforces import impact_note, jump_text
+    from cams.dynamics.forces import impact_note, jump_text
 
     fo = df.to_dict()
     up = [i for i in fo["impacts"] if i["effect"] == "impulse"]
@@ -211,7 +211,7 @@ def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
 
 def _figures(cam):
     """The pictures, each titled as failing when the cam is not usable (:mod:`cams.assess`)."""
-    from cams import plots
+    from cams.present import plots
     from cams.assess import knife_in_groove
 
     if getattr(cam, "flat", False):
@@ -309,7 +309,7 @@ def write_report(cam, out: str | Path) -> tuple[Path, Path]:
     matplotlib.use("Agg", force=False)
     from matplotlib.backends.backend_pdf import PdfPages
 
-    from cams.files import atomic_write, ensure_folder
+    from cams.io.files import atomic_write, ensure_folder
 
     out = ensure_folder(out, "--out")
     sections = report_sections(cam)

@@ -1,17 +1,17 @@
 """Planar linkage kinematics: primitives (crank, Assur dyads), synthesis and cycle analysis.
 
-* :mod:`cams.linkage.primitives` -- vectorized positions, velocities and
+* :mod:`cams.machine.linkage.primitives` -- vectorized positions, velocities and
   accelerations of the input crank and the RRR, RRP, RPR and RPP dyads;
-* :mod:`cams.linkage.synthesis` -- lengths from course data (time ratio,
+* :mod:`cams.machine.linkage.synthesis` -- lengths from course data (time ratio,
   stroke, centre distance);
-* :mod:`cams.linkage.analysis` -- dead positions, stroke, time ratio and
+* :mod:`cams.machine.linkage.analysis` -- dead positions, stroke, time ratio and
   transmission angle of a one-input machine.
 
-The ready-made machines of the seeds live in :mod:`cams.linkage.machines`.
+The ready-made machines of the seeds live in :mod:`cams.machine.linkage.machines`.
 """
 
-from cams.linkage.analysis import WORKING, Machine, StrokeReport, analyse, dead_positions
-from cams.linkage.primitives import (
+from cams.machine.linkage.analysis import WORKING, Machine, StrokeReport, analyse, dead_positions
+from cams.machine.linkage.primitives import (
     Angle,
     AssemblyError,
     Point,
@@ -29,7 +29,7 @@ from cams.linkage.primitives import (
     rrr,
     solve_real,
 )
-from cams.linkage.synthesis import (
+from cams.machine.linkage.synthesis import (
     SlottedLeverSynthesis,
     crank_slider_crank,
     slotted_lever_synthesis,

@@ -81,7 +81,7 @@ def _radii_label(R0: float, cam_radius: float | None) -> str:
 
 def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
     """Write ``fig`` as ``stem.png`` and ``stem.svg``, each whole or not at all."""
-    from cams.files import atomic_write
+    from cams.io.files import atomic_write
 
     stem = Path(stem)
     out = []
@@ -160,7 +160,7 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
     ax.plot(*A0, "ko", ms=4)
     ax.annotate("A0", A0, textcoords="offset points", xytext=(4, -10))
     ax.plot(*result.centre, "o", color="#c53030", ms=6, label="cam centre O")
-    from cams.profile import smallest_cam_radius
+    from cams.profile.roller import smallest_cam_radius
 
     ax.add_patch(Circle(result.centre, result.R0, fill=False, ls=":", color="#c53030",
                         label=_radii_label(result.R0, smallest_cam_radius(d, result.centre)[0])))
@@ -243,7 +243,7 @@ def plot_motion(design, *, n: int = 721):
 
 def plot_pressure(result, *, n: int = 721):
     """Pressure angle against the cam angle with the limits drawn (from the finished design)."""
-    from cams.pressure import pressure_angle
+    from cams.verify.pressure import pressure_angle
 
     d = result.design
     prog = d.program
@@ -276,7 +276,7 @@ def plot_flat_pressure(solution, *, n: int = 721):
 
     Parameters
     ----------
-    solution : cams.flatface.FlatFaceSolution
+    solution : cams.profile.flat.FlatFaceSolution
     """
     d = solution.design
     c = solution.curves(n)
@@ -303,7 +303,7 @@ def plot_curvature(solution, *, n: int = 721):
 
     Parameters
     ----------
-    solution : cams.flatface.FlatFaceSolution
+    solution : cams.profile.flat.FlatFaceSolution
     """
     d = solution.design
     c = solution.curves(n)
@@ -402,7 +402,7 @@ def _draw_mechanism(ax, cam, profile, phi: float):
         outer = _cam_in_fixed_frame(profile, profile.outer, phi)
         ax.plot(outer[:, 0], outer[:, 1], color="#1a202c", lw=1.2, label="groove, outer wall")
     ax.plot(pitch[:, 0], pitch[:, 1], color="#2b6cb0", lw=0.8, ls="--", label="pitch curve")
-    from cams.profile import smallest_cam_radius
+    from cams.profile.roller import smallest_cam_radius
 
     ax.add_patch(Circle(profile.centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
                         label=_radii_label(profile.R0, smallest_cam_radius(d, profile.centre)[0])))

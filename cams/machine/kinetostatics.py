@@ -45,7 +45,7 @@ friction included, without any reaction:
 form of this sum (moments about the pole of the velocity plan turned by 90
 degrees). :attr:`ForceResult.virtual_moment` computes it independently.
 
-Reduced quantities (for :mod:`cams.flywheel`)
+Reduced quantities (for :mod:`cams.machine.flywheel`)
 ---------------------------------------------
 ``J_red = sum(m |v_S|^2 + J_S omega^2) / omega_1^2`` and the reduced moment
 of the external loads and weights ``Mr = -sum(F . v + M omega) / |omega_1|``
@@ -53,7 +53,7 @@ of the external loads and weights ``Mr = -sum(F . v + M omega) / |omega_1|``
 
 Frames and units
 ----------------
-The machine's frame (:mod:`cams.linkage.machines`): origin at the crank centre,
+The machine's frame (:mod:`cams.machine.linkage.machines`): origin at the crank centre,
 angles counter-clockwise from +x; gravity acts along -y. Lengths are given in
 the machine's unit and converted with ``length_unit`` (m per unit, 1e-3 for
 mm); forces in N, moments in N m (counter-clockwise positive), masses in kg,
@@ -66,8 +66,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from cams.linkage.primitives import Angle, Point, on_link
-from cams.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
+from cams.machine.linkage.primitives import Angle, Point, on_link
+from cams.machine.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
 from laws.errors import show_value
 from laws.errors import InputError, check_option
 from laws.errors import check_number as _num
@@ -263,13 +263,13 @@ class Resistance:
         Magnitude, N, >= 0.
     window : {"cut", "working", "always"}
         "cut": while the tool is in the work (the working stroke less
-        ``approach`` and ``overrun``, as :class:`cams.machine.CuttingZone`);
+        ``approach`` and ``overrun``, as :class:`cams.machine.timing.CuttingZone`);
         "working": the whole working stroke; "always": the whole cycle.
     approach, overrun : float
         Fractions of the stroke before and after the cut, in [0, 1) with a sum
         < 1; window "cut" only (other windows refuse non-zero values).
     working : {"slow", "fast", "forward", "backward"}
-        Which stroke works (:func:`cams.linkage.analyse`); not used by window
+        Which stroke works (:func:`cams.machine.linkage.analyse`); not used by window
         "always".
 
     The windows "cut" and "working" follow the machine's working member
@@ -284,7 +284,7 @@ class Resistance:
     working: str = "slow"
 
     def __post_init__(self):
-        from cams.linkage.analysis import WORKING
+        from cams.machine.linkage.analysis import WORKING
 
         _num("forces.loads.force", self.force, lo=0.0)
         check_option("forces.loads.window", self.window, WINDOWS)
@@ -564,7 +564,7 @@ def _guide(model: Model, name: str) -> np.ndarray:
 def _load_window(model: Model, ld: Resistance) -> np.ndarray:
     if ld.window == "always":
         return np.ones_like(model.phi, dtype=bool)
-    from cams.machine import CuttingZone, windows
+    from cams.machine.timing import CuttingZone, windows
 
     m = model.machine
     zone = CuttingZone(approach=ld.approach, overrun=ld.overrun, working=ld.working) if ld.window == "cut" else CuttingZone(working=ld.working)
@@ -616,7 +616,7 @@ def _pinned_cg(name: str, kind: str) -> str:
 
 def build_model(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: float | None = None,
                 origin: float = 0.0) -> Model:
-    """The rigid-body model of a machine of :mod:`cams.linkage.machines` at crank angles ``phi``.
+    """The rigid-body model of a machine of :mod:`cams.machine.linkage.machines` at crank angles ``phi``.
 
     Parameters
     ----------
@@ -921,7 +921,7 @@ class ForceResult:
 
     def flywheel(self, *, delta: float, interpolation: str = "linear", friction: bool = True,
                  cycle_deg: float | None = None):
-        """The flywheel for this machine (:func:`cams.flywheel.flywheel`) from its reduced moments and inertia.
+        """The flywheel for this machine (:func:`cams.machine.flywheel.flywheel`) from its reduced moments and inertia.
 
         The crank angles become the cycle's angles in the crank's sense from
         the first one. ``friction`` adds the pairs' friction to the resisting
@@ -929,7 +929,7 @@ class ForceResult:
         (:attr:`Model.cycle`: 720 with a gas table of period 720, which needs
         crank angles over two turns).
         """
-        from cams.flywheel import flywheel
+        from cams.machine.flywheel import flywheel
 
         cycle = self.model.cycle if cycle_deg is None else np.radians(cycle_deg)
         cycle_deg = float(np.degrees(cycle))
@@ -1092,7 +1092,7 @@ def analyse_forces(machine, spec: ForceSpec, *, phi=None, samples: int = 360, rp
     A crank-slider with a 10 kg piston at 120 rpm, no friction: the balancing
     moment equals the one from Zhukovsky's lever.
 
-    >>> from cams.linkage.machines import CrankSlider
+    >>> from cams.machine.linkage.machines import CrankSlider
     >>> m = CrankSlider(crank=100.0, rod=400.0, rpm=120)
     >>> r = analyse_forces(m, ForceSpec(links={"slider": LinkMass(10.0)}), samples=36)
     >>> bool(np.allclose(r.balancing_moment, r.virtual_moment, atol=1e-9))
@@ -1133,7 +1133,7 @@ class ForceOptions:
     delta : float or None
         Coefficient of speed fluctuation for the flywheel; None: no flywheel.
     interpolation : str
-        For :func:`cams.flywheel.flywheel`.
+        For :func:`cams.machine.flywheel.flywheel`.
     """
 
     samples: int = 360
@@ -1150,7 +1150,7 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
 
         [forces]            gravity (m/s^2, default 9.80665), samples (360), passes (2 | "iterate"),
                             delta (flywheel), interpolation ("linear" | "spline")
-        [forces.links.NAME] mass, inertia, cg           NAME: see cams.kinetostatics.LINKS
+        [forces.links.NAME] mass, inertia, cg           NAME: see cams.machine.kinetostatics.LINKS
                             (cg: links that turn only; PINNED links refuse it)
         [forces.friction]   revolute = {coefficient, radius}, prismatic = {coefficient},
                             PAIR = {coefficient, radius} (overrides; PAIR: see JOINTS;
@@ -1171,8 +1171,8 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
     kind : str
         The linkage's kind (:data:`LINKS`).
     units : str
-        The file's length unit: ``"mm"`` only (:data:`cams.camforces.LENGTH_UNITS`).
-    cutting : cams.machine.CuttingZone or None
+        The file's length unit: ``"mm"`` only (:data:`cams.dynamics.forces.LENGTH_UNITS`).
+    cutting : cams.machine.timing.CuttingZone or None
         Defaults of a "resistance" load's window.
 
     Returns
@@ -1186,7 +1186,7 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
     >>> spec.links["tool"].mass, spec.loads[0].window, opt.delta
     (80.0, 'cut', 0.05)
     """
-    from cams.camforces import LENGTH_UNITS
+    from cams.dynamics.forces import LENGTH_UNITS
 
     t = _keys(table, FORCES_KEYS, "forces")
     if units not in LENGTH_UNITS:
@@ -1299,7 +1299,7 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
         delta = _num("forces.delta", delta)
         if not 0 < delta < 1:
             raise InputError("forces.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")
-    from cams.flywheel import INTERPOLATIONS
+    from cams.machine.flywheel import INTERPOLATIONS
 
     interp = check_option("forces.interpolation", t.get("interpolation", "linear"), INTERPOLATIONS)
     spec = ForceSpec(links=links, loads=tuple(loads), friction=friction, gravity=_num("forces.gravity", t.get("gravity", G)),
@@ -1315,12 +1315,12 @@ class MachineForces:
     ----------
     linkage : ForceResult or None
         Without a ``[forces]`` table: None.
-    flywheel : cams.flywheel.FlywheelResult or None
+    flywheel : cams.machine.flywheel.FlywheelResult or None
         With ``[forces] delta``.
-    cam : cams.camforces.CamForces or None
+    cam : cams.dynamics.forces.CamForces or None
         With a ``[dynamics]`` table and force closure.
-    spring : cams.camforces.Spring or None
-    jump : cams.camforces.JumpSpeed or None
+    spring : cams.dynamics.forces.Spring or None
+    jump : cams.dynamics.forces.JumpSpeed or None
     notes : tuple of str
     """
 
@@ -1342,7 +1342,7 @@ class MachineForces:
 
         The cam's program angle ``theta`` is reached at ``mount + (theta + 2 pi j) / ratio``
         for each of its ``p`` turns ``j`` in the repeating period of ``q`` crank
-        turns (:class:`cams.machine.CamTiming`); sorted. Empty without the cam's timing.
+        turns (:class:`cams.machine.timing.CamTiming`); sorted. Empty without the cam's timing.
         """
         t = self.cam_timing
         if t is None:
@@ -1361,7 +1361,7 @@ class MachineForces:
             fw.pop("curves")
             out["flywheel"] = fw
         if self.cam is not None:
-            from cams.camforces import jump_dict
+            from cams.dynamics.forces import jump_dict
 
             cam = {**self.cam.to_dict(), "spring": {"rate": self.spring.rate, "preload": self.spring.preload},
                    **jump_dict(self.jump), "ok": bool(self.cam.ok)}
@@ -1401,7 +1401,7 @@ class MachineForces:
 
 
 CYCLE_ANGLE = "cycle angle from position 1"
-"""How a machine's reports name their crank angles: the crank's rotation from position 1 (:mod:`cams.machine`)."""
+"""How a machine's reports name their crank angles: the crank's rotation from position 1 (:mod:`cams.machine.timing`)."""
 CAM_ANGLE = "cam angle from the start of its program"
 
 
@@ -1452,7 +1452,7 @@ def _plot_cam(cf, path, *, title: str, timing=None):
 
 
 class _Picked:
-    """The arrays of a :class:`cams.camforces.CamForces` indexed by ``o`` (for plotting in another order)."""
+    """The arrays of a :class:`cams.dynamics.forces.CamForces` indexed by ``o`` (for plotting in another order)."""
 
     def __init__(self, cf, o):
         self._cf, self._o = cf, o
@@ -1463,7 +1463,7 @@ class _Picked:
 
 
 def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
-    """Forces of a machine file's machine (:class:`cams.machine.MachineSpec`).
+    """Forces of a machine file's machine (:class:`cams.machine.timing.MachineSpec`).
 
     Parameters
     ----------
@@ -1472,8 +1472,8 @@ def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
         ``spec.cam.extra["dynamics"]`` (from ``[dynamics]``) the follower's.
     centre : array_like or None
         The cam's centre (``SolveResult.centre``); needed for the cam's forces.
-    found : cams.machine.MachineResult, optional
-        What :func:`cams.machine.design_machine` found for ``spec``: its
+    found : cams.machine.timing.MachineResult, optional
+        What :func:`cams.machine.timing.design_machine` found for ``spec``: its
         windows, cam timing and (without ``centre``) the cam's centre are
         used, not found again.
 
@@ -1481,16 +1481,16 @@ def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
     -------
     MachineForces
         The linkage's forces sampled at ``opt.samples`` equal steps a turn of
-        the cycle angle from position 1 (:class:`cams.machine.Windows`), so
+        the cycle angle from position 1 (:class:`cams.machine.timing.Windows`), so
         that their angles (``rotation``, ``to_dict``'s ``at_deg``, the plots)
         and the flywheel's are cycle angles, as the machine's windows; over
         two turns (0 to 720 degrees) with a gas table of period 720; the cam's
-        timing (:class:`cams.machine.CamTiming`) to map the cam's angles to
+        timing (:class:`cams.machine.timing.CamTiming`) to map the cam's angles to
         cycle angles.
     """
 
-    from cams.camforces import design_forces
-    from cams.machine import place_cam, windows
+    from cams.dynamics.forces import design_forces
+    from cams.machine.timing import place_cam, windows
 
     notes = []
     lk = fw = cf = spring = jump = None
@@ -1529,7 +1529,7 @@ def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
         if note:
             notes.append(note)
         if df is not None:
-            from cams.camforces import impact_note
+            from cams.dynamics.forces import impact_note
 
             cf, spring, jump = df.forces, df.spring, df.jump
             note = impact_note(cf)

@@ -2,7 +2,7 @@
 
 Frames and signs
 ----------------
-* Fixed frame: the follower's frame of :mod:`cams.follower`; the cam centre O
+* Fixed frame: the follower's frame of :mod:`cams.model.follower`; the cam centre O
   is given in it (``SolveResult.centre``).
 * Cam frame: origin at the cam centre, axes parallel to the fixed frame when
   the cam is at ``phi = 0``, turning with the cam. A point with cam-frame
@@ -45,8 +45,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cams.design import CamDesign
-from cams.follower import Rocker, Translating
+from cams.model.design import CamDesign
+from cams.model.follower import Rocker, Translating
 from laws.errors import InputError
 from laws.program import Motion
 
@@ -302,8 +302,8 @@ def pitch_curve(design: CamDesign, centre: np.ndarray, phi: np.ndarray) -> Pitch
     sits 40 from the centre on the far side of the cam.
 
     >>> import numpy as np
-    >>> from cams.design import CamDesign, Limits
-    >>> from cams.follower import Translating
+    >>> from cams.model.design import CamDesign, Limits
+    >>> from cams.model.follower import Translating
     >>> from laws.program import Phase, Program
     >>> from laws.registry import get_law
     >>> cyc = get_law("cycloidal")

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cams.design import CamDesign
+from cams.model.design import CamDesign
 from laws.errors import InputError, show_value
 
 __all__ = ["pressure_angle", "contact_normal", "PressureReport", "check_pressure", "check_pressure_many"]
@@ -28,7 +28,7 @@ def contact_normal(design: CamDesign, centre: np.ndarray, s: np.ndarray, ds: np.
     """Outward contact normal, rise direction and cam-centre-to-roller vector (fixed frame).
 
     The one place of the inversion formula (used by :func:`pressure_angle` and
-    :mod:`cams.camforces`).
+    :mod:`cams.dynamics.forces`).
 
     Parameters
     ----------
@@ -186,7 +186,7 @@ def check_pressure_many(design: CamDesign, centres: np.ndarray, *, grid: int = 2
     ----------
     design : CamDesign
     centres : array_like, shape (k, 2) or (2,)
-        Cam centres O in the follower's fixed frame (:mod:`cams.follower`),
+        Cam centres O in the follower's fixed frame (:mod:`cams.model.follower`),
         length unit.
     grid, tol
         As in :func:`check_pressure`.
@@ -250,7 +250,7 @@ def check_pressure(design: CamDesign, centre: np.ndarray, *, grid: int = 2000, t
     ----------
     design : CamDesign
     centre : array_like, shape (2,)
-        Cam centre O in the follower's fixed frame (:mod:`cams.follower`),
+        Cam centre O in the follower's fixed frame (:mod:`cams.model.follower`),
         length unit.
     grid : int, optional
         Steps per phase of the first scan.

@@ -1,4 +1,4 @@
-"""The seeds' linkages as ready-made machines, built group by group from :mod:`cams.linkage`.
+"""The seeds' linkages as ready-made machines, built group by group from :mod:`cams.machine.linkage`.
 
 * :class:`SlottingMachine` -- seed 003 (插床): crank O2A, block A on the guide
   bar O3B (RPR dyad), link BC and the tool slider C on the guide y-y (RRP).
@@ -25,7 +25,7 @@ no rpm is given.
 
 Each machine exposes ``kinematics(phi)`` (every point and link),
 ``output(phi)`` (the working member's coordinate, the protocol of
-:func:`cams.linkage.analyse`), ``transmission(phi)`` and ``lengths()``.
+:func:`cams.machine.linkage.analyse`), ``transmission(phi)`` and ``lengths()``.
 """
 
 from __future__ import annotations
@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from cams.linkage.primitives import (
+from cams.machine.linkage.primitives import (
     Angle,
     AssemblyError,
     Point,
@@ -47,9 +47,9 @@ from cams.linkage.primitives import (
     rpr,
     rrp,
 )
-from cams.linkage.analysis import analyse
+from cams.machine.linkage.analysis import analyse
 from laws.errors import show_value as _show
-from cams.linkage.synthesis import (
+from cams.machine.linkage.synthesis import (
     MAX_TIME_RATIO,
     SlottedLeverSynthesis,
     _below,
@@ -229,7 +229,7 @@ class _SwingingLever(_Base):
         """Frame crank angles of the bar's extreme positions (the crank perpendicular to the bar), radians.
 
         ``cos phi = -l_crank / L``: ``pi/2 + theta/2`` and ``3 pi/2 - theta/2``;
-        :func:`cams.linkage.analysis.dead_positions` brackets them exactly.
+        :func:`cams.machine.linkage.analysis.dead_positions` brackets them exactly.
         """
         h = self.half_swing
         return np.array([np.pi / 2 + h, 1.5 * np.pi - h])

@@ -1,0 +1,1 @@
+"""Checks of a solved cam: jamming, undercut, the profile as a polygon, the bore."""

@@ -1,0 +1,1 @@
+"""What the user sees: pictures (each returns a Figure) and the report."""

@@ -1,0 +1,1 @@
+"""The cam's working profile: roller (and knife edge) followers, flat faces."""
