@@ -106,7 +106,7 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     Parameters
     ----------
     design : CamDesign or FlatFaceDesign
-    solution : optimize.solve.SolveResult or cams.profile.flat.FlatFaceSolution
+    solution : cams.solve.SolveResult or cams.profile.flat.FlatFaceSolution
         Its ``verified`` is the verified side.
     checks : CheckReport or FlatCheckReport, optional
         The checks of the finished profile; None only when no profile can be
@@ -132,7 +132,7 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     if not verified:
         which = ["the independent check finds a limit exceeded"]
         if getattr(solution, "pressure", None) is not None:  # a roller's cam: which limit and by how much
-            from optimize.solve import pressure_failures
+            from cams.solve import pressure_failures
 
             which = pressure_failures(solution.pressure) or which
         failures.append(("not verified", "not verified: " + "; ".join(which)))

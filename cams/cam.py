@@ -69,12 +69,12 @@ class Cam:
 
     @cached_property
     def solution(self):
-        """The sized cam (:class:`optimize.solve.SolveResult`), solved on first use."""
+        """The sized cam (:class:`cams.solve.SolveResult`), solved on first use."""
         if self.flat:
             from cams.profile.flat import size_flat_face
 
             return size_flat_face(self.design)
-        from optimize.solve import solve
+        from cams.solve import solve
 
         return solve(self.design, method=self.method, objective=self.objective)
 

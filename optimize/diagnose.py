@@ -17,7 +17,7 @@ by a solver's feasibility tolerance:
 A fixed offset of a translating follower never empties the zone: every wedge
 contains the half-line from its apex along -Y widening at its half-angle, so
 the zone reaches every offset far enough down; a fixed L misses a non-empty
-zone, and :func:`optimize.solve.admissible_L_range` gives its admissible range.
+zone, and :func:`optimize.sizing.admissible_L_range` gives its admissible range.
 
 The bound of the feasible set is an infimum (a supremum for K_C). When it is
 attained (the zone there a point or a segment) the value printed is rounded
@@ -215,8 +215,8 @@ def _attained(R0_at: Callable[[float], float | None], bound: float, span: float)
 
 def _misses_L(design: CamDesign, L: float) -> bool:
     """True when no admissible centre lies at centre distance ``L`` from the pivot (length): the zone is empty
-    or ``L`` is outside its range (:func:`optimize.solve.admissible_L_range`)."""
-    from optimize.solve import admissible_L_range
+    or ``L`` is outside its range (:func:`optimize.sizing.admissible_L_range`)."""
+    from optimize.sizing import admissible_L_range
 
     if zone_empty(design):
         return True
@@ -337,7 +337,7 @@ def explain_infeasible(design: CamDesign, extra=None, L: float | None = None) ->
     design : CamDesign
         A design for which a solver found no admissible centre.
     extra : (N, c), optional
-        The half-planes of a fixed offset (``optimize.solve._offset_line``).
+        The half-planes of a fixed offset (``optimize.sizing._offset_line``).
     L : float, optional
         The fixed centre distance ``limits.centre_distance`` (rocker, length), held with the other limits.
 
@@ -381,8 +381,8 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
     An :class:`InfeasibleError` of an empty zone (field ``limits.pressure_angle``
     or ``follower.offset``) is replaced by :func:`explain_infeasible`'s, which
     names the limit that binds and its nearest feasible value. When the
-    continuous zone is not empty after all (a centre inside it, confirmed by
-    :func:`cams.verify.pressure.check_pressure`), the solver failed: the error says so
+    continuous zone is not empty after all (a centre where the continuous
+    zone's violation, :func:`optimize.zone.max_violation`, is proven <= 0), the solver failed: the error says so
     (field ``solve.method``) and gives that centre's R0. A result that is not
     certified because no feasible centre was found near it (``certified`` False,
     ``error_bound`` None) is checked the same way: when the zone is empty or
@@ -414,10 +414,8 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
 
 def _solver_failed(design: CamDesign, extra, err: InfeasibleError) -> InfeasibleError | None:
     """The error of a solver that found no centre in a zone that is not empty, or None if unconfirmed."""
-    from cams.verify.pressure import check_pressure
-
     lower, upper, O = zone_margin(design, extra)
-    if upper > 0 or not check_pressure(design, O).ok:
+    if upper > 0:
         return None
     R0 = float(np.linalg.norm(O - design.follower.position(0.0)))
     return InfeasibleError("solve.method", f"the {design.method} method found no admissible cam centre ({err}), but "

@@ -47,7 +47,7 @@ def tradeoff(design: CamDesign, n: int = 25, *, samples: int | None = None) -> T
         raise InputError("follower.kind", "the R0-L trade-off applies to rocker followers")
     if n < 2:
         raise InputError("n", f"must be >= 2, got {n}")
-    from optimize.solve import nearest
+    from optimize.sizing import nearest
 
     f = design.follower
     A0 = f.position(0.0)

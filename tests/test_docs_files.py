@@ -234,7 +234,7 @@ OPTION_MODULES = [designfile, design_mod, machinefile, machine_mod, kinetostatic
 @pytest.mark.parametrize("module", OPTION_MODULES, ids=lambda m: m.__name__)
 def test_option_words_documented(module):
     """Every word a loader accepts through check_option (closure, method, placement, ...) is in docs/files.md."""
-    extra = [importlib.import_module(n) for n in ("cams.machine.flywheel", "cams.machine.linkage.analysis", "optimize.solve")]
+    extra = [importlib.import_module(n) for n in ("cams.machine.flywheel", "cams.machine.linkage.analysis", "cams.solve")]
     words = _call_args(module, "check_option", 2, [module, *extra])
     assert words, f"no check_option options found in {module.__name__}"
     assert _missing(_text(), [f'"{w}"' for w in words]) == []

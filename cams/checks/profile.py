@@ -601,7 +601,7 @@ def check_profile(
 
 
 def check_solution(result, *, tolerance: float | None = None, options: ProfileOptions | None = None) -> CheckReport:
-    """Check the profile of a solved design (an ``optimize.solve.SolveResult``).
+    """Check the profile of a solved design (an ``cams.solve.SolveResult``).
 
     ``tolerance`` overrides the design file's ``[profile] tolerance``.
     """
@@ -610,13 +610,13 @@ def check_solution(result, *, tolerance: float | None = None, options: ProfileOp
 
 
 def check_design(design: CamDesign, *, tolerance: float | None = None, method: str | None = None) -> CheckReport:
-    """Solve ``design`` (:func:`optimize.solve.solve`) and check the profile of the solved centre.
+    """Solve ``design`` (:func:`cams.solve.solve`) and check the profile of the solved centre.
 
     A flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`) is
     sized by convexity and checked by :func:`cams.profile.flat.check_flat_face`
     (a :class:`cams.profile.flat.FlatCheckReport`); it takes no ``method``.
     """
-    from optimize.solve import solve
+    from cams.solve import solve
 
     if getattr(design, "face", "roller") == "flat":
         from cams.profile.flat import check_flat_face, flat_face_profile

@@ -5,7 +5,7 @@ The pipeline (:func:`design_machine`): the linkage's stroke analysis
 crank's cycle (:func:`windows`) -> the cam's rises placed inside the
 out-of-work window with a margin, which fixes the cam's mounting angle
 (:func:`place_cam`) -> the cam sized as by ``cams solve``
-(:func:`optimize.solve.solve`) -> the cycle diagram with an independent check
+(:func:`cams.solve.solve`) -> the cycle diagram with an independent check
 that feeding never overlaps cutting (:func:`cycle_diagram`).
 
 Cycle angle
@@ -643,7 +643,7 @@ class MachineResult:
     stroke: StrokeReport
     windows: Windows
     timing: CamTiming
-    solve: object  # optimize.solve.SolveResult
+    solve: object  # cams.solve.SolveResult
     diagram: CycleDiagram
     bore: dict | None = None
     assessment: object = None  # cams.assess.Assessment
@@ -714,7 +714,7 @@ def design_machine(spec: MachineSpec, *, method: str | None = None) -> MachineRe
         With ``[cam] bore_radius`` its ``bore`` compares the bore with the
         sized cam's working profile (as ``cams check`` does).
     """
-    from optimize.solve import solve
+    from cams.solve import solve
 
     win = windows(spec.linkage, spec.cutting)
     tm = place_cam(win, spec.cam.program, spec.drive, spec.timing)

@@ -112,7 +112,7 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
 
     Parameters
     ----------
-    result : optimize.solve.SolveResult
+    result : cams.solve.SolveResult
     tradeoff : optimize.tradeoff.TradeOff, optional
     n_lines : int
         Positions per constrained phase whose lines are drawn.

@@ -2,20 +2,19 @@
 
 import numpy as np
 
-import optimize.solve
+import cams.profile.roller
+import cams.solve
 from cams.cam import Cam
 from tests.conftest import EXAMPLES
 
 
 def test_motion_does_not_solve_and_results_are_reused(monkeypatch):
     calls = {"solve": 0, "profile": 0}
-    real_solve = optimize.solve.solve
+    real_solve = cams.solve.solve
 
     def counting_solve(*a, **k):
         calls["solve"] += 1
         return real_solve(*a, **k)
-
-    import cams.profile.roller
 
     real_build = cams.profile.roller.build_profile
 
@@ -23,7 +22,7 @@ def test_motion_does_not_solve_and_results_are_reused(monkeypatch):
         calls["profile"] += 1
         return real_build(*a, **k)
 
-    monkeypatch.setattr(optimize.solve, "solve", counting_solve)
+    monkeypatch.setattr(cams.solve, "solve", counting_solve)
     monkeypatch.setattr(cams.profile.roller, "build_profile", counting_build)
     cam = Cam.from_file(EXAMPLES / "rocker_force.toml")
     cam.motion(np.linspace(0, 6, 7))

@@ -18,7 +18,7 @@ from cams.cli import main
 from cams.io.designfile import design_from_dict
 from cams.io.files import read_toml
 from laws.errors import InputError
-from optimize.solve import solve
+from cams.solve import solve
 from tests.conftest import EXAMPLES
 from tests.stress.helpers import to_toml
 
@@ -230,7 +230,7 @@ def test_R0_and_L_name_both_centres_and_take_the_one_nearer_its_limit(tmp_path, 
 
 
 def test_two_equally_good_centres_are_refused_naming_both(monkeypatch):
-    import optimize.solve as s
+    import cams.solve as s
     from cams.verify.pressure import PressureReport
 
     d, res = _minimum("rocker_force.toml")

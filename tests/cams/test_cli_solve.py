@@ -69,7 +69,7 @@ def test_tiny_design_prints_its_digits(tmp_path, capsys):
     """A micrometre design keeps about seven significant digits (was R0 = 0.000000 mm)."""
     from cams.cli import main
     from cams.io.designfile import load_design
-    from optimize.solve import solve
+    from cams.solve import solve
     from tests.conftest import EXAMPLES
 
     text = (EXAMPLES / "rocker_force.toml").read_text(encoding="utf-8")

@@ -20,12 +20,12 @@ def test_import_cams_laws_optimize_is_light():
 
 
 def test_exact_solve_does_not_load_heavy_packages():
-    code = f"from cams.io.designfile import load_design\nfrom optimize.solve import solve\nsolve(load_design({str(EXAMPLES / 'rocker_form.toml')!r}))"
+    code = f"from cams.io.designfile import load_design\nfrom cams.solve import solve\nsolve(load_design({str(EXAMPLES / 'rocker_form.toml')!r}))"
     assert _loaded_after(code) == []
 
 
 def test_convex_loads_cvxpy_only_when_used():
-    code = (f"from cams.io.designfile import load_design\nfrom optimize.solve import solve\n"
+    code = (f"from cams.io.designfile import load_design\nfrom cams.solve import solve\n"
             f"solve(load_design({str(EXAMPLES / 'rocker_force.toml')!r}), method='convex')")
     assert _loaded_after(code) == ["cvxpy"]
 

@@ -280,7 +280,7 @@ def test_a_not_certified_answer_is_never_printed_usable(tmp_path, capsys, monkey
     bounds disagree is not usable even when it is verified and buildable."""
     import dataclasses
 
-    import optimize.solve as solve_module
+    import cams.solve as solve_module
 
     real = solve_module.solve
     monkeypatch.setattr(solve_module, "solve", lambda *a, **k: dataclasses.replace(real(*a, **k), certified=False))
@@ -299,7 +299,7 @@ def test_sweep_counts_a_not_certified_row_as_failing(capsys, tmp_path, monkeypat
     """A row whose exact answer is not certified is not usable (:attr:`Assessment.usable`): counted, exit 1."""
     import dataclasses
 
-    import optimize.solve as solve_module
+    import cams.solve as solve_module
     from cams.io.files import read_toml
     from cams.sweep import sweep
 

@@ -10,7 +10,7 @@ from cams.cli import main
 from cams.io.designfile import design_from_dict
 from cams.sweep import MAX_DESIGNS, parse_vary, sweep
 from laws.errors import InputError
-from optimize.solve import solve
+from cams.solve import solve
 from tests.conftest import EXAMPLES, rocker_dict
 
 

@@ -12,7 +12,7 @@ import pytest
 
 from cams.io.designfile import design_from_dict
 from cams.verify.pressure import contact_normal
-from optimize.solve import solve
+from cams.solve import solve
 from tests.conftest import rocker_dict
 
 

@@ -13,7 +13,7 @@ from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, jamming_l
 from cams.io.designfile import design_from_dict, load_design
 from tests.conftest import EXAMPLES, rocker_dict
 from laws.errors import InputError
-from optimize.solve import solve
+from cams.solve import solve
 
 from .sim import simulate
 

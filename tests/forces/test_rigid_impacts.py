@@ -12,7 +12,7 @@ from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, jump_spee
 from cams.cli import main
 from cams.io.designfile import load_design
 from laws.units import rpm_to_omega
-from optimize.solve import solve
+from cams.solve import solve
 
 ROOT = Path(__file__).resolve().parents[2]
 FEED = ROOT / "examples" / "slotting_feed_cam.toml"

@@ -1,4 +1,4 @@
-"""One entry point: ``optimize.solve.solve(load_design(f))`` gives what ``cams solve f --json`` prints.
+"""One entry point: ``cams.solve.solve(load_design(f))`` gives what ``cams solve f --json`` prints.
 
 The API honours everything the file says (``[solve] objective``, method, samples) and takes flat-faced
 designs (their convexity sizing), so for every example the command line's JSON and the API's ``to_dict`` agree
@@ -12,7 +12,7 @@ import pytest
 from cams.cli import main
 from cams.io.designfile import design_from_dict, load_design
 from cams.io.files import read_toml
-from optimize.solve import solve
+from cams.solve import solve
 from tests.conftest import EXAMPLES
 
 FILES = sorted(p.name for p in EXAMPLES.glob("*.toml"))

@@ -26,7 +26,7 @@ from cams.io.designfile import design_from_dict
 from cams.verify.pressure import check_pressure
 from laws.errors import InfeasibleError
 from optimize.diagnose import _attained, diagnosed, explain_infeasible, relaxations
-from optimize.solve import solve
+from cams.solve import solve
 from tests.conftest import EXAMPLES, rocker_dict
 from tests.validation.reference import ReferenceZone
 

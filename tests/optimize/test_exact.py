@@ -11,7 +11,7 @@ import pytest
 import optimize.exact as exact
 from cams.io.designfile import design_from_dict, load_design
 from optimize.exact import ExchangeInvariantError, nearest_exact
-from optimize.solve import solve
+from cams.solve import solve
 from tests.conftest import EXAMPLES
 from tests.stress.helpers import assert_minimal
 

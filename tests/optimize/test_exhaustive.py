@@ -20,7 +20,7 @@ from cams.io.designfile import design_from_dict
 from laws.errors import InfeasibleError
 from optimize.exhaustive import candidates, first_admissible
 from optimize.planar import feasible_mask, nearest_point
-from optimize.solve import solve
+from cams.solve import solve
 from tests.stress.test_stress_properties import random_design
 
 #: A rocker whose least R0 lies on one t1-t1 line (a design of the random campaign).

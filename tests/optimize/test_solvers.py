@@ -5,7 +5,8 @@ import pytest
 
 from cams.io.designfile import design_from_dict
 from laws.errors import InfeasibleError, InputError
-from optimize.solve import admissible_L_range, solve
+from optimize.sizing import admissible_L_range
+from cams.solve import solve
 from tests.conftest import rocker_dict
 
 SEED_FORCE = rocker_dict()

@@ -5,7 +5,7 @@ import pytest
 
 from cams.io.designfile import design_from_dict
 from cams.verify.pressure import check_pressure
-from optimize.solve import solve
+from cams.solve import solve
 from optimize.tradeoff import tradeoff
 from tests.conftest import rocker_dict
 

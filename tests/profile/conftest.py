@@ -15,8 +15,8 @@ NAMES = ("rocker_force", "rocker_form", "translating_force", "translating_form_c
 
 @pytest.fixture(scope="session")
 def solved():
-    """``name -> (design, centre)`` for every example, solved by :func:`optimize.solve.solve`."""
-    from optimize.solve import solve
+    """``name -> (design, centre)`` for every example, solved by :func:`cams.solve.solve`."""
+    from cams.solve import solve
 
     out = {}
     for n in NAMES:

@@ -179,7 +179,7 @@ def test_check_design_solves_first_and_rejects_bad_tolerance(solved):
 
 
 def test_check_solution_takes_a_solve_result(solved):
-    from optimize.solve import solve
+    from cams.solve import solve
 
     design, _ = solved["translating_force"]
     res = solve(design)

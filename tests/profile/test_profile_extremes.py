@@ -30,7 +30,7 @@ NAMES = ("rocker_force", "rocker_form", "slotting_feed_cam", "translating_force"
 @lru_cache(maxsize=None)
 def _case(name: str, return_law: str | None = None):
     """``(design, centre)``: an example, its return law replaced if given, at the example's solved centre."""
-    from optimize.solve import solve
+    from cams.solve import solve
 
     d = tomllib.loads((EXAMPLES / f"{name}.toml").read_text(encoding="utf-8"))
     centre = np.asarray(solve(design_from_dict(d)).centre, float)

@@ -32,7 +32,7 @@ import pytest
 from cams.io.designfile import design_from_dict
 from cams.verify.pressure import check_pressure, check_pressure_many
 from laws.errors import CamsError, InfeasibleError, InputError
-from optimize.solve import solve
+from cams.solve import solve
 from tests.conftest import rocker_dict as base_rocker_dict
 
 #: Largest time one guarded call may take (seconds).

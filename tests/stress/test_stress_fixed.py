@@ -16,7 +16,7 @@ import pytest
 
 from cams.io.designfile import design_from_dict
 from laws.errors import CamsError, InfeasibleError
-from optimize.solve import admissible_L_range, nearest
+from optimize.sizing import admissible_L_range, nearest
 
 from .helpers import check_outcome, design_dict, guarded, segment_witness
 
@@ -31,7 +31,7 @@ BUG_L_EDGE = (
 BUG_FLOOR_EDGE = (
     "BUG: limits.min_base_radius just above the minimum R0 (R0_min (1 + 1e-9 .. 1e-3)) raises "
     "InfeasibleError 'limits.min_base_radius: no admissible centre at R0 = ...' (a branch marked "
-    "'pragma: no cover' in optimize/solve.py) although an admissible centre at that distance exists "
+    "'pragma: no cover' in optimize/sizing.py) although an admissible centre at that distance exists "
     "(checked on the segment between the min-R0 centre and the floor = 1.01 R0_min centre): "
     "optimize.circle.admissible_arcs scans 1440 points (step 4.4e-3 rad) and the admissible arc is "
     "narrower (1.5e-6 rad at 1 + 1e-7, 1.2e-3 rad at 1 + 1e-4 for the rocker of tests/conftest.py)"

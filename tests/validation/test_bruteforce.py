@@ -37,7 +37,7 @@ import numpy as np
 import pytest
 
 from cams.io.designfile import design_from_dict
-from optimize.solve import solve
+from cams.solve import solve
 
 from .designs import BRUTE_DESIGNS, CENTRIC_DESIGNS
 from .reference import brute_force_nearest, brute_force_on_line, max_excess, max_pressure, path, spec_of

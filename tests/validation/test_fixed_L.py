@@ -16,7 +16,7 @@ import pytest
 
 from cams.io.designfile import design_from_dict
 from laws.errors import InfeasibleError
-from optimize.solve import solve
+from cams.solve import solve
 
 from .designs import BRUTE_DESIGNS
 from .reference import ReferenceZone, brute_force_nearest, max_excess, path, spec_of

@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from cams.io.designfile import design_from_dict
-from optimize.solve import solve
+from cams.solve import solve
 
 from .designs import rocker_dict
 from .reference import max_excess

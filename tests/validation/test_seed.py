@@ -30,7 +30,7 @@ import numpy as np
 import pytest
 
 from cams.io.designfile import design_from_dict
-from optimize.solve import solve
+from cams.solve import solve
 
 from .designs import rocker_dict
 from .reference import ReferenceZone, pressure_angles, seed_all_pairs, seed_lines

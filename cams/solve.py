@@ -1,21 +1,12 @@
-"""One entry point for sizing a cam: the smallest admissible cam and its report.
+"""The verified solve: one entry point for sizing a cam and checking it independently.
 
-``solve(design)`` picks the case from the design:
-
-* no fixed L, no floor: the admissible centre nearest to the roller's start
-  point A0 (minimum R0) or to the pivot (``objective="L"``);
-* a fixed centre distance L (rocker, seed 3.23-3.25): the admissible point of
-  the circle of radius L about the pivot with the least R0; if the circle
-  misses the zone, :class:`InfeasibleError` gives the admissible range of L;
-* a constructive floor on R0 larger than the minimum: the centre on the circle
-  of radius R0_floor about A0 with the largest margin to the zone's edges;
-* a fixed offset (translating): the nearest point on the offset's line;
-* a cam the designer chose (``[cam] base_radius`` with L or the offset, or
-  ``[cam] centre``): nothing is sized, that cam is checked (mode ``"chosen"``).
-
-Every result is verified by :func:`cams.verify.pressure.check_pressure`, which
-recomputes the pressure angle over the whole cycle by kinematic inversion
-without the zone's formulas.
+``solve(design)`` sizes the cam (:func:`optimize.sizing.size` for roller and
+knife-edge followers, :func:`cams.profile.flat.size_flat_face` for flat faces),
+or takes the cam the designer chose (``[cam] base_radius`` with L or the
+offset, or ``[cam] centre``: nothing is sized, mode ``"chosen"``), and verifies
+it with :func:`cams.verify.pressure.check_pressure`, which recomputes the
+pressure angle over the whole cycle by kinematic inversion without the zone's
+formulas.
 """
 
 from __future__ import annotations
@@ -25,16 +16,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from cams.model.design import CamDesign, METHODS
+from cams.model.design import METHODS, CamDesign
 from cams.model.follower import Rocker, Translating
 from cams.verify.pressure import PressureReport, check_pressure
-from laws.errors import InfeasibleError, InputError, check_option
-from optimize.diagnose import diagnosed
-from optimize.result import Binding, CentreSolution
+from laws.errors import InputError, check_option
+from optimize.result import Binding
+from optimize.sizing import OBJECTIVES, offset_x, size, vanishing_error
 
-__all__ = ["SolveResult", "solve", "nearest", "admissible_L_range", "excess", "pressure_failures"]
-
-OBJECTIVES = ("R0", "L")
+__all__ = ["SolveResult", "solve", "excess", "pressure_failures"]
 
 
 @dataclass(frozen=True)
@@ -172,133 +161,12 @@ def _result(design: CamDesign, centre, pressure: PressureReport, margin: float, 
         centre=np.asarray(centre, float),
         R0=R0,
         L=float(np.linalg.norm(centre - f.pivot)) if isinstance(f, Rocker) else None,
-        offset=_offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
+        offset=offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
         pressure=pressure,
         margin=float(margin),
         notes=tuple(notes),
         **how,
     )
-
-
-def _offset_x(v: float) -> float:
-    """The fixed offset's sign convention, ``x_O = -e``, read either way.
-
-    The follower axis (``x = 0`` of the translating follower's frame, see
-    :mod:`cams.model.follower`) lies ``e`` to the +X side of the cam centre ``O``, so
-    the centre's abscissa is ``x_O = -e`` and the offset of a centre is
-    ``e = -x_O``: given ``e`` this returns ``x_O``, given ``x_O`` it returns ``e``
-    (lengths, the design's unit).
-    """
-    return -v
-
-
-def _offset_line(design: CamDesign):
-    """Half-planes ``N O <= c`` pinning the centre to the fixed offset's line ``x = x_O``, or None."""
-    f = design.follower
-    if isinstance(f, Translating) and f.offset is not None:
-        x0 = _offset_x(f.offset)
-        return np.array([[1.0, 0.0], [-1.0, 0.0]]), np.array([x0, -x0])
-    return None
-
-
-@diagnosed
-def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None, extra=None) -> CentreSolution:
-    """Admissible centre nearest to ``target`` by the design's (or the given) method.
-
-    Parameters
-    ----------
-    design : CamDesign
-    target : ndarray, shape (2,)
-        Point to approach in the follower's fixed frame (:mod:`cams.model.follower`),
-        length unit: the roller centre A0 at the near dwell (minimum R0) or the
-        rocker pivot, the origin (minimum L).
-    method : {"exact", "convex", "exhaustive"}, optional
-        Overrides ``design.method``; the sampled methods use ``design.samples``.
-    extra : (N, c), optional
-        Additional half-planes ``N O <= c`` (unit normals, length unit), e.g.
-        the line of a fixed offset.
-
-    Returns
-    -------
-    CentreSolution
-        The centre (same frame) and its distance to ``target`` (``objective``,
-        length unit).
-
-    Raises
-    ------
-    InfeasibleError
-        The zone (with ``extra``) is empty: the message names the limit that
-        binds and its nearest feasible value, the others held
-        (:func:`optimize.diagnose.diagnosed`).
-    InputError
-        An unknown method; an all-pairs run that would need too much memory.
-    """
-    method = check_option("solve.method", method or design.method, METHODS)
-    if method == "exact":
-        from optimize.exact import nearest_exact
-
-        return nearest_exact(design, target, extra=extra)
-    if method == "convex":
-        from optimize.convex import nearest_convex
-
-        return nearest_convex(design, target, samples=design.samples, extra=extra)
-    from optimize.exhaustive import nearest_exhaustive
-
-    return nearest_exhaustive(design, target, samples=design.samples, extra=extra)
-
-
-def _lmax(design: CamDesign) -> float:
-    """Largest centre distance in the zone (inf when the zone is unbounded)."""
-    from optimize.bounds import _recession_direction
-    from optimize.planar import clip_polygon
-    from optimize.zone import sample_wedges
-
-    if _recession_direction(design) is not None:
-        return float("inf")
-    N, c = sample_wedges(design, 512).lines()
-    # a bounded zone reaching beyond this box (100 times the follower) would be clipped, L max too small (open)
-    s = 100 * design.scale
-    poly = clip_polygon(N, c, (-s, -s, s, s))
-    return float(np.max(np.linalg.norm(poly, axis=1))) if len(poly) else 0.0
-
-
-def _seeds(design: CamDesign, ref: np.ndarray, radius: float, inner: np.ndarray) -> tuple[float, ...]:
-    """Admissible angles on the circle (``ref``, ``radius``) from an admissible ``inner`` point.
-
-    ``inner`` lies inside the circle; a far admissible point along the zone's
-    recession direction lies outside; by convexity their segment crosses the
-    circle inside the zone.
-    """
-    from optimize.bounds import _recession_direction
-    from optimize.circle import crossing_seed
-
-    rd = _recession_direction(design)
-    if rd is None:
-        return ()
-    far = inner + (2 * radius + np.linalg.norm(inner - ref) + design.scale) * rd[0]
-    s = crossing_seed(ref, radius, inner, far)
-    return () if s is None else (s,)
-
-
-def admissible_L_range(design: CamDesign) -> tuple[float, float]:
-    """Smallest and largest centre distance L of admissible centres (rocker).
-
-    Parameters
-    ----------
-    design : CamDesign
-        With a rocker follower (L is measured from its pivot, the origin of
-        the fixed frame).
-
-    Returns
-    -------
-    lo, hi : float
-        Length unit. ``lo`` is exact (the admissible centre nearest to the
-        pivot over the continuous zone); ``hi`` is ``inf`` when the zone is
-        unbounded, else the farthest vertex of the zone sampled at 512 steps
-        per phase and clipped to a square of half-side ``100 * design.scale``.
-    """
-    lo = nearest(design, design.follower.pivot, method="exact").objective
-    return lo, _lmax(design)
 
 
 #: Two candidate centres whose largest pressure-angle excesses differ by less than this (radians) are a tie.
@@ -427,106 +295,16 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
             raise InputError("solve.objective", "nothing is minimized for a chosen cam (cam.base_radius or "
                              "cam.centre); only 'R0'")
         return _solve_chosen(design)
+    sized = size(design, method=method, objective=objective)
     f = design.follower
-    lim = design.limits
-    A0 = f.position(0.0)
-    samples = None if method == "exact" else design.samples
-    extra = _offset_line(design)
-    notes: list[str] = []
-    t0 = time.perf_counter()
-    if objective == "L" and not isinstance(f, Rocker):
-        raise InputError("solve.objective", "'L' applies to rocker followers; use 'R0'")
-
-    L_fixed = lim.centre_distance
-    floor = lim.min_base_radius
-    from optimize.circle import admissible_at_distance, best_on_circle, round_off, violation_function
-
-    G = violation_function(design, samples)
-    sol: CentreSolution | None = None
-    if L_fixed is None:
-        target = A0 if objective == "R0" else f.pivot
-        sol = nearest(design, target, method=method, extra=extra)
-        centre, mode = sol.centre, ("min_R0" if objective == "R0" else "min_L")
-        if extra is not None:
-            mode = "fixed_offset"
-        if floor is not None and np.linalg.norm(centre - A0) < floor:
-            mode = "floor_R0"
-            if extra is not None:
-                cands = [np.array([_offset_x(f.offset), sg * np.sqrt(max(floor**2 - f.offset**2, 0.0))]) for sg in (1, -1)]
-                cands = [p for p in cands if floor >= abs(f.offset) and G(p) <= round_off(design, np.abs(p).sum())]
-                if not cands:
-                    raise InfeasibleError("limits.min_base_radius", f"R0 = {floor:g} with offset {f.offset:g} is not admissible")
-                centre = min(cands, key=G)
-            else:
-                seeds = _seeds(design, A0, floor, sol.centre)
-                centre = best_on_circle(design, A0, floor, G, samples=samples, seeds=seeds)
-                if centre is None:  # pragma: no cover - the zone is unbounded beyond R0_min
-                    raise InfeasibleError("limits.min_base_radius", f"no admissible centre at R0 = {floor:g}")
-            notes.append(f"R0 raised to the constructive floor {floor:g} mm (minimum {sol.objective:.6g} mm); "
-                         "centre placed with the largest margin to the zone's edges")
-        elif floor is not None:
-            notes.append(f"constructive floor {floor:g} mm below the minimum R0: not binding")
-    else:
-        mode = "fixed_L"
-        dist = lambda O: float(np.linalg.norm(O - A0))  # noqa: E731
-        centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples)
-        if centre is None:
-            # a narrow arc near the least L: seed it from the min-L centre (convexity)
-            try:
-                near = nearest(design, f.pivot, method=method).centre
-            except InfeasibleError as e:  # an empty zone: the limit that binds with L held too
-                from optimize.diagnose import explain_infeasible
-
-                raise (explain_infeasible(design, L=L_fixed) or e) from e
-            centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples,
-                                    seeds=_seeds(design, f.pivot, L_fixed, near))
-        if centre is None:
-            lo, hi = admissible_L_range(design)
-            rng = f"from {lo:.6g} upward" if not np.isfinite(hi) else f"from {lo:.6g} to {hi:.6g}"
-            raise InfeasibleError("limits.centre_distance",
-                                  f"L = {L_fixed:g} misses the allowable-centre zone; admissible L {rng}")
-        least = dist(centre)
-        if floor is not None and least >= floor:
-            notes.append(f"constructive floor {floor:g} mm below the least R0 at this L ({least:.6g} mm): not binding")
-        elif floor is not None:
-            # R0 raised to the floor: the crossings of the circles |O - pivot| = L and |O - A0| = floor that lie
-            # on the admissible arcs of the L circle (the least-R0 centre's arc found again from its angle)
-            rel = centre - f.pivot
-            cands = admissible_at_distance(design, f.pivot, L_fixed, A0, floor, samples=samples,
-                                           seeds=(float(np.arctan2(rel[1], rel[0]) % (2 * np.pi)),))
-            if not cands:
-                raise InfeasibleError("limits.min_base_radius",
-                                      f"R0 = {floor:g} is not admissible at L = {L_fixed:g} (the least R0 there is "
-                                      f"{least:.6g}; the admissible centres on that circle do not reach R0 = {floor:g})")
-            centre = min(cands, key=G)
-            mode = "fixed_L_and_R0"
-            notes.append(f"R0 raised to the constructive floor {floor:g} mm (least at this L {least:.6g} mm)")
-    seconds = time.perf_counter() - t0
-    if sol is not None and mode in ("min_R0", "min_L", "fixed_offset"):
-        binding, error_bound, certified = sol.binding, sol.error_bound, sol.certified
-        if certified is False:
-            notes.append(f"NOT CERTIFIED: the exact method's bounds differ by {error_bound:.3g} (lower bound "
-                         f"{sol.lower_bound:.9g}): do not use this answer; try method = \"convex\""
-                         if error_bound is not None else
-                         "NOT CERTIFIED: no centre was checked feasible near the exact method's answer; do not use it")
-        if samples is not None:
-            notes.append(f"sampled at {samples} steps per phase: the limit may be exceeded slightly between samples")
-    else:
-        binding, error_bound, certified = (), None, None
-    R0 = float(np.linalg.norm(centre - A0))
+    centre = sized.centre
+    R0 = float(np.linalg.norm(centre - f.position(0.0)))
     # the roller centre's travel: arc l*psi_max of a rocker, the stroke of a translating follower
     travel = design.program.lift * (f.arm if isinstance(f, Rocker) else 1.0)
-    vanishing = InfeasibleError(
-        "limits.pressure_angle",
-        f"the minimum base radius vanishes (R0 = {R0:.3g}, {R0 / travel:.2g} of the roller's travel; the "
-        "pressure angle cannot be verified at this size): set limits.min_base_radius to size a buildable cam",
-    )
-    if R0 < 1e-9 * travel:
-        raise vanishing
-    margin = -G(centre)
     pressure = check_pressure(design, centre)
-    if not pressure.ok and R0 < 1e-6 * travel and method == "exact":
-        raise vanishing
-    return _result(design, centre, pressure, margin, notes, "set limits.min_base_radius or a smaller roller",
-                   method=method, samples=samples, mode=mode, binding=binding, error_bound=error_bound,
-                   seconds=seconds, certified=certified)
+    if not pressure.ok and R0 < 1e-6 * travel and sized.method == "exact":
+        raise vanishing_error(design, R0)
+    return _result(design, centre, pressure, sized.margin, list(sized.notes),
+                   "set limits.min_base_radius or a smaller roller", method=sized.method, samples=sized.samples,
+                   mode=sized.mode, binding=sized.binding, error_bound=sized.error_bound, seconds=sized.seconds,
+                   certified=sized.certified)
