@@ -6,40 +6,14 @@ import argparse
 import json
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
-from cams.words import bore_text, check_words, deg, length_format, off_by
-from cams.words import check_value as _fmt
+from cams.present.text import print_checks
 
-__all__ = ["register", "print_checks"]
-
-
-def _by(c: dict) -> str:
-    """How far a failed check's worst value is on the wrong side of its limit (:func:`cams.words.off_by`)."""
-    return "" if c["passed"] else off_by(c["worst"], c["limit"], c["unit"])
-
-
-def print_checks(rep: dict) -> None:
-    """Readable table of a check report (as from ``CheckReport.to_dict``), the checks named in words."""
-    f = length_format(rep["R0"])
-    cam_r = rep.get("smallest_cam_radius")
-    head = f"R0 = {rep['R0']:{f}} mm (pitch curve)" if cam_r is not None else f"R0 = {rep['R0']:{f}} mm"
-    if cam_r is not None:
-        head += f", cam's smallest radius {cam_r:{f}} mm"
-    print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, {head}")
-    for c in rep["checks"]:
-        at = "" if c["at_deg"] is None else f" at {deg(c['at_deg'])}"
-        lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'], f)})"
-        print(f"  {'pass' if c['passed'] else 'FAIL'}  {check_words(c['name'])}: {_fmt(c['worst'], c['unit'], f)}{at}{lim}{_by(c)}")
-    lr = rep.get("largest_roller_radius")
-    if lr is not None:
-        print(f"  roller radius {rep['roller_radius']:{f}} mm; largest without undercut {lr:{f}} mm, "
-              f"recommended <= {rep['recommended_roller_radius']:{f}} mm")
-    given = any(c["name"] == "bore" for c in rep["checks"])
-    print(f"  {bore_text(rep['bore_radius'], not given)}; {'all checks pass' if rep['passed'] else 'a check FAILS'}")
+__all__ = ["register"]
 
 
 def run(args) -> int:
     from cams.cam import Cam
-    from cams.commands.solve import print_assessment
+    from cams.present.text import print_assessment
     from cams.io.designfile import load_design
 
     design = load_design(args.file)

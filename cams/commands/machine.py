@@ -19,7 +19,7 @@ def _iv(iv) -> str:
 
 def print_machine(rep: dict) -> None:
     """Readable summary of a machine report (as from ``MachineResult.to_dict``)."""
-    from cams.commands.solve import print_assessment, print_summary
+    from cams.present.text import print_assessment, print_summary
 
     u = rep["units"]
     lk = rep["linkage"]

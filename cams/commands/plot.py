@@ -116,7 +116,7 @@ def run(args) -> int:
     for p in written:
         print(p)
     if a is not None and not a.usable:
-        from cams.commands.solve import print_assessment
+        from cams.present.text import print_assessment
 
         print(f"verified: {'yes' if a.verified else 'NO'}")
         print_assessment(a.to_dict(), indent="")

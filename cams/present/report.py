@@ -32,7 +32,7 @@ def _deg(x):
 
 def _flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     """The report's tables for a flat-faced follower."""
-    from cams.commands.solve import pressure_text
+    from cams.present.text import pressure_text
 
     d = cam.design
     f = d.follower
@@ -86,7 +86,7 @@ def _assessment_rows(cam) -> list[tuple[str, str]]:
 def _check_rows(cam) -> list[tuple[str, str]]:
     """One row per check, named in words (:data:`cams.words.CHECK_WORDS`), values as ``cams check`` prints them."""
     from cams.assess import knife_in_groove
-    from cams.commands.check import _fmt
+    from cams.words import check_value as _fmt
     from cams.words import check_words, deg, length_format
 
     if knife_in_groove(cam.design):

@@ -1,0 +1,165 @@
+"""The results in words for the terminal: a solve, a flat face's solve, the assessment, the checks.
+
+Each function takes the JSON-ready report a result's ``to_dict`` gives (lengths
+in the design's unit, angles in degrees) and prints it; numbers are formatted
+with their units by :mod:`cams.words`.
+"""
+
+from __future__ import annotations
+
+from cams.words import binding_text, bore_text, check_words, deg, length_format, off_by, spring_text
+from cams.words import check_value as _fmt
+
+__all__ = ["print_summary", "print_flat_summary", "print_cam_forces", "print_assessment", "print_checks",
+           "pressure_text"]
+
+
+def print_summary(rep: dict) -> None:
+    """Short readable summary of a solve report (as from ``SolveResult.to_dict``)."""
+    unit = "mm"
+    f = length_format(max(abs(rep["R0"]), abs(rep["L"] or 0.0), abs(rep["offset"] or 0.0)))
+    if rep["mode"] == "chosen":
+        print(f"{rep['name']}: {rep['follower']} follower, the chosen cam (checked, not sized)")
+    else:
+        print(f"{rep['name']}: {rep['follower']} follower, method {rep['method']}, {rep['mode']}")
+    print(f"  R0      = {rep['R0']:{f}} {unit}  (pitch curve's base radius: cam centre to roller centre)")
+    cr = rep.get("smallest_cam_radius")
+    if cr is not None and cr > 0:
+        print(f"  Rmin    = {cr:{f}} {unit}  (the cam's own smallest radius, on the working profile)")
+    elif cr is not None:  # the roller reaches the cam centre: there is no cam body to measure
+        print(f"  Rmin    = none: the roller reaches past the cam centre (smallest pitch radius - roller radius "
+              f"= {cr:{f}} {unit})")
+    if rep["L"] is not None:
+        print(f"  L       = {rep['L']:{f}} {unit}")
+    if rep["offset"] is not None:
+        print(f"  offset  = {rep['offset']:{f}} {unit}")
+    c = rep["centre"]
+    print(f"  centre  = ({c['x']:{f}}, {c['y']:{f}}) {unit}")
+    mp, lim = rep["max_pressure_angle"], rep["limits"]
+    print(f"  max pressure angle: rise {deg(mp['rise'])} (limit {deg(lim['rise'])}), "
+          f"return {deg(mp['return'])} (limit {deg(lim['return'])})")
+    if rep["binding"]:
+        print("  binding: " + ", ".join(binding_text(b) for b in rep["binding"]))
+    eb = rep["error_bound"]
+    bound = "" if rep["mode"] == "chosen" else \
+        f"error bound: {'not stated by this method' if eb is None else f'{eb:.3g} {unit}'}; "
+    print(f"  {bound}verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    fo = rep.get("forces")
+    if fo:
+        print_cam_forces(fo, follower=rep["follower"])
+    failures = rep.get("failures", ())
+    for n in rep["notes"]:
+        said = any(n in f for f in failures) or (  # said once, on its FAIL line
+            n.startswith("not buildable: R0") and any(f.startswith("no working profile") for f in failures))
+        if not said:
+            print(f"  note: {n}")
+
+
+def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translating") -> None:
+    """The [dynamics] part of a report (from ``DesignForces.to_dict``): spring, contact force, torque, jump speed.
+
+    With rigid impacts the unbounded values are said so, the finite ones
+    between the impacts follow, and the jump speed is "any speed". The
+    spring's units follow the ``follower`` kind: N/m and N, or N m/rad and
+    N m for a rocker's torsional spring (:func:`cams.words.spring_text`).
+    """
+    from cams.dynamics.forces import jump_text
+    from cams.words import force, torque
+
+    sp = fo["spring"]
+    print(f"{indent}spring: {spring_text(sp['rate'], sp['preload'], follower)}")
+    print(f"{indent}contact force: max {force(fo['max_contact_force'])} at {deg(fo['max_contact_at_deg'])}, "
+          f"min {force(fo['min_contact_force'])}; camshaft torque max {torque(fo['max_torque'])} "
+          f"at {deg(fo['max_torque_at_deg'])}")
+    bi = fo.get("between_impacts")
+    if bi:
+        print(f"{indent}  between the rigid impacts: contact force max {force(bi['max_contact_force'])} at "
+              f"{deg(bi['max_contact_at_deg'])}, min {force(bi['min_contact_force'])}; camshaft torque max "
+              f"{torque(bi['max_torque'])} at {deg(bi['max_torque_at_deg'])}; jump speed {jump_text(bi['jump_rpm'])}")
+    if fo.get("jump_at_impact"):
+        jump = f"follower leaves the cam at any speed (velocity drop at {deg(fo['jump_at_deg'])})"
+    else:
+        jump = f"follower jumps above {jump_text(fo['jump_rpm'])}"
+    print(f"{indent}{jump}; contact lost: {'YES' if fo['contact_lost'] else 'no'}; "
+          f"jammed: {'YES' if fo['jammed'] else 'no'} (jamming limit {deg(fo['jamming_limit_deg'])})")
+
+
+def pressure_text(rep: dict) -> str:
+    """The pressure angle of a flat face in words (from ``FlatFaceSolution.to_dict``)."""
+    pa = rep["pressure_angle"]
+    if pa["max"] == 0:
+        why = "the face is perpendicular to the axis" if rep["follower"] == "translating" else \
+            "the face passes through the pivot"
+        return f"0 deg everywhere (fixed by the geometry: {why})"
+    return (f"{pa['min']:.4f} to {pa['max']:.4f} deg, largest at {pa['max_at_deg']:.4f} deg "
+            f"(fixed by the geometry: atan(|face_offset| / contact distance from the pivot's foot))")
+
+
+def print_flat_summary(rep: dict) -> None:
+    """Short readable summary of a flat-face solve report (as from ``FlatFaceSolution.to_dict``)."""
+    unit = "mm"
+    f = length_format(max(abs(rep["R0"]), abs(rep["L"] or 0.0), abs(rep["face_width"] or 0.0)))
+    print(f"{rep['name']}: {rep['follower']} follower, flat face, sized by convexity")
+    src = {"convexity": "the smallest with radius of curvature >= limits.min_radius",
+           "limits.min_base_radius": "raised to limits.min_base_radius",
+           "cam.base_radius": "given by cam.base_radius"}[rep["R0_source"]]
+    print(f"  R0      = {rep['R0']:{f}} {unit}  ({src})")
+    if rep["R0_source"] != "convexity" and rep["R0_min"] is not None:
+        print(f"  R0 min  = {rep['R0_min']:{f}} {unit}  (convexity, binding at {rep['binding_deg']:.4f} deg)")
+    elif rep["binding_deg"] is not None and rep["R0_source"] == "convexity":
+        print(f"  binding: smallest radius of curvature at {rep['binding_deg']:.4f} deg")
+    print(f"  radius of curvature >= {rep['min_rho']:{f}} {unit} at {rep['min_rho_at_deg']:.4f} deg "
+          f"(limit {rep['min_radius']:g} {unit})")
+    if rep["L"] is not None:
+        print(f"  L       = {rep['L']:{f}} {unit}, face offset {rep['face_offset']:g} {unit}")
+    else:
+        print(f"  offset  = {rep['offset']:{f}} {unit}")
+    c = rep["centre"]
+    print(f"  centre  = ({c['x']:{f}}, {c['y']:{f}}) {unit}")
+    fr = rep["face_range"]
+    where = "of the follower axis" if rep["follower"] == "translating" else "along the face from the pivot's foot"
+    print(f"  face: contact from {fr['from']:{f}} to {fr['to']:{f}} {unit} {where} "
+          f"(at {fr['from_at_deg']:.2f} and {fr['to_at_deg']:.2f} deg): width {rep['face_width']:{f}} {unit}")
+    if rep["face_width_centred"] is not None:
+        print(f"        a face centred on the axis needs {rep['face_width_centred']:{f}} {unit} (no margins)")
+    print(f"  pressure angle: {pressure_text(rep)}")
+    print(f"  verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    for n in rep["notes"]:
+        print(f"  note: {n}")
+
+
+def print_assessment(a: dict, indent: str = "  ", file=None) -> None:
+    """The buildable line beside verified (from ``Assessment.to_dict``), with what fails.
+
+    ``usable`` is :attr:`cams.assess.Assessment.usable`, the exit code's rule: certified (a ``certified`` key is
+    present only when false), verified and buildable.
+    """
+    usable = a.get("certified", True) is not False and a["verified"] and a["buildable"]
+    print(f"{indent}buildable: {'yes' if a['buildable'] else 'NO'}; usable: {'yes' if usable else 'NO'}", file=file)
+    for f in a["failures"]:
+        print(f"{indent}FAIL: {f}", file=file)
+
+
+def _by(c: dict) -> str:
+    """How far a failed check's worst value is on the wrong side of its limit (:func:`cams.words.off_by`)."""
+    return "" if c["passed"] else off_by(c["worst"], c["limit"], c["unit"])
+
+
+def print_checks(rep: dict) -> None:
+    """Readable table of a check report (as from ``CheckReport.to_dict``), the checks named in words."""
+    f = length_format(rep["R0"])
+    cam_r = rep.get("smallest_cam_radius")
+    head = f"R0 = {rep['R0']:{f}} mm (pitch curve)" if cam_r is not None else f"R0 = {rep['R0']:{f}} mm"
+    if cam_r is not None:
+        head += f", cam's smallest radius {cam_r:{f}} mm"
+    print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, {head}")
+    for c in rep["checks"]:
+        at = "" if c["at_deg"] is None else f" at {deg(c['at_deg'])}"
+        lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'], f)})"
+        print(f"  {'pass' if c['passed'] else 'FAIL'}  {check_words(c['name'])}: {_fmt(c['worst'], c['unit'], f)}{at}{lim}{_by(c)}")
+    lr = rep.get("largest_roller_radius")
+    if lr is not None:
+        print(f"  roller radius {rep['roller_radius']:{f}} mm; largest without undercut {lr:{f}} mm, "
+              f"recommended <= {rep['recommended_roller_radius']:{f}} mm")
+    given = any(c["name"] == "bore" for c in rep["checks"])
+    print(f"  {bore_text(rep['bore_radius'], not given)}; {'all checks pass' if rep['passed'] else 'a check FAILS'}")
