@@ -33,9 +33,6 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Pat
 
     ``title`` (:meth:`cams.assess.Assessment.title`) marks every picture of a failing cam.
     """
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
     from cams.present import plots
 
     stem = out / _slug(cam.design.name)

@@ -304,9 +304,6 @@ def write_report(cam, out: str | Path) -> tuple[Path, Path]:
 
     Returns the two paths. Pictures are drawn once and used by both files.
     """
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
     from matplotlib.backends.backend_pdf import PdfPages
 
     from cams.io.files import atomic_write, ensure_folder
