@@ -104,7 +104,7 @@ def test_a_sized_cam_that_fails_the_check_says_by_how_much():
     """The sampled methods can exceed the limit between samples: the note gives the excess an inversion finds."""
     import re
 
-    from tests.cams.test_chosen_cam import _largest_rise_pressure_angle
+    from tests.facade.test_chosen_cam import _largest_rise_pressure_angle
 
     d = _rocker_force_with(method="exhaustive", samples=12)
     res = solve(design_from_dict(d))
