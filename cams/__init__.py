@@ -6,6 +6,10 @@ the code paths that use them. The command line (:mod:`cams.cli`) relies on
 this to take Ctrl-C from its first instant.
 """
 
+from cams import _moved
+
+_moved.install()  # the previous release's import paths (cams.design, cams.linkage, ...) for one release
+
 __version__ = "0.1.0"
 __all__ = ["CamsError", "InputError", "InfeasibleError", "__version__"]
 
