@@ -41,6 +41,7 @@ DOCTEST_MODULES = [
     "cams.machine.flywheel",
     "cams.dynamics.forces",
     "cams.machine.kinetostatics",
+    "cams.machine.kinetostatics.solve",
     # profiles
     "cams.profile.flat",
     "cams.words",

@@ -216,36 +216,6 @@ class FlywheelResult:
             },
         }
 
-    def plot(self, path, *, title: str = "flywheel"):
-        """Draw moments, works, energy and speed over the cycle to ``path``; returns the path."""
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        deg = np.degrees(self.phi)
-        fig, axes = plt.subplots(4, 1, sharex=True, figsize=(8, 9))
-        axes[0].plot(deg, self.resisting, label="Mr")
-        axes[0].plot(deg, self.driving, label="Md")
-        axes[0].set_ylabel("reduced moment, N m")
-        axes[1].plot(deg, self.work_resisting, label="Ar")
-        axes[1].plot(deg, self.work_driving, label="Ad")
-        axes[1].set_ylabel("work, J")
-        axes[2].plot(deg, self.energy, color="C2", label="dE = Ad - Ar")
-        axes[2].set_ylabel("energy change, J")
-        axes[3].plot(deg, self.omega, color="C3", label=f"omega, J_F = {self.flywheel_inertia:.4g} kg m^2")
-        axes[3].axhline(self.omega_mean, color="0.5", lw=0.8)
-        axes[3].set_ylabel("omega, rad/s")
-        axes[3].set_xlabel(f"{self.reference}, deg")
-        for ax in axes:
-            ax.grid(True, alpha=0.3)
-            ax.legend(loc="upper right")
-        axes[0].set_title(f"{title}: delta = {self.delta:g}, n = {self.rpm:.4g} rpm")
-        fig.tight_layout()
-        fig.savefig(path)
-        plt.close(fig)
-        return path
-
 
 def _resample(phi: np.ndarray, y: np.ndarray, x: np.ndarray, how: str, cycle: float):
     """Values and exact cumulative integral (from phi[0]) of the periodic samples on the grid x."""

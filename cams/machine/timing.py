@@ -520,32 +520,6 @@ class CycleDiagram:
             "follower_unit": "deg" if self.follower_unit == "rad" else self.follower_unit,
         }
 
-    def plot(self, path, *, title: str = "cycle diagram"):
-        """Draw the diagram to ``path`` (PNG, SVG, PDF by suffix); returns the path."""
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        deg = np.degrees(self.crank)
-        fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(9, 5.5))
-        ax1.plot(deg, self.tool, color="C0")
-        ax1.set_ylabel("tool from position 1, mm")
-        f = np.degrees(self.follower) if self.follower_unit == "rad" else self.follower
-        ax2.plot(deg, f, color="C1")
-        ax2.set_ylabel("follower, " + ("deg" if self.follower_unit == "rad" else self.follower_unit))
-        ax2.set_xlabel("cycle angle from position 1 (crank rotation), deg")
-        for ax in (ax1, ax2):
-            ax.fill_between(deg, 0, 1, where=self.cutting, transform=ax.get_xaxis_transform(), color="C3", alpha=0.15, label="cutting")
-            ax.fill_between(deg, 0, 1, where=self.feeding, transform=ax.get_xaxis_transform(), color="C2", alpha=0.25, label="feeding")
-            ax.grid(True, alpha=0.3)
-        ax1.legend(loc="upper right")
-        ax1.set_title(title + ("  -- OVERLAP" if self.overlap else ""))
-        fig.tight_layout()
-        fig.savefig(path)
-        plt.close(fig)
-        return path
-
 
 def cycle_diagram(
     machine: Machine,

@@ -70,6 +70,8 @@ __all__ = [
     "SlottedLeverPump",
     "PumpKinematics",
     "MACHINES",
+    "Pair",
+    "LinkStates",
     "describe_angles",
 ]
 
@@ -129,14 +131,96 @@ def _sign(field_: str, v, words=("+1", "-1")) -> None:
         raise InputError(field_, f"must be +1 or -1 ({words[0]} or {words[1]}), got {_show(v)}")
 
 
+@dataclass(frozen=True)
+class Pair:
+    """A lower pair of a machine's topology.
+
+    Attributes
+    ----------
+    name : str
+        The seed's name of the pair (``"O2"``, ``"A_slot"``...).
+    kind : {"revolute", "prismatic"}
+    first : str
+        The link the pair's reaction acts on (a prismatic pair: the link that slides).
+    second : str or None
+        The other link (a prismatic pair: the one that carries the guide); None for ground.
+    """
+
+    name: str
+    kind: str
+    first: str
+    second: str | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class LinkStates:
+    """The moving links' motion at crank angles, for the forces (machine length unit, frame of the machine).
+
+    Attributes
+    ----------
+    cg : dict of str to Point
+        The centre of mass of each moving link.
+    angle : dict of str to Angle
+        The angle of each moving link (a sliding block turns with its guide; a slider: zero).
+    point : dict of str to ndarray (complex)
+        Each pair's point: the revolute's centre, the prismatic guide's reference point.
+    axis : dict of str to ndarray (complex)
+        Each prismatic pair's guide direction (unit, fixed in the pair's second link).
+    """
+
+    cg: dict
+    angle: dict
+    point: dict
+    axis: dict
+
+
+def _still(phi: np.ndarray) -> Angle:
+    """The angle of a link that does not turn (a slider), zero at every crank angle."""
+    z = np.zeros_like(phi)
+    return Angle(z, z.copy(), z.copy())
+
+
 class _Base:
-    """Shared plumbing: crank speed, error context, checks, the output protocol."""
+    """Shared plumbing: crank speed, error context, checks, the output protocol, the topology.
+
+    Each machine declares its own topology for the forces: its moving links
+    (``links``, the seeds' numbering 1..n), its lower pairs (``pairs``) and
+    :meth:`link_states`; a link that slides on a guide (the first link of a
+    prismatic pair, :meth:`guided`) has its centre of mass at its pin.
+    """
+
+    #: The moving links, in the seed's order (link 1 is the crank).
+    links: tuple[str, ...] = ()
+    #: The lower pairs.
+    pairs: tuple[Pair, ...] = ()
 
     crank_sense: int
     rpm: float | None
     kind: str
     #: Name of the working member's :class:`Slide` among the kinematics' fields.
     _output: str
+
+    @classmethod
+    def guided(cls) -> tuple[str, ...]:
+        """Links that slide on a guide (the first link of a prismatic pair): the bodies a load can act on.
+
+        Their centre of mass is their pin: it moves with the pin, so a ``cg`` does not apply to them.
+        """
+        return tuple(dict.fromkeys(p.first for p in cls.pairs if p.kind == "prismatic"))
+
+    @classmethod
+    def pair_kind(cls, name: str) -> str:
+        """``"revolute"`` or ``"prismatic"``: the kind of the pair ``name``."""
+        return next(p.kind for p in cls.pairs if p.name == name)
+
+    def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:  # pragma: no cover - every machine has its own
+        """Motion of the moving links' centres of mass and of the pairs at crank angles ``phi`` (radians).
+
+        ``omega``: the crank's speed, rad/s (signed). ``cg(name, default)``: the
+        distance of a turning link's centre of mass from its first joint along
+        the link (machine length unit), ``default`` when the forces give none.
+        """
+        raise NotImplementedError
 
     def _check_common(self) -> None:
         _sign("linkage.crank_rotation", self.crank_sense, ("ccw", "cw"))
@@ -350,6 +434,16 @@ class SlottingMachine(_SwingingLever):
 
     kind = "slotting"
     _output = "tool"  # y_C of the tool along y-y
+    links = ("crank", "block", "bar", "rod", "tool")  # seed 003: links 1..5
+    pairs = (
+        Pair("O2", "revolute", "crank"),
+        Pair("A", "revolute", "block", "crank"),
+        Pair("A_slot", "prismatic", "block", "bar"),
+        Pair("O3", "revolute", "bar"),
+        Pair("B", "revolute", "rod", "bar"),
+        Pair("C", "revolute", "tool", "rod"),
+        Pair("C_guide", "prismatic", "tool"),
+    )
 
     def __post_init__(self):
         for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("bar", self.bar), ("rod", self.rod)):
@@ -450,6 +544,25 @@ class SlottingMachine(_SwingingLever):
             tool_side="above" if self.tool_side == 1 else "below",
         )
 
+    def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:
+        """The links' motion for the forces (:meth:`_Base.link_states`): the tool slides on y-y."""
+        k = self.kinematics(phi, omega=omega)
+        zero = np.zeros_like(phi)
+        O2 = Point(zero + 0j, zero + 0j, zero + 0j)
+        O3 = Point(zero - self.centre_distance + 0j, zero + 0j, zero + 0j)
+        cgs = {
+            "crank": on_link(O2, k.crank, cg("crank", 0.0)),
+            "block": k.A,
+            "bar": on_link(O3, k.bar, self.bar_side * cg("bar", self.bar / 2)),
+            "rod": on_link(k.B, k.rod, cg("rod", self.rod / 2)),
+            "tool": k.C,
+        }
+        angles = {"crank": k.crank, "block": k.bar, "bar": k.bar, "rod": k.rod, "tool": _still(phi)}
+        points = {"O2": O2.pos, "A": k.A.pos, "A_slot": k.A.pos, "O3": O3.pos, "B": k.B.pos, "C": k.C.pos,
+                  "C_guide": k.C.pos}
+        axes = {"A_slot": k.bar.unit, "C_guide": np.full_like(phi, 1j, dtype=complex)}
+        return LinkStates(cgs, angles, points, axes)
+
 
 # --------------------------------------------------------------------------- crank-slider
 @dataclass(frozen=True, eq=False)
@@ -516,6 +629,13 @@ class CrankSlider(_Base):
 
     kind = "crank_slider"
     _output = "slider"  # x_B along the slider's line
+    links = ("crank", "rod", "slider")  # seed 002: links 1..3
+    pairs = (
+        Pair("O", "revolute", "crank"),
+        Pair("A", "revolute", "rod", "crank"),
+        Pair("B", "revolute", "slider", "rod"),
+        Pair("B_guide", "prismatic", "slider"),
+    )
 
     def __post_init__(self):
         _pos("linkage.crank", self.crank)
@@ -577,6 +697,17 @@ class CrankSlider(_Base):
             slider_side="right" if self.slider_side == 1 else "left",
         )
 
+    def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:
+        """The links' motion for the forces (:meth:`_Base.link_states`): the slider slides along x."""
+        k = self.kinematics(phi, omega=omega)
+        zero = np.zeros_like(phi)
+        O = Point(zero + 0j, zero + 0j, zero + 0j)
+        rod_cg = self.rod_cg if self.rod_cg is not None else self.rod / 2
+        cgs = {"crank": on_link(O, k.crank, cg("crank", 0.0)), "rod": on_link(k.A, k.rod, cg("rod", rod_cg)), "slider": k.B}
+        angles = {"crank": k.crank, "rod": k.rod, "slider": _still(phi)}
+        points = {"O": O.pos, "A": k.A.pos, "B": k.B.pos, "B_guide": k.B.pos}
+        return LinkStates(cgs, angles, points, {"B_guide": np.ones_like(phi, dtype=complex)})
+
 
 # --------------------------------------------------------------------------- two-cylinder mechanism
 @dataclass(frozen=True, eq=False)
@@ -634,6 +765,16 @@ class OpposedTwin(_Base):
 
     kind = "opposed_twin"
     _output = "piston3"  # x_B of piston 3 (B, right cylinder)
+    links = ("crank", "rod2", "piston3", "rod4", "piston5")  # seed 000: links 1..5
+    pairs = (
+        Pair("O", "revolute", "crank"),
+        Pair("A", "revolute", "rod2", "crank"),
+        Pair("B", "revolute", "piston3", "rod2"),
+        Pair("B_guide", "prismatic", "piston3"),
+        Pair("C", "revolute", "rod4", "crank"),
+        Pair("D", "revolute", "piston5", "rod4"),
+        Pair("D_guide", "prismatic", "piston5"),
+    )
 
     def __post_init__(self):
         _pos("linkage.crank", self.crank)
@@ -665,6 +806,24 @@ class OpposedTwin(_Base):
             l_AS2=self.rod_cg,
             phase_deg=float(np.degrees(self.phase)),
         )
+
+    def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:
+        """The links' motion for the forces (:meth:`_Base.link_states`): both pistons slide along x."""
+        k = self.kinematics(phi, omega=omega)
+        zero = np.zeros_like(phi)
+        O = Point(zero + 0j, zero + 0j, zero + 0j)
+        crank_ = Angle(k.phi + zero, np.full_like(phi, omega), zero.copy())
+        cgs = {
+            "crank": on_link(O, crank_, cg("crank", 0.0)),
+            "rod2": on_link(k.A, k.rod2, cg("rod2", self.rod_cg)),
+            "piston3": k.B,
+            "rod4": on_link(k.C, k.rod4, cg("rod4", self.rod_cg)),
+            "piston5": k.D,
+        }
+        angles = {"crank": crank_, "rod2": k.rod2, "piston3": _still(phi), "rod4": k.rod4, "piston5": _still(phi)}
+        points = {"O": O.pos, "A": k.A.pos, "B": k.B.pos, "B_guide": k.B.pos, "C": k.C.pos, "D": k.D.pos, "D_guide": k.D.pos}
+        x = np.ones_like(phi, dtype=complex)
+        return LinkStates(cgs, angles, points, {"B_guide": x, "D_guide": x})
 
 
 # --------------------------------------------------------------------------- pump
@@ -744,6 +903,16 @@ class SlottedLeverPump(_SwingingLever):
 
     kind = "slotted_lever_pump"
     _output = "piston"  # the piston's coordinate along its y guide
+    links = ("crank", "block", "lever", "pin_block", "piston")  # seed 004: links 1..5
+    pairs = (
+        Pair("O1", "revolute", "crank"),
+        Pair("A", "revolute", "block", "crank"),
+        Pair("A_slot", "prismatic", "block", "lever"),
+        Pair("O2", "revolute", "lever"),
+        Pair("C", "revolute", "pin_block", "lever"),
+        Pair("C_slot", "prismatic", "pin_block", "piston"),
+        Pair("E", "prismatic", "piston"),
+    )
 
     def __post_init__(self):
         for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("lever", self.lever)):
@@ -797,6 +966,26 @@ class SlottedLeverPump(_SwingingLever):
             swing_deg=float(np.degrees(2 * self.half_swing)),
             lever_side="same" if self.lever_side == 1 else "opposite",
         )
+
+    def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:
+        """The links' motion for the forces (:meth:`_Base.link_states`): the piston slides along y at ``guide_x``."""
+        k = self.kinematics(phi, omega=omega)
+        zero = np.zeros_like(phi)
+        O1 = Point(zero + 0j, zero + 0j, zero + 0j)
+        O2 = Point(zero - self.centre_distance + 0j, zero + 0j, zero + 0j)
+        E = Point(self.guide_x + 1j * k.piston.s, 1j * k.piston.ds, 1j * k.piston.d2s)
+        cgs = {
+            "crank": on_link(O1, k.crank, cg("crank", 0.0)),
+            "block": k.A,
+            "lever": on_link(O2, k.lever, self.lever_side * cg("lever", self.lever / 2)),
+            "pin_block": k.C,
+            "piston": E,
+        }
+        angles = {"crank": k.crank, "block": k.lever, "lever": k.lever, "pin_block": _still(phi), "piston": _still(phi)}
+        points = {"O1": O1.pos, "A": k.A.pos, "A_slot": k.A.pos, "O2": O2.pos, "C": k.C.pos, "C_slot": k.C.pos, "E": E.pos}
+        axes = {"A_slot": k.lever.unit, "C_slot": np.ones_like(phi, dtype=complex),
+                "E": np.full_like(phi, 1j, dtype=complex)}
+        return LinkStates(cgs, angles, points, axes)
 
 
 MACHINES = {
