@@ -217,6 +217,15 @@ class FlywheelResult:
         }
 
 
+def _cycle(cycle) -> float:
+    """One crank turn or two, radians (exactly ``2 pi`` or ``4 pi``); refused otherwise on ``flywheel.cycle``."""
+    ok = not isinstance(cycle, bool) and isinstance(cycle, (int, float, np.integer, np.floating)) and np.isfinite(cycle)
+    for turns in (1, 2):
+        if ok and abs(float(cycle) - turns * 2 * np.pi) <= 1e-9:
+            return turns * 2 * np.pi
+    raise InputError("flywheel.cycle", f"must be 2 pi or 4 pi radians (one or two crank turns), got {show_value(cycle)}")
+
+
 def _resample(phi: np.ndarray, y: np.ndarray, x: np.ndarray, how: str, cycle: float):
     """Values and exact cumulative integral (from phi[0]) of the periodic samples on the grid x."""
     p = np.append(phi, phi[0] + cycle)
@@ -242,7 +251,7 @@ def flywheel(
     driving=None,
     interpolation: str = "linear",
     dense: int = 7200,
-    cycle_deg: float = 360.0,
+    cycle: float = 2 * np.pi,
     reference: str = "crank angle from the cycle's start",
 ) -> FlywheelResult:
     """The flywheel for a coefficient of speed fluctuation, and the crank's speed with it.
@@ -252,7 +261,7 @@ def flywheel(
     phi : array_like
         Crank angles of the samples, radians, in the crank's sense, strictly
         increasing over one cycle without its end (``[phi0, phi0 + 2 pi)``,
-        or ``4 pi`` with ``cycle_deg=720``; the cycle closes on the first sample).
+        or ``4 pi`` with ``cycle=4 pi``; the cycle closes on the first sample).
     resisting : array_like or float
         Reduced moment of the resisting forces Mr at ``phi``, N m (positive
         takes work from the machine).
@@ -271,8 +280,8 @@ def flywheel(
     dense : int
         Grid points per cycle for the curves (the samples are added to it
         for linear interpolation, so its integrals are exact).
-    cycle_deg : {360, 720}
-        Crank rotation of one cycle, degrees (720: a four-stroke engine).
+    cycle : {2 pi, 4 pi}
+        Crank rotation of one cycle, radians (4 pi: a four-stroke engine).
     reference : str
         The name of the angle ``phi`` (what its 0 is), for the result's plot
         and JSON.
@@ -304,9 +313,7 @@ def flywheel(
     0.05
     """
     how = check_option("flywheel.interpolation", interpolation, INTERPOLATIONS)
-    if cycle_deg not in (360, 720):
-        raise InputError("flywheel.cycle_deg", f"must be 360 or 720 degrees, got {show_value(cycle_deg)}")
-    cycle = float(np.radians(cycle_deg))
+    cycle = _cycle(cycle)
     rpm = _positive("flywheel.rpm", rpm)
     if isinstance(delta, bool) or not isinstance(delta, (int, float, np.floating)) or not np.isfinite(delta) or not 0 < delta < 1:
         raise InputError("flywheel.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")

@@ -398,8 +398,15 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
                         raise InputError(f"{f}.{key}", f"must be a list of numbers, got {show_value(ld[key])}")
                     for j, x in enumerate(ld[key]):  # each element: no booleans, strings or arrays
                         check_number(f"{f}.{key}[{j}]", x)
-                loads.append(GasPressure(body, tuple(ld["angles"]), tuple(ld["pressure"]), check_number(f"{f}.bore", ld["bore"]),
-                                         start=check_number(f"{f}.start", ld.get("start", 0.0)), period=ld.get("period", 360.0)))
+                bore = check_number(f"{f}.bore", ld["bore"])
+                start = check_number(f"{f}.start", ld.get("start", 0.0))
+                period = ld.get("period", 360.0)
+                if isinstance(period, bool) or period not in (360, 720):
+                    raise InputError(f"{f}.period", f"must be 360 or 720 degrees, got {show_value(period)}")
+                # the file's degrees, radians inside
+                loads.append(GasPressure(body, tuple(np.radians(np.asarray(ld["angles"], dtype=float))),
+                                         tuple(ld["pressure"]), bore, start=float(np.radians(start)),
+                                         period=float(np.radians(period))))
             else:
                 if "force" not in ld:
                     raise InputError(f"{f}.force", "is required")

@@ -154,7 +154,7 @@ def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
                          "its start)")
         if opt.delta is not None:
             try:
-                fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation, cycle_deg=360 * turns)
+                fw = lk.flywheel(delta=opt.delta, interpolation=opt.interpolation, cycle=TWO_PI * turns)
             except InputError as e:
                 if e.field != "flywheel.inertia":
                     raise

@@ -17,6 +17,8 @@ from laws.errors import check_number as _num
 __all__ = ["LinkMass", "Friction", "GasPressure", "Resistance", "ConstantFriction", "Load", "ForceSpec", "ForceOptions",
            "cycle_turns", "check_table", "WINDOWS", "G"]
 
+TWO_PI = 2.0 * np.pi
+
 G = 9.80665
 """Standard gravity, m/s^2."""
 
@@ -73,7 +75,14 @@ class Friction:
         _num("forces.friction.coefficient", self.coefficient, lo=0.0)
         _num("forces.friction.radius", self.radius, lo=0.0)
 
+
 def check_table(field_: str, angles, values, period: float) -> tuple[np.ndarray, np.ndarray]:
+    """A periodic table over the crank angle, checked: ``angles`` (radians) from 0 to ``period`` inclusive.
+
+    The angles must increase strictly and the values close the cycle (equal
+    at 0 and ``period``). Messages give the angles in degrees (the file's unit).
+    Returns the angles and the values as float arrays.
+    """
     try:
         a = np.asarray(angles, dtype=float)
         v = np.asarray(values, dtype=float)
@@ -88,10 +97,12 @@ def check_table(field_: str, angles, values, period: float) -> tuple[np.ndarray,
     if abs(a[0]) > 1e-9 or abs(a[-1] - period) > 1e-9:
         raise InputError(
             field_,
-            f"the table covers {a[0]:g}..{a[-1]:g} deg; it must cover the whole cycle, from 0 to {period:g} deg",
+            f"the table covers {np.degrees(a[0]):g}..{np.degrees(a[-1]):g} deg; it must cover the whole cycle, "
+            f"from 0 to {np.degrees(period):g} deg",
         )
     if abs(v[0] - v[-1]) > 1e-9 * max(1.0, float(np.max(np.abs(v)))):
-        raise InputError(field_, f"the values at 0 and {period:g} deg differ ({v[0]:g} and {v[-1]:g}); the cycle must close")
+        raise InputError(field_, f"the values at 0 and {np.degrees(period):g} deg differ ({v[0]:g} and {v[-1]:g}); "
+                         "the cycle must close")
     return a, v
 
 
@@ -107,21 +118,21 @@ class GasPressure:
     body : str
         The piston (``"slider"``, ``"piston3"``, ``"piston5"``).
     angles : sequence of float
-        Crank rotation (degrees, in the crank's sense) from the frame angle
+        Crank rotation (radians, in the crank's sense) from the frame angle
         ``start``, from 0 to ``period`` inclusive. The table's angle 0 is the
         first time the crank passes ``start`` at or after the first crank
-        angle analysed (a machine's position 1); with ``period`` 360 that is
-        every time it passes ``start``.
+        angle analysed (a machine's position 1); with ``period`` 2 pi that is
+        every time it passes ``start``. (A machine file gives degrees.)
     pressure : sequence of float
         Gauge pressure at those angles, Pa (negative: below the outside).
     bore : float
         Piston diameter d, machine length unit.
     start : float
-        Frame crank angle (degrees) where the table's angle 0 is.
+        Frame crank angle (radians) where the table's angle 0 is.
     period : float
-        360 (one turn per cycle) or 720 (a four-stroke cycle: the model's
-        default crank angles then cover two turns; give ``cycle_deg=720`` to
-        the flywheel).
+        2 pi (one turn per cycle) or 4 pi (a four-stroke cycle: the model's
+        default crank angles then cover two turns, and so does the flywheel's
+        cycle), radians.
     """
 
     body: str
@@ -129,14 +140,23 @@ class GasPressure:
     pressure: tuple
     bore: float
     start: float = 0.0
-    period: float = 360.0
+    period: float = TWO_PI
 
     def __post_init__(self):
         _num("forces.loads.bore", self.bore, lo=0.0, strict=True)
         _num("forces.loads.start", self.start)
-        if self.period not in (360.0, 720.0, 360, 720):
-            raise InputError("forces.loads.period", f"must be 360 or 720 degrees, got {show_value(self.period)}")
-        check_table("forces.loads.angles", self.angles, self.pressure, float(self.period))
+        p = self.period
+        ok = not isinstance(p, bool) and isinstance(p, (int, float, np.integer, np.floating)) and np.isfinite(p)
+        turns = [n for n in (1, 2) if ok and abs(float(p) - n * TWO_PI) <= 1e-9]
+        if not turns:
+            raise InputError("forces.loads.period", f"must be 2 pi or 4 pi radians (one or two crank turns), got {show_value(p)}")
+        object.__setattr__(self, "period", turns[0] * TWO_PI)
+        check_table("forces.loads.angles", self.angles, self.pressure, self.period)
+
+    @property
+    def turns(self) -> int:
+        """Crank turns in one cycle of the table: 1 or 2."""
+        return 1 if self.period < 1.5 * TWO_PI else 2
 
 
 @dataclass(frozen=True)
@@ -244,8 +264,8 @@ class ForceSpec:
 
 
 def cycle_turns(spec: ForceSpec) -> int:
-    """Crank turns in one cycle of the loads: 2 with a gas table of period 720, else 1."""
-    return 2 if any(isinstance(ld, GasPressure) and float(ld.period) == 720.0 for ld in spec.loads) else 1
+    """Crank turns in one cycle of the loads: 2 with a gas table of two turns (period 4 pi), else 1."""
+    return 2 if any(isinstance(ld, GasPressure) and ld.turns == 2 for ld in spec.loads) else 1
 
 
 @dataclass(frozen=True)

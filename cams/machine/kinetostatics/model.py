@@ -188,11 +188,11 @@ def _external_loads(model: Model, spec: ForceSpec) -> list[AppliedLoad]:
             raise InputError(f"forces.loads[{i}].body", message_of(e)) from None
         b = model.bodies[k]
         if isinstance(ld, GasPressure):
-            a, p = check_table(f"forces.loads[{i}].angles", ld.angles, ld.pressure, float(ld.period))
+            a, p = check_table(f"forces.loads[{i}].angles", ld.angles, ld.pressure, ld.period)
             # the table's angle 0: the first time the crank passes `start` at or after the model's origin
             # (a property of the crank position, not of the angles asked for)
-            first = np.mod(model.sense * (np.radians(ld.start) - model.origin), TWO_PI)
-            rot = np.degrees(model.sense * (model.phi - model.origin) - first)
+            first = np.mod(model.sense * (ld.start - model.origin), TWO_PI)
+            rot = model.sense * (model.phi - model.origin) - first
             pp = np.interp(np.mod(rot, ld.period), a, p)
             area = np.pi * (ld.bore * u) ** 2 / 4
             toward = -np.sign(np.real(np.conj(axis) * b.cg.pos))  # along the axis toward the crank centre

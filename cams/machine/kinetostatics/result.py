@@ -182,25 +182,24 @@ class ForceResult:
         return out
 
     def flywheel(self, *, delta: float, interpolation: str = "linear", friction: bool = True,
-                 cycle_deg: float | None = None):
+                 cycle: float | None = None):
         """The flywheel for this machine (:func:`cams.machine.flywheel.flywheel`) from its reduced moments and inertia.
 
         The crank angles become the cycle's angles in the crank's sense from
         the first one. ``friction`` adds the pairs' friction to the resisting
-        moment. ``cycle_deg``: the cycle, degrees; default the loads' own
-        (:attr:`Model.cycle`: 720 with a gas table of period 720, which needs
-        crank angles over two turns).
+        moment. ``cycle``: the cycle, radians (2 pi or 4 pi); default the
+        loads' own (:attr:`Model.cycle`: 4 pi with a gas table of two turns,
+        which needs crank angles over two turns).
         """
         from cams.machine.flywheel import flywheel
 
-        cycle = self.model.cycle if cycle_deg is None else np.radians(cycle_deg)
-        cycle_deg = float(np.degrees(cycle))
+        cycle = self.model.cycle if cycle is None else cycle
         c = np.mod(self.model.sense * (self.phi - self.phi[0]), cycle)
         order = np.argsort(c)
         Mr = self.reduced_resisting + (self.reduced_friction if friction else 0.0)
         rpm = omega_to_rpm(abs(self.omega))
         return flywheel(c[order], Mr[order], self.reduced_inertia[order], rpm=rpm, delta=delta, interpolation=interpolation,
-                        cycle_deg=cycle_deg, reference=self.angle_reference)
+                        cycle=cycle, reference=self.angle_reference)
 
     def to_dict(self) -> dict:
         """JSON-ready summary: extremes of the reactions and the balancing moment, friction losses.
