@@ -22,7 +22,8 @@ import cams.model.design as design_mod
 import cams.io.designfile as designfile
 import cams.machine.kinetostatics as kinetostatics
 import cams.machine.kinetostatics.loads as kinetostatics_loads
-import cams.machine.timing as machine_mod
+import cams.machine.timing.placement as timing_placement
+import cams.machine.timing.cycle as timing_cycle
 import cams.machine.machinefile as machinefile
 import cams.profile.roller as profile_mod
 from laws.registry import LAWS
@@ -229,7 +230,7 @@ def test_forces_load_kinds_and_keys_documented():
 
 
 # --------------------------------------------------------------------------- option words and laws
-OPTION_MODULES = [designfile, design_mod, machinefile, machine_mod, kinetostatics_loads]
+OPTION_MODULES = [designfile, design_mod, machinefile, timing_cycle, timing_placement, kinetostatics_loads]
 
 
 @pytest.mark.parametrize("module", OPTION_MODULES, ids=lambda m: m.__name__)

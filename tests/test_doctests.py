@@ -35,6 +35,10 @@ DOCTEST_MODULES = [
     "cams.machine.linkage.analysis",
     "cams.machine.linkage.machines",
     "cams.machine.timing",
+    "cams.machine.timing.cycle",
+    "cams.machine.timing.placement",
+    "cams.machine.timing.diagram",
+    "cams.machine.timing.result",
     "cams.machine.machinefile",
     "cams.commands.machine",
     # forces
