@@ -57,6 +57,7 @@ from cams.machine.kinetostatics.loads import (
 )
 from cams.machine.kinetostatics.model import message_of, pinned_cg_message
 from cams.machine.timing import CuttingZone, Drive, MachineSpec, Timing, check_follower_direction
+from cams.model.follower import rotation_word, sense_of
 from cams.machine.linkage.machines import MACHINES, CrankSlider, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError, check_number, check_option, show_value
 
@@ -90,7 +91,6 @@ _SIDES = {
     "lever_side": {"opposite": -1, "same": 1},
     "tool_side": {"above": 1, "below": -1},
     "slider_side": {"right": 1, "left": -1},
-    "crank_rotation": {"ccw": 1, "cw": -1},
 }
 
 
@@ -124,7 +124,8 @@ def _linkage(lk: dict):
             raise InputError(f"linkage.{k}", f"is required with the {'course data' if use_course else 'lengths'} of a {kind} linkage")
     f = {k: _num(lk, k, f"linkage.{k}") for k in need}
     common = {
-        "crank_sense": _side(lk, "crank_rotation", "ccw"),
+        "crank_sense": sense_of("linkage.crank_rotation",
+                                check_option("linkage.crank_rotation", lk.get("crank_rotation", "ccw"), ("ccw", "cw"))),
         "rpm": _num(lk, "rpm", "linkage.rpm", required=False),
     }
     if kind == "slotting":
@@ -230,7 +231,7 @@ def machine_from_dict(d: dict) -> MachineSpec:
             raise InputError(f"cam.{k}", "is set by the machine (linkage.crank_rotation, linkage.rpm and [drive]); remove it")
     _check_keys(cam, _KEYS["cam"], "cam")
     cam_sense = linkage.crank_sense * drive.sense
-    cam_table = {**cam, "rotation": "ccw" if cam_sense == 1 else "cw"}
+    cam_table = {**cam, "rotation": rotation_word(cam_sense)}
     if linkage.rpm is not None:
         cam_table["rpm"] = linkage.rpm * drive.ratio
     dd = {k: d[k] for k in ("follower", "motion", "limits", "solve", "units", "dynamics") if k in d}

@@ -48,6 +48,7 @@ from cams.machine.linkage.primitives import (
     rrp,
 )
 from cams.machine.linkage.analysis import analyse
+from cams.model.follower import rotation_word
 from laws.errors import show_value as _show
 from cams.machine.linkage.synthesis import (
     MAX_TIME_RATIO,
@@ -262,7 +263,7 @@ class _Base:
         return {
             "type": self.kind,
             **dims,
-            "crank_rotation": "ccw" if self.crank_sense == 1 else "cw",
+            "crank_rotation": rotation_word(self.crank_sense),
             "rpm": self.rpm,
         }
 

@@ -14,6 +14,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from cams.machine.linkage.analysis import WORKING, Machine, StrokeReport, analyse
+from cams.model.follower import rotation_word
 from laws.errors import InputError, check_option, show_value
 
 __all__ = ["CuttingZone", "Windows", "windows", "deg"]
@@ -110,7 +111,7 @@ class Windows:
         o = self.out_of_work
         return {
             "origin_frame_deg": deg(np.mod(self.origin, TWO_PI)),
-            "crank_rotation": "ccw" if self.sense == 1 else "cw",
+            "crank_rotation": rotation_word(self.sense),
             "return": [0.0, deg(self.working_start)],
             "working": [deg(self.working_start), 360.0],
             "cutting": [deg(self.cut_start), deg(self.cut_end)],
@@ -119,12 +120,12 @@ class Windows:
         }
 
 
-def windows(machine: Machine, cutting: CuttingZone, *, samples: int = 720) -> Windows:
+def windows(linkage: Machine, cutting: CuttingZone, *, samples: int = 720) -> Windows:
     """The cycle's windows from the linkage's motion.
 
     Parameters
     ----------
-    machine : Machine
+    linkage : Machine
         A linkage of :mod:`cams.machine.linkage.machines`.
     cutting : CuttingZone
         The cut as a part of the working stroke.
@@ -135,14 +136,14 @@ def windows(machine: Machine, cutting: CuttingZone, *, samples: int = 720) -> Wi
     -------
     Windows
     """
-    rep = analyse(machine, working=cutting.working, samples=samples)
-    sense = machine.crank_sense
+    rep = analyse(linkage, working=cutting.working, samples=samples)
+    sense = linkage.crank_sense
     origin = rep.end
     ws = rep.return_span
     H = rep.stroke
 
     def travel(c):  # distance from the working stroke's start, along the working stroke
-        return abs(float(machine.output(np.array([origin + sense * c])).s[0]) - rep.s_start)
+        return abs(float(linkage.output(np.array([origin + sense * c])).s[0]) - rep.s_start)
 
     def at(frac):
         if frac <= 0:

@@ -72,7 +72,7 @@ class CycleDiagram:
 
 
 def cycle_diagram(
-    machine: Machine,
+    linkage: Machine,
     win: Windows,
     cutting: CuttingZone,
     program: Program,
@@ -85,7 +85,8 @@ def cycle_diagram(
 
     Parameters
     ----------
-    machine : Machine
+    linkage : Machine
+        The machine's linkage.
     win : Windows
     cutting : CuttingZone
     program : Program
@@ -101,7 +102,7 @@ def cycle_diagram(
     """
     q = timing.period[1]
     c = np.linspace(0.0, TWO_PI * q, per_turn * q + 1)
-    out = machine.output(win.frame_angle(c))
+    out = linkage.output(win.frame_angle(c))
     rep = win.stroke
     tool = np.abs(out.s - rep.s_end)
     travel = np.abs(out.s - rep.s_start)
