@@ -265,7 +265,9 @@ def machine_figures(diagram: CycleDiagram | None, forces: MachineForces | None, 
 
 def write_machine_plots(folder: str | Path, stem: str, diagram: CycleDiagram | None, forces: MachineForces | None, *,
                         title: str = "", field: str = "--plot") -> list[Path]:
-    """Write the machine's pictures (:func:`machine_figures`) as ``folder/stem_NAME.png``, each whole or not at all.
+    """Write the machine's pictures (:func:`machine_figures`) into ``folder``, each whole or not at all.
+
+    Each is a PNG named ``stem`` + ``_`` + its name (``cycle``, ``forces``...).
 
     ``field`` names the option in an error. Returns the paths written, in order.
     """
