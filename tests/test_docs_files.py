@@ -21,7 +21,9 @@ import cams.dynamics.forces as camforces
 import cams.model.design as design_mod
 import cams.io.designfile as designfile
 import cams.machine.kinetostatics as kinetostatics
-import cams.machine.timing as machine_mod
+import cams.machine.kinetostatics.loads as kinetostatics_loads
+import cams.machine.timing.placement as timing_placement
+import cams.machine.timing.cycle as timing_cycle
 import cams.machine.machinefile as machinefile
 import cams.profile.roller as profile_mod
 from laws.registry import LAWS
@@ -208,7 +210,7 @@ def test_forces_keys_documented():
 
 def test_forces_inline_key_sets_documented():
     """Keys of the sub-tables (links, friction entries) checked by _keys(...) inside force_spec_from_dict."""
-    keys = _call_args(kinetostatics.force_spec_from_dict, "_keys", 1, [kinetostatics])
+    keys = _call_args(machinefile.force_spec_from_dict, "_keys", 1, [machinefile])
     assert {"mass", "inertia", "cg", "coefficient", "radius", "revolute", "prismatic"} <= keys
     assert _missing(_forces(), keys) == []
 
@@ -221,14 +223,14 @@ def test_forces_link_and_pair_names_documented(kind):
 
 def test_forces_load_kinds_and_keys_documented():
     section = _section(_machine(), "#### `[[forces.loads]]`")
-    for kind, keys in kinetostatics._LOAD_KEYS.items():
+    for kind, keys in machinefile._LOAD_KEYS.items():
         assert _documented(section, f'"{kind}"'), kind
         assert _missing(section, keys) == [], f"undocumented keys of a {kind!r} load"
     assert _missing(section, [f'"{w}"' for w in kinetostatics.WINDOWS]) == []
 
 
 # --------------------------------------------------------------------------- option words and laws
-OPTION_MODULES = [designfile, design_mod, machinefile, machine_mod, kinetostatics]
+OPTION_MODULES = [designfile, design_mod, machinefile, timing_cycle, timing_placement, kinetostatics_loads]
 
 
 @pytest.mark.parametrize("module", OPTION_MODULES, ids=lambda m: m.__name__)

@@ -152,14 +152,13 @@ def run(args) -> int:
         forces = machine_forces(spec, found=res)  # the windows and timing design_machine found
         rep["forces"] = forces.to_dict()
     if args.plot is not None:
-        from cams.io.files import ensure_folder
+        from cams.io.files import all_or_nothing, ensure_folder
+        from cams.present.machine_plots import write_machine_plots
 
-        out = ensure_folder(args.plot, "--plot")
-        path = out / f"{Path(args.file).stem}_cycle.png"
-        res.diagram.plot(path, title=spec.name)
-        rep["plots"] = [str(path)]
-        if forces is not None:
-            rep["plots"] += [str(p) for p in forces.plot(out, Path(args.file).stem, title=spec.name)]
+        with all_or_nothing():  # every picture written whole, all of them or none
+            out = ensure_folder(args.plot, "--plot")
+            paths = write_machine_plots(out, Path(args.file).stem, res.diagram, forces, title=spec.name)
+        rep["plots"] = [str(p) for p in paths]
     if args.json:
         from cams.dynamics.forces import json_safe
 

@@ -216,35 +216,14 @@ class FlywheelResult:
             },
         }
 
-    def plot(self, path, *, title: str = "flywheel"):
-        """Draw moments, works, energy and speed over the cycle to ``path``; returns the path."""
-        import matplotlib
 
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        deg = np.degrees(self.phi)
-        fig, axes = plt.subplots(4, 1, sharex=True, figsize=(8, 9))
-        axes[0].plot(deg, self.resisting, label="Mr")
-        axes[0].plot(deg, self.driving, label="Md")
-        axes[0].set_ylabel("reduced moment, N m")
-        axes[1].plot(deg, self.work_resisting, label="Ar")
-        axes[1].plot(deg, self.work_driving, label="Ad")
-        axes[1].set_ylabel("work, J")
-        axes[2].plot(deg, self.energy, color="C2", label="dE = Ad - Ar")
-        axes[2].set_ylabel("energy change, J")
-        axes[3].plot(deg, self.omega, color="C3", label=f"omega, J_F = {self.flywheel_inertia:.4g} kg m^2")
-        axes[3].axhline(self.omega_mean, color="0.5", lw=0.8)
-        axes[3].set_ylabel("omega, rad/s")
-        axes[3].set_xlabel(f"{self.reference}, deg")
-        for ax in axes:
-            ax.grid(True, alpha=0.3)
-            ax.legend(loc="upper right")
-        axes[0].set_title(f"{title}: delta = {self.delta:g}, n = {self.rpm:.4g} rpm")
-        fig.tight_layout()
-        fig.savefig(path)
-        plt.close(fig)
-        return path
+def _cycle(cycle) -> float:
+    """One crank turn or two, radians (exactly ``2 pi`` or ``4 pi``); refused otherwise on ``flywheel.cycle``."""
+    ok = not isinstance(cycle, bool) and isinstance(cycle, (int, float, np.integer, np.floating)) and np.isfinite(cycle)
+    for turns in (1, 2):
+        if ok and abs(float(cycle) - turns * 2 * np.pi) <= 1e-9:
+            return turns * 2 * np.pi
+    raise InputError("flywheel.cycle", f"must be 2 pi or 4 pi radians (one or two crank turns), got {show_value(cycle)}")
 
 
 def _resample(phi: np.ndarray, y: np.ndarray, x: np.ndarray, how: str, cycle: float):
@@ -272,7 +251,7 @@ def flywheel(
     driving=None,
     interpolation: str = "linear",
     dense: int = 7200,
-    cycle_deg: float = 360.0,
+    cycle: float = 2 * np.pi,
     reference: str = "crank angle from the cycle's start",
 ) -> FlywheelResult:
     """The flywheel for a coefficient of speed fluctuation, and the crank's speed with it.
@@ -282,7 +261,7 @@ def flywheel(
     phi : array_like
         Crank angles of the samples, radians, in the crank's sense, strictly
         increasing over one cycle without its end (``[phi0, phi0 + 2 pi)``,
-        or ``4 pi`` with ``cycle_deg=720``; the cycle closes on the first sample).
+        or ``4 pi`` with ``cycle=4 pi``; the cycle closes on the first sample).
     resisting : array_like or float
         Reduced moment of the resisting forces Mr at ``phi``, N m (positive
         takes work from the machine).
@@ -301,8 +280,8 @@ def flywheel(
     dense : int
         Grid points per cycle for the curves (the samples are added to it
         for linear interpolation, so its integrals are exact).
-    cycle_deg : {360, 720}
-        Crank rotation of one cycle, degrees (720: a four-stroke engine).
+    cycle : {2 pi, 4 pi}
+        Crank rotation of one cycle, radians (4 pi: a four-stroke engine).
     reference : str
         The name of the angle ``phi`` (what its 0 is), for the result's plot
         and JSON.
@@ -334,9 +313,7 @@ def flywheel(
     0.05
     """
     how = check_option("flywheel.interpolation", interpolation, INTERPOLATIONS)
-    if cycle_deg not in (360, 720):
-        raise InputError("flywheel.cycle_deg", f"must be 360 or 720 degrees, got {show_value(cycle_deg)}")
-    cycle = float(np.radians(cycle_deg))
+    cycle = _cycle(cycle)
     rpm = _positive("flywheel.rpm", rpm)
     if isinstance(delta, bool) or not isinstance(delta, (int, float, np.floating)) or not np.isfinite(delta) or not 0 < delta < 1:
         raise InputError("flywheel.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")

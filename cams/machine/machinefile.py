@@ -31,7 +31,7 @@ Schema (see ``examples/machines/``)::
     [cam]       bore_radius only (checked against the sized cam's working profile by
                 cams.machine.timing.design_machine): rotation and rpm follow from the crank and the drive
     [forces]    optional: masses, loads, friction and the flywheel's delta of the linkage
-                (cams.machine.kinetostatics.force_spec_from_dict); parsed into ``spec.extra["forces"]``
+                (:func:`force_spec_from_dict`); parsed into ``spec.extra["forces"]``
 """
 
 from __future__ import annotations
@@ -44,11 +44,24 @@ from cams.io.designfile import design_from_dict
 from cams.io.files import check_document, check_keys, read_toml
 from cams.io.files import toml_number as _num
 from cams.io.files import toml_table as _table
+from cams.machine.kinetostatics.loads import (
+    G,
+    WINDOWS,
+    ConstantFriction,
+    ForceOptions,
+    ForceSpec,
+    Friction,
+    GasPressure,
+    LinkMass,
+    Resistance,
+)
+from cams.machine.kinetostatics.model import message_of, pinned_cg_message
 from cams.machine.timing import CuttingZone, Drive, MachineSpec, Timing, check_follower_direction
-from cams.machine.linkage.machines import CrankSlider, SlottedLeverPump, SlottingMachine
-from laws.errors import InputError, check_option, show_value
+from cams.model.follower import rotation_word, sense_of
+from cams.machine.linkage.machines import MACHINES, CrankSlider, SlottedLeverPump, SlottingMachine
+from laws.errors import InputError, check_number, check_option, show_value
 
-__all__ = ["load_machine", "machine_from_dict", "LINKAGE_TYPES"]
+__all__ = ["load_machine", "machine_from_dict", "force_spec_from_dict", "LINKAGE_TYPES", "FORCES_KEYS"]
 
 _COMMON = {"type", "crank_rotation", "rpm"}
 _LINKAGE = {
@@ -78,7 +91,6 @@ _SIDES = {
     "lever_side": {"opposite": -1, "same": 1},
     "tool_side": {"above": 1, "below": -1},
     "slider_side": {"right": 1, "left": -1},
-    "crank_rotation": {"ccw": 1, "cw": -1},
 }
 
 
@@ -112,7 +124,8 @@ def _linkage(lk: dict):
             raise InputError(f"linkage.{k}", f"is required with the {'course data' if use_course else 'lengths'} of a {kind} linkage")
     f = {k: _num(lk, k, f"linkage.{k}") for k in need}
     common = {
-        "crank_sense": _side(lk, "crank_rotation", "ccw"),
+        "crank_sense": sense_of("linkage.crank_rotation",
+                                check_option("linkage.crank_rotation", lk.get("crank_rotation", "ccw"), ("ccw", "cw"))),
         "rpm": _num(lk, "rpm", "linkage.rpm", required=False),
     }
     if kind == "slotting":
@@ -218,7 +231,7 @@ def machine_from_dict(d: dict) -> MachineSpec:
             raise InputError(f"cam.{k}", "is set by the machine (linkage.crank_rotation, linkage.rpm and [drive]); remove it")
     _check_keys(cam, _KEYS["cam"], "cam")
     cam_sense = linkage.crank_sense * drive.sense
-    cam_table = {**cam, "rotation": "ccw" if cam_sense == 1 else "cw"}
+    cam_table = {**cam, "rotation": rotation_word(cam_sense)}
     if linkage.rpm is not None:
         cam_table["rpm"] = linkage.rpm * drive.ratio
     dd = {k: d[k] for k in ("follower", "motion", "limits", "solve", "units", "dynamics") if k in d}
@@ -231,8 +244,6 @@ def machine_from_dict(d: dict) -> MachineSpec:
     design = design_from_dict(dd)  # checks [dynamics] too (journal_radius: a rocker's only)
     extra = {"raw": d}
     if "forces" in d:
-        from cams.machine.kinetostatics import force_spec_from_dict
-
         extra["forces"] = force_spec_from_dict(d["forces"], linkage.kind, units=units, cutting=cutting)
     return MachineSpec(name=name, linkage=linkage, cutting=cutting, drive=drive, timing=timing, cam=design, units=units, extra=extra)
 
@@ -251,3 +262,194 @@ def load_machine(path: str | Path) -> MachineSpec:
         As :func:`machine_from_dict`.
     """
     return machine_from_dict(read_toml(path))
+
+
+# --------------------------------------------------------------------------- [forces]
+FORCES_KEYS = ("gravity", "samples", "passes", "delta", "interpolation", "links", "friction", "loads")
+"""Keys of a machine file's ``[forces]`` table."""
+_LOAD_KEYS = {
+    "resistance": {"kind", "body", "force", "window", "approach", "overrun", "working"},
+    "gas": {"kind", "body", "angles", "pressure", "bore", "start", "period"},
+    "constant_friction": {"kind", "body", "force"},
+}
+
+
+def _keys(table, allowed, field_: str) -> dict:
+    if not isinstance(table, dict):
+        raise InputError(field_, "must be a table")
+    unknown = set(table) - set(allowed)
+    if unknown:
+        raise InputError(field_, f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(sorted(allowed))}")
+    return table
+
+
+def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=None) -> tuple[ForceSpec, ForceOptions]:
+    """A machine file's ``[forces]`` table.
+
+    Schema (masses kg, moments of inertia kg m^2, forces N, pressures Pa,
+    lengths in the file's unit, angles in degrees)::
+
+        [forces]            gravity (m/s^2, default 9.80665), samples (360), passes (2 | "iterate"),
+                            delta (flywheel), interpolation ("linear" | "spline")
+        [forces.links.NAME] mass, inertia, cg           NAME: the linkage's links (its ``links``)
+                            (cg: links that turn only; sliding links refuse it)
+        [forces.friction]   revolute = {coefficient, radius}, prismatic = {coefficient},
+                            PAIR = {coefficient, radius} (overrides; PAIR: its ``pairs``;
+                            radius refused for a prismatic pair)
+        [[forces.loads]]    kind = "resistance": body, force, window ("cut" | "working" | "always"),
+                                                 approach, overrun (window "cut" only),
+                                                 working (not with "always"); default: [cutting]
+                            kind = "gas": body, angles, pressure, bore, start, period
+                            kind = "constant_friction": body, force
+                            body: a link that slides on a guide (its ``guided()``)
+
+    Every value is checked here, with the load's index in the field
+    (``forces.loads[1].approach``), not only when the forces are computed.
+
+    Parameters
+    ----------
+    table : dict
+    kind : str
+        The linkage's kind (``linkage.type``, a key of :data:`cams.machine.linkage.machines.MACHINES`).
+    units : str
+        The file's length unit: ``"mm"`` only (:data:`cams.dynamics.forces.LENGTH_UNITS`).
+    cutting : cams.machine.timing.CuttingZone or None
+        Defaults of a "resistance" load's window.
+
+    Returns
+    -------
+    (ForceSpec, ForceOptions)
+
+    Examples
+    --------
+    >>> spec, opt = force_spec_from_dict({"links": {"tool": {"mass": 80}}, "delta": 0.05,
+    ...     "loads": [{"kind": "resistance", "body": "tool", "force": 1000}]}, "slotting")
+    >>> spec.links["tool"].mass, spec.loads[0].window, opt.delta
+    (80.0, 'cut', 0.05)
+    """
+    from cams.dynamics.forces import LENGTH_UNITS
+
+    t = _keys(table, FORCES_KEYS, "forces")
+    if units not in LENGTH_UNITS:
+        raise InputError("units", f"{units!r} is not supported: machine files are in mm")
+    linkage = MACHINES[kind]  # the machine's own topology: its links, pairs and sliding links
+    names, pairs, guided = linkage.links, tuple(p.name for p in linkage.pairs), linkage.guided()
+    links = {}
+    for nm, lt in _keys(t.get("links", {}), names, "forces.links").items():
+        lt = _keys(lt, {"mass", "inertia", "cg"}, f"forces.links.{nm}")
+        if "cg" in lt and nm in guided:
+            raise InputError(f"forces.links.{nm}.cg", pinned_cg_message(nm, kind))
+        vals = {k: check_number(f"forces.links.{nm}.{k}", v) for k, v in lt.items()}
+        for k in ("mass", "inertia"):
+            if vals.get(k, 0.0) < 0:
+                raise InputError(f"forces.links.{nm}.{k}", f"cannot be negative, got {show_value(vals[k])}")
+        links[nm] = LinkMass(vals.get("mass", 0.0), vals.get("inertia", 0.0), vals.get("cg"))
+    fr = _keys(t.get("friction", {}), {"revolute", "prismatic", *pairs}, "forces.friction")
+
+    def is_prismatic(p):
+        return p in pairs and linkage.pair_kind(p) == "prismatic"
+
+    entries = {}
+    for name, v in fr.items():  # every entry checked, also one that every pair's own entry overrides
+        f = f"forces.friction.{name}"
+        v = _keys(v, {"coefficient", "radius"}, f)
+        if "coefficient" not in v:
+            raise InputError(f"{f}.coefficient", "is required")
+        if "radius" in v and (name == "prismatic" or (name != "revolute" and is_prismatic(name))):
+            raise InputError(f"{f}.radius", "applies to a revolute pair's journal (friction moment mu r R); a prismatic "
+                             "pair's friction is the force mu N along its guide and has no radius: remove it")
+        c = check_number(f"{f}.coefficient", v["coefficient"], lo=0.0)
+        entries[name] = Friction(c, check_number(f"{f}.radius", v.get("radius", 0.0), lo=0.0))
+
+    friction = {}
+    for p in pairs:
+        prismatic = is_prismatic(p)
+        if p in entries:
+            friction[p] = entries[p]
+        elif prismatic and "prismatic" in entries:
+            friction[p] = entries["prismatic"]
+        elif not prismatic and "revolute" in entries:
+            friction[p] = entries["revolute"]
+    loads = []
+    raw = t.get("loads", [])
+    if not isinstance(raw, list):
+        raise InputError("forces.loads", "must be a list of tables ([[forces.loads]])")
+    for i, ld in enumerate(raw):
+        f = f"forces.loads[{i}]"
+        if not isinstance(ld, dict):
+            raise InputError(f, "must be a table")
+        k = check_option(f"{f}.kind", ld.get("kind"), tuple(_LOAD_KEYS))
+        _keys(ld, _LOAD_KEYS[k], f)
+        if "body" not in ld:
+            raise InputError(f"{f}.body", "is required")
+        body = ld["body"]
+        if body not in names:
+            raise InputError(f"{f}.body", f"{show_value(body)} is not a link of a {kind} linkage; a load acts on a link "
+                             f"that slides on a guide: {', '.join(map(repr, guided))}")
+        if body not in guided:
+            raise InputError(f"{f}.body", f"{body!r} does not slide on a guide; a load acts along a guide, on one of "
+                             f"{', '.join(map(repr, guided))}")
+        try:
+            if k == "gas":
+                for key in ("angles", "pressure", "bore"):
+                    if key not in ld:
+                        raise InputError(f"{f}.{key}", "is required")
+                for key in ("angles", "pressure"):
+                    if not isinstance(ld[key], list):
+                        raise InputError(f"{f}.{key}", f"must be a list of numbers, got {show_value(ld[key])}")
+                    for j, x in enumerate(ld[key]):  # each element: no booleans, strings or arrays
+                        check_number(f"{f}.{key}[{j}]", x)
+                bore = check_number(f"{f}.bore", ld["bore"])
+                start = check_number(f"{f}.start", ld.get("start", 0.0))
+                period = ld.get("period", 360.0)
+                if isinstance(period, bool) or period not in (360, 720):
+                    raise InputError(f"{f}.period", f"must be 360 or 720 degrees, got {show_value(period)}")
+                # the file's degrees, radians inside
+                loads.append(GasPressure(body, tuple(np.radians(np.asarray(ld["angles"], dtype=float))),
+                                         tuple(ld["pressure"]), bore, start=float(np.radians(start)),
+                                         period=float(np.radians(period))))
+            else:
+                if "force" not in ld:
+                    raise InputError(f"{f}.force", "is required")
+                F = check_number(f"{f}.force", ld["force"])
+                if k == "constant_friction":
+                    loads.append(ConstantFriction(body, F))
+                else:
+                    cz = cutting
+                    window = check_option(f"{f}.window", ld.get("window", "cut"), WINDOWS)
+                    if window != "cut":
+                        for key in ("approach", "overrun"):
+                            if key in ld:
+                                raise InputError(f"{f}.{key}", f"applies to window = 'cut' only (the part of the working "
+                                                 f"stroke in the work); window = {window!r} does not use it: remove it")
+                    if window == "always" and "working" in ld:
+                        raise InputError(f"{f}.working", "applies to windows 'cut' and 'working'; window = 'always' acts "
+                                         "over the whole cycle whichever stroke works: remove it")
+                    frac = {key: ld.get(key, 0.0 if cz is None or window != "cut" else getattr(cz, key))
+                            for key in ("approach", "overrun")}
+                    loads.append(Resistance(body, F, window=window, **frac,
+                                            working=ld.get("working", "slow" if cz is None else cz.working)))
+        except InputError as e:
+            # name the load in the field: forces.loads.angles -> forces.loads[i].angles
+            fld = e.field.replace("forces.loads.", f"{f}.") if e.field.startswith("forces.loads.") else e.field
+            raise InputError(fld, message_of(e)) from None
+    samples = t.get("samples", 360)
+    if isinstance(samples, bool) or not isinstance(samples, int) or not 12 <= samples <= 100_000:
+        # the bound keeps memory near 0.5 GB (about 4 kB a crank angle)
+        raise InputError("forces.samples", f"must be an integer from 12 to 100000, got {show_value(samples)}")
+    passes = t.get("passes", 2)
+    if passes == "iterate":
+        passes = None
+    elif isinstance(passes, bool) or not isinstance(passes, int) or passes < 1:
+        raise InputError("forces.passes", f"must be an integer >= 1 or 'iterate', got {show_value(passes)}")
+    delta = t.get("delta")
+    if delta is not None:
+        delta = check_number("forces.delta", delta)
+        if not 0 < delta < 1:
+            raise InputError("forces.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")
+    from cams.machine.flywheel import INTERPOLATIONS
+
+    interp = check_option("forces.interpolation", t.get("interpolation", "linear"), INTERPOLATIONS)
+    spec = ForceSpec(links=links, loads=tuple(loads), friction=friction, gravity=check_number("forces.gravity", t.get("gravity", G)),
+                     length_unit=LENGTH_UNITS[units])
+    return spec, ForceOptions(samples=samples, passes=passes, delta=delta, interpolation=interp)

@@ -23,7 +23,7 @@ import numpy as np
 
 from laws.errors import InputError
 
-__all__ = ["Rocker", "Translating", "Follower", "sense_of"]
+__all__ = ["Rocker", "Translating", "Follower", "sense_of", "rotation_word"]
 
 
 def sense_of(field: str, word: str) -> int:
@@ -33,6 +33,11 @@ def sense_of(field: str, word: str) -> int:
     if word == "cw":
         return -1
     raise InputError(field, f"{word!r} is not a valid option, must be one of 'cw', 'ccw'")
+
+
+def rotation_word(sense: int) -> str:
+    """The word of a sense of rotation, the inverse of :func:`sense_of`: +1 ``"ccw"``, -1 ``"cw"``."""
+    return "ccw" if sense > 0 else "cw"
 
 
 def _positive(field: str, value: float, *, zero_ok: bool = False) -> float:

@@ -183,7 +183,8 @@ def test_given_driving_moment():
         ({"phi": np.radians([0, 30, 20, 90, 120, 150, 180, 210, 240, 270, 300, 330])}, "flywheel.phi"),
         ({"resisting": np.ones(5)}, "flywheel.resisting"),
         ({"interpolation": "cubic"}, "flywheel.interpolation"),
-        ({"cycle_deg": 540}, "flywheel.cycle_deg"),
+        ({"cycle": 3 * np.pi}, "flywheel.cycle"),
+        ({"cycle": 720}, "flywheel.cycle"),
     ],
 )
 def test_bad_input_is_one_line(kw, field):

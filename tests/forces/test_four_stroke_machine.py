@@ -126,10 +126,10 @@ def test_api_default_angles_cover_the_cycle():
     """build_model's default crank angles cover two turns with a period-720 table (samples a turn)."""
     m = CrankSlider(crank=48.0, rod=192.0, rod_cg=64.0, rpm=3000)
     spec = ForceSpec(links={"crank": LinkMass(2.0, 0.01), "slider": LinkMass(0.8)},
-                     loads=(GasPressure("slider", ANGLES, PRESSURE, 80.0, period=720),), gravity=0.0)
+                     loads=(GasPressure("slider", np.radians(ANGLES), PRESSURE, 80.0, period=4 * np.pi),), gravity=0.0)
     r = analyse_forces(m, spec, samples=36)
     assert r.phi.size == 72 and np.degrees(r.rotation).max() == pytest.approx(710.0)
-    assert r.flywheel(delta=0.05, cycle_deg=720).achieved_delta == pytest.approx(0.05, rel=1e-9)
+    assert r.flywheel(delta=0.05, cycle=4 * np.pi).achieved_delta == pytest.approx(0.05, rel=1e-9)
     assert json.dumps(r.to_dict())
 
 
@@ -139,7 +139,8 @@ def test_gas_load_depends_on_the_crank_position_not_on_the_angles_asked():
     from cams.machine.kinetostatics import build_model
 
     m = CrankSlider(crank=48.0, rod=192.0, rod_cg=64.0, rpm=3000)
-    gas = GasPressure("slider", tuple(ANGLES), tuple(PRESSURE), bore=80.0, start=START, period=720.0)
+    gas = GasPressure("slider", tuple(np.radians(ANGLES)), tuple(PRESSURE), bore=80.0, start=np.radians(START),
+                      period=4 * np.pi)
     spec = ForceSpec(links={"slider": LinkMass(1.0)}, loads=(gas,))
     at = {}
     for name, phi in (("pair", [0.0, 10.0]), ("alone", [10.0]), ("after", [10.0, 200.0, 500.0]), ("other", [370.0])):
@@ -153,11 +154,12 @@ def test_gas_load_depends_on_the_crank_position_not_on_the_angles_asked():
 
 
 def test_flywheel_defaults_to_the_models_cycle():
-    """A 720-degree model's flywheel needs no cycle_deg: it takes the loads' cycle (was 'angles must increase')."""
+    """A 720-degree model's flywheel needs no cycle: it takes the loads' cycle (was 'angles must increase')."""
     m = CrankSlider(crank=48.0, rod=192.0, rod_cg=64.0, rpm=3000)
-    gas = GasPressure("slider", tuple(ANGLES), tuple(PRESSURE), bore=80.0, start=START, period=720.0)
+    gas = GasPressure("slider", tuple(np.radians(ANGLES)), tuple(PRESSURE), bore=80.0, start=np.radians(START),
+                      period=4 * np.pi)
     r = analyse_forces(m, ForceSpec(links={"crank": LinkMass(2.0, inertia=0.01), "slider": LinkMass(1.0)}, loads=(gas,)),
                        samples=90)
-    a, b = r.flywheel(delta=0.05), r.flywheel(delta=0.05, cycle_deg=720.0)
+    a, b = r.flywheel(delta=0.05), r.flywheel(delta=0.05, cycle=4 * np.pi)
     assert a.phi[-1] - a.phi[0] == pytest.approx(4 * np.pi)
     assert a.flywheel_inertia == b.flywheel_inertia and a.excess_work == b.excess_work

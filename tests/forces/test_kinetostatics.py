@@ -61,8 +61,10 @@ SPECS = {
     "opposed_twin": (TWIN_000, ForceSpec(
         links={"crank": LinkMass(5.0, 0.004), "rod2": LinkMass(3.2, 0.014), "piston3": LinkMass(4.0),
                "rod4": LinkMass(3.2, 0.014), "piston5": LinkMass(4.0)},
-        loads=(GasPressure("piston3", (0, 30, 90, 180, 270, 360), (4.8e6, 3.0e6, 1.0e6, 0.1e6, 0.4e6, 4.8e6), 80.0),
-               GasPressure("piston5", (0, 30, 90, 180, 270, 360), (4.8e6, 3.0e6, 1.0e6, 0.1e6, 0.4e6, 4.8e6), 80.0, start=180.0)),
+        loads=(GasPressure("piston3", tuple(np.radians((0, 30, 90, 180, 270, 360))),
+                           (4.8e6, 3.0e6, 1.0e6, 0.1e6, 0.4e6, 4.8e6), 80.0),
+               GasPressure("piston5", tuple(np.radians((0, 30, 90, 180, 270, 360))),
+                           (4.8e6, 3.0e6, 1.0e6, 0.1e6, 0.4e6, 4.8e6), 80.0, start=np.pi)),
         friction=_friction(TWIN_000, 0.05, 10.0, 0.1))),
     "pump": (PUMP, ForceSpec(
         links={"crank": LinkMass(10.0, 0.3), "block": LinkMass(2.0, 0.01), "lever": LinkMass(25.0, 0.6),
@@ -260,10 +262,11 @@ def test_flywheel_from_the_linkage():
         (lambda: LinkMass(-1.0), "forces.links.mass"),
         (lambda: LinkMass(1.0, -0.1), "forces.links.inertia"),
         (lambda: Friction(-0.1), "forces.friction.coefficient"),
-        (lambda: GasPressure("piston3", (0, 90, 180), (1e6, 2e5, 1e5), 80.0), "forces.loads.angles"),
-        (lambda: GasPressure("piston3", (10, 90, 360), (1e6, 2e5, 1e6), 80.0), "forces.loads.angles"),
-        (lambda: GasPressure("piston3", (0, 90, 360), (1e6, 2e5, 1e5), 80.0), "forces.loads.angles"),
-        (lambda: GasPressure("piston3", (0, 90, 360), (1e6, 2e5, 1e6), -80.0), "forces.loads.bore"),
+        (lambda: GasPressure("piston3", np.radians((0, 90, 180)), (1e6, 2e5, 1e5), 80.0), "forces.loads.angles"),
+        (lambda: GasPressure("piston3", np.radians((10, 90, 360)), (1e6, 2e5, 1e6), 80.0), "forces.loads.angles"),
+        (lambda: GasPressure("piston3", np.radians((0, 90, 360)), (1e6, 2e5, 1e5), 80.0), "forces.loads.angles"),
+        (lambda: GasPressure("piston3", np.radians((0, 90, 360)), (1e6, 2e5, 1e6), -80.0), "forces.loads.bore"),
+        (lambda: GasPressure("piston3", np.radians((0, 90, 360)), (1e6, 2e5, 1e6), 80.0, period=360), "forces.loads.period"),
         (lambda: Resistance("tool", -5.0), "forces.loads.force"),
         (lambda: Resistance("tool", 5.0, window="sometimes"), "forces.loads.window"),
         (lambda: analyse_forces(SLOTTING, ForceSpec(links={"wheel": LinkMass(1.0)})), "forces.links.wheel"),
@@ -286,14 +289,14 @@ def test_four_stroke_cycle():
     angles = (0, 20, 60, 180, 360, 540, 720)
     p = (5.0e6, 4.0e6, 1.5e6, 0.2e6, 0.0, 0.1e6, 5.0e6)
     spec = ForceSpec(links={"crank": LinkMass(2.0, 0.01), "rod": LinkMass(1.0, 0.005), "slider": LinkMass(0.8)},
-                     loads=(GasPressure("slider", angles, p, 80.0, period=720),), gravity=0.0)
+                     loads=(GasPressure("slider", np.radians(angles), p, 80.0, period=4 * np.pi),), gravity=0.0)
     phi = np.linspace(0, 4 * np.pi, 1440, endpoint=False)
     r = analyse_forces(m, spec, phi=phi)
     gas = r.model.loads[0].force
     assert np.real(gas[0]) == pytest.approx(-5.0e6 * np.pi * 0.08**2 / 4) and np.real(gas[720]) == pytest.approx(0.0)
-    fw = r.flywheel(delta=0.02, cycle_deg=720)
+    fw = r.flywheel(delta=0.02, cycle=4 * np.pi)
     assert fw.phi[-1] - fw.phi[0] == pytest.approx(4 * np.pi)
     assert fw.achieved_delta == pytest.approx(0.02, rel=1e-9)
     assert fw.driving_moment == pytest.approx(np.mean(r.balancing_moment), rel=1e-3)
     with pytest.raises(InputError, match="flywheel.phi"):
-        r.flywheel(delta=0.02, cycle_deg=360)  # two turns are not one 360-degree cycle
+        r.flywheel(delta=0.02, cycle=2 * np.pi)  # two turns are not one 360-degree cycle

@@ -193,8 +193,6 @@ def test_flywheel_without_link_masses_but_with_loads_is_sized(tmp_path, capsys):
 
 def test_hodographs_draw_the_reactions():
     """Each panel of the hodograph figure traces its pair's reaction vector (R_x, R_y) over the whole cycle."""
-    import matplotlib.pyplot as plt
-
     from cams.machine.kinetostatics import machine_forces
     from cams.machine.timing import design_machine
     from cams.machine.machinefile import load_machine
@@ -202,23 +200,22 @@ def test_hodographs_draw_the_reactions():
     spec = load_machine(DATA)
     mf = machine_forces(spec, design_machine(spec).solve.centre)
     lk = mf.linkage
-    fig = lk.hodograph_figure(marks=12)
-    try:
-        axes = [ax for ax in fig.axes if ax.get_visible()]
-        assert len(axes) == len(lk.model.joints)
-        for ax, j in zip(axes, lk.model.joints):
-            xy = ax.lines[0].get_xydata()
-            R = lk.reactions[j.name]
-            assert ax.get_title().startswith(j.name)
-            assert len(xy) == R.size
-            # the same points (the figure orders them by crank rotation)
-            assert np.allclose(np.sort(xy[:, 0]), np.sort(np.real(R))) and np.allclose(np.sort(xy[:, 1]), np.sort(np.imag(R)))
-            # mark 1 is the reaction at position 1 (the first crank angle)
-            marks = [ln for ln in ax.lines[2:]]
-            assert len(marks) == 12
-            assert np.allclose(marks[0].get_xydata()[0], [np.real(R[0]), np.imag(R[0])])
-    finally:
-        plt.close(fig)
+    from cams.present.machine_plots import hodograph_figure
+
+    fig = hodograph_figure(lk, marks=12)
+    axes = [ax for ax in fig.axes if ax.get_visible()]
+    assert len(axes) == len(lk.model.joints)
+    for ax, j in zip(axes, lk.model.joints):
+        xy = ax.lines[0].get_xydata()
+        R = lk.reactions[j.name]
+        assert ax.get_title().startswith(j.name)
+        assert len(xy) == R.size
+        # the same points (the figure orders them by crank rotation)
+        assert np.allclose(np.sort(xy[:, 0]), np.sort(np.real(R))) and np.allclose(np.sort(xy[:, 1]), np.sort(np.imag(R)))
+        # mark 1 is the reaction at position 1 (the first crank angle)
+        marks = [ln for ln in ax.lines[2:]]
+        assert len(marks) == 12
+        assert np.allclose(marks[0].get_xydata()[0], [np.real(R[0]), np.imag(R[0])])
 
 
 def test_forces_reuse_what_the_machine_design_found(monkeypatch):
