@@ -41,6 +41,10 @@ DOCTEST_MODULES = [
     "cams.machine.flywheel",
     "cams.dynamics.forces",
     "cams.machine.kinetostatics",
+    # the kinematics kernel
+    "cams.kinematics.vectors",
+    "cams.kinematics.extremum",
+    "cams.kinematics.inversion",
     # profiles
     "cams.profile.flat",
     "cams.words",
