@@ -18,11 +18,10 @@ import numpy as np
 
 from laws.base import Law
 from laws.errors import InputError
-from laws.units import rpm_to_omega
+from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["Phase", "Program", "Motion", "TWO_PI", "wrap_angle"]
 
-TWO_PI = 2.0 * np.pi
 _KINDS = ("rise", "dwell", "return")
 #: Tolerance on the sum of phase angles (radians).
 ANGLE_TOL = 1e-9

@@ -1,6 +1,7 @@
-"""Unit conversions shared by every layer (laws is the bottom package).
+"""Unit conversions and the full turn, shared by every layer (laws is the bottom package).
 
-Speeds of cams and cranks are given in rev/min (``rpm``) in design and machine
+Angles are radians inside the code (degrees only at the interface); one turn is
+:data:`TWO_PI`. Speeds of cams and cranks are given in rev/min (``rpm``) in design and machine
 files and used in rad/s (``omega``) in the formulas: ``omega = 2 pi n / 60 =
 pi n / 30``.
 """
@@ -9,7 +10,10 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["rpm_to_omega", "omega_to_rpm"]
+__all__ = ["TWO_PI", "rpm_to_omega", "omega_to_rpm"]
+
+#: One turn, radians: the one home of ``2 pi`` for every layer.
+TWO_PI = 2.0 * np.pi
 
 
 def rpm_to_omega(rpm: float) -> float:

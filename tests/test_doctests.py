@@ -51,6 +51,10 @@ DOCTEST_MODULES = [
     "cams.dynamics.forces",
     "cams.machine.kinetostatics",
     "cams.machine.kinetostatics.solve",
+    # the kinematics kernel
+    "cams.kinematics.vectors",
+    "cams.kinematics.extremum",
+    "cams.kinematics.inversion",
     # profiles
     "cams.profile.flat",
     "cams.words",

@@ -29,8 +29,10 @@ Every check is recomputed from the profile (the pitch curve of
 Extremes are located on a dense grid per phase (``grid + 1`` positions, and
 both sides of a piecewise law's breakpoints) and refined between grid points
 where their analytic derivative by the cam angle changes sign: all brackets
-together, one array evaluation a step (:func:`_maximize`). They do not depend
-on the profile's sampling.
+together, one array evaluation a step (the kernel's search,
+:func:`cams.kinematics.extremum.maximize`, on the kernel's curvature and
+pressure angle and their rates, :mod:`cams.kinematics.inversion`). They do not
+depend on the profile's sampling.
 """
 
 from __future__ import annotations
@@ -39,18 +41,25 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from cams.kinematics.extremum import maximize, phase_positions
+from cams.kinematics.inversion import (
+    curvature_rate,
+    invert_phase,
+    pitch_phase,
+    pressure_angle,
+    pressure_rate,
+    smallest_cam_radius,
+)
+from cams.kinematics.vectors import cross
 from cams.model.design import CamDesign
 from cams.profile.roller import (
     Profile,
     ProfileOptions,
-    _cross,
-    _inversion,
     build_profile,
     default_bore_radius,
-    pitch_phase,
     profile_options,
-    smallest_cam_radius,
 )
+from laws.units import TWO_PI
 
 __all__ = [
     "Check",
@@ -175,53 +184,7 @@ class CheckReport(ChecksMixin):
         }
 
 
-# -- pressure angle and curvature with their slopes -------------------------------------------
-
-
-def _pressure_rates(inv, eps: int, ds: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Pressure angle (radians, in [0, pi]) and its derivative by the cam angle (per radian).
-
-    Parameters
-    ----------
-    inv : cams.profile.roller._Inversion
-        The inverted motion at the positions.
-    eps : {+1, -1}
-        The cam's sense of rotation.
-    ds : ndarray
-        ``s'``, the follower's displacement per radian of cam angle.
-
-    Notes
-    -----
-    The contact normal in the fixed frame is along ``eps J w1`` (the pitch
-    curve's outward normal turned back by ``R(eps phi)``), the follower's
-    velocity along ``T = dA/ds``. With ``alpha`` the signed angle from the
-    normal to ``T``, ``gamma = |alpha|`` and
-    ``d alpha / dphi = s' (T x T2) / |T|^2 - (w1 x w2) / |w1|^2 - eps``
-    (the turn of ``T`` less the turn of the normal, ``w1' = w2 + eps J w1``).
-    """
-    (wx, wy), (vx, vy), (tx, ty), (bx, by) = inv.w1, inv.w2, inv.t, inv.t2
-    nx, ny = -eps * wy, eps * wx
-    sin_, cos_ = nx * ty - ny * tx, nx * tx + ny * ty  # both times |n| |T| > 0
-    gamma = np.arctan2(np.abs(sin_), cos_)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        dalpha = ds * (tx * by - ty * bx) / (tx * tx + ty * ty) - (wx * vy - wy * vx) / (wx * wx + wy * wy) - eps
-    return gamma, np.sign(sin_) * dalpha
-
-
-def _curvature_rates(inv, eps: int) -> tuple[np.ndarray, np.ndarray]:
-    """Signed curvature (1/length, positive convex) and its derivative by the cam angle (1/length per radian).
-
-    ``kappa = -eps (w1 x w2) / |w1|^3``, so
-    ``dkappa/dphi = -eps ((w1 x w3) / |w1|^3 - 3 (w1 x w2)(w1 . w2) / |w1|^5)``
-    (``inv`` computed with ``third=True``).
-    """
-    (wx, wy), (vx, vy), (zx, zy) = inv.w1, inv.w2, inv.w3
-    speed = np.sqrt(wx * wx + wy * wy)
-    cr = wx * vy - wy * vx
-    with np.errstate(divide="ignore", invalid="ignore"):
-        kappa = -eps * cr / speed**3
-        dkappa = -eps * ((wx * zy - wy * zx) / speed**3 - 3 * cr * (wx * vx + wy * vy) / speed**5)
-    return kappa, dkappa
+# -- pressure angle and curvature with their slopes (the kernel's) ------------------------------
 
 
 def pressure_from_profile(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndarray) -> np.ndarray:
@@ -242,12 +205,9 @@ def pressure_from_profile(design: CamDesign, centre: np.ndarray, phase: int, u: 
     into the fixed frame by ``R(eps phi)``; the follower's velocity is along
     ``e = dA/ds / |dA/ds|``. ``gamma = arccos(n . e)``, computed as
     ``atan2(|n x e|, n . e)`` (accurate near 0), on the components in the
-    fixed frame (:func:`_pressure_rates`).
+    fixed frame (:func:`cams.kinematics.inversion.pressure_angle`).
     """
-    u = np.atleast_1d(np.asarray(u, dtype=float))
-    m = design.program.evaluate_phase(phase, u)
-    inv = _inversion(design, np.asarray(centre, dtype=float), m)
-    return _pressure_rates(inv, design.cam_sense, m.ds)[0]
+    return pressure_angle(invert_phase(design, centre, phase, u))
 
 
 def _phase_rates(design: CamDesign, centre: np.ndarray, i: int, u: np.ndarray, what: tuple[str, ...]):
@@ -257,116 +217,17 @@ def _phase_rates(design: CamDesign, centre: np.ndarray, i: int, u: np.ndarray, w
     (-kappa) and ``"pressure"`` (radians). Returns ``values, slopes``, arrays
     of shape ``(len(what), len(u))``.
     """
-    m = design.program.evaluate_phase(i, u)
-    eps = design.cam_sense
-    inv = _inversion(design, centre, m, third="convex" in what or "concave" in what)
+    inv = invert_phase(design, centre, i, u, third="convex" in what or "concave" in what)
     rows = {}
     if "convex" in what or "concave" in what:
-        k, dk = _curvature_rates(inv, eps)
+        k, dk = curvature_rate(inv)
         rows["convex"], rows["concave"] = (k, dk), (-k, -dk)
     if "pressure" in what:
-        rows["pressure"] = _pressure_rates(inv, eps, m.ds)
+        rows["pressure"] = pressure_rate(inv)
     return np.array([rows[w][0] for w in what]), np.array([rows[w][1] for w in what])
 
 
 # -- the largest values over a phase -----------------------------------------------------------
-
-#: Largest number of refinement steps (one array evaluation each) of :func:`_maximize`.
-MAX_STEPS = 60
-#: Width of a bracket (normalized position u) at which its refinement stops.
-U_TOL = 1e-12
-
-
-def _grid(design: CamDesign, i: int, grid: int) -> np.ndarray:
-    """Positions ``u`` searched over phase ``i``.
-
-    ``grid + 1`` even positions, and both sides of each breakpoint of the
-    phase's law: a piecewise law's derivatives may jump there, and with the
-    positions one rounding step either side of it each piece is smooth between
-    neighbouring positions and its one-sided ends are on the grid. A dwell's
-    functions are constant (the pitch curve is a circle): its two ends only.
-    """
-    p = design.program.phases[i]
-    if p.kind == "dwell":
-        return np.array([0.0, 1.0])
-    u = np.linspace(0.0, 1.0, grid + 1)
-    bps = np.asarray(getattr(p.law, "breakpoints", ()), dtype=float)
-    bps = bps[(bps > 0) & (bps < 1)]
-    if len(bps) == 0:
-        return u
-    return np.unique(np.concatenate([u, bps, np.nextafter(bps, 0.0), np.nextafter(bps, 1.0)]))
-
-
-def _maximize(fun, u: np.ndarray, *, refine: bool = True) -> tuple[np.ndarray, np.ndarray]:
-    """Largest values of ``q`` smooth functions over sorted positions, refined between them.
-
-    Parameters
-    ----------
-    fun : callable
-        ``fun(x) -> (values, slopes)``, arrays of shape ``(q, len(x))``: the
-        functions at positions ``x`` and their derivatives (any positive
-        multiple of ``d/dx``).
-    u : ndarray, shape (n,)
-        Increasing positions covering the interval; the functions are smooth
-        between neighbouring positions.
-    refine : bool
-        Refine the local maxima between positions (else the grid's best).
-
-    Returns
-    -------
-    best, at : ndarray, shape (q,)
-        Largest value of each function and its position.
-
-    Notes
-    -----
-    Every pair of neighbouring positions where a function's slope turns from
-    positive to non-positive brackets a local maximum. All brackets of all
-    functions are refined together: each step evaluates ``fun`` once, at the
-    regula-falsi point on the slopes of every open bracket (the Illinois
-    variant: the slope of an end kept twice in a row is halved, so both ends
-    converge), at least ``U_TOL / 2`` inside it, and keeps the part where the
-    slope changes sign. A bracket closes at width ``U_TOL`` (or where the
-    slope is 0); there are at most ``MAX_STEPS`` steps. The best value
-    evaluated in a bracket replaces the grid's best if it is larger.
-    """
-    v, dv = fun(u)
-    rows = np.arange(len(v))
-    k = np.nanargmax(v, axis=1)
-    best, at = v[rows, k], u[k]
-    if not refine:
-        return best, at
-    row, j = np.nonzero((dv[:, :-1] > 0) & (dv[:, 1:] <= 0))
-    a, b = u[j], u[j + 1]
-    fa, fb = dv[row, j], dv[row, j + 1]
-    a = np.where(fb == 0, b, a)  # the slope vanishes at the right end: that is the maximum
-    top, top_u = np.full(len(j), -np.inf), a.copy()
-    kept = np.zeros(len(j), dtype=int)  # +1: a moved last, -1: b moved last
-    for _ in range(MAX_STEPS):
-        act = np.nonzero(b - a > U_TOL)[0]
-        if len(act) == 0:
-            break
-        A, B, FA, FB = a[act], b[act], fa[act], fb[act]
-        x = B - FB * (B - A) / (FB - FA)  # FA > 0 > FB
-        # at least U_TOL / 2 inside: a root within that of an end closes the bracket next step
-        x = np.clip(np.where(np.isfinite(x), x, 0.5 * (A + B)), A + U_TOL / 2, B - U_TOL / 2)
-        vx, dx = fun(x)
-        n = np.arange(len(act))
-        vx, dx = vx[row[act], n], dx[row[act], n]
-        better = vx > top[act]
-        top[act[better]], top_u[act[better]] = vx[better], x[better]
-        up, down = dx > 0, dx < 0
-        ia, ib, done = act[up], act[down], act[~(up | down)]  # slope 0 (or not a number): stop there
-        fb[ia[kept[ia] == 1]] *= 0.5
-        fa[ib[kept[ib] == -1]] *= 0.5
-        a[ia], fa[ia], kept[ia] = x[up], dx[up], 1
-        b[ib], fb[ib], kept[ib] = x[down], dx[down], -1
-        a[done] = b[done] = x[~(up | down)]
-    for q in rows:
-        mine = np.nonzero(row == q)[0]
-        if len(mine) and top[mine].max() > best[q]:
-            w = mine[np.argmax(top[mine])]
-            best[q], at[q] = top[w], top_u[w]
-    return best, at
 
 
 def _phase_maxima(design: CamDesign, centre: np.ndarray, grid: int, pressure=()) -> list[dict]:
@@ -395,8 +256,8 @@ def _phase_maxima(design: CamDesign, centre: np.ndarray, grid: int, pressure=())
     out = []
     for i, p in enumerate(prog.phases):
         what = ("convex", "concave") + (("pressure",) if i in pressure else ())
-        best, at = _maximize(lambda x: _phase_rates(design, centre, i, x, what), _grid(design, i, grid),
-                             refine=p.kind != "dwell")
+        best, at = maximize(lambda x: _phase_rates(design, centre, i, x, what), phase_positions(prog, i, grid),
+                            refine=p.kind != "dwell")
         out.append({w: (float(b), float(prog.starts[i] + a * p.angle)) for w, b, a in zip(what, best, at)})
     return out
 
@@ -424,7 +285,7 @@ def curvature_extremes(design: CamDesign, centre: np.ndarray, *, grid: int = 200
 
     The largest signed curvature ``kappa`` (and the largest ``-kappa``) is
     found per phase on ``grid + 1`` positions and refined where its analytic
-    derivative changes sign (:func:`_maximize`); ``rho = 1 / kappa``. Phase
+    derivative changes sign (:func:`cams.kinematics.extremum.maximize`); ``rho = 1 / kappa``. Phase
     joints where the pitch curve has a corner give radius 0 on their side.
     """
     return _curvature(design, centre, _phase_maxima(design, centre, grid))
@@ -447,8 +308,8 @@ def _curvature(design: CamDesign, centre: np.ndarray, maxima: list[dict]) -> Cur
         t1, t2 = end.d1[0], start.d1[0]
         cosang = np.dot(t1, t2) / (np.linalg.norm(t1) * np.linalg.norm(t2))
         if cosang < 1 - 1e-12:
-            at = float(prog.starts[i + 1] % (2 * np.pi))
-            if np.sign(_cross(t1, t2)) == -design.cam_sense:
+            at = float(prog.starts[i + 1] % TWO_PI)
+            if np.sign(cross(t1, t2)) == -design.cam_sense:
                 kmax, kat = np.inf, at
             elif cmax < np.inf:
                 cmax, cat = np.inf, at

@@ -13,8 +13,9 @@ sense of ``q`` (the rise):
   curve's outward normal ``n`` (the roller turns freely: no tangential force),
   whose generalized force is ``N |dA/dq| cos(gamma)``; ``gamma`` is the pressure
   angle (angle between ``n`` and the roller centre's direction of motion
-  during the rise, as in :mod:`cams.verify.pressure`), ``|dA/dq|`` the arm (m) of a
-  rocker or 1 for a translating follower;
+  during the rise; ``n`` and ``gamma`` are the kernel's,
+  :mod:`cams.kinematics.inversion`), ``|dA/dq|`` the arm (m) of a rocker or 1
+  for a translating follower;
 * the closing spring ``-(F0 + k q)``: preload ``F0`` at the near dwell and rate
   ``k`` (N and N/m, or N m and N m/rad for a rocker's torsional spring);
 * a constant external load ``-P`` (N or N m) opposing the rise (a weight, a
@@ -75,12 +76,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from cams.kinematics.extremum import maximize, phase_positions
+from cams.kinematics.inversion import contact_normal, invert, pressure_angle
+from cams.kinematics.vectors import cross
 from cams.model.design import CamDesign
 from cams.model.follower import Rocker
 from laws.errors import show_value
 from laws.errors import InputError
 from laws.errors import check_number as _num
-from laws.units import omega_to_rpm, rpm_to_omega
+from laws.units import TWO_PI, omega_to_rpm, rpm_to_omega
 
 __all__ = [
     "RigidImpact",
@@ -104,7 +108,6 @@ __all__ = [
     "jump_dict",
 ]
 
-TWO_PI = 2.0 * np.pi
 LENGTH_UNITS = {"mm": 1e-3}
 """Metres per length unit of a design or machine file: mm, the only unit the files take."""
 DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "journal_radius", "margin", "max_spring_force")
@@ -206,13 +209,17 @@ def _grid(samples: int) -> np.ndarray:
     return np.linspace(0.0, TWO_PI, int(samples), endpoint=False)
 
 
+def _si(design: CamDesign, dyn: FollowerDynamics) -> float:
+    """SI units of the follower coordinate ``q`` per unit of the program's ``s``: 1 (rocker, rad) or m per length unit."""
+    return 1.0 if isinstance(design.follower, Rocker) else dyn.length_unit
+
+
 def _kinematics(design: CamDesign, phi: np.ndarray, dyn: FollowerDynamics):
     """q, dq/dphi, d2q/dphi2 in SI and the arm |dA/dq| (m)."""
     mo = design.program.evaluate(phi)
-    if isinstance(design.follower, Rocker):
-        return mo.s, mo.ds, mo.d2s, design.follower.arm * dyn.length_unit
-    u = dyn.length_unit
-    return mo.s * u, mo.ds * u, mo.d2s * u, 1.0
+    u = _si(design, dyn)
+    arm = design.follower.arm * dyn.length_unit if isinstance(design.follower, Rocker) else 1.0
+    return mo.s * u, mo.ds * u, mo.d2s * u, arm
 
 
 @dataclass(frozen=True)
@@ -514,13 +521,11 @@ def cam_forces(
     f = design.follower
     mo = design.program.evaluate(phi)
     q, dq, d2q, arm = _kinematics(design, phi, dyn)
-    from cams.verify.pressure import contact_normal
-
-    n, e, r = contact_normal(design, centre, mo.s, mo.ds)
+    inv = invert(design, centre, phi, mo)
+    n = contact_normal(inv)
+    gamma = pressure_angle(inv)
+    cosg, sing = np.cos(gamma), np.sin(gamma)
     eps = design.cam_sense
-    cosg = np.clip(np.sum(n * e, axis=-1), -1.0, 1.0)
-    gamma = np.arccos(cosg)
-    sing = np.sqrt(np.maximum(1.0 - cosg**2, 0.0))
 
     mu = dyn.friction
     c = mu * dyn.journal_radius * dyn.length_unit if isinstance(f, Rocker) else mu * sing
@@ -534,8 +539,7 @@ def cam_forces(
         amp = np.where(denom > tiny, 1.0 / np.maximum(denom, tiny), np.inf)
     N = np.where(jammed, np.inf, need / np.maximum(denom, tiny))
     fric = -sgn * c * np.where(np.isfinite(N), N, 0.0)
-    cross = r[..., 0] * n[..., 1] - r[..., 1] * n[..., 0]
-    torque = eps * N * cross * dyn.length_unit
+    torque = eps * N * cross(inv.r, n) * dyn.length_unit
     force = N * (n[..., 0] + 1j * n[..., 1])
     return CamForces(
         phi=phi,
@@ -676,11 +680,14 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
 
     Contact is lost where ``m omega^2 d2q/dphi^2 + F0 + k q + P`` turns
     negative; only decelerations (``d2q < 0``) can pull the follower off, so
-    ``omega_jump^2 = min over d2q < 0 of (F0 + k q + P) / (m |d2q|)``, refined
-    around the grid's minimum by three 100-fold zooms. A velocity jump down
-    (:func:`rigid_impacts`) is an infinite deceleration: the jump speed is
-    then 0 (``at_impact``) and the value between the impacts is kept in
-    ``between_impacts_rpm``.
+    ``1 / omega_jump^2 = max of g = -m d2q/dphi^2 / (F0 + k q + P)``, the
+    pull-off per holding force, found per rise and return phase on a grid of
+    ``samples`` cam angles a turn and refined where its slope changes sign (the
+    kernel's search, :func:`cams.kinematics.extremum.maximize`; one-sided at
+    the phase ends, so a maximum on an acceleration jump is exact). A velocity
+    jump down (:func:`rigid_impacts`) is an infinite deceleration: the jump
+    speed is then 0 (``at_impact``) and the value between the impacts is kept
+    in ``between_impacts_rpm``.
 
     Parameters
     ----------
@@ -703,14 +710,8 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
     if dyn.spring is None:
         raise InputError("dynamics.spring_rate", "the jump speed needs a spring")
     phi = _grid(samples)
-
-    def ratio(p):
-        q, _, d2q, _ = _kinematics(design, np.atleast_1d(p), dyn)
-        hold = dyn.spring.force(q) + dyn.load
-        with np.errstate(divide="ignore"):
-            return np.where(d2q < 0, hold / (dyn.mass * np.abs(np.where(d2q < 0, d2q, 1.0))), np.inf), hold
-
-    r, hold = ratio(phi)
+    q = _kinematics(design, phi, dyn)[0]
+    hold = dyn.spring.force(q) + dyn.load
     if np.any(hold < 0):
         k = int(np.argmin(hold))
         raise InputError(
@@ -718,17 +719,28 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
             f"the spring and the load cannot hold the follower on the cam even at rest: "
             f"{hold[k]:.6g} at cam angle {np.degrees(phi[k]):.6g} deg; raise the preload",
         )
-    k = int(np.argmin(r))
-    best, at = float(r[k]), float(phi[k])
-    h = phi[1] - phi[0]
-    for _ in range(3):  # zoom in: the minimum may sit on an acceleration jump, where a smooth search fails
-        x = np.linspace(at - h, at + h, 201)
-        rx = ratio(x)[0]
-        j = int(np.argmin(rx))
-        if rx[j] < best:
-            best, at = float(rx[j]), float(x[j])
-        h = x[1] - x[0]
-    w = float(np.sqrt(best))
+    prog = design.program
+    si = _si(design, dyn)
+
+    def pull(i: int, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``g = -m q'' / (F0 + k q + P)`` in phase ``i`` and its derivative by the cam angle."""
+        mo = prog.evaluate_phase(i, u)
+        q, dq, d2q, d3q = mo.s * si, mo.ds * si, mo.d2s * si, mo.d3s * si
+        h = dyn.spring.force(q) + dyn.load
+        with np.errstate(divide="ignore", invalid="ignore"):
+            g = -dyn.mass * d2q / h
+            dg = -dyn.mass * (d3q * h - d2q * dyn.spring.rate * dq) / h**2
+        return g[None], dg[None]
+
+    best, at = 0.0, 0.0  # no deceleration: never pulled off (an infinite speed)
+    for i, p in enumerate(prog.phases):
+        if p.kind == "dwell":
+            continue
+        n = max(8, int(np.ceil(samples * p.angle / TWO_PI)))
+        top, u = maximize(lambda x: pull(i, x), phase_positions(prog, i, n))
+        if top[0] > best:
+            best, at = float(top[0]), float(prog.starts[i] + u[0] * p.angle)
+    w = float(np.sqrt(1.0 / best)) if best > 0 else np.inf
     impacts = rigid_impacts(design)
     down = [i for i in impacts if i.separation]
     if down:

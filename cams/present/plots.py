@@ -17,8 +17,9 @@ from pathlib import Path
 
 import numpy as np
 
+from cams.kinematics.inversion import invert_phase, pressure_angle, smallest_cam_radius, to_fixed_frame
 from cams.words import binding_text, phase_words
-from laws.units import rpm_to_omega
+from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
            "animate_profile", "save", "mark_failing", "A4_WIDTH_IN"]
@@ -160,8 +161,6 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
     ax.plot(*A0, "ko", ms=4)
     ax.annotate("A0", A0, textcoords="offset points", xytext=(4, -10))
     ax.plot(*result.centre, "o", color="#c53030", ms=6, label="cam centre O")
-    from cams.profile.roller import smallest_cam_radius
-
     ax.add_patch(Circle(result.centre, result.R0, fill=False, ls=":", color="#c53030",
                         label=_radii_label(result.R0, smallest_cam_radius(d, result.centre)[0])))
     if d.limits.centre_distance is not None and f.kind == "rocker":
@@ -191,11 +190,11 @@ def plot_motion(design, *, n: int = 721):
     :mod:`laws.diagnostics` reports them.
     """
     prog = design.program
-    phi = np.linspace(0.0, 2 * np.pi, n)
+    phi = np.linspace(0.0, TWO_PI, n)
     # evaluate inside each phase, both ends included, so joints show their jumps
     xs, ys = [], []
     for i, p in enumerate(prog.phases):
-        u = np.linspace(0.0, 1.0, max(int(n * p.angle / (2 * np.pi)), 8))
+        u = np.linspace(0.0, 1.0, max(int(n * p.angle / TWO_PI), 8))
         m = prog.evaluate_phase(i, u)
         xs.append(prog.starts[i] + u * p.angle)
         ys.append(np.stack([m.s, m.ds, m.d2s, m.d3s]))
@@ -242,9 +241,7 @@ def plot_motion(design, *, n: int = 721):
 
 
 def plot_pressure(result, *, n: int = 721):
-    """Pressure angle against the cam angle with the limits drawn (from the finished design)."""
-    from cams.verify.pressure import pressure_angle
-
+    """Pressure angle against the cam angle with the limits drawn (from the finished design, the kernel's)."""
     d = result.design
     prog = d.program
     fig = _figure(h=3.8)
@@ -252,8 +249,8 @@ def plot_pressure(result, *, n: int = 721):
     for i, p in enumerate(prog.phases):
         if p.kind == "dwell":
             continue
-        u = np.linspace(0.0, 1.0, max(int(n * p.angle / (2 * np.pi)), 8))
-        g = pressure_angle(d, result.centre, i, u)
+        u = np.linspace(0.0, 1.0, max(int(n * p.angle / TWO_PI), 8))
+        g = pressure_angle(invert_phase(d, result.centre, i, u))
         ax.plot(np.degrees(prog.starts[i] + u * p.angle), np.degrees(g),
                 color="#2f855a" if p.kind == "rise" else "#b7791f", lw=1.3, label=p.kind)
     lim = d.limits
@@ -334,17 +331,9 @@ def plot_curvature(solution, *, n: int = 721):
     return fig
 
 
-def _turned(centre, sense: int, pts: np.ndarray, phi: float) -> np.ndarray:
-    """Cam-frame points turned by the cam angle ``phi`` in the cam's ``sense`` and placed at the cam centre
-    (the follower's fixed frame)."""
-    a = sense * phi
-    c, s = np.cos(a), np.sin(a)
-    return np.asarray(centre) + pts @ np.array([[c, -s], [s, c]]).T
-
-
 def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
-    """:func:`_turned` for a roller cam's profile (its centre and sense)."""
-    return _turned(profile.centre, profile.cam_sense, pts, phi)
+    """A roller cam's profile points in the fixed frame at cam angle ``phi`` (its centre and sense)."""
+    return to_fixed_frame(pts, profile.centre, profile.cam_sense, phi)
 
 
 def _draw_flat_mechanism(ax, cam, profile, phi: float):
@@ -354,7 +343,7 @@ def _draw_flat_mechanism(ax, cam, profile, phi: float):
     d = cam.design
     sol = cam.solution
     centre = sol.centre
-    work = _turned(centre, d.cam_sense, profile.work, phi)
+    work = to_fixed_frame(profile.work, centre, d.cam_sense, phi)
     ax.fill(work[:, 0], work[:, 1], fc="#e2e8f0", ec="#1a202c", lw=1.2, label="cam profile")
     ax.add_patch(Circle(centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
                         label=_radii_label(profile.R0, None)))
@@ -363,8 +352,8 @@ def _draw_flat_mechanism(ax, cam, profile, phi: float):
     margin = 0.1 * max(hi - lo, 1e-9)
     ends = origin + np.outer([lo - margin, hi + margin], direction)
     ax.plot(ends[:, 0], ends[:, 1], color="#c53030", lw=3, solid_capstyle="butt", label="flat face")
-    k = int(np.argmin(np.abs((profile.phi - phi + np.pi) % (2 * np.pi) - np.pi)))
-    contact = _turned(centre, d.cam_sense, profile.work[k:k + 1], profile.phi[k])[0]
+    k = int(np.argmin(np.abs((profile.phi - phi + np.pi) % TWO_PI - np.pi)))
+    contact = to_fixed_frame(profile.work[k:k + 1], centre, d.cam_sense, profile.phi[k])[0]
     ax.plot(*contact, "o", color="#c53030", ms=3)
     if d.follower.kind == "translating":
         top = origin + np.array([0.0, 0.6 * d.scale])
@@ -402,8 +391,6 @@ def _draw_mechanism(ax, cam, profile, phi: float):
         outer = _cam_in_fixed_frame(profile, profile.outer, phi)
         ax.plot(outer[:, 0], outer[:, 1], color="#1a202c", lw=1.2, label="groove, outer wall")
     ax.plot(pitch[:, 0], pitch[:, 1], color="#2b6cb0", lw=0.8, ls="--", label="pitch curve")
-    from cams.profile.roller import smallest_cam_radius
-
     ax.add_patch(Circle(profile.centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
                         label=_radii_label(profile.R0, smallest_cam_radius(d, profile.centre)[0])))
     m = d.program.evaluate(np.array([phi]))
@@ -461,7 +448,7 @@ def _animation_box(cam, profile) -> tuple[np.ndarray, np.ndarray]:
         sol = cam.solution
         centre = sol.centre
         reach = float(np.max(np.linalg.norm(profile.work, axis=1)))
-        phis = np.linspace(0, 2 * np.pi, 145)
+        phis = np.linspace(0, TWO_PI, 145)
         o, t = sol.face_line(phis)
         lo_f, hi_f = sol.face_range
         margin = 0.1 * max(hi_f - lo_f, 1e-9)
@@ -496,7 +483,7 @@ def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = 
 
     def frame(k):
         ax.clear()
-        _draw(ax, cam, profile, 2 * np.pi * k / frames)
+        _draw(ax, cam, profile, TWO_PI * k / frames)
         ax.set_xlim(lo[0], hi[0])
         ax.set_ylim(lo[1], hi[1])
         ax.set_title(f"φ = {360 * k / frames:.0f}°")

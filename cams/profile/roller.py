@@ -1,40 +1,24 @@
-"""Cam profiles: pitch curve, working profile(s), radius of curvature, sampling.
+"""Cam profiles of roller and knife-edge followers: working profile(s), sampling, options.
 
-Frames and signs
-----------------
-* Fixed frame: the follower's frame of :mod:`cams.model.follower`; the cam centre O
-  is given in it (``SolveResult.centre``).
+The geometry (the inversion: pitch curve, its derivatives, outward normal,
+signed curvature) is the kernel's, :mod:`cams.kinematics.inversion`, whose
+frames and signs hold here:
+
 * Cam frame: origin at the cam centre, axes parallel to the fixed frame when
-  the cam is at ``phi = 0``, turning with the cam. A point with cam-frame
-  coordinates ``X`` is at ``O + R(eps phi) X`` in the fixed frame, with
-  ``eps = design.cam_sense`` (+1 counter-clockwise).
-* Pitch curve (roller-centre path on the cam), by inversion of the motion::
-
-      P(phi) = R(-eps phi) (A(s(phi)) - O)
-
-  It runs round the cam centre in the sense ``-eps`` as ``phi`` grows.
-  Its derivatives with respect to the cam angle are analytic::
-
-      P'   = R(-eps phi) (r' - eps J r)
-      P''  = R(-eps phi) (r'' - 2 eps J r' - r)
-      P''' = R(-eps phi) (r''' - 3 eps J r'' - 3 r' + eps J r)
-
-  with ``r = A - O``, ``r' = s' dA/ds``, ``r'' = s'' dA/ds + s'^2 d2A/ds2``,
-  ``r''' = s''' dA/ds + 3 s' s'' d2A/ds2 + s'^3 d3A/ds3`` and ``J`` the
-  rotation by +90 degrees. They are computed on the ``x`` and ``y``
-  components (:func:`_inversion`), vectorized over the cam angles.
-* Outward normal ``n``: the unit normal of the pitch curve pointing away from
-  the cam's material, ``n = R(eps 90 deg) P' / |P'|``.
-* Signed curvature ``kappa = -eps (P' x P'') / |P'|^3`` and radius of
-  curvature ``rho = 1 / kappa``: **positive where the curve is convex** (centre
-  of curvature on the cam's side), negative where concave. On a dwell the
-  pitch curve is a circle of radius ``|A - O|`` and ``rho = +|A - O|``.
+  the cam is at ``phi = 0``, turning with the cam (``eps = design.cam_sense``).
+* Pitch curve ``P(phi) = R(-eps phi) (A(s(phi)) - O)``; outward normal ``n``
+  (away from the cam's material); signed curvature ``kappa`` and radius
+  ``rho = 1 / kappa``, **positive where the curve is convex**.
 * Working profile (roller follower): the envelope of the roller circles, the
   inner offset ``W = P - r_roller n`` with ``rho_w = rho - r_roller``. For a
   groove (form closure) the outer wall ``P + r_roller n`` has
   ``rho_o = rho + r_roller`` (same sign convention: positive when its centre
   of curvature lies on the cam centre's side). A knife edge (roller radius 0)
   has working profile = pitch curve.
+
+``PitchGeometry``, ``pitch_phase``, ``pitch_curve``, ``offset_radius`` and
+``smallest_cam_radius`` are the kernel's, re-exported here (their former home)
+for one release.
 
 Angles are radians; lengths are the design's unit (mm).
 """
@@ -45,10 +29,22 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from cams.kinematics.inversion import (
+    PitchGeometry,
+    curvature,
+    invert,
+    offset_curvature,
+    offset_radius,
+    outward_normal,
+    pitch_curve,
+    pitch_phase,
+    smallest_cam_radius,
+)
+from cams.kinematics.vectors import cross, xy
 from cams.model.design import CamDesign
-from cams.model.follower import Rocker, Translating
 from laws.errors import InputError
 from laws.program import Motion
+from laws.units import TWO_PI
 
 __all__ = [
     "ProfileSizeError",
@@ -88,243 +84,6 @@ class ProfileSizeError(InputError):
     --tolerance``); where a command only assesses a sized cam it makes the cam
     not buildable at that tolerance (:func:`cams.assess.assess_cam`).
     """
-
-
-def _xy(x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """Vectors of shape ``x.shape + (2,)`` from their components ``x`` and ``y``."""
-    out = np.empty(np.shape(x) + (2,))
-    out[..., 0] = x
-    out[..., 1] = y
-    return out
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-
-@dataclass(frozen=True, eq=False)
-class _Inversion:
-    """Pitch-curve derivatives by inversion, as components, before the turn into the cam frame.
-
-    Every field is a pair ``(x, y)`` of arrays in the orientation of the fixed
-    frame; turned by ``R(-eps phi)`` they give the cam-frame vectors.
-
-    Attributes
-    ----------
-    r : tuple of ndarray
-        ``A - O``, length unit (turned: the pitch point ``P``).
-    w1, w2 : tuple of ndarray
-        Turned: ``dP/dphi`` (length per radian) and ``d2P/dphi2`` (per radian^2).
-    w3 : tuple of ndarray or None
-        Turned: ``d3P/dphi3`` (per radian^3); ``None`` unless asked for.
-    t, t2 : tuple of ndarray
-        The follower's ``dA/ds`` and ``d2A/ds2``, fixed frame.
-    """
-
-    r: tuple[np.ndarray, np.ndarray]
-    w1: tuple[np.ndarray, np.ndarray]
-    w2: tuple[np.ndarray, np.ndarray]
-    w3: tuple[np.ndarray, np.ndarray] | None
-    t: tuple[np.ndarray, np.ndarray]
-    t2: tuple[np.ndarray, np.ndarray]
-
-
-def _inversion(design: CamDesign, centre: np.ndarray, m, *, third: bool = False) -> _Inversion:
-    """Derivatives of the pitch curve ``P = R(-eps phi) r``, ``r = A(s(phi)) - O``, as components.
-
-    With ``D v = v' - eps J v`` (a derivative seen from the turning cam, ``J``
-    the rotation by +90 degrees), ``P^(k) = R(-eps phi) D^k r``::
-
-        w1 = D r  = r' - eps J r
-        w2 = D w1 = r'' - 2 eps J r' - r
-        w3 = D w2 = r''' - 3 eps J r'' - 3 r' + eps J r
-
-    where ``r' = s' T``, ``r'' = s'' T + s'^2 T2``,
-    ``r''' = s''' T + 3 s' s'' T2 + s'^3 T3`` and ``T, T2, T3`` are ``dA/ds``
-    and its derivatives. A rocker's roller centre turns about the pivot, so
-    ``T2 = -(A - pivot)`` and ``T3 = -T``; a translating follower's moves on a
-    line, ``T2 = T3 = 0``.
-
-    Parameters
-    ----------
-    design : CamDesign
-    centre : ndarray, shape (2,)
-        Cam centre O, fixed frame, length unit.
-    m : laws.program.Motion
-        Follower displacement ``s`` and its derivatives by the cam angle.
-    third : bool
-        Also compute ``w3`` (from ``m.d3s``).
-
-    Returns
-    -------
-    _Inversion
-    """
-    f = design.follower
-    eps = design.cam_sense
-    A, T, _ = f.frame(np.asarray(m.s, dtype=float))
-    tx, ty = T[..., 0], T[..., 1]
-    if isinstance(f, Rocker):
-        px, py = f.pivot
-        bx, by = px - A[..., 0], py - A[..., 1]
-        cx, cy = -tx, -ty
-    elif isinstance(f, Translating):
-        bx = by = cx = cy = np.zeros_like(tx)
-    else:  # pragma: no cover
-        raise InputError("follower.kind", "profiles are defined for rocker and translating followers")
-    rx, ry = A[..., 0] - centre[0], A[..., 1] - centre[1]
-    s1, s2 = m.ds, m.d2s
-    r1x, r1y = s1 * tx, s1 * ty
-    q = s1**2
-    r2x, r2y = s2 * tx + q * bx, s2 * ty + q * by
-    w1 = (r1x + eps * ry, r1y - eps * rx)
-    w2 = (r2x + 2 * eps * r1y - rx, r2y - 2 * eps * r1x - ry)
-    w3 = None
-    if third:
-        k2, k3 = 3 * s1 * s2, s1**3
-        r3x, r3y = m.d3s * tx + k2 * bx + k3 * cx, m.d3s * ty + k2 * by + k3 * cy
-        w3 = (r3x + 3 * eps * r2y - 3 * r1x - eps * ry, r3y - 3 * eps * r2x - 3 * r1y + eps * rx)
-    return _Inversion((rx, ry), w1, w2, w3, (tx, ty), (bx, by))
-
-
-@dataclass(frozen=True, eq=False)
-class PitchGeometry:
-    """Pitch-curve points and derivatives at given cam angles, cam frame.
-
-    Attributes
-    ----------
-    phi : ndarray, shape (n,)
-        Cam angles, radians.
-    point : ndarray, shape (n, 2)
-        ``P(phi)``, cam frame, length unit.
-    d1, d2 : ndarray, shape (n, 2)
-        ``dP/dphi`` (length per radian) and ``d2P/dphi2`` (per radian^2).
-    normal : ndarray, shape (n, 2)
-        Outward unit normal (away from the cam's material), cam frame.
-    kappa : ndarray, shape (n,)
-        Signed curvature, 1/length, positive where convex.
-    s : ndarray, shape (n,)
-        Follower displacement (radians or length).
-    rise_dir : ndarray, shape (n, 2)
-        Unit direction of the roller centre's rise (``dA/ds`` normalized),
-        fixed frame.
-    """
-
-    phi: np.ndarray
-    point: np.ndarray
-    d1: np.ndarray
-    d2: np.ndarray
-    normal: np.ndarray
-    kappa: np.ndarray
-    s: np.ndarray
-    rise_dir: np.ndarray
-
-    @property
-    def rho(self) -> np.ndarray:
-        """Signed radius of curvature (length, positive convex; ``inf`` where straight)."""
-        with np.errstate(divide="ignore"):
-            return np.where(self.kappa == 0, np.inf, 1.0 / np.where(self.kappa == 0, 1.0, self.kappa))
-
-    def offset(self, distance: float) -> np.ndarray:
-        """Points offset by ``distance`` along the outward normal (negative: toward the cam)."""
-        return self.point + distance * self.normal
-
-
-def _pitch_values(design: CamDesign, centre: np.ndarray, phi: np.ndarray, m):
-    """Pitch point and outward unit normal (cam frame, as components), signed curvature.
-
-    Returns ``inv, (c, s), (px, py), (nx, ny), kappa`` with ``inv`` the
-    :class:`_Inversion`, ``c, s`` the cosine and sine of the turn ``-eps phi``
-    into the cam frame, and ``kappa`` in 1/length (positive convex).
-    """
-    eps = design.cam_sense
-    inv = _inversion(design, np.asarray(centre, dtype=float), m)
-    (rx, ry), (wx, wy), (vx, vy) = inv.r, inv.w1, inv.w2
-    speed = np.sqrt(wx * wx + wy * wy)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        kappa = -eps * (wx * vy - wy * vx) / speed**3
-        nx, ny = -eps * wy / speed, eps * wx / speed
-    c, s = np.cos(-eps * phi), np.sin(-eps * phi)
-    return inv, (c, s), (c * rx - s * ry, s * rx + c * ry), (c * nx - s * ny, s * nx + c * ny), kappa
-
-
-def _geometry(design: CamDesign, centre: np.ndarray, phi: np.ndarray, m) -> PitchGeometry:
-    inv, (c, s), (px, py), (nx, ny), kappa = _pitch_values(design, centre, phi, m)
-    (wx, wy), (vx, vy), (tx, ty) = inv.w1, inv.w2, inv.t
-    tn = np.sqrt(tx * tx + ty * ty)
-    return PitchGeometry(
-        phi=phi,
-        point=_xy(px, py),
-        d1=_xy(c * wx - s * wy, s * wx + c * wy),
-        d2=_xy(c * vx - s * vy, s * vx + c * vy),
-        normal=_xy(nx, ny),
-        kappa=kappa,
-        s=np.asarray(m.s, dtype=float),
-        rise_dir=_xy(tx / tn, ty / tn),
-    )
-
-
-def pitch_phase(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndarray) -> PitchGeometry:
-    """Pitch curve inside one phase at normalized positions ``u`` in [0, 1].
-
-    Values at the phase ends are the one-sided limits from inside the phase
-    (``laws.program.Program.evaluate_phase``), so a corner or a jump of the
-    curvature at a phase joint is seen from both sides.
-
-    Parameters
-    ----------
-    design : CamDesign
-    centre : array_like, shape (2,)
-        Cam centre O, fixed frame, length unit.
-    phase : int
-        Phase index in ``design.program.phases``.
-    u : array_like, shape (n,)
-
-    Returns
-    -------
-    PitchGeometry
-        In the cam frame, at ``phi = starts[phase] + u * angle``.
-    """
-    prog = design.program
-    u = np.atleast_1d(np.asarray(u, dtype=float))
-    phi = prog.starts[phase] + u * prog.phases[phase].angle
-    return _geometry(design, centre, phi, prog.evaluate_phase(phase, u))
-
-
-def pitch_curve(design: CamDesign, centre: np.ndarray, phi: np.ndarray) -> PitchGeometry:
-    """Pitch curve at cam angles ``phi`` (radians, periodic), cam frame.
-
-    At a phase joint the later phase's values are used.
-
-    Examples
-    --------
-    A centric translating follower, cam centre 30 below the roller's start,
-    the cam turning counter-clockwise: at half a turn the roller, risen by 10,
-    sits 40 from the centre on the far side of the cam.
-
-    >>> import numpy as np
-    >>> from cams.model.design import CamDesign, Limits
-    >>> from cams.model.follower import Translating
-    >>> from laws.program import Phase, Program
-    >>> from laws.registry import get_law
-    >>> cyc = get_law("cycloidal")
-    >>> prog = Program((Phase("rise", np.pi, cyc), Phase("return", np.pi, cyc)), 10.0)
-    >>> d = CamDesign(Translating(roller_radius=5.0), prog, Limits(np.radians(30)))
-    >>> g = pitch_curve(d, np.array([0.0, -30.0]), np.array([0.0, np.pi]))
-    >>> g.point.round(9).tolist(), g.rho.round(9).tolist()
-    ([[0.0, 30.0], [0.0, -40.0]], [30.0, 40.0])
-    """
-    phi = np.atleast_1d(np.asarray(phi, dtype=float))
-    return _geometry(design, centre, phi, design.program.evaluate(phi))
-
-
-def offset_radius(rho: np.ndarray, distance: float) -> np.ndarray:
-    """Radius of curvature of an offset curve (length, positive convex).
-
-    ``distance`` is measured along the outward normal: ``-r_roller`` for the
-    working profile (``rho_w = rho - r_roller``), ``+r_roller`` for a
-    groove's outer wall (``rho_o = rho + r_roller``).
-    """
-    return np.asarray(rho, dtype=float) + distance
 
 
 @dataclass(frozen=True)
@@ -541,57 +300,6 @@ def _polyline_min_radius(pts: np.ndarray) -> float:
     return float(np.min(np.linalg.norm(q, axis=1)))
 
 
-def smallest_cam_radius(design: CamDesign, centre: np.ndarray, *, grid: int = 512) -> tuple[float, float]:
-    """The cam's own smallest radius: the working profile's nearest point to the cam centre.
-
-    R0 is the pitch curve's base radius (cam centre to roller centre at the
-    near dwell); the cam itself is smaller by the roller. The working profile
-    is the inner offset ``P - r n`` of the pitch curve, so its distance from
-    the centre is ``min |P| - r``, reached where ``|P|`` is smallest (there the
-    normal is radial); ``|P| = |A - O|`` is scanned on ``grid`` steps per phase
-    and the minimum of each phase that can hold the smallest (within twice its
-    largest step of the scan's lowest) refined by six tenfold zooms.
-
-    Parameters
-    ----------
-    design : CamDesign
-    centre : array_like, shape (2,)
-        Cam centre O in the follower's fixed frame, length unit.
-    grid : int, optional
-        Steps per phase of the scan.
-
-    Returns
-    -------
-    radius, phi : float
-        ``min |P| - roller_radius`` (length; <= 0 when the roller reaches the
-        centre: no cam) and the cam angle where it is reached (radians). A
-        knife edge gives the pitch curve's smallest radius.
-    """
-    u = np.linspace(0.0, 1.0, grid + 1)
-    scans = [np.linalg.norm(pitch_phase(design, centre, i, u).point, axis=1) for i in range(len(design.program.phases))]
-    lowest = min(float(d.min()) for d in scans)
-    best, best_phi = np.inf, 0.0
-    for i, d in enumerate(scans):
-        # between two samples |P| falls below the lower one by less than the largest step of the scan (twice
-        # that, to be safe): only the phases that can hold the minimum are refined
-        if d.min() > lowest + 2.0 * float(np.max(np.abs(np.diff(d)))):
-            continue
-        k = int(np.argmin(d))
-        bu, bd = u[k], d[k]
-        lo, hi = u[max(k - 1, 0)], u[min(k + 1, grid)]
-        for _ in range(6):
-            x = np.linspace(lo, hi, 21)
-            dx = np.linalg.norm(pitch_phase(design, centre, i, x).point, axis=1)
-            j = int(np.argmin(dx))
-            if dx[j] < bd:
-                bu, bd = float(x[j]), float(dx[j])
-            lo, hi = x[max(j - 1, 0)], x[min(j + 1, 20)]
-        if bd < best:
-            best = bd
-            best_phi = float(design.program.starts[i] + bu * design.program.phases[i].angle)
-    return float(best - design.follower.roller_radius), best_phi
-
-
 def default_bore_radius(profile: Profile) -> float:
     """Default bore radius: ``0.3 R0``, capped at 0.8 of the working profile's smallest radius.
 
@@ -617,13 +325,13 @@ def _curves(design: CamDesign, centre, ph: np.ndarray, u: np.ndarray, r: float, 
     prog = design.program
     angles = np.array([p.angle for p in prog.phases])
     phi = prog.starts[ph] + u * angles[ph]
-    _, _, (px, py), (nx, ny), kappa = _pitch_values(design, centre, phi, _motion(prog, ph, u))
-    xs, ys, ks = [px], [py], [np.abs(kappa)]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        for d in ([-r] if r > 0 else []) + ([r] if groove else []):
-            xs.append(px + d * nx)
-            ys.append(py + d * ny)
-            ks.append(np.abs(kappa / (1.0 + d * kappa)))
+    inv = invert(design, centre, phi, _motion(prog, ph, u))
+    P, n, kappa = inv.point, outward_normal(inv), curvature(inv)
+    xs, ys, ks = [P[:, 0]], [P[:, 1]], [np.abs(kappa)]
+    for d in ([-r] if r > 0 else []) + ([r] if groove else []):
+        xs.append(P[:, 0] + d * n[:, 0])
+        ys.append(P[:, 1] + d * n[:, 1])
+        ks.append(np.abs(offset_curvature(kappa, d)))
     return np.array(xs), np.array(ys), np.array(ks)
 
 
@@ -698,14 +406,14 @@ def _sample(design: CamDesign, centre, tol: float, r: float, groove: bool) -> li
 def _corner_arc(P: np.ndarray, n1: np.ndarray, n2: np.ndarray, dist: float, tol: float) -> np.ndarray:
     """Points of the circle of radius ``|dist|`` about ``P`` from ``dist n1`` to ``dist n2`` (short way), ends excluded."""
     a1, a2 = np.arctan2(n1[1], n1[0]), np.arctan2(n2[1], n2[0])
-    da = (a2 - a1 + np.pi) % (2 * np.pi) - np.pi
+    da = (a2 - a1 + np.pi) % TWO_PI - np.pi
     rr = abs(dist)
     step = 2 * np.arccos(max(1.0 - tol / rr, -1.0)) if rr > tol else np.pi
     k = int(np.ceil(abs(da) / step))
     if k <= 1:
         return np.empty((0, 2))
     t = a1 + da * np.arange(1, k) / k
-    return P + dist * _xy(np.cos(t), np.sin(t))
+    return P + dist * xy(np.cos(t), np.sin(t))
 
 
 def build_profile(
@@ -814,7 +522,7 @@ def _joint_rows(design: CamDesign, centre, i: int, r: float, groove: bool, tol: 
     n1, n2 = end.normal[0], start.normal[0]
     if not np.linalg.norm(n1 - n2) > 1e-12:
         return None
-    convex = np.sign(_cross(end.d1[0], start.d1[0])) == -design.cam_sense
+    convex = np.sign(cross(end.d1[0], start.d1[0])) == -design.cam_sense
     P = start.point[0]
     arc_w = np.empty((0, 2)) if convex else _corner_arc(P, n1, n2, -r, tol)
     arc_o = _corner_arc(P, n1, n2, r, tol) if (groove and convex) else np.empty((0, 2))

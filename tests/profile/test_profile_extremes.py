@@ -1,5 +1,7 @@
 """cams.checks.profile: the vectorized search for the largest curvature and pressure angle.
 
+(The search itself, :func:`cams.kinematics.extremum.maximize`, on known functions: tests/kinematics.)
+
 The search (a grid per phase, then every bracket of a local maximum refined
 together on the analytic derivative) is compared with a brute force of a
 million positions per phase that uses the values only, and its array
@@ -18,8 +20,9 @@ import numpy as np
 import pytest
 
 import cams.checks.profile as checks
-from cams.checks.profile import MAX_STEPS, _maximize, _phase_maxima, _phase_rates, check_profile
+from cams.checks.profile import _phase_maxima, _phase_rates, check_profile
 from cams.io.designfile import design_from_dict
+from cams.kinematics.extremum import MAX_STEPS
 from cams.profile.roller import pitch_phase
 
 DENSE = 1_000_000
@@ -121,30 +124,6 @@ def test_analytic_slopes_match_finite_differences(name, sense):
         scale = np.abs(dv).max(axis=1, keepdims=True) + 1e-12
         assert np.allclose(dv, num, rtol=1e-5, atol=1e-6 * scale), (name, i)
         assert np.allclose(v[2], checks.pressure_from_profile(design, O, i, u), atol=1e-14)
-
-
-def test_maximize_finds_known_maxima_in_few_steps():
-    """Two functions on [0, 2]: ``sin(7x) exp(-x)`` and a rising line.
-
-    The first has local maxima at ``(atan 7 + 2 k pi) / 7``, k = 0, 1, 2, all
-    three refined together, one array of the open brackets a step, the
-    largest kept; the line's maximum is the end of the grid.
-    """
-    calls = []
-
-    def fun(x):
-        calls.append(len(x))
-        e = np.exp(-x)
-        return (np.array([np.sin(7 * x) * e, x]),
-                np.array([(7 * np.cos(7 * x) - np.sin(7 * x)) * e, np.ones_like(x)]))
-
-    best, at = _maximize(fun, np.linspace(0.0, 2.0, 101))
-    x0 = np.arctan(7.0) / 7  # the largest peak
-    assert at[0] == pytest.approx(x0, abs=1e-12)
-    assert best[0] == pytest.approx(np.sin(7 * x0) * np.exp(-x0), rel=1e-15)
-    assert (best[1], at[1]) == (2.0, 2.0)
-    assert calls[0] == 101 and calls[1] == 3 and all(n <= 3 for n in calls[2:])
-    assert len(calls) - 1 <= 8
 
 
 @pytest.mark.parametrize("name", NAMES)
