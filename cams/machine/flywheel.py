@@ -59,13 +59,14 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from laws.errors import show_value
-from laws.errors import InputError, check_option
-from laws.units import omega_to_rpm, rpm_to_omega  # rpm_to_omega re-exported (cams.machine.flywheel.rpm_to_omega)
+from laws.errors import InputError, check_option, show_value
+from laws.units import (  # rpm_to_omega re-exported (cams.machine.flywheel.rpm_to_omega)
+    omega_to_rpm,
+    rpm_to_omega,
+)
 
 __all__ = ["FlywheelResult", "flywheel", "INTERPOLATIONS", "rpm_to_omega"]
 
-TWO_PI = 2.0 * np.pi
 INTERPOLATIONS = ("linear", "spline")
 
 

@@ -45,20 +45,31 @@ from cams.io.files import check_document, check_keys, read_toml
 from cams.io.files import toml_number as _num
 from cams.io.files import toml_table as _table
 from cams.machine.kinetostatics.loads import (
-    G,
     WINDOWS,
     ConstantFriction,
     ForceOptions,
     ForceSpec,
     Friction,
+    G,
     GasPressure,
     LinkMass,
     Resistance,
 )
 from cams.machine.kinetostatics.model import message_of, pinned_cg_message
-from cams.machine.timing import CuttingZone, Drive, MachineSpec, Timing, check_follower_direction
+from cams.machine.linkage.machines import (
+    MACHINES,
+    CrankSlider,
+    SlottedLeverPump,
+    SlottingMachine,
+)
+from cams.machine.timing import (
+    CuttingZone,
+    Drive,
+    MachineSpec,
+    Timing,
+    check_follower_direction,
+)
 from cams.model.follower import rotation_word, sense_of
-from cams.machine.linkage.machines import MACHINES, CrankSlider, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError, check_number, check_option, show_value
 
 __all__ = ["load_machine", "machine_from_dict", "force_spec_from_dict", "LINKAGE_TYPES", "FORCES_KEYS"]

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from cams.machine.kinetostatics.coupling import CAM_ANGLE, CYCLE_ANGLE
+from laws.units import TWO_PI
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -30,7 +31,6 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["cycle_diagram_figure", "forces_figure", "hodograph_figure", "flywheel_figure", "cam_forces_figure",
            "machine_figures", "write_machine_plots"]
 
-TWO_PI = 2.0 * np.pi
 
 
 def _figure(figsize: tuple[float, float]) -> Figure:

@@ -68,22 +68,37 @@ mm); forces in N, moments in N m (counter-clockwise positive), masses in kg,
 moments of inertia in kg m^2, the crank's speed from the machine's rpm.
 """
 
+from cams.machine.kinetostatics.coupling import (
+    CAM_ANGLE,
+    CYCLE_ANGLE,
+    MachineForces,
+    machine_forces,
+)
 from cams.machine.kinetostatics.loads import (
-    G,
     WINDOWS,
     ConstantFriction,
     ForceOptions,
     ForceSpec,
     Friction,
+    G,
     GasPressure,
     LinkMass,
     Resistance,
     cycle_turns,
 )
-from cams.machine.kinetostatics.model import GUIDED, JOINTS, LINKS, PINNED, AppliedLoad, Body, Joint, Model, build_model
+from cams.machine.kinetostatics.model import (
+    GUIDED,
+    JOINTS,
+    LINKS,
+    PINNED,
+    AppliedLoad,
+    Body,
+    Joint,
+    Model,
+    build_model,
+)
 from cams.machine.kinetostatics.result import ForceResult
 from cams.machine.kinetostatics.solve import analyse_forces, solve_model
-from cams.machine.kinetostatics.coupling import CAM_ANGLE, CYCLE_ANGLE, MachineForces, machine_forces
 
 __all__ = [
     "LinkMass",

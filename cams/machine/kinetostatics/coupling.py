@@ -16,10 +16,10 @@ from cams.machine.kinetostatics.loads import cycle_turns
 from cams.machine.kinetostatics.result import ForceResult
 from cams.machine.kinetostatics.solve import analyse_forces
 from laws.errors import InputError
+from laws.units import TWO_PI
 
 __all__ = ["MachineForces", "machine_forces", "CYCLE_ANGLE", "CAM_ANGLE"]
 
-TWO_PI = 2.0 * np.pi
 
 
 @dataclass(frozen=True, eq=False)

@@ -13,11 +13,11 @@ import numpy as np
 
 from laws.errors import InputError, check_option, show_value
 from laws.errors import check_number as _num
+from laws.units import TWO_PI
 
 __all__ = ["LinkMass", "Friction", "GasPressure", "Resistance", "ConstantFriction", "Load", "ForceSpec", "ForceOptions",
            "cycle_turns", "check_table", "WINDOWS", "G"]
 
-TWO_PI = 2.0 * np.pi
 
 G = 9.80665
 """Standard gravity, m/s^2."""

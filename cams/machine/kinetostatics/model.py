@@ -30,11 +30,10 @@ from cams.machine.linkage.machines import MACHINES
 from cams.machine.linkage.primitives import Angle, Point
 from laws.errors import InputError, show_value
 from laws.errors import check_number as _num
-from laws.units import rpm_to_omega
+from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["Body", "Joint", "AppliedLoad", "Model", "build_model", "LINKS", "JOINTS", "GUIDED", "PINNED", "message_of", "pinned_cg_message"]
 
-TWO_PI = 2.0 * np.pi
 
 LINKS = {kind: cls.links for kind, cls in MACHINES.items()}
 """Moving links of each machine kind (seed 003: 1..5; seed 002: 1..3; seed 000: 1..5; seed 004: 1..5), as the machines declare them."""

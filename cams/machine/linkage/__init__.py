@@ -10,7 +10,13 @@
 The ready-made machines of the seeds live in :mod:`cams.machine.linkage.machines`.
 """
 
-from cams.machine.linkage.analysis import WORKING, Machine, StrokeReport, analyse, dead_positions
+from cams.machine.linkage.analysis import (
+    WORKING,
+    Machine,
+    StrokeReport,
+    analyse,
+    dead_positions,
+)
 from cams.machine.linkage.primitives import (
     Angle,
     AssemblyError,

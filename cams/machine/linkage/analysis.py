@@ -22,13 +22,12 @@ from typing import Protocol
 import numpy as np
 from scipy.optimize import brentq
 
-from laws.errors import InfeasibleError, check_option
-
 from cams.machine.linkage.primitives import Slide
+from laws.errors import InfeasibleError, check_option
+from laws.units import TWO_PI
 
 __all__ = ["Machine", "StrokeReport", "dead_positions", "analyse", "WORKING"]
 
-TWO_PI = 2 * np.pi
 WORKING = ("slow", "fast", "forward", "backward")
 
 

@@ -9,15 +9,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cams.machine.linkage.primitives import Angle, AssemblyError, Slide
 from cams.machine.linkage.analysis import analyse
+from cams.machine.linkage.primitives import Angle, AssemblyError, Slide
 from cams.model.follower import rotation_word
-from laws.errors import show_value as _show
 from laws.errors import InfeasibleError, InputError
-from laws.units import rpm_to_omega
+from laws.errors import show_value as _show
+from laws.units import TWO_PI, rpm_to_omega
+
 __all__ = ["Pair", "LinkStates", "describe_angles"]
 
-TWO_PI = 2 * np.pi
 _CHECK_GRID = np.linspace(0.0, TWO_PI, 1440, endpoint=False)
 
 

@@ -6,6 +6,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from cams.machine.linkage.common import (
+    LinkStates,
+    Pair,
+    _Base,
+    _num,
+    _pos,
+    _sign,
+    _still,
+    _verify_course,
+)
 from cams.machine.linkage.primitives import (
     Angle,
     AssemblyError,
@@ -18,7 +28,6 @@ from cams.machine.linkage.primitives import (
     rrp,
 )
 from cams.machine.linkage.synthesis import crank_slider_crank
-from cams.machine.linkage.common import Pair, LinkStates, _Base, _num, _pos, _sign, _still, _verify_course
 
 __all__ = ["CrankSlider", "CrankSliderKinematics"]
 

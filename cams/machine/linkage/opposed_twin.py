@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from cams.machine.linkage.common import LinkStates, Pair, _Base, _num, _pos, _still
 from cams.machine.linkage.primitives import (
     Angle,
     AssemblyError,
@@ -17,7 +18,6 @@ from cams.machine.linkage.primitives import (
     on_link,
     rrp,
 )
-from cams.machine.linkage.common import Pair, LinkStates, _Base, _num, _pos, _still
 
 __all__ = ["OpposedTwin", "OpposedTwinKinematics"]
 

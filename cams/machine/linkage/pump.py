@@ -6,18 +6,32 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from cams.machine.linkage.primitives import Angle, Point, Slide, acute_angle, crank, ground, on_link, rpp, rpr
-from cams.machine.linkage.synthesis import MAX_TIME_RATIO, SlottedLeverSynthesis, slotted_lever_synthesis
 from cams.machine.linkage.common import (
-    Pair,
     LinkStates,
-    _SwingingLever,
+    Pair,
     _num,
     _pos,
     _sign,
     _still,
     _swing_bar_checks,
+    _SwingingLever,
     _verify_course,
+)
+from cams.machine.linkage.primitives import (
+    Angle,
+    Point,
+    Slide,
+    acute_angle,
+    crank,
+    ground,
+    on_link,
+    rpp,
+    rpr,
+)
+from cams.machine.linkage.synthesis import (
+    MAX_TIME_RATIO,
+    SlottedLeverSynthesis,
+    slotted_lever_synthesis,
 )
 
 __all__ = ["SlottedLeverPump", "PumpKinematics"]

@@ -6,6 +6,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from cams.machine.linkage.common import (
+    LinkStates,
+    Pair,
+    _num,
+    _pos,
+    _sign,
+    _still,
+    _swing_bar_checks,
+    _SwingingLever,
+    _verify_course,
+)
 from cams.machine.linkage.primitives import (
     Angle,
     AssemblyError,
@@ -24,17 +35,6 @@ from cams.machine.linkage.synthesis import (
     _below,
     slotted_lever_synthesis,
     slotting_time_ratio_limit,
-)
-from cams.machine.linkage.common import (
-    Pair,
-    LinkStates,
-    _SwingingLever,
-    _num,
-    _pos,
-    _sign,
-    _still,
-    _swing_bar_checks,
-    _verify_course,
 )
 
 __all__ = ["SlottingMachine", "SlottingKinematics"]

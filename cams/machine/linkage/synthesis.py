@@ -27,8 +27,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from laws.errors import show_value as _show
 from laws.errors import InfeasibleError, InputError
+from laws.errors import show_value as _show
 
 __all__ = [
     "swing_from_time_ratio",

@@ -34,8 +34,15 @@ its program.
 
 
 from cams.machine.timing.cycle import CuttingZone, Windows, windows
-from cams.machine.timing.placement import PLACEMENTS, CamTiming, Drive, Timing, check_follower_direction, place_cam
 from cams.machine.timing.diagram import CycleDiagram, cycle_diagram
+from cams.machine.timing.placement import (
+    PLACEMENTS,
+    CamTiming,
+    Drive,
+    Timing,
+    check_follower_direction,
+    place_cam,
+)
 from cams.machine.timing.result import MachineResult, MachineSpec, design_machine
 
 __all__ = [

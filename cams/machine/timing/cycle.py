@@ -16,10 +16,10 @@ from scipy.optimize import brentq
 from cams.machine.linkage.analysis import WORKING, Machine, StrokeReport, analyse
 from cams.model.follower import rotation_word
 from laws.errors import InputError, check_option, show_value
+from laws.units import TWO_PI
 
 __all__ = ["CuttingZone", "Windows", "windows", "deg"]
 
-TWO_PI = 2 * np.pi
 
 
 def deg(x: float) -> float:

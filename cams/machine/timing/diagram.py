@@ -10,13 +10,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from cams.machine.linkage.analysis import Machine
-from cams.machine.timing.placement import CamTiming
 from cams.machine.timing.cycle import CuttingZone, Windows
+from cams.machine.timing.placement import CamTiming
 from laws.program import Program
+from laws.units import TWO_PI
 
 __all__ = ["CycleDiagram", "cycle_diagram"]
 
-TWO_PI = 2 * np.pi
 
 
 @dataclass(frozen=True, eq=False)

@@ -18,10 +18,10 @@ import numpy as np
 from cams.machine.timing.cycle import Windows, deg
 from laws.errors import InfeasibleError, InputError, check_option, show_value
 from laws.program import Program
+from laws.units import TWO_PI
 
 __all__ = ["Drive", "Timing", "CamTiming", "check_follower_direction", "place_cam", "PLACEMENTS"]
 
-TWO_PI = 2 * np.pi
 PLACEMENTS = ("centre", "early", "late")
 
 

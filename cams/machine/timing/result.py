@@ -9,9 +9,9 @@ from dataclasses import dataclass, field
 
 from cams.cam import Cam
 from cams.machine.linkage.analysis import Machine, StrokeReport
+from cams.machine.timing.cycle import CuttingZone, Windows, deg, windows
 from cams.machine.timing.diagram import CycleDiagram, cycle_diagram
 from cams.machine.timing.placement import CamTiming, Drive, Timing, place_cam
-from cams.machine.timing.cycle import CuttingZone, Windows, deg, windows
 from cams.model.design import CamDesign
 from cams.model.follower import Rocker
 
