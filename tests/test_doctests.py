@@ -43,6 +43,9 @@ DOCTEST_MODULES = [
     "cams.machine.kinetostatics",
     # profiles
     "cams.profile.flat",
+    "cams.kinematics.flat",
+    "optimize.flat",
+    "cams.checks.flat",
     "cams.words",
     "cams.sweep",
     "cams.profile.roller",

@@ -276,7 +276,7 @@ def plot_flat_pressure(solution, *, n: int = 721):
 
     Parameters
     ----------
-    solution : cams.profile.flat.FlatFaceSolution
+    solution : optimize.flat.FlatFaceSolution
     """
     d = solution.design
     c = solution.curves(n)
@@ -303,7 +303,7 @@ def plot_curvature(solution, *, n: int = 721):
 
     Parameters
     ----------
-    solution : cams.profile.flat.FlatFaceSolution
+    solution : optimize.flat.FlatFaceSolution
     """
     d = solution.design
     c = solution.curves(n)

@@ -1,0 +1,1 @@
+"""The product's kernel: the inversion of the motion, the flat face's envelope, extremum searches."""
