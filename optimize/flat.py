@@ -27,6 +27,7 @@ from cams.kinematics.flat import (
     oscillating_parts,
     oscillating_setup,
     phase_minimum,
+    rocker_frame_turn,
     translating_cusps,
     translating_parts,
 )
@@ -232,8 +233,8 @@ class FlatFaceSolution:
     face_range : (float, float)
         Smallest and largest contact position on the face: from the follower's
         axis (translating, +X) or from the foot of the perpendicular from the
-        pivot (rocker, along the face, positive towards the cam; the API's
-        ``FlatFaceProfile.contact`` is along ``J m``, this is ``-sigma`` times it).
+        pivot (rocker, along the face, positive towards the cam; the same sign
+        as ``FlatFaceProfile.contact``).
     face_range_at : (float, float)
         Their cam angles.
     pressure_range : (float, float)
@@ -261,11 +262,45 @@ class FlatFaceSolution:
 
     @property
     def centre(self) -> np.ndarray:
-        """Cam centre in the follower's fixed frame: ``(-e, -R0)`` (translating) or ``(L, 0)`` (rocker)."""
+        """Cam centre in the frame of the reports and drawings (length).
+
+        Translating: ``(-e, -R0)`` in the follower's fixed frame
+        (:mod:`cams.model.follower`). Rocker: ``(L, 0)`` in the line-of-centres
+        frame (pivot at the origin, X towards the cam centre), the rocker's
+        fixed frame turned by :attr:`frame_turn`; :attr:`rocker_frame_centre`
+        gives it in the rocker's fixed frame.
+        """
         fo = self.design.follower
         if fo.kind == "translating":
             return np.array([0.0 - fo.offset, -self.R0]) + 0.0  # + 0.0: no -0.0 in reports
         return np.array([fo.centre_distance, 0.0])
+
+    @property
+    def frame_turn(self) -> float:
+        """Rocker: angle (radians, counter-clockwise) from the rocker's fixed frame to the line-of-centres frame.
+
+        A point with line-of-centres coordinates ``x`` has rocker-frame
+        coordinates ``R(-frame_turn) x`` (:func:`cams.kinematics.flat.rocker_frame_turn`);
+        0 for a translating follower (one frame).
+        """
+        fo = self.design.follower
+        if fo.kind == "translating":
+            return 0.0
+        a0 = oscillating_setup(self.design.program, fo.centre_distance, self.R0, fo.face_offset, fo.sense)
+        return rocker_frame_turn(a0, fo.sense)
+
+    @property
+    def rocker_frame_centre(self) -> np.ndarray:
+        """Cam centre in the follower's fixed frame of :mod:`cams.model.follower` (length).
+
+        Rocker: X along the face at the near dwell, from the pivot's foot
+        towards the cam, so the centre is ``(sqrt(L^2 - (f - R0)^2), sigma (f - R0))``;
+        translating: :attr:`centre`.
+        """
+        b = self.frame_turn
+        c, s = np.cos(b), np.sin(b)
+        x, y = self.centre
+        return np.array([c * x + s * y, -s * x + c * y])
 
     @property
     def face_width(self) -> float:
@@ -280,11 +315,11 @@ class FlatFaceSolution:
         return float(2 * max(abs(self.face_range[0]), abs(self.face_range[1])))
 
     def face_line(self, phi) -> tuple[np.ndarray, np.ndarray]:
-        """The face in the follower's fixed frame at cam angles ``phi``: ``(origin, direction)``.
+        """The face at cam angles ``phi``: ``(origin, direction)``, in the frame of :attr:`centre`.
 
         Points of the face are ``origin + c * direction`` with ``c`` measured as
-        ``face_range`` (from the axis, or from the pivot's foot); shapes
-        ``phi.shape + (2,)``.
+        ``face_range`` (from the axis, or from the pivot's foot, positive
+        towards the cam); shapes ``phi.shape + (2,)``.
         """
         fo, prog = self.design.follower, self.design.program
         s = prog.evaluate(np.asarray(phi, dtype=float)).s

@@ -15,10 +15,20 @@ derivative ``dA/ds``; everything else (velocities, the instant point D, the
 pressure angle) is derived from these two in one place each.
 
 Flat-faced followers (:class:`FlatTranslating`, :class:`FlatRocker`) have a face
-line instead of a roller; their envelope is :mod:`cams.kinematics.flat`. The
-translating one uses the translating frame above with the face's point on the
-axis in place of the roller centre (the face is ``y = s``). Every follower kind
-has what :class:`Follower` lists.
+line instead of a roller; their envelope is :mod:`cams.kinematics.flat`.
+
+* Flat translating: the translating frame above, the face's point on the axis
+  in place of the roller centre (the face is the line ``y = s``).
+* Flat rocker: the rocker frame above, the rocker being the face: X along the
+  face at the near dwell, from the foot of the perpendicular from the pivot
+  towards the cam (the direction in which contact positions on the face are
+  positive). Its envelope is computed, and its reports and drawings are given,
+  in the *line-of-centres frame* (pivot at the origin, X towards the cam
+  centre, which is at ``(L, 0)``): the rocker frame turned by
+  ``beta = a0 - sigma 90 deg`` (:func:`cams.kinematics.flat.rocker_frame_turn`),
+  the one conversion between the two.
+
+Every follower kind has what :class:`Follower` lists.
 """
 
 from __future__ import annotations

@@ -92,7 +92,10 @@ class FlatFaceProfile:
     phi : ndarray, shape (n,)
         Cam angles, radians (the phase starts among them).
     point : ndarray, shape (n, 2)
-        Cam profile (envelope of the face lines), cam frame, length unit.
+        Cam profile (envelope of the face lines), cam frame, length unit: origin
+        at the cam centre, axes parallel at ``phi = 0`` to the translating
+        follower's fixed frame, or to a rocker's line-of-centres frame
+        (:mod:`cams.model.follower`).
     rho : ndarray, shape (n,)
         Radius of curvature of the profile, positive convex.
     contact : ndarray, shape (n,)
@@ -232,7 +235,8 @@ def oscillating_flat_face(program: Program, *, centre_distance: float, base_radi
     program : Program
         Lift is the swing (radians).
     centre_distance : float
-        L, pivot to cam centre (length); the cam centre is at ``(L, 0)``.
+        L, pivot to cam centre (length); the cam centre is at ``(L, 0)`` in the
+        line-of-centres frame (:func:`cams.kinematics.flat.rocker_frame_turn`).
     base_radius : float
         R0, cam centre to the face at the near dwell (length).
     face_offset : float

@@ -152,3 +152,35 @@ def test_old_names_still_import_from_the_profile_module_for_one_release():
             assert getattr(old, name) is getattr(importlib.import_module(home), name)
     with pytest.raises(AttributeError):
         old.no_such_name  # noqa: B018
+
+
+@pytest.mark.parametrize("rise", ["cw", "ccw"])
+@pytest.mark.parametrize("f", [0.0, 7.0, -5.0])
+def test_flat_rocker_in_the_rocker_frame_of_the_model(rise, f):
+    """One rocker frame: turned by ``frame_turn``, the face lies along the model's rocker (``Rocker.lever``)."""
+    import tomllib
+
+    from cams.io.designfile import design_from_dict
+    from cams.model.follower import Rocker
+    from optimize.flat import size_flat_face
+    from tests.conftest import EXAMPLES
+
+    d = tomllib.loads((EXAMPLES / "rocker_flat.toml").read_text(encoding="utf-8"))
+    d["follower"].update(rise_direction=rise, face_offset=f)
+    sol = size_flat_face(design_from_dict(d))
+    fo, R0 = sol.design.follower, sol.R0
+    b = sol.frame_turn
+    turn = np.array([[np.cos(b), np.sin(b)], [-np.sin(b), np.cos(b)]])  # R(-b): line of centres -> rocker frame
+    phi = np.linspace(0.0, 2 * np.pi, 37)
+    origin, direction = sol.face_line(phi)
+    psi = sol.design.program.evaluate(phi).s
+    lever = Rocker(arm=1.0, sense=fo.sense).lever(psi)
+    assert np.allclose(direction @ turn.T, lever, atol=1e-12)  # the face turns as the model's rocker
+    J = np.array([[0.0, -1.0], [1.0, 0.0]])
+    assert np.allclose(origin @ turn.T, f * fo.sense * lever @ J.T, atol=1e-12)  # the pivot's foot: f m, m = sigma J d
+    O = sol.rocker_frame_centre
+    assert np.allclose(O, turn @ sol.centre, atol=1e-12)
+    assert O == pytest.approx([np.sqrt(fo.centre_distance**2 - (f - R0) ** 2), fo.sense * (f - R0)], abs=1e-9)
+    # the face touches the base circle at the near dwell: the cam centre is R0 from it, on the side opposite m
+    m0 = fo.sense * J @ np.array([1.0, 0.0])
+    assert f - m0 @ O == pytest.approx(R0, abs=1e-9)
