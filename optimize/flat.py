@@ -32,7 +32,7 @@ from cams.kinematics.flat import (
     translating_parts,
 )
 from cams.model.design import FlatFaceDesign
-from cams.model.follower import check_length
+from cams.model.follower import FlatRocker, FlatTranslating, check_length
 from laws.errors import InputError
 from laws.program import Program
 
@@ -116,7 +116,7 @@ def _oscillating_scan(program: Program, L: float, f: float, sigma: int, eps: int
             rho = curvature_radius(dth, sigma * d2s, f - L * ca, L * sa * sigma * ds,
                                    L * ca * ds**2 + L * sa * sigma * d2s)
         rho = np.where(np.isfinite(rho), rho, -np.inf).min(axis=1)
-        yield from zip(range(k0, k0 + len(rho)), rho)
+        yield from zip(range(k0, k0 + len(rho)), rho, strict=True)
 
 
 def min_base_radius_oscillating(program: Program, *, centre_distance: float, face_offset: float = 0.0,
@@ -271,7 +271,7 @@ class FlatFaceSolution:
         gives it in the rocker's fixed frame.
         """
         fo = self.design.follower
-        if fo.kind == "translating":
+        if isinstance(fo, FlatTranslating):
             return np.array([0.0 - fo.offset, -self.R0]) + 0.0  # + 0.0: no -0.0 in reports
         return np.array([fo.centre_distance, 0.0])
 
@@ -284,7 +284,7 @@ class FlatFaceSolution:
         0 for a translating follower (one frame).
         """
         fo = self.design.follower
-        if fo.kind == "translating":
+        if isinstance(fo, FlatTranslating):
             return 0.0
         a0 = oscillating_setup(self.design.program, fo.centre_distance, self.R0, fo.face_offset, fo.sense)
         return rocker_frame_turn(a0, fo.sense)
@@ -310,7 +310,7 @@ class FlatFaceSolution:
     @property
     def face_width_centred(self) -> float | None:
         """Translating: width of a face centred on the follower's axis, ``2 max(|lo|, |hi|)``; rocker: None."""
-        if self.design.follower.kind != "translating":
+        if not isinstance(self.design.follower, FlatTranslating):
             return None
         return float(2 * max(abs(self.face_range[0]), abs(self.face_range[1])))
 
@@ -323,7 +323,7 @@ class FlatFaceSolution:
         """
         fo, prog = self.design.follower, self.design.program
         s = prog.evaluate(np.asarray(phi, dtype=float)).s
-        if fo.kind == "translating":
+        if isinstance(fo, FlatTranslating):
             origin = np.stack([np.zeros_like(s), s], axis=-1)
             return origin, np.stack([np.ones_like(s), np.zeros_like(s)], axis=-1)
         a = oscillating_setup(prog, fo.centre_distance, self.R0, fo.face_offset, fo.sense) + fo.sense * s
@@ -339,11 +339,11 @@ class FlatFaceSolution:
         """
         prog = self.design.program
         funs = flat_parts(self.design, self.R0)
-        out = {k: [] for k in ("phi", "rho", "contact", "pressure")}
+        out: dict[str, list] = {k: [] for k in ("phi", "rho", "contact", "pressure")}
         for i, p in enumerate(prog.phases):
             u = np.linspace(0.0, 1.0, max(int(n * p.angle / (2 * np.pi)), 8))
             vals = [prog.starts[i] + u * p.angle] + [np.broadcast_to(f(i, u), u.shape) for f in funs]
-            for k, v in zip(out, vals):
+            for k, v in zip(out, vals, strict=True):
                 out[k] += [v, [np.nan]]
         return {k: np.concatenate(v) for k, v in out.items()}
 
@@ -381,9 +381,9 @@ class FlatFaceSolution:
             "min_radius": float(self.design.min_radius),
             "min_rho": float(self.min_rho),
             "min_rho_at_deg": _deg(self.min_rho_at),
-            "L": float(fo.centre_distance) if fo.kind == "rocker" else None,
-            "face_offset": float(fo.face_offset) if fo.kind == "rocker" else None,
-            "offset": float(fo.offset) if fo.kind == "translating" else None,
+            "L": float(fo.centre_distance) if isinstance(fo, FlatRocker) else None,
+            "face_offset": float(fo.face_offset) if isinstance(fo, FlatRocker) else None,
+            "offset": float(fo.offset) if isinstance(fo, FlatTranslating) else None,
             "centre": {"x": float(self.centre[0]), "y": float(self.centre[1])},
             "face_range": {"from": float(lo), "to": float(hi),
                            "from_at_deg": _deg(self.face_range_at[0]), "to_at_deg": _deg(self.face_range_at[1])},
@@ -416,10 +416,11 @@ def size_flat_face(design: FlatFaceDesign) -> FlatFaceSolution:
     """
     t0 = time.perf_counter()
     fo, prog, rmin = design.follower, design.program, design.min_radius
-    notes = []
-    R0_min = bind = None
+    notes: list[str] = []
+    R0_min: float | None = None
+    bind: float | None = None
     try:
-        if fo.kind == "translating":
+        if isinstance(fo, FlatTranslating):
             R0_min, bind = min_base_radius_translating(prog, min_radius=rmin)
         else:
             R0_min, bind = min_base_radius_oscillating(
@@ -439,6 +440,8 @@ def size_flat_face(design: FlatFaceDesign) -> FlatFaceSolution:
         R0, source = float(design.base_radius), "cam.base_radius"
         if R0_min is not None:
             notes.append(f"R0 is cam.base_radius = {R0:g} mm; the smallest convex enough is {R0_min:.6g} mm")
+    elif R0_min is None:  # pragma: no cover - without cam.base_radius a failed minimum has raised above
+        raise AssertionError("no base radius")
     elif design.min_base_radius is not None and design.min_base_radius > R0_min:
         R0, source = float(design.min_base_radius), "limits.min_base_radius"
         notes.append(f"R0 raised to limits.min_base_radius = {R0:g} (convexity needs {R0_min:.6g})")
@@ -454,7 +457,7 @@ def size_flat_face(design: FlatFaceDesign) -> FlatFaceSolution:
     lo_rho, lo_rho_at = phase_minimum(rho, prog)
     lo, lo_at = phase_minimum(contact, prog)
     hi, hi_at = phase_minimum(lambda i, u: -contact(i, u), prog)
-    if fo.kind == "translating":
+    if isinstance(fo, FlatTranslating):
         g = (0.0, 0.0, 0.0)
     else:
         gmin, _ = phase_minimum(gamma, prog)

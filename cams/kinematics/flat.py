@@ -50,6 +50,8 @@ from collections.abc import Callable
 
 import numpy as np
 
+from cams.model.design import FlatFaceDesign
+from cams.model.follower import FlatTranslating
 from laws.errors import InputError
 from laws.program import Program
 
@@ -92,7 +94,7 @@ def phase_minimum(fun: PhaseFunction, program: Program, grid: int = 2000) -> tup
         k = int(np.argmin(v))
         bu, bv = float(u[k]), float(v[k])
         if p.kind != "dwell":
-            bu, bv = zoom_minimum(lambda x: fun(i, x), u[max(k - 1, 0)], u[min(k + 1, grid)], bu, bv)
+            bu, bv = zoom_minimum(lambda x, i=i: fun(i, x), u[max(k - 1, 0)], u[min(k + 1, grid)], bu, bv)
         if bv < best:
             best, at = bv, float(program.starts[i] + bu * p.angle)
     return best, at
@@ -335,7 +337,7 @@ def rocker_frame_turn(a0: float, sigma: int) -> float:
 # -- a design's flat face ------------------------------------------------------------------------
 
 
-def flat_parts(design, R0: float) -> tuple[PhaseFunction, PhaseFunction, PhaseFunction]:
+def flat_parts(design: FlatFaceDesign, R0: float) -> tuple[PhaseFunction, PhaseFunction, PhaseFunction]:
     """``rho, contact, gamma`` functions ``(phase, u) -> array`` of a flat-face design at base radius R0.
 
     ``design`` is a :class:`cams.model.design.FlatFaceDesign`; lengths and
@@ -343,7 +345,7 @@ def flat_parts(design, R0: float) -> tuple[PhaseFunction, PhaseFunction, PhaseFu
     the pivot's foot, positive towards the cam (rocker).
     """
     fo, prog, eps = design.follower, design.program, design.cam_sense
-    if fo.kind == "translating":
+    if isinstance(fo, FlatTranslating):
         rho, contact = translating_parts(prog, R0, eps, fo.offset)
         return rho, contact, lambda i, u: np.zeros_like(np.asarray(u, float))
     a0 = oscillating_setup(prog, fo.centre_distance, R0, fo.face_offset, fo.sense)

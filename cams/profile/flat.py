@@ -46,7 +46,8 @@ from cams.kinematics.flat import (
     translating_cusps,
     translating_parts,
 )
-from cams.model.follower import check_length
+from cams.model.design import FlatFaceDesign
+from cams.model.follower import FlatRocker, FlatTranslating, check_length
 from laws.errors import InputError
 from laws.program import Program
 
@@ -280,10 +281,10 @@ def oscillating_flat_face(program: Program, *, centre_distance: float, base_radi
 
 
 
-def flat_face_cam(design, base_radius: float, *, samples: int = 1440) -> FlatFaceProfile:
+def flat_face_cam(design: FlatFaceDesign, base_radius: float, *, samples: int = 1440) -> FlatFaceProfile:
     """The sampled cam of a flat-face design (:class:`cams.model.design.FlatFaceDesign`) at a base radius."""
     fo = design.follower
-    if fo.kind == "translating":
+    if isinstance(fo, FlatTranslating):
         cam = translating_flat_face(design.program, base_radius=base_radius, cam_sense=design.cam_sense,
                                     offset=fo.offset, samples=samples)
     else:
@@ -297,7 +298,7 @@ def flat_face_cam(design, base_radius: float, *, samples: int = 1440) -> FlatFac
 MIN_SAMPLES, MAX_SAMPLES = 360, 2_000_000
 
 
-def flat_face_profile(design, base_radius: float, *, tolerance: float | None = None,
+def flat_face_profile(design: FlatFaceDesign, base_radius: float, *, tolerance: float | None = None,
                       field: str = "profile.tolerance") -> FlatFaceProfile:
     """The cam sampled uniformly in cam angle, every chord within ``tolerance`` of the profile.
 
@@ -313,7 +314,7 @@ def flat_face_profile(design, base_radius: float, *, tolerance: float | None = N
     tolerance = cap_tolerance(tolerance, base_radius, field)
     coarse = flat_face_cam(design, base_radius, samples=720)
     dtheta = np.ones_like(coarse.phi)
-    if design.follower.kind == "rocker":
+    if isinstance(design.follower, FlatRocker):
         dtheta = np.abs(design.follower.sense * design.program.evaluate(coarse.phi).ds - design.cam_sense)
     worst = float(np.max(np.abs(coarse.rho) * dtheta**2))
     n = int(np.ceil(2 * np.pi * np.sqrt(worst / (8 * tolerance))))

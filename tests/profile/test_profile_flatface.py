@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 
 from cams.profile.flat import oscillating_flat_face, translating_flat_face
-from optimize.flat import min_base_radius_oscillating, min_base_radius_translating
 from laws.errors import InputError
 from laws.program import Phase, Program
+from optimize.flat import min_base_radius_oscillating, min_base_radius_translating
 
 N = 72_000  # uniform samples per turn for the finite differences (the phase starts fall on the grid)
 
