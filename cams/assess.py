@@ -11,7 +11,7 @@ can be made and run as designed; it is false when any of these fails:
   groove;
 * every check of the finished profile except those of the verified side
   (:func:`cams.checks.profile.check_profile`; flat face
-  :func:`cams.profile.flat.check_flat_face`): no undercut or sharp point, the
+  :func:`cams.checks.flat.check_flat_face`): no undercut or sharp point, the
   groove's outer wall, the user's least radius of curvature, a valid closed
   profile round the cam centre, the bore given by ``[cam] bore_radius``
   inside the cam;
@@ -106,7 +106,7 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     Parameters
     ----------
     design : CamDesign or FlatFaceDesign
-    solution : cams.solve.SolveResult or cams.profile.flat.FlatFaceSolution
+    solution : cams.solve.SolveResult or optimize.flat.FlatFaceSolution
         Its ``verified`` is the verified side.
     checks : CheckReport or FlatCheckReport, optional
         The checks of the finished profile; None only when no profile can be

@@ -5,9 +5,9 @@ the zone (once); ``tradeoff`` needs the zone but not the profile; the motion
 diagrams need only the program. Every result is computed once and reused.
 
 A flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`) has the
-same attributes: ``solution`` is a :class:`cams.profile.flat.FlatFaceSolution`
+same attributes: ``solution`` is a :class:`optimize.flat.FlatFaceSolution`
 (size from convexity), ``profile`` a :class:`cams.profile.flat.FlatFaceProfile`,
-``checks`` a :class:`cams.profile.flat.FlatCheckReport`; it has no trade-off and
+``checks`` a :class:`cams.checks.flat.FlatCheckReport`; it has no trade-off and
 no forces (both None).
 """
 
@@ -71,7 +71,7 @@ class Cam:
     def solution(self):
         """The sized cam (:class:`cams.solve.SolveResult`), solved on first use."""
         if self.flat:
-            from cams.profile.flat import size_flat_face
+            from optimize.flat import size_flat_face
 
             return size_flat_face(self.design)
         from cams.solve import solve
@@ -121,7 +121,7 @@ class Cam:
     def checks(self):
         """Jamming, undercut, validity and bore checks of the finished profile."""
         if self.flat:
-            from cams.profile.flat import check_flat_face
+            from cams.checks.flat import check_flat_face
 
             return check_flat_face(self.design, self.solution, self.profile)
         from cams.checks.profile import check_profile

@@ -234,13 +234,13 @@ def _solve_chosen(design: CamDesign) -> SolveResult:
 
 
 def _solve_flat(design, method: str | None, objective: str | None):
-    """A flat face's cam (:func:`cams.profile.flat.size_flat_face`); it has no zone solver nor objective to choose."""
+    """A flat face's cam (:func:`optimize.flat.size_flat_face`); it has no zone solver nor objective to choose."""
     if method is not None:
         raise InputError("method", "does not apply to a flat-faced follower: its base radius follows from "
                          "convexity directly")
     if objective not in (None, "R0"):
         raise InputError("objective", "a flat-faced follower's cam is sized by R0 (convexity); only 'R0'")
-    from cams.profile.flat import size_flat_face
+    from optimize.flat import size_flat_face
 
     return size_flat_face(design)
 
@@ -254,7 +254,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
         Lengths in its unit, angles in radians; ``design.limits`` may fix the
         centre distance L (rocker) or a floor on R0, the follower a fixed
         offset (translating). A flat-faced follower's design is sized by
-        convexity (:func:`cams.profile.flat.size_flat_face`).
+        convexity (:func:`optimize.flat.size_flat_face`).
     method : {"exact", "convex", "exhaustive"}, optional
         Overrides ``design.method`` (roller followers; refused for a flat face).
     objective : {"R0", "L"}, optional
@@ -264,7 +264,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
 
     Returns
     -------
-    SolveResult or cams.profile.flat.FlatFaceSolution
+    SolveResult or optimize.flat.FlatFaceSolution
         For a flat face, the latter (what ``cams solve`` prints for it); else
         The cam centre in the follower's fixed frame (:mod:`cams.model.follower`),
         ``R0 = |O - A0|`` (A0 the roller centre at the near dwell), ``L = |O|``

@@ -41,7 +41,7 @@ __all__ = [
 #: Decimals of an angle in degrees, everywhere.
 ANGLE_DECIMALS = 4
 
-#: The checks of :mod:`cams.checks.profile` and :mod:`cams.profile.flat` in words (name: what it checks).
+#: The checks of :mod:`cams.checks.profile` and :mod:`cams.checks.flat` in words (name: what it checks).
 CHECK_WORDS = {
     "jamming_rise": "pressure angle, rise",
     "jamming_return": "pressure angle, return",

@@ -57,6 +57,9 @@ DOCTEST_MODULES = [
     "cams.kinematics.inversion",
     # profiles
     "cams.profile.flat",
+    "cams.kinematics.flat",
+    "optimize.flat",
+    "cams.checks.flat",
     "cams.words",
     "cams.sweep",
     "cams.profile.roller",

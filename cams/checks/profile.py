@@ -41,6 +41,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from cams.checks.base import (
+    Check,
+    ChecksMixin,
+    _deg,
+    _finite,
+    bore_check,
+    polygon_check,
+)
 from cams.kinematics.extremum import maximize, phase_positions
 from cams.kinematics.inversion import (
     curvature_rate,
@@ -75,67 +83,6 @@ __all__ = [
 
 #: Usual rule: roller radius at most this fraction of the smallest convex rho.
 RECOMMENDED_ROLLER_FRACTION = 0.8
-
-
-@dataclass(frozen=True)
-class Check:
-    """One check's outcome.
-
-    Attributes
-    ----------
-    name : str
-    passed : bool
-    worst : float or None
-        Worst value found (unit ``unit``); ``None`` where it does not apply.
-    at_deg : float or None
-        Cam angle of the worst value, degrees in [0, 360).
-    limit : float or None
-        The value ``worst`` is compared with (unit ``unit``).
-    unit : str
-        ``"deg"``, ``"mm"`` (the design's length unit) or ``""``.
-    message : str
-        One readable line.
-    """
-
-    name: str
-    passed: bool
-    worst: float | None
-    at_deg: float | None
-    limit: float | None
-    unit: str
-    message: str = ""
-
-    def to_dict(self) -> dict:
-        """JSON-ready ``{name, passed, worst, at_deg, limit, unit}`` (non-finite values as ``None``)."""
-        return {
-            "name": self.name,
-            "passed": bool(self.passed),
-            "worst": _finite(self.worst),
-            "at_deg": _finite(self.at_deg),
-            "limit": _finite(self.limit),
-            "unit": self.unit,
-        }
-
-
-def _finite(x):
-    return None if x is None or not np.isfinite(x) else float(x)
-
-
-class ChecksMixin:
-    """``passed`` and lookup by name for a report holding ``checks`` (a tuple of :class:`Check`)."""
-
-    checks: tuple
-
-    @property
-    def passed(self) -> bool:
-        """True when every check passed."""
-        return all(c.passed for c in self.checks)
-
-    def __getitem__(self, name: str) -> Check:
-        for c in self.checks:
-            if c.name == name:
-                return c
-        raise KeyError(name)
 
 
 @dataclass(frozen=True, eq=False)
@@ -321,51 +268,6 @@ def _curvature(design: CamDesign, centre: np.ndarray, maxima: list[dict]) -> Cur
 # -- the checks ------------------------------------------------------------------------------
 
 
-def _deg(phi: float | None) -> float | None:
-    return None if phi is None else float(np.degrees(phi) % 360.0)
-
-
-def _polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:
-    """The closed polyline ``pts`` is a valid simple polygon round the origin.
-
-    ``worst`` is the number of self-crossings (limit 0); ``at_deg`` the cam
-    angle of the sample nearest the first crossing (or shapely's reported
-    location of another defect).
-    """
-    import shapely
-    from shapely.geometry import LinearRing, Point, Polygon
-
-    ring = LinearRing(pts)
-    poly = Polygon(ring)
-    valid = bool(poly.is_valid and ring.is_simple)
-    around = bool(poly.contains(Point(0.0, 0.0)))
-    at = None
-    crossings = 0
-    msg = f"{len(pts)} points, a simple closed curve round the cam centre"
-    if not valid:
-        loc = None
-        reason = shapely.is_valid_reason(poly)
-        if not ring.is_simple:
-            # noding the ring adds its crossings as new vertices
-            nodes = shapely.get_coordinates(shapely.unary_union(ring))
-            known = {tuple(p) for p in np.round(pts, 9)}
-            extra = {tuple(p) for p in np.round(nodes, 9)} - known
-            crossings = len(extra)
-            loc = np.array(sorted(extra)[0]) if extra else None
-        if loc is None and "[" in reason:
-            try:
-                loc = np.array([float(x) for x in reason[reason.index("[") + 1:reason.index("]")].split()[:2]])
-            except ValueError:  # pragma: no cover - shapely's message format
-                loc = None
-        if loc is not None:
-            at = _deg(phi[int(np.argmin(np.linalg.norm(pts - np.asarray(loc), axis=1)))])
-        where = "" if at is None else f", the first near cam angle {at:.4f} deg"
-        msg = f"{crossings} self-crossing(s){where}" if crossings else f"not a valid closed curve ({reason}){where}"
-    elif not around:
-        msg = "the closed curve does not surround the cam centre"
-    return Check(name, valid and around, float(crossings), at, 0.0, "", msg)
-
-
 def check_profile(
     design: CamDesign,
     centre: np.ndarray,
@@ -437,19 +339,15 @@ def check_profile(
                             f"smallest convex radius of curvature of the working profile {worst:.6g}"))
 
     # polygons
-    checks.append(_polygon_check("profile_polygon", prof.work, prof.phi))
+    checks.append(polygon_check("profile_polygon", prof.work, prof.phi))
     if prof.groove:
-        checks.append(_polygon_check("outer_polygon", prof.outer, prof.phi))
+        checks.append(polygon_check("outer_polygon", prof.outer, prof.phi))
 
     # bore: checked only against a bore the user gave ([cam] bore_radius); the default bore
     # is derived from the profile to fit inside it, so a check against it could not fail
     bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
     if opts.bore_radius is not None:
-        rad = np.linalg.norm(prof.work, axis=1)
-        k = int(np.argmin(rad))
-        rmin = prof.min_work_radius
-        checks.append(Check("bore", bool(rmin > bore), rmin, _deg(prof.phi[k]), float(bore), "mm",
-                            f"working profile's smallest radius {rmin:.6g} mm vs bore radius {bore:.6g} mm"))
+        checks.append(bore_check(prof, bore))
     return CheckReport(
         name=design.name,
         checks=tuple(checks),
@@ -474,13 +372,14 @@ def check_design(design: CamDesign, *, tolerance: float | None = None, method: s
     """Solve ``design`` (:func:`cams.solve.solve`) and check the profile of the solved centre.
 
     A flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`) is
-    sized by convexity and checked by :func:`cams.profile.flat.check_flat_face`
-    (a :class:`cams.profile.flat.FlatCheckReport`); it takes no ``method``.
+    sized by convexity and checked by :func:`cams.checks.flat.check_flat_face`
+    (a :class:`cams.checks.flat.FlatCheckReport`); it takes no ``method``.
     """
     from cams.solve import solve
 
     if getattr(design, "face", "roller") == "flat":
-        from cams.profile.flat import check_flat_face, flat_face_profile
+        from cams.checks.flat import check_flat_face
+        from cams.profile.flat import flat_face_profile
         from cams.profile.roller import resolve_tolerance
 
         tol, field = resolve_tolerance(design.tolerance, tolerance)  # bad options fail before sizing

@@ -50,8 +50,7 @@ from cams.model.design import CamDesign, FlatFaceDesign, Limits
 from cams.io.files import check_document, check_keys, read_toml, toml_integer
 from cams.io.files import toml_number as _num
 from cams.io.files import toml_table as _table
-from cams.profile.flat import FlatRocker, FlatTranslating
-from cams.model.follower import Rocker, Translating, sense_of
+from cams.model.follower import FlatRocker, FlatTranslating, Rocker, Translating, sense_of
 from laws.errors import InputError, check_option, show_value
 from laws.program import Phase, Program
 from laws.registry import get_law

@@ -10,7 +10,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from cams.model.follower import Follower, Rocker, Translating
+from cams.model.follower import (
+    FlatFollower,
+    FlatRocker,
+    FlatTranslating,
+    Rocker,
+    RollerFollower,
+    Translating,
+)
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
@@ -99,7 +106,7 @@ class CamDesign:
         :mod:`cams.model.follower`): the cam is checked, not sized.
     """
 
-    follower: Follower
+    follower: RollerFollower
     program: Program
     limits: Limits
     cam_sense: int = 1
@@ -260,11 +267,11 @@ class FlatFaceDesign:
     The pressure angle of a flat face is fixed by the geometry (zero for a
     translating face and for a rocker face through its pivot); the base
     radius is the smallest one whose profile keeps its radius of curvature at
-    least ``min_radius`` everywhere (see :mod:`cams.profile.flat`).
+    least ``min_radius`` everywhere (see :mod:`optimize.flat`).
 
     Parameters
     ----------
-    follower : cams.profile.flat.FlatTranslating or cams.profile.flat.FlatRocker
+    follower : cams.model.follower.FlatTranslating or cams.model.follower.FlatRocker
     program : Program
         Lift in radians (rocker swing) or length (translating stroke).
     min_radius : float
@@ -282,7 +289,7 @@ class FlatFaceDesign:
         Chord tolerance of the sampled profile (length).
     """
 
-    follower: object
+    follower: FlatFollower
     program: Program
     min_radius: float
     cam_sense: int = 1
@@ -297,8 +304,6 @@ class FlatFaceDesign:
     face = "flat"
 
     def __post_init__(self):
-        from cams.profile.flat import FlatRocker, FlatTranslating
-
         if self.cam_sense not in (1, -1):
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):

@@ -10,20 +10,38 @@ Frames and signs
 * Translating: origin at the roller centre at the near dwell, Y along the
   follower's rise, X = Y turned clockwise by 90 degrees. ``A = (0, s)``.
 
-Every follower exposes the roller-centre position ``A(s)`` and its derivative
-``dA/ds``; everything else (velocities, the instant point D, the pressure
-angle) is derived from these two in one place each.
+Every roller follower exposes the roller-centre position ``A(s)`` and its
+derivative ``dA/ds``; everything else (velocities, the instant point D, the
+pressure angle) is derived from these two in one place each.
+
+Flat-faced followers (:class:`FlatTranslating`, :class:`FlatRocker`) have a face
+line instead of a roller; their envelope is :mod:`cams.kinematics.flat`.
+
+* Flat translating: the translating frame above, the face's point on the axis
+  in place of the roller centre (the face is the line ``y = s``).
+* Flat rocker: the rocker frame above, the rocker being the face: X along the
+  face at the near dwell, from the foot of the perpendicular from the pivot
+  towards the cam (the direction in which contact positions on the face are
+  positive). Its envelope is computed, and its reports and drawings are given,
+  in the *line-of-centres frame* (pivot at the origin, X towards the cam
+  centre, which is at ``(L, 0)``): the rocker frame turned by
+  ``beta = a0 - sigma 90 deg`` (:func:`cams.kinematics.flat.rocker_frame_turn`),
+  the one conversion between the two.
+
+Every follower kind has what :class:`Follower` lists.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 
 from laws.errors import InputError
 
-__all__ = ["Rocker", "Translating", "Follower", "sense_of", "rotation_word"]
+__all__ = ["Rocker", "Translating", "FlatTranslating", "FlatRocker", "Follower", "RollerFollower", "FlatFollower",
+           "sense_of", "rotation_word", "check_length"]
 
 
 def sense_of(field: str, word: str) -> int:
@@ -66,6 +84,7 @@ class Rocker:
     sense: int = -1
 
     kind = "rocker"
+    face = "roller"
 
     def __post_init__(self):
         _positive("follower.arm", self.arm)
@@ -132,6 +151,7 @@ class Translating:
     stroke_scale: float = 1.0
 
     kind = "translating"
+    face = "roller"
 
     def __post_init__(self):
         _positive("follower.roller_radius", self.roller_radius, zero_ok=True)
@@ -168,4 +188,101 @@ class Translating:
         return np.stack([np.ones_like(s), np.zeros_like(s)], axis=-1)
 
 
-Follower = Rocker | Translating
+def check_length(field: str, value: object, *, positive: bool = True) -> float:
+    """``value`` as a finite float (``> 0`` when ``positive``), else :class:`InputError` naming ``field``."""
+    if (isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not np.isfinite(value)
+            or (positive and value <= 0)):
+        raise InputError(field, f"must be a number{' > 0' if positive else ''}, got {value!r}")
+    return float(value)
+
+
+@dataclass(frozen=True)
+class FlatTranslating:
+    """Translating follower with a flat face perpendicular to its axis (design files' ``face = "flat"``).
+
+    Parameters
+    ----------
+    offset : float
+        Axis offset e (length; positive: the axis on the +X side of the cam
+        centre). It moves the contact along the face, not the profile.
+    stroke_scale : float
+        The stroke, the characteristic length for relative tolerances.
+    """
+
+    offset: float = 0.0
+    stroke_scale: float = 1.0
+
+    kind = "translating"
+    face = "flat"
+
+    def __post_init__(self) -> None:
+        check_length("follower.offset", self.offset, positive=False)
+        check_length("follower.stroke", self.stroke_scale)
+
+    @property
+    def scale(self) -> float:
+        """Characteristic length (the stroke)."""
+        return self.stroke_scale
+
+
+@dataclass(frozen=True)
+class FlatRocker:
+    """Oscillating follower with a flat face (design files' ``face = "flat"``).
+
+    Parameters
+    ----------
+    centre_distance : float
+        L, pivot to cam centre (length).
+    face_offset : float
+        Signed distance f from the pivot to the face line (length), positive
+        when the pivot lies on the cam's side of the face; 0: the face passes
+        through the pivot.
+    sense : {+1, -1}
+        Rocker's sense of rotation during the rise, +1 counter-clockwise.
+    """
+
+    centre_distance: float
+    face_offset: float = 0.0
+    sense: int = -1
+
+    kind = "rocker"
+    face = "flat"
+
+    def __post_init__(self) -> None:
+        check_length("follower.centre_distance", self.centre_distance)
+        check_length("follower.face_offset", self.face_offset, positive=False)
+        if self.sense not in (1, -1):
+            raise InputError("follower.rise_direction", "must be 'cw' or 'ccw'")
+
+    @property
+    def scale(self) -> float:
+        """Characteristic length (the centre distance L)."""
+        return self.centre_distance
+
+
+class Follower(Protocol):
+    """What every follower kind has (roller or flat, rocker or translating).
+
+    Attributes
+    ----------
+    kind : {"rocker", "translating"}
+    face : {"roller", "flat"}
+        A roller (a knife edge is a roller of radius 0) or a flat face.
+    scale : float
+        Characteristic length for relative tolerances (length unit).
+    """
+
+    @property
+    def kind(self) -> str: ...
+
+    @property
+    def face(self) -> str: ...
+
+    @property
+    def scale(self) -> float: ...
+
+
+#: Followers with a roller (or knife edge): the pressure-angle problem of :mod:`optimize`.
+RollerFollower = Rocker | Translating
+#: Followers with a flat face: sized by convexity (:mod:`optimize.flat`).
+FlatFollower = FlatTranslating | FlatRocker

@@ -273,7 +273,7 @@ def plot_flat_pressure(solution, *, n: int = 721):
 
     Parameters
     ----------
-    solution : cams.profile.flat.FlatFaceSolution
+    solution : optimize.flat.FlatFaceSolution
     """
     d = solution.design
     c = solution.curves(n)
@@ -300,7 +300,7 @@ def plot_curvature(solution, *, n: int = 721):
 
     Parameters
     ----------
-    solution : cams.profile.flat.FlatFaceSolution
+    solution : optimize.flat.FlatFaceSolution
     """
     d = solution.design
     c = solution.curves(n)
@@ -337,7 +337,7 @@ def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
 
 
 def _draw_flat_mechanism(ax, cam, profile, phi: float):
-    """A flat-faced follower's cam (turned to ``phi``) and its face, in the follower's fixed frame."""
+    """A flat-faced follower's cam (turned to ``phi``) and its face, in the frame of ``FlatFaceSolution.centre``."""
     from matplotlib.patches import Circle
 
     d = cam.design

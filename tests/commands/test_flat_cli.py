@@ -9,7 +9,7 @@ import pytest
 from cams.cli import main
 from cams.model.design import FlatFaceDesign
 from cams.io.designfile import design_from_dict, load_design
-from cams.profile.flat import FlatRocker, FlatTranslating
+from cams.model.follower import FlatRocker, FlatTranslating
 from laws.errors import InputError
 from tests.conftest import EXAMPLES
 

@@ -62,7 +62,7 @@ def test_method_and_samples_of_the_file_are_honoured():
 
 @pytest.mark.parametrize("name", ["translating_flat.toml", "rocker_flat.toml"])
 def test_flat_face_through_the_one_entry_point(name):
-    from cams.profile.flat import size_flat_face
+    from optimize.flat import size_flat_face
 
     design = load_design(EXAMPLES / name)
     res = solve(design)

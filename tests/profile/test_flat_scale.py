@@ -16,7 +16,7 @@ import pytest
 
 from cams.cli import main
 from cams.io.designfile import design_from_dict
-from cams.profile.flat import size_flat_face
+from optimize.flat import size_flat_face
 
 RMIN = 10.123456789  # not a multiple of R0's unit in the last place: R0 + s + s'' does not round back to it
 
