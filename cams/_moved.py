@@ -1,10 +1,18 @@
-"""The import paths of the previous release, kept for one release: each forwards to the module's new home.
+"""The import paths of the previous release, kept for one release: each forwards to the names' new homes.
 
 ``import cams.design`` still works and gives a module that forwards every
 attribute to :mod:`cams.model.design`, with a :class:`DeprecationWarning` naming
-the new path. Installed by ``cams/__init__`` at the end of ``sys.meta_path``,
-so it is asked only for names no package holds; it imports nothing until an
-old path is used. The README lists the same table.
+the new path; a module split by stage forwards each name to the first of its
+new homes that holds it (``cams.flatface.size_flat_face`` is
+:func:`optimize.flat.size_flat_face`). The finder is installed by
+``cams/__init__`` at the end of ``sys.meta_path``, so it is asked only for
+names no package holds. An old module whose name is now a package
+(``cams.profile``, ``cams.checks``, ``cams.machine``) forwards its old names
+through the package's ``__getattr__`` (:func:`forward`).
+
+This module is outside the layer rule (``tests/test_layers.py``): it imports
+by name, at run time, only when an old path is used. It goes in the next
+release; the README lists the same table.
 """
 
 from __future__ import annotations
@@ -17,42 +25,74 @@ import sys
 import types
 import warnings
 
-#: old module -> new module (a package's submodules follow it: ``cams.linkage.machines``).
-MOVED: dict[str, str] = {
-    "cams.follower": "cams.model.follower",
-    "cams.design": "cams.model.design",
-    "cams.pressure": "cams.verify.pressure",
-    "cams.flatface": "cams.profile.flat",
-    "cams.camforces": "cams.dynamics.forces",
-    "cams.files": "cams.io.files",
-    "cams.designfile": "cams.io.designfile",
-    "cams.export": "cams.io.export",
-    "cams.templates": "cams.io.templates",
-    "cams.machinefile": "cams.machine.machinefile",
-    "cams.linkage": "cams.machine.linkage",
-    "cams.kinetostatics": "cams.machine.kinetostatics",
-    "cams.flywheel": "cams.machine.flywheel",
-    "cams.plots": "cams.present.plots",
-    "cams.report": "cams.present.report",
+#: old module -> its names' new homes, searched in order (a package's submodules follow it:
+#: ``cams.linkage.machines`` -> ``cams.machine.linkage.machines``).
+MOVED: dict[str, tuple[str, ...]] = {
+    "cams.follower": ("cams.model.follower",),
+    "cams.design": ("cams.model.design",),
+    "cams.pressure": ("cams.verify.pressure",),
+    "cams.flatface": ("cams.profile.flat", "optimize.flat", "cams.checks.flat", "cams.kinematics.flat",
+                      "cams.model.follower", "cams.model.design", "cams.checks.base"),
+    "cams.camforces": ("cams.dynamics.forces",),
+    "cams.files": ("cams.io.files",),
+    "cams.designfile": ("cams.io.designfile",),
+    "cams.export": ("cams.io.export",),
+    "cams.templates": ("cams.io.templates",),
+    "cams.machinefile": ("cams.machine.machinefile",),
+    "cams.linkage": ("cams.machine.linkage",),
+    "cams.kinetostatics": ("cams.machine.kinetostatics", "cams.present.machine_plots"),
+    "cams.flywheel": ("cams.machine.flywheel",),
+    "cams.plots": ("cams.present.plots",),
+    "cams.report": ("cams.present.report",),
+    # old modules whose names are packages now: their __init__ forwards the old names
+    "cams.profile": ("cams.profile.roller", "cams.kinematics.inversion"),
+    "cams.checks": ("cams.checks.profile", "cams.checks.base", "cams.solve"),
+    "cams.machine": ("cams.machine.timing",),
 }
 
 
-def new_name(old: str) -> str | None:
-    """The module's new name, or None when ``old`` is not a moved path."""
+def new_homes(old: str) -> tuple[str, ...] | None:
+    """The new homes of an old module path, or None when ``old`` is not a moved path."""
     for before, after in MOVED.items():
-        if old == before or old.startswith(before + "."):
-            return after + old[len(before):]
+        if old == before:
+            return after
+        if old.startswith(before + "."):
+            return (after[0] + old[len(before):],)
     return None
 
 
+def new_name(old: str) -> str | None:
+    """The first new home of an old module path, or None."""
+    homes = new_homes(old)
+    return None if homes is None else homes[0]
+
+
+def forward(old: str, name: str) -> object:
+    """Attribute ``name`` of the previous release's module ``old``, from its new home, with a warning.
+
+    Raises
+    ------
+    AttributeError
+        No new home holds ``name``.
+    """
+    if not name.startswith("__"):
+        for home in MOVED.get(old, ()):
+            module = importlib.import_module(home)
+            if hasattr(module, name):
+                warnings.warn(f"{old}.{name} moved to {home}.{name}; the old path goes in the next release",
+                              DeprecationWarning, stacklevel=3)
+                return getattr(module, name)
+    raise AttributeError(f"module {old!r} has no attribute {name!r}")
+
+
 class _Forward(importlib.abc.MetaPathFinder, importlib.abc.Loader):
-    """Finds an old path and loads a module that forwards its attributes to the new one."""
+    """Finds an old path and loads a module that forwards its attributes to the new homes."""
 
     def find_spec(self, fullname, path, target=None):  # noqa: ANN001 - the finder protocol
-        new = new_name(fullname)
-        if new is None:
+        homes = new_homes(fullname)
+        if homes is None:
             return None
-        real = importlib.util.find_spec(new)
+        real = importlib.util.find_spec(homes[0])
         if real is None:
             return None
         return importlib.machinery.ModuleSpec(fullname, self, is_package=real.submodule_search_locations is not None)
@@ -61,13 +101,21 @@ class _Forward(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         return None
 
     def exec_module(self, module: types.ModuleType) -> None:
-        new = new_name(module.__name__)
-        assert new is not None
-        warnings.warn(f"{module.__name__} moved to {new}; the old path goes in the next release",
+        old = module.__name__
+        homes = new_homes(old)
+        assert homes is not None
+        warnings.warn(f"{old} moved to {homes[0]}; the old path goes in the next release",
                       DeprecationWarning, stacklevel=3)
-        real = importlib.import_module(new)
-        module.__getattr__ = lambda name: getattr(real, name)  # type: ignore[method-assign]
-        module.__doc__ = f"Moved to :mod:`{new}`."
+        modules = [importlib.import_module(h) for h in homes]
+
+        def attribute(name: str) -> object:
+            for m in modules:
+                if hasattr(m, name):
+                    return getattr(m, name)
+            raise AttributeError(f"module {old!r} has no attribute {name!r}")
+
+        module.__getattr__ = attribute  # type: ignore[method-assign]
+        module.__doc__ = f"Moved to :mod:`{homes[0]}`."
         if module.__spec__ is not None and module.__spec__.submodule_search_locations is not None:
             module.__path__ = []
 

@@ -16,14 +16,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from cams.checks.profile import CheckReport, check_profile
 from cams.model.design import METHODS, CamDesign
 from cams.model.follower import Rocker, Translating
+from cams.profile.roller import profile_options
 from cams.verify.pressure import PressureReport, check_pressure
 from laws.errors import InputError, check_option
 from optimize.result import Binding
 from optimize.sizing import OBJECTIVES, offset_x, size, vanishing_error
 
-__all__ = ["SolveResult", "solve", "excess", "pressure_failures"]
+__all__ = ["SolveResult", "solve", "check_design", "excess", "pressure_failures"]
 
 
 @dataclass(frozen=True)
@@ -308,3 +310,24 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
                    "set limits.min_base_radius or a smaller roller", method=sized.method, samples=sized.samples,
                    mode=sized.mode, binding=sized.binding, error_bound=sized.error_bound, seconds=sized.seconds,
                    certified=sized.certified)
+
+
+def check_design(design: CamDesign, *, tolerance: float | None = None, method: str | None = None) -> CheckReport:
+    """Solve ``design`` (:func:`cams.solve.solve`) and check the profile of the solved centre.
+
+    A flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`) is
+    sized by convexity and checked by :func:`cams.checks.flat.check_flat_face`
+    (a :class:`cams.checks.flat.FlatCheckReport`); it takes no ``method``.
+    """
+    if getattr(design, "face", "roller") == "flat":
+        from cams.checks.flat import check_flat_face
+        from cams.profile.flat import flat_face_profile
+        from cams.profile.roller import resolve_tolerance
+
+        tol, field = resolve_tolerance(design.tolerance, tolerance)  # bad options fail before sizing
+        solution = solve(design, method=method)
+        return check_flat_face(design, solution, flat_face_profile(design, solution.R0, tolerance=tol, field=field))
+
+    opts = profile_options(design, tolerance=tolerance)  # bad options fail before solving
+    result = solve(design, method=method, objective=design.extra.get("objective", "R0"))
+    return check_profile(result.design, result.centre, options=opts)

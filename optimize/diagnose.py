@@ -17,7 +17,7 @@ by a solver's feasibility tolerance:
 A fixed offset of a translating follower never empties the zone: every wedge
 contains the half-line from its apex along -Y widening at its half-angle, so
 the zone reaches every offset far enough down; a fixed L misses a non-empty
-zone, and :func:`optimize.sizing.admissible_L_range` gives its admissible range.
+zone, and :func:`admissible_L_range` gives its admissible range.
 
 The bound of the feasible set is an infimum (a supremum for K_C). When it is
 attained (the zone there a point or a segment) the value printed is rounded
@@ -41,7 +41,7 @@ from cams.model.follower import Rocker
 from laws.errors import InfeasibleError
 from optimize.result import CentreSolution
 
-__all__ = ["diagnosed", "explain_infeasible", "Relaxation", "relaxations", "zone_margin", "zone_empty", "least_R0"]
+__all__ = ["admissible_L_range", "diagnosed", "explain_infeasible", "Relaxation", "relaxations", "zone_margin", "zone_empty", "least_R0"]
 
 #: Loosest allowable pressure angle tried (degrees; the limits must stay below 90).
 LOOSEST_DEG = 89.99
@@ -215,9 +215,7 @@ def _attained(R0_at: Callable[[float], float | None], bound: float, span: float)
 
 def _misses_L(design: CamDesign, L: float) -> bool:
     """True when no admissible centre lies at centre distance ``L`` from the pivot (length): the zone is empty
-    or ``L`` is outside its range (:func:`optimize.sizing.admissible_L_range`)."""
-    from optimize.sizing import admissible_L_range
-
+    or ``L`` is outside its range (:func:`admissible_L_range`)."""
     if zone_empty(design):
         return True
     try:
@@ -421,3 +419,41 @@ def _solver_failed(design: CamDesign, extra, err: InfeasibleError) -> Infeasible
     return InfeasibleError("solve.method", f"the {design.method} method found no admissible cam centre ({err}), but "
                            f"the zone is not empty: a centre at R0 = {R0:.6g} mm satisfies every limit; try "
                            "another method")
+
+
+def _lmax(design: CamDesign) -> float:
+    """Largest centre distance in the zone (inf when the zone is unbounded)."""
+    from optimize.bounds import _recession_direction
+    from optimize.planar import clip_polygon
+    from optimize.zone import sample_wedges
+
+    if _recession_direction(design) is not None:
+        return float("inf")
+    N, c = sample_wedges(design, 512).lines()
+    # a bounded zone reaching beyond this box (100 times the follower) would be clipped, L max too small (open)
+    s = 100 * design.scale
+    poly = clip_polygon(N, c, (-s, -s, s, s))
+    return float(np.max(np.linalg.norm(poly, axis=1))) if len(poly) else 0.0
+
+
+def admissible_L_range(design: CamDesign) -> tuple[float, float]:
+    """Smallest and largest centre distance L of admissible centres (rocker).
+
+    Parameters
+    ----------
+    design : CamDesign
+        With a rocker follower (L is measured from its pivot, the origin of
+        the fixed frame).
+
+    Returns
+    -------
+    lo, hi : float
+        Length unit. ``lo`` is exact (the admissible centre nearest to the
+        pivot over the continuous zone); ``hi`` is ``inf`` when the zone is
+        unbounded, else the farthest vertex of the zone sampled at 512 steps
+        per phase and clipped to a square of half-side ``100 * design.scale``.
+    """
+    from optimize.exact import nearest_exact
+
+    lo = diagnosed(nearest_exact)(design, design.follower.pivot).objective
+    return lo, _lmax(design)

@@ -26,7 +26,7 @@ import numpy as np
 from cams.model.design import METHODS, CamDesign
 from cams.model.follower import Rocker, Translating
 from laws.errors import InfeasibleError, InputError, check_option
-from optimize.diagnose import diagnosed
+from optimize.diagnose import admissible_L_range, diagnosed
 from optimize.result import Binding, CentreSolution
 
 __all__ = ["Sizing", "size", "nearest", "admissible_L_range", "offset_x", "vanishing_error", "OBJECTIVES"]
@@ -142,19 +142,6 @@ def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None,
     return nearest_exhaustive(design, target, samples=design.samples, extra=extra)
 
 
-def _lmax(design: CamDesign) -> float:
-    """Largest centre distance in the zone (inf when the zone is unbounded)."""
-    from optimize.bounds import _recession_direction
-    from optimize.planar import clip_polygon
-    from optimize.zone import sample_wedges
-
-    if _recession_direction(design) is not None:
-        return float("inf")
-    N, c = sample_wedges(design, 512).lines()
-    # a bounded zone reaching beyond this box (100 times the follower) would be clipped, L max too small (open)
-    s = 100 * design.scale
-    poly = clip_polygon(N, c, (-s, -s, s, s))
-    return float(np.max(np.linalg.norm(poly, axis=1))) if len(poly) else 0.0
 
 
 def _seeds(design: CamDesign, ref: np.ndarray, radius: float, inner: np.ndarray) -> tuple[float, ...]:
@@ -173,29 +160,6 @@ def _seeds(design: CamDesign, ref: np.ndarray, radius: float, inner: np.ndarray)
     far = inner + (2 * radius + np.linalg.norm(inner - ref) + design.scale) * rd[0]
     s = crossing_seed(ref, radius, inner, far)
     return () if s is None else (s,)
-
-
-def admissible_L_range(design: CamDesign) -> tuple[float, float]:
-    """Smallest and largest centre distance L of admissible centres (rocker).
-
-    Parameters
-    ----------
-    design : CamDesign
-        With a rocker follower (L is measured from its pivot, the origin of
-        the fixed frame).
-
-    Returns
-    -------
-    lo, hi : float
-        Length unit. ``lo`` is exact (the admissible centre nearest to the
-        pivot over the continuous zone); ``hi`` is ``inf`` when the zone is
-        unbounded, else the farthest vertex of the zone sampled at 512 steps
-        per phase and clipped to a square of half-side ``100 * design.scale``.
-    """
-    lo = nearest(design, design.follower.pivot, method="exact").objective
-    return lo, _lmax(design)
-
-
 
 
 def size(design: CamDesign, *, method: str | None = None, objective: str = "R0") -> Sizing:

@@ -22,16 +22,19 @@ MAY_IMPORT: dict[str, tuple[str, ...]] = {
     "cams.words": (),
     # the problem, typed
     "cams.model": ("laws",),
+    # the previous release's import paths, for one release: it imports the new homes by name, at run time, only
+    # when an old path is used (outside the rule; the packages that kept an old module's name ask it for names)
+    "cams._moved": (),
     # the package's own entry: nothing above the model
-    "cams": ("laws", "cams.model"),
+    "cams": ("laws", "cams.model", "cams._moved"),
     # the product's kernel: the inversion, the flat-face envelope, extremum search
     "cams.kinematics": (*_BASE, "cams.model"),
     # the independent check: its own inversion and search, no solver's formula, no kernel
     "cams.verify": (*_BASE, "cams.model"),
     # the zone and the solvers: no check formula
     "optimize": (*_BASE, "cams.model", "cams.kinematics"),
-    "cams.profile": (*_BASE, "cams.model", "cams.kinematics"),
-    "cams.checks": (*_BASE, "cams.model", "cams.kinematics", "cams.profile"),
+    "cams.profile": (*_BASE, "cams.model", "cams.kinematics", "cams._moved"),
+    "cams.checks": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams._moved"),
     "cams.dynamics": (*_BASE, "cams.model", "cams.kinematics"),
     "cams.io": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams.dynamics"),
     # the facade: a cam solved, verified, profiled, checked and assessed, one call each
@@ -43,7 +46,7 @@ MAY_IMPORT: dict[str, tuple[str, ...]] = {
                  "cams.checks", "cams.dynamics", "cams.io", "cams.solve", "cams.assess"),
     "cams.sweep": (*_BASE, "cams.model", "cams.io", "cams.cam"),
     "cams.machine": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                     "cams.checks", "cams.dynamics", "cams.io", "cams.solve", "cams.assess", "cams.cam"),
+                     "cams.checks", "cams.dynamics", "cams.io", "cams.solve", "cams.assess", "cams.cam", "cams._moved"),
     "cams.present": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
                      "cams.checks", "cams.dynamics", "cams.io", "cams.solve", "cams.assess", "cams.cam",
                      "cams.machine"),

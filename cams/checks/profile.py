@@ -77,7 +77,6 @@ __all__ = [
     "CurvatureExtremes",
     "check_profile",
     "check_solution",
-    "check_design",
     "RECOMMENDED_ROLLER_FRACTION",
 ]
 
@@ -366,27 +365,3 @@ def check_solution(result, *, tolerance: float | None = None, options: ProfileOp
     """
     opts = options if options is not None else profile_options(result.design, tolerance=tolerance)
     return check_profile(result.design, result.centre, options=opts)
-
-
-def check_design(design: CamDesign, *, tolerance: float | None = None, method: str | None = None) -> CheckReport:
-    """Solve ``design`` (:func:`cams.solve.solve`) and check the profile of the solved centre.
-
-    A flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`) is
-    sized by convexity and checked by :func:`cams.checks.flat.check_flat_face`
-    (a :class:`cams.checks.flat.FlatCheckReport`); it takes no ``method``.
-    """
-    from cams.solve import solve
-
-    if getattr(design, "face", "roller") == "flat":
-        from cams.checks.flat import check_flat_face
-        from cams.profile.flat import flat_face_profile
-        from cams.profile.roller import resolve_tolerance
-
-        tol, field = resolve_tolerance(design.tolerance, tolerance)  # bad options fail before sizing
-        solution = solve(design, method=method)
-        return check_flat_face(design, solution, flat_face_profile(design, solution.R0, tolerance=tol, field=field))
-
-    opts = profile_options(design, tolerance=tolerance)  # bad options fail before solving
-    result = solve(design, method=method, objective=design.extra.get("objective", "R0"))
-    return check_profile(result.design, result.centre, options=opts)
-

@@ -27,8 +27,6 @@ Angles in radians, lengths in the design's unit (mm).
 
 from __future__ import annotations
 
-import importlib
-import warnings
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -60,28 +58,6 @@ __all__ = [
     "MIN_SAMPLES",
     "MAX_SAMPLES",
 ]
-
-#: The names this module held before the split by stage, and their homes (kept importable for one release).
-#: (``FlatTranslating`` and ``FlatRocker``, now in :mod:`cams.model.follower`, are imported here: no warning.)
-_MOVED = {
-    "min_base_radius_translating": "optimize.flat",
-    "min_base_radius_oscillating": "optimize.flat",
-    "FlatFaceSolution": "optimize.flat",
-    "size_flat_face": "optimize.flat",
-    "FlatCheckReport": "cams.checks.flat",
-    "check_flat_face": "cams.checks.flat",
-}
-
-
-def __getattr__(name: str) -> object:
-    """The old names of :data:`_MOVED`, from their new homes, with a :class:`DeprecationWarning`."""
-    home = _MOVED.get(name)
-    if home is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    warnings.warn(f"cams.profile.flat.{name} moved to {home}.{name}; the old name goes in the next release",
-                  DeprecationWarning, stacklevel=2)
-    return getattr(importlib.import_module(home), name)
-
 
 @dataclass(frozen=True, eq=False)
 class FlatFaceProfile:

@@ -9,7 +9,7 @@ import pytest
 from cams._moved import MOVED, new_name
 
 
-@pytest.mark.parametrize("old", sorted(MOVED))
+@pytest.mark.parametrize("old", sorted(set(MOVED) - {"cams.profile", "cams.checks", "cams.machine"}))
 def test_an_old_module_path_forwards_to_the_new_module(old):
     """In a fresh interpreter: the old path warns, naming the new one, and its public names are the new module's."""
     code = f"""
@@ -18,12 +18,12 @@ warnings.simplefilter("error", DeprecationWarning)
 try:
     importlib.import_module({old!r})
 except DeprecationWarning as w:
-    assert {MOVED[old]!r} in str(w), w
+    assert {MOVED[old][0]!r} in str(w), w
 else:
     raise SystemExit("no warning")
 warnings.simplefilter("ignore", DeprecationWarning)
 old = importlib.import_module({old!r})
-new = importlib.import_module({MOVED[old]!r})
+new = importlib.import_module({MOVED[old][0]!r})
 names = [n for n in dir(new) if not n.startswith("_")]
 assert names and all(getattr(old, n) is getattr(new, n) for n in names), names
 """
@@ -38,10 +38,25 @@ def test_a_moved_package_s_submodules_follow_it():
 
 
 @pytest.mark.parametrize(("package", "name", "home"), [("cams.profile", "build_profile", "cams.profile.roller"),
-                                                       ("cams.checks", "check_profile", "cams.checks.profile")])
+                                                       ("cams.checks", "check_profile", "cams.checks.profile"),
+                                                       ("cams.checks", "check_design", "cams.solve"),
+                                                       ("cams.machine", "design_machine", "cams.machine.timing")])
 def test_an_old_module_that_became_a_package_forwards_its_names(package, name, home):
     with pytest.warns(DeprecationWarning, match=home):
         got = getattr(importlib.import_module(package), name)
     assert got is getattr(importlib.import_module(home), name)
     with pytest.raises(AttributeError):
         getattr(importlib.import_module(package), "no_such_name")
+
+
+def test_a_module_split_by_stage_forwards_each_name_to_its_home():
+    code = """
+import warnings
+warnings.simplefilter("ignore", DeprecationWarning)
+from cams.flatface import size_flat_face, flat_face_profile, check_flat_face, FlatRocker
+import optimize.flat, cams.profile.flat, cams.checks.flat, cams.model.follower
+assert size_flat_face is optimize.flat.size_flat_face and flat_face_profile is cams.profile.flat.flat_face_profile
+assert check_flat_face is cams.checks.flat.check_flat_face and FlatRocker is cams.model.follower.FlatRocker
+"""
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr

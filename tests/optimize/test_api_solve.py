@@ -80,13 +80,13 @@ def test_flat_face_refuses_a_method():
 
 @pytest.mark.parametrize("name", FILES)
 def test_check_design_api_equals_cams_check_json(capsys, name):
-    """``cams.checks.profile.check_design(load_design(f))`` is what ``cams check f --json`` prints, flat faces included.
+    """``cams.solve.check_design(load_design(f))`` is what ``cams check f --json`` prints, flat faces included.
 
     The command adds the one assessment every command applies (``verified``, ``buildable``, ``failures``, from
     :class:`cams.cam.Cam`) and its ``passed`` is the checks' and the assessment's together.
     """
     from cams.cam import Cam
-    from cams.checks.profile import check_design
+    from cams.solve import check_design
 
     code = main(["check", str(EXAMPLES / name), "--json"])
     cli = json.loads(capsys.readouterr().out)

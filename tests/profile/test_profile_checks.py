@@ -9,14 +9,14 @@ import pytest
 
 from cams.checks.profile import (
     RECOMMENDED_ROLLER_FRACTION,
-    check_design,
     check_profile,
     check_solution,
     curvature_extremes,
     pressure_from_profile,
 )
-from cams.verify.pressure import check_pressure, pressure_angle
 from cams.profile.roller import ProfileOptions, pitch_curve
+from cams.solve import check_design
+from cams.verify.pressure import check_pressure, pressure_angle
 from laws.errors import InputError
 
 ALL = ("rocker_force", "rocker_form", "translating_force", "translating_form_centric")
