@@ -418,7 +418,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
     if getattr(design, "face", "roller") == "flat":
         return _solve_flat(design, method, objective)
     if objective is None:
-        objective = design.extra.get("objective", "R0")
+        objective = design.objective
     method = check_option("solve.method", method or design.method, METHODS)
     check_option("solve.objective", objective, OBJECTIVES)
     design = design.with_(method=method) if method != design.method else design

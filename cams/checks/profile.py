@@ -627,6 +627,6 @@ def check_design(design: CamDesign, *, tolerance: float | None = None, method: s
         return check_flat_face(design, solution, flat_face_profile(design, solution.R0, tolerance=tol, field=field))
 
     opts = profile_options(design, tolerance=tolerance)  # bad options fail before solving
-    result = solve(design, method=method, objective=design.extra.get("objective", "R0"))
+    result = solve(design, method=method, objective=design.objective)
     return check_profile(result.design, result.centre, options=opts)
 

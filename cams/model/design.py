@@ -6,11 +6,13 @@ command line speak degrees, and :func:`cams.io.designfile.load_design` converts.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
+from cams.model.dynamics import DynamicsSpec, check_dynamics_follower
 from cams.model.follower import Follower, Rocker, Translating
+from cams.model.options import ProfileOptions, check_length, check_objective, check_tolerance
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
@@ -97,6 +99,21 @@ class CamDesign:
     centre : (float, float) or None
         A chosen cam centre in the follower's fixed frame (length,
         :mod:`cams.model.follower`): the cam is checked, not sized.
+    objective : {"R0", "L"}
+        What the sizing minimizes when ``limits.centre_distance`` is free:
+        the base radius, or the centre distance (rocker only).
+    tolerance : float or None
+        Chord tolerance of the sampled profile (length); None: the default
+        for the cam's size (:func:`cams.profile.roller.cap_tolerance`).
+    min_curvature_radius : float or None
+        Smallest radius of curvature the working profile may have (length);
+        None: not checked.
+    bore_radius : float or None
+        Radius of the cam's bore (length), checked against the working
+        profile; None: not checked.
+    dynamics : DynamicsSpec or None
+        The follower's dynamics (a file's ``[dynamics]``): forces, spring and
+        jump speed of a force-closed cam; None: no forces.
     """
 
     follower: Follower
@@ -109,9 +126,18 @@ class CamDesign:
     samples: int = 360
     base_radius: float | None = None
     centre: tuple[float, float] | None = None
-    extra: dict = field(default_factory=dict, compare=False, hash=False)
+    objective: str = "R0"
+    tolerance: float | None = None
+    min_curvature_radius: float | None = None
+    bore_radius: float | None = None
+    dynamics: DynamicsSpec | None = None
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
+        check_objective(self.objective, isinstance(self.follower, Rocker))
+        if self.dynamics is not None:
+            if not isinstance(self.dynamics, DynamicsSpec):
+                raise InputError("dynamics", f"must be a DynamicsSpec, got {type(self.dynamics).__name__}")
+            check_dynamics_follower(self.dynamics, isinstance(self.follower, Rocker))
         if self.cam_sense not in (1, -1):
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         check_option("solve.method", self.method, METHODS)
@@ -134,6 +160,7 @@ class CamDesign:
                 raise InputError("limits.centre_distance", "applies to rocker followers only; use follower.offset")
         else:  # pragma: no cover - guarded by the type
             raise InputError("follower.kind", "must be 'rocker' or 'translating'")
+        ProfileOptions(self.tolerance, self.min_curvature_radius, self.bore_radius)  # checks the three
 
     @property
     def scale(self) -> float:
@@ -158,7 +185,7 @@ class CamDesign:
         if lim.min_base_radius is not None:
             raise InputError(key, "fixes the cam: a floor on R0 (limits.min_base_radius) has nothing to size; "
                              "remove one of them")
-        if self.extra.get("objective", "R0") != "R0":
+        if self.objective != "R0":
             raise InputError("solve.objective", f"nothing is minimized for a cam chosen by {key}; remove it")
         if self.centre is not None:
             c = self.centre
@@ -278,8 +305,9 @@ class FlatFaceDesign:
         A chosen R0 (length) instead of the smallest: checked, not sized.
     bore_radius : float or None
         Bore radius (length) to check the profile against.
-    tolerance : float
-        Chord tolerance of the sampled profile (length).
+    tolerance : float or None
+        Chord tolerance of the sampled profile (length); None: the default
+        for the cam's size (:func:`cams.profile.roller.cap_tolerance`).
     """
 
     follower: object
@@ -291,8 +319,7 @@ class FlatFaceDesign:
     min_base_radius: float | None = None
     base_radius: float | None = None
     bore_radius: float | None = None
-    tolerance: float = 1e-3
-    extra: dict = field(default_factory=dict, compare=False, hash=False)
+    tolerance: float | None = None
 
     face = "flat"
 
@@ -308,13 +335,10 @@ class FlatFaceDesign:
         if isinstance(self.follower, FlatRocker) and not self.program.lift < np.pi:
             raise InputError("follower.swing", "must be < 180 degrees")
         for name, fld in (("min_radius", "limits.min_radius"), ("min_base_radius", "limits.min_base_radius"),
-                          ("base_radius", "cam.base_radius"), ("bore_radius", "cam.bore_radius"),
-                          ("tolerance", "profile.tolerance")):
-            v = getattr(self, name)
-            if v is None and name not in ("min_radius", "tolerance"):
-                continue
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (np.isfinite(v) and v > 0):
-                raise InputError(fld, f"must be a number > 0, got {v!r}")
+                          ("base_radius", "cam.base_radius"), ("bore_radius", "cam.bore_radius")):
+            check_length(getattr(self, name), fld, optional=name != "min_radius")
+        if self.tolerance is not None:
+            check_tolerance(self.tolerance, "profile.tolerance")
         if self.base_radius is not None and self.min_base_radius is not None:  # as for a roller follower
             raise InputError("cam.base_radius", "fixes the cam: a floor on R0 (limits.min_base_radius) has nothing "
                              "to size; remove one of them")

@@ -17,7 +17,7 @@ def test_solve_json_reports_the_forces(capsys):
     assert main(["solve", str(FILE), "--json"]) == 0
     fo = json.loads(capsys.readouterr().out)["forces"]
     cam = Cam.from_file(FILE)
-    spec = cam.design.extra["dynamics"]
+    spec = cam.design.dynamics
     dyn = spec.dynamics.with_spring(spec.spring(cam.design))
     cf = cam_forces(cam.design, cam.solution.centre, dyn)
     assert fo["max_contact_force"] == pytest.approx(float(cf.contact.max()), rel=1e-12)
