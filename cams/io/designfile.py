@@ -53,7 +53,7 @@ import numpy as np
 
 from cams.dynamics.forces import DYNAMICS_KEYS, LENGTH_UNITS
 from cams.model.design import CamDesign, FlatFaceDesign, Limits
-from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, check_dynamics_follower
+from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, journal_error
 from cams.io.files import check_document, check_keys, read_toml, toml_integer
 from cams.io.files import toml_number as _num
 from cams.io.files import toml_table as _table
@@ -259,7 +259,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         method=so.get("method", "exact"), samples=samples, base_radius=base_radius, centre=centre,
         objective=so.get("objective", "R0"), tolerance=_value(pt, "tolerance"),
         min_curvature_radius=_value(pt, "min_curvature_radius"), bore_radius=_value(cam, "bore_radius"),
-        dynamics=_dynamics(d),
+        dynamics=_dynamics(d, kind),
     )
 
 
@@ -433,12 +433,12 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
     )
 
 
-def _dynamics(d: dict) -> DynamicsSpec | None:
-    """The optional [dynamics] table (None without one); the follower's kind is checked by the design."""
+def _dynamics(d: dict, kind: str) -> DynamicsSpec | None:
+    """The optional [dynamics] table (None without one); ``kind``: the follower's."""
     if "dynamics" not in d:
         return None
     units = d.get("units", "mm")
-    return dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm")
+    return dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm", follower=kind)
 
 
 def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None = None) -> DynamicsSpec:
@@ -458,9 +458,11 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
     units : str
         The file's length unit: ``"mm"`` only.
     follower : {"rocker", "translating"} or None
-        The follower's kind, checked as the design checks it
-        (:func:`cams.model.dynamics.check_dynamics_follower`: a translating
-        follower has no ``journal_radius``). None: not checked here.
+        The follower's kind; ``"translating"`` refuses the key
+        ``journal_radius`` (a translating follower's friction is in its guide;
+        the design refuses a journal radius other than 0 with the same
+        message, :func:`cams.model.dynamics.check_dynamics_follower`). None:
+        not checked.
 
     Returns
     -------
@@ -470,7 +472,8 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
     ------
     InputError
         Unknown keys, a missing mass, values that are not numbers, a unit
-        other than mm; the values' ranges are checked by the model's classes.
+        other than mm, ``journal_radius`` for a translating follower; the
+        values' ranges are checked by the model's classes.
 
     Examples
     --------
@@ -486,6 +489,8 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
     if units not in LENGTH_UNITS:
         raise InputError("units", f"{show_value(units)} is not supported: the files are in mm (the [dynamics] table's "
                          "journal_radius too; its other values are SI)")
+    if follower == "translating" and "journal_radius" in table:
+        raise journal_error()
     if "mass" not in table:
         raise InputError("dynamics.mass", "is required (kg, or kg m^2 about the pivot for a rocker)")
     v = {k: check_number(f"dynamics.{k}", table[k]) for k in table}
@@ -505,8 +510,6 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
         margin=v.get("margin", 1.2),
         rate=None if both else v.get("spring_rate"),
     )
-    if follower is not None:
-        check_dynamics_follower(spec, follower == "rocker")
     return spec
 
 

@@ -15,7 +15,7 @@ import numpy as np
 from laws.errors import InputError
 from laws.errors import check_number as _num
 
-__all__ = ["Spring", "FollowerDynamics", "DynamicsSpec", "check_dynamics_follower"]
+__all__ = ["Spring", "FollowerDynamics", "DynamicsSpec", "check_dynamics_follower", "journal_error"]
 
 
 @dataclass(frozen=True)
@@ -134,5 +134,10 @@ def check_dynamics_follower(spec: DynamicsSpec, rocker: bool) -> None:
         ``dynamics.journal_radius`` other than 0 for a translating follower (``rocker`` False).
     """
     if not rocker and spec.dynamics.journal_radius != 0:
-        raise InputError("dynamics.journal_radius", "applies to a rocker's pivot journal (friction moment mu r N); a "
-                         "translating follower's friction is in its guide (dynamics.friction alone): remove it")
+        raise journal_error()
+
+
+def journal_error() -> InputError:
+    """The error of a journal radius given for a translating follower (a design file refuses the key itself)."""
+    return InputError("dynamics.journal_radius", "applies to a rocker's pivot journal (friction moment mu r N); a "
+                      "translating follower's friction is in its guide (dynamics.friction alone): remove it")
