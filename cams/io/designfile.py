@@ -52,7 +52,7 @@ from pathlib import Path
 import numpy as np
 
 from cams.dynamics.forces import DYNAMICS_KEYS, LENGTH_UNITS
-from cams.model.design import CamDesign, FlatFaceDesign, Limits
+from cams.model.design import MAX_SAMPLES, CamDesign, FlatFaceDesign, Limits, check_lift
 from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, journal_error
 from cams.io.files import check_document, check_keys, read_toml, toml_integer
 from cams.io.files import toml_number as _num
@@ -124,10 +124,6 @@ def _check_keys(table: dict, where: str, field: str) -> None:
 #: The smallest phase angle (degrees): the phase angles' sum is checked against 360 to this, so a shorter phase
 #: would be lost in that round-off.
 MIN_PHASE_ANGLE = 1e-6
-
-#: The most steps per phase of the sampled methods (``[solve] samples``): memory and time grow with the
-#: samples (about 1 kB a sample for the convex method), and the exact method needs none.
-MAX_SAMPLES = 100_000
 
 #: Lengths (mm) a design may use: from a picometre to 1000 km; outside, round-off or overflow would
 #: make the answers meaningless (the solvers work to 1e-12 of the design's scale).
@@ -209,17 +205,15 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
                 raise InputError(f"follower.{k}", "applies to translating followers; a rocker takes arm and swing")
         arm = _num(fo, "arm", "follower.arm")
         swing = _num(fo, "swing", "follower.swing")
-        if not 0 < swing < 180:
-            raise InputError("follower.swing", f"must be in (0, 180) degrees, got {swing!r}")
         follower = Rocker(arm, roller, sense=sense_of("follower.rise_direction", fo.get("rise_direction", "cw")))
         lift = np.radians(swing)
+        check_lift(lift, True)  # the model's rule, before the motion's heights are read against the swing
     else:
         for k in ("arm", "swing", "rise_direction"):
             if k in fo:
                 raise InputError(f"follower.{k}", "applies to rocker followers; a translating follower takes stroke and offset")
         stroke = _num(fo, "stroke", "follower.stroke")
-        if stroke <= 0:
-            raise InputError("follower.stroke", f"must be > 0, got {stroke!r}")
+        check_lift(stroke, False)  # the model's rule, before the motion's heights are read against the stroke
         follower = Translating(roller, offset=_num(fo, "offset", "follower.offset", required=False), stroke_scale=stroke)
         lift = stroke
 
@@ -236,9 +230,6 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     _check_keys(li, "limits", "limits")
     pa = _num(li, "pressure_angle", "limits.pressure_angle")
     rpa = _num(li, "return_pressure_angle", "limits.return_pressure_angle", required=False)
-    for name, v in (("pressure_angle", pa), ("return_pressure_angle", rpa)):
-        if v is not None and not 0 < v < 90:
-            raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {v!r}")
     closure = li.get("closure", "force")  # checked with the return limit by Limits
     limits = Limits(
         pressure_angle=np.radians(pa),
@@ -252,7 +243,9 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     _check_keys(pt, "profile", "profile")
     so = _table(d, "solve")
     _check_keys(so, "solve", "solve")
-    samples = toml_integer(so, "samples", "solve.samples", default=360, lo=2, hi=MAX_SAMPLES)
+    samples = so.get("samples", 360)
+    if isinstance(samples, bool) or not isinstance(samples, int):  # a whole number: its range is the model's
+        toml_integer(so, "samples", "solve.samples", default=360, lo=2, hi=MAX_SAMPLES)
     # the values of [solve] objective, [profile] and the bore are the model's to check (one message each)
     return CamDesign(
         follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=_name(d),
@@ -264,10 +257,8 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
 
 
 def _value(table: dict, key: str):
-    """``table[key]``, a number as a float, anything else as given (the model refuses it naming the key); None
-    when absent."""
-    v = table.get(key)
-    return float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else v
+    """``table[key]`` as given (None when absent): the model checks it, and names it as it stands in the file."""
+    return table.get(key)
 
 
 def _chosen(cam: dict) -> tuple[float | None, tuple[float, float] | None]:
@@ -375,8 +366,6 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
                                  "swing, centre_distance and face_offset")
         check_keys(fo, _KEYS["flat_rocker"], "follower")
         swing = _num(fo, "swing", "follower.swing")
-        if not 0 < swing < 180:
-            raise InputError("follower.swing", f"must be in (0, 180) degrees, got {swing!r}")
         if "centre_distance" not in fo:
             raise InputError("follower.centre_distance", "is required for a flat-faced rocker: the distance L from "
                              "the pivot to the cam centre (mm, > 0)")
@@ -386,6 +375,7 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         follower = FlatRocker(L, _num(fo, "face_offset", "follower.face_offset", default=0.0),
                               sense=sense_of("follower.rise_direction", fo.get("rise_direction", "cw")))
         lift = np.radians(swing)
+        check_lift(lift, True)  # the model's rule, before the motion's heights are read against the swing
         default_min_radius = 0.1 * L * lift
     else:
         for k in ("swing", "rise_direction", "centre_distance", "face_offset"):
@@ -394,8 +384,7 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
                                  "takes stroke and offset")
         check_keys(fo, _KEYS["flat_translating"], "follower")
         stroke = _num(fo, "stroke", "follower.stroke")
-        if stroke <= 0:
-            raise InputError("follower.stroke", f"must be > 0, got {stroke!r}")
+        check_lift(stroke, False)  # the model's rule, before the motion's heights are read against the stroke
         follower = FlatTranslating(_num(fo, "offset", "follower.offset", default=0.0), stroke_scale=stroke)
         lift = stroke
         default_min_radius = 0.1 * stroke

@@ -16,10 +16,35 @@ from cams.model.options import ProfileOptions, check_length, check_objective, ch
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
-__all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES"]
+__all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES", "check_lift"]
 
 METHODS = ("exact", "convex", "exhaustive")
 CLOSURES = ("force", "form")
+
+#: The most steps per phase of the sampled methods (``[solve] samples``): memory and time grow with the
+#: samples (about 1 kB a sample for the convex method), and the exact method needs none.
+MAX_SAMPLES = 100_000
+
+
+def _degrees_shown(angle: float) -> str:
+    """An angle kept in radians as the user gave it in degrees, for a message (12 significant digits: the
+    round trip through radians does not show)."""
+    return show_value(float(f"{float(np.degrees(angle)):.12g}"))
+
+
+def check_lift(lift: float, rocker: bool) -> None:
+    """Refuse a rocker's swing outside (0, 180) degrees (``lift`` in radians) or a stroke that is not > 0.
+
+    Raises
+    ------
+    InputError
+        On ``follower.swing`` (rocker) or ``follower.stroke`` (translating), the value in the file's unit.
+    """
+    if rocker:
+        if not (np.isfinite(lift) and 0 < lift < np.pi):
+            raise InputError("follower.swing", f"must be in (0, 180) degrees, got {_degrees_shown(lift)}")
+    elif not (np.isfinite(lift) and lift > 0):
+        raise InputError("follower.stroke", f"must be > 0, got {show_value(lift)}")
 
 
 @dataclass(frozen=True)
@@ -55,7 +80,7 @@ class Limits:
             if v is None:
                 continue
             if not (np.isfinite(v) and 0 < v < np.pi / 2):
-                raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {show_value(np.degrees(v))}")
+                raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {_degrees_shown(v)}")
         check_option("limits.closure", self.closure, CLOSURES)
         if self.closure == "force" and self.return_pressure_angle is not None:
             raise InputError("limits.return_pressure_angle", 'applies to form closure (closure = "form"); under force '
@@ -133,6 +158,11 @@ class CamDesign:
     dynamics: DynamicsSpec | None = None
 
     def __post_init__(self) -> None:
+        # in the order a design file's tables are read, so that a file with two faults names the same one
+        if isinstance(self.samples, bool) or not isinstance(self.samples, (int, np.integer)) \
+                or not 2 <= self.samples <= MAX_SAMPLES:
+            raise InputError("solve.samples", f"must be an integer from 2 to {MAX_SAMPLES}, got "
+                             f"{show_value(self.samples)}")
         check_objective(self.objective, isinstance(self.follower, Rocker))
         if self.dynamics is not None:
             if not isinstance(self.dynamics, DynamicsSpec):
@@ -142,14 +172,10 @@ class CamDesign:
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         check_option("solve.method", self.method, METHODS)
         self._check_chosen()
-        if not (isinstance(self.samples, (int, np.integer)) and self.samples >= 2):
-            raise InputError("solve.samples", f"must be an integer >= 2, got {self.samples!r}")
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
             raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
-        if isinstance(self.follower, Rocker):
-            if not self.program.lift < np.pi:
-                raise InputError("follower.swing", "must be < 180 degrees")
-        elif isinstance(self.follower, Translating):
+        check_lift(self.program.lift, isinstance(self.follower, Rocker))
+        if isinstance(self.follower, Translating):
             if self.limits.safety_factor != 1.0:
                 raise InputError(
                     "limits.safety_factor",
@@ -158,7 +184,7 @@ class CamDesign:
                 )
             if self.limits.centre_distance is not None:
                 raise InputError("limits.centre_distance", "applies to rocker followers only; use follower.offset")
-        else:  # pragma: no cover - guarded by the type
+        elif not isinstance(self.follower, Rocker):  # pragma: no cover - guarded by the type
             raise InputError("follower.kind", "must be 'rocker' or 'translating'")
         ProfileOptions(self.tolerance, self.min_curvature_radius, self.bore_radius)  # checks the three
 
@@ -332,8 +358,7 @@ class FlatFaceDesign:
             raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
         if not isinstance(self.follower, (FlatTranslating, FlatRocker)):
             raise InputError("follower", "must be a FlatTranslating or FlatRocker follower")
-        if isinstance(self.follower, FlatRocker) and not self.program.lift < np.pi:
-            raise InputError("follower.swing", "must be < 180 degrees")
+        check_lift(self.program.lift, isinstance(self.follower, FlatRocker))
         for name, fld in (("min_radius", "limits.min_radius"), ("min_base_radius", "limits.min_base_radius"),
                           ("base_radius", "cam.base_radius"), ("bore_radius", "cam.bore_radius")):
             check_length(getattr(self, name), fld, optional=name != "min_radius")
