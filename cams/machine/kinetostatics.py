@@ -63,6 +63,7 @@ moments of inertia in kg m^2, the crank's speed from the machine's rpm.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -72,6 +73,12 @@ from laws.errors import show_value
 from laws.errors import InputError, check_option
 from laws.errors import check_number as _num
 from laws.units import omega_to_rpm, rpm_to_omega
+
+if TYPE_CHECKING:  # types only: the modules are imported where they are used
+    from cams.dynamics.forces import CamForces, JumpSpeed, Spring
+    from cams.machine.flywheel import FlywheelResult
+    from cams.machine.linkage.analysis import Machine
+    from cams.machine.timing import CamTiming
 
 __all__ = [
     "LinkMass",
@@ -415,7 +422,7 @@ class Model:
     gravity: float
     output: str
     sense: int
-    machine: object = None
+    machine: Machine | None = None
     cycle: float = TWO_PI
     origin: float = 0.0
 
@@ -1325,12 +1332,12 @@ class MachineForces:
     """
 
     linkage: ForceResult | None = None
-    flywheel: object = None
-    cam: object = None
-    spring: object = None
-    jump: object = None
+    flywheel: FlywheelResult | None = None
+    cam: CamForces | None = None
+    spring: Spring | None = None
+    jump: JumpSpeed | None = None
     notes: tuple = ()
-    cam_timing: object = None
+    cam_timing: CamTiming | None = None
 
     @property
     def ok(self) -> bool:

@@ -31,6 +31,7 @@ its program.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 from fractions import Fraction
 from math import gcd
 
@@ -44,6 +45,10 @@ from cams.machine.linkage.analysis import WORKING, Machine, StrokeReport, analys
 from laws.errors import show_value
 from laws.errors import InfeasibleError, InputError, check_option
 from laws.program import Program
+
+if TYPE_CHECKING:  # types only: the modules are imported where they are used
+    from cams.assess import Assessment
+    from optimize.solve import SolveResult
 
 __all__ = [
     "CuttingZone",
@@ -643,10 +648,10 @@ class MachineResult:
     stroke: StrokeReport
     windows: Windows
     timing: CamTiming
-    solve: object  # optimize.solve.SolveResult
+    solve: SolveResult
     diagram: CycleDiagram
     bore: dict | None = None
-    assessment: object = None  # cams.assess.Assessment
+    assessment: Assessment | None = None
 
     @property
     def overlap(self) -> bool:

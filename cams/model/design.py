@@ -7,6 +7,7 @@ command line speak degrees, and :func:`cams.io.designfile.load_design` converts.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -15,6 +16,9 @@ from cams.model.follower import Follower, Rocker, Translating
 from cams.model.options import ProfileOptions, check_length, check_objective, check_tolerance
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
+
+if TYPE_CHECKING:  # the flat followers' home until they join cams.model.follower
+    from cams.profile.flat import FlatRocker, FlatTranslating
 
 __all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES", "check_lift"]
 
@@ -317,7 +321,7 @@ class FlatFaceDesign:
 
     Parameters
     ----------
-    follower : cams.profile.flat.FlatTranslating or cams.profile.flat.FlatRocker
+    follower : FlatTranslating or FlatRocker
     program : Program
         Lift in radians (rocker swing) or length (translating stroke).
     min_radius : float
@@ -336,7 +340,7 @@ class FlatFaceDesign:
         for the cam's size (:func:`cams.profile.roller.cap_tolerance`).
     """
 
-    follower: object
+    follower: FlatTranslating | FlatRocker
     program: Program
     min_radius: float
     cam_sense: int = 1

@@ -15,7 +15,7 @@ import numpy as np
 from laws.errors import InputError
 from laws.errors import check_number as _num
 
-__all__ = ["Spring", "FollowerDynamics", "DynamicsSpec", "check_dynamics_follower", "journal_error"]
+__all__ = ["DynamicsSpec", "FollowerDynamics", "Spring", "check_dynamics_follower", "journal_error"]
 
 
 @dataclass(frozen=True)
@@ -93,7 +93,7 @@ class FollowerDynamics:
         if self.spring is not None and not isinstance(self.spring, Spring):
             raise InputError("dynamics.spring", f"must be a Spring, got {type(self.spring).__name__}")
 
-    def with_spring(self, spring: Spring) -> "FollowerDynamics":
+    def with_spring(self, spring: Spring) -> FollowerDynamics:
         """A copy with ``spring``."""
         return replace(self, spring=spring)
 

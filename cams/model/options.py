@@ -16,8 +16,15 @@ import numpy as np
 
 from laws.errors import InputError, check_option
 
-__all__ = ["OBJECTIVES", "ProfileOptions", "check_tolerance", "check_length", "check_objective", "resolve_tolerance",
-           "profile_options"]
+__all__ = [
+    "OBJECTIVES",
+    "ProfileOptions",
+    "check_length",
+    "check_objective",
+    "check_tolerance",
+    "profile_options",
+    "resolve_tolerance",
+]
 
 #: What the sizing minimizes: ``"R0"`` the base radius, ``"L"`` the centre distance (rocker only).
 OBJECTIVES = ("R0", "L")

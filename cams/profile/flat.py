@@ -57,12 +57,16 @@ Angles in radians, lengths in the design's unit (mm).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from cams.checks.profile import ChecksMixin
 from laws.errors import InputError
 from laws.program import Program
+
+if TYPE_CHECKING:  # the design's module imports this one's followers
+    from cams.model.design import FlatFaceDesign
 
 __all__ = [
     "FlatFaceProfile",
@@ -770,7 +774,7 @@ class FlatFaceSolution:
     notes : tuple of str
     """
 
-    design: object
+    design: FlatFaceDesign
     R0: float
     R0_min: float | None
     R0_source: str
