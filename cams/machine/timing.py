@@ -46,9 +46,8 @@ from laws.errors import show_value
 from laws.errors import InfeasibleError, InputError, check_option
 from laws.program import Program
 
-if TYPE_CHECKING:  # types only: the modules are imported where they are used
+if TYPE_CHECKING:  # types only: the module is imported where it is used
     from cams.assess import Assessment
-    from optimize.solve import SolveResult
 
 __all__ = [
     "CuttingZone",
@@ -648,7 +647,7 @@ class MachineResult:
     stroke: StrokeReport
     windows: Windows
     timing: CamTiming
-    solve: SolveResult
+    solve: object  # optimize.solve.SolveResult
     diagram: CycleDiagram
     bore: dict | None = None
     assessment: Assessment | None = None
