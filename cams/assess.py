@@ -187,7 +187,6 @@ def assess_cam(cam) -> Assessment:
             checks = cam.checks
         except ProfileSizeError as e:  # a valid design whose profile the tolerance cannot carry: not buildable
             no_profile = str(e)
-    extra = getattr(cam.design, "extra", None)
-    has_dynamics = isinstance(extra, dict) and "dynamics" in extra  # else no forces module to import
+    has_dynamics = getattr(cam.design, "dynamics", None) is not None  # else no forces module to import
     return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None,
                   no_profile=no_profile)

@@ -40,7 +40,7 @@ class Cam:
     def __init__(self, design: CamDesign, *, objective: str | None = None, method: str | None = None,
                  tolerance: float | None = None, solution=None):
         self.design = design
-        self.objective = objective or design.extra.get("objective", "R0")
+        self.objective = objective or getattr(design, "objective", "R0")
         self.method = method
         self.tolerance = tolerance
         if solution is not None:
@@ -89,17 +89,8 @@ class Cam:
 
     @cached_property
     def options(self):
-        """Profile settings from the design file (:class:`cams.profile.roller.ProfileOptions`)."""
-        if self.flat:
-            from cams.profile.roller import ProfileOptions, resolve_tolerance
-
-            raw = self.design.extra.get("raw", {}) if isinstance(self.design.extra, dict) else {}
-            given = raw.get("profile", {}).get("tolerance") if isinstance(raw.get("profile"), dict) else None
-            if not raw:  # a design built in Python: its own tolerance
-                given = self.design.tolerance
-            tol, field = resolve_tolerance(given, self.tolerance)
-            return ProfileOptions(tol, None, self.design.bore_radius, tolerance_field=field)
-        from cams.profile.roller import profile_options
+        """The design's profile settings (:class:`cams.model.options.ProfileOptions`), ``tolerance`` overriding."""
+        from cams.model.options import profile_options
 
         return profile_options(self.design, tolerance=self.tolerance)
 

@@ -262,7 +262,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
     objective : {"R0", "L"}, optional
         What to minimize when neither L nor a floor on R0 is fixed; ``"L"``
         applies to rockers only. Default: the design file's ``[solve]
-        objective`` (``design.extra["objective"]``), else ``"R0"``.
+        objective`` (``design.objective``), else ``"R0"``.
 
     Returns
     -------
@@ -288,7 +288,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
     if getattr(design, "face", "roller") == "flat":
         return _solve_flat(design, method, objective)
     if objective is None:
-        objective = design.extra.get("objective", "R0")
+        objective = design.objective
     method = check_option("solve.method", method or design.method, METHODS)
     check_option("solve.objective", objective, OBJECTIVES)
     design = design.with_(method=method) if method != design.method else design
@@ -329,5 +329,5 @@ def check_design(design: CamDesign, *, tolerance: float | None = None, method: s
         return check_flat_face(design, solution, flat_face_profile(design, solution.R0, tolerance=tol, field=field))
 
     opts = profile_options(design, tolerance=tolerance)  # bad options fail before solving
-    result = solve(design, method=method, objective=design.extra.get("objective", "R0"))
+    result = solve(design, method=method, objective=design.objective)
     return check_profile(result.design, result.centre, options=opts)

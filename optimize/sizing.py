@@ -207,7 +207,12 @@ def size(design: CamDesign, *, method: str | None = None, objective: str = "R0")
 
     L_fixed = lim.centre_distance
     floor = lim.min_base_radius
-    from optimize.circle import admissible_at_distance, best_on_circle, round_off, violation_function
+    from optimize.circle import (
+        admissible_at_distance,
+        best_on_circle,
+        round_off,
+        violation_function,
+    )
 
     G = violation_function(design, samples)
     sol: CentreSolution | None = None

@@ -64,6 +64,10 @@ DOCTEST_MODULES = [
     "cams.sweep",
     "cams.profile.roller",
     "cams.io.export",
+    # the design, typed, and its file
+    "cams.model.dynamics",
+    "cams.model.options",
+    "cams.io.designfile",
 ]
 
 #: Modules checked for a complete ``__all__``.

@@ -13,8 +13,8 @@ __all__ = ["register"]
 
 def run(args) -> int:
     from cams.cam import Cam
-    from cams.present.text import print_assessment
     from cams.io.designfile import load_design
+    from cams.present.text import print_assessment
 
     design = load_design(args.file)
     if is_flat(design):

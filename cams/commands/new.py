@@ -16,7 +16,12 @@ def run(args) -> int:
     if args.out is None:
         print(text, end="")
         return EXIT_OK
-    from cams.io.files import atomic_write, check_output_path, output_kind, writes_stdout
+    from cams.io.files import (
+        atomic_write,
+        check_output_path,
+        output_kind,
+        writes_stdout,
+    )
 
     path = check_output_path(args.out, "--out")
     kind, target = output_kind(path)

@@ -3,9 +3,8 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
-
 import sys
+from pathlib import Path
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
 from laws.errors import InputError

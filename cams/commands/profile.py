@@ -76,8 +76,8 @@ def run(args) -> int:
 
     from cams.assess import knife_in_groove
     from cams.cam import Cam
-    from cams.present.text import print_assessment
     from cams.io.designfile import load_design
+    from cams.present.text import print_assessment
     from cams.profile.roller import default_bore_radius
 
     design = load_design(args.file)

@@ -38,7 +38,7 @@ def run(args) -> int:
     if rep["certified"] is False:
         return _not_certified(args, rep)
     forces = None
-    if "dynamics" in design.extra:
+    if design.dynamics is not None:
         from cams.dynamics.forces import impact_note
 
         df, note = cam.forces, cam.forces_note  # computed once: the assessment reads them too

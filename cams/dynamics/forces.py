@@ -80,9 +80,9 @@ from cams.kinematics.extremum import maximize, phase_positions
 from cams.kinematics.inversion import contact_normal, invert, pressure_angle
 from cams.kinematics.vectors import cross
 from cams.model.design import CamDesign
+from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring
 from cams.model.follower import Rocker
-from laws.errors import show_value
-from laws.errors import InputError
+from laws.errors import InputError, show_value
 from laws.errors import check_number as _num
 from laws.units import TWO_PI, omega_to_rpm, rpm_to_omega
 
@@ -100,7 +100,7 @@ __all__ = [
     "jump_speed",
     "jamming_limit",
     "DynamicsSpec",
-    "dynamics_from_dict",
+    "chosen_spring",
     "DYNAMICS_KEYS",
     "LENGTH_UNITS",
     "DesignForces",
@@ -112,87 +112,6 @@ LENGTH_UNITS = {"mm": 1e-3}
 """Metres per length unit of a design or machine file: mm, the only unit the files take."""
 DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "journal_radius", "margin", "max_spring_force")
 """Keys of a design file's optional ``[dynamics]`` table."""
-
-
-@dataclass(frozen=True)
-class Spring:
-    """A closing spring acting on the follower's coordinate.
-
-    Parameters
-    ----------
-    rate : float
-        k >= 0: N/m (translating) or N m/rad (rocker, torsional).
-    preload : float
-        F0 >= 0: spring force at the near dwell, N or N m.
-
-    Examples
-    --------
-    >>> Spring(2000.0, 15.0).force(np.array([0.0, 0.01]))
-    array([15., 35.])
-    """
-
-    rate: float
-    preload: float
-
-    def __post_init__(self):
-        _num("dynamics.spring_rate", self.rate, lo=0.0)
-        _num("dynamics.preload", self.preload, lo=0.0)
-
-    def force(self, q: np.ndarray) -> np.ndarray:
-        """Spring force F0 + k q at the follower coordinate ``q`` (m or rad)."""
-        return self.preload + self.rate * np.asarray(q, dtype=float)
-
-
-@dataclass(frozen=True)
-class FollowerDynamics:
-    """Masses, loads, spring and friction of a force-closed follower.
-
-    Parameters
-    ----------
-    mass : float
-        Reduced mass of a translating follower (kg) or moment of inertia of a
-        rocker about its pivot (kg m^2), > 0.
-    load : float, optional
-        Constant external load opposing the rise, N (N m for a rocker).
-    spring : Spring or None
-        The closing spring; ``None`` when it is to be designed
-        (:func:`spring_for_contact`).
-    friction : float, optional
-        mu >= 0: in the translating follower's guide, or in the rocker's pivot.
-    journal_radius : float, optional
-        Radius of the rocker's pivot journal, design length unit (friction
-        moment ``mu r_j N``); not used by a translating follower (whose
-        friction is in its guide); a file refuses it there.
-    length_unit : float, optional
-        Metres per design length unit (1e-3: mm).
-    max_spring_force : float or None
-        Largest force (N or N m) the spring may exert (solid or allowable
-        stress); a spring that would need more is rejected.
-    """
-
-    mass: float
-    load: float = 0.0
-    spring: Spring | None = None
-    friction: float = 0.0
-    journal_radius: float = 0.0
-    length_unit: float = 1e-3
-    max_spring_force: float | None = None
-
-    def __post_init__(self):
-        _num("dynamics.mass", self.mass, lo=0.0, strict=True)
-        _num("dynamics.load", self.load)
-        _num("dynamics.friction", self.friction, lo=0.0)
-        _num("dynamics.journal_radius", self.journal_radius, lo=0.0)
-        _num("dynamics.length_unit", self.length_unit, lo=0.0, strict=True)
-        _num("dynamics.max_spring_force", self.max_spring_force, lo=0.0, strict=True, allow_none=True)
-        if self.spring is not None and not isinstance(self.spring, Spring):
-            raise InputError("dynamics.spring", f"must be a Spring, got {type(self.spring).__name__}")
-
-    def with_spring(self, spring: Spring) -> "FollowerDynamics":
-        """A copy with ``spring``."""
-        from dataclasses import replace
-
-        return replace(self, spring=spring)
 
 
 def _omega(design: CamDesign, rpm: float | None) -> float:
@@ -749,100 +668,20 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
                      between_impacts_rpm=omega_to_rpm(w) if impacts else None)
 
 
-@dataclass(frozen=True)
-class DynamicsSpec:
-    """A design file's ``[dynamics]``: the follower's dynamics and how to choose its spring.
-
-    Attributes
-    ----------
-    dynamics : FollowerDynamics
-        With its ``spring`` when both rate and preload were given.
-    margin : float
-        Contact margin for :func:`spring_for_contact` (>= 1).
-    rate : float or None
-        A given spring rate whose preload is to be chosen.
-    """
-
-    dynamics: FollowerDynamics
-    margin: float = 1.2
-    rate: float | None = None
-
-    def spring(self, design: CamDesign, *, rpm: float | None = None) -> Spring:
-        """The given spring, or the one :func:`spring_for_contact` chooses at ``rpm`` (default the design's)."""
-        if self.dynamics.spring is not None:
-            return self.dynamics.spring
-        return spring_for_contact(design, self.dynamics, rpm=rpm, margin=self.margin, rate=self.rate)
-
-
-def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None = None) -> DynamicsSpec:
-    """A design file's ``[dynamics]`` table.
-
-    Keys (SI units except ``journal_radius``, in mm):
-    ``mass`` (kg; kg m^2 for a rocker), ``load`` (N; N m), ``spring_rate``
-    (N/m; N m/rad), ``preload`` (N; N m), ``friction``, ``journal_radius``
-    (rocker only), ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N;
-    N m). A spring is set when ``spring_rate`` and ``preload`` are both
-    given; with only the rate, the preload is left to
-    :func:`spring_for_contact`.
+def chosen_spring(spec: DynamicsSpec, design: CamDesign, *, rpm: float | None = None) -> Spring:
+    """The spring of ``spec``: the given one, or the one :func:`spring_for_contact` chooses at ``rpm``.
 
     Parameters
     ----------
-    table : dict
-    units : str
-        The file's length unit: ``"mm"`` only.
-    follower : {"rocker", "translating"} or None
-        The follower's kind; ``"translating"`` refuses ``journal_radius``
-        (a translating follower's friction is in its guide). None: not checked.
-
-    Returns
-    -------
-    DynamicsSpec
-
-    Raises
-    ------
-    InputError
-        Unknown keys, a missing mass, invalid values, a unit other than mm,
-        ``journal_radius`` for a translating follower.
-
-    Examples
-    --------
-    >>> d = dynamics_from_dict({"mass": 0.4, "spring_rate": 3000, "preload": 20})
-    >>> d.dynamics.spring, d.margin
-    (Spring(rate=3000.0, preload=20.0), 1.2)
+    spec : DynamicsSpec
+        The design's ``[dynamics]`` (:attr:`cams.model.design.CamDesign.dynamics`).
+    design : CamDesign
+    rpm : float, optional
+        Speed at which contact must hold, rev/min; default ``design.rpm``.
     """
-    if not isinstance(table, dict):
-        raise InputError("dynamics", "must be a table")
-    unknown = set(table) - set(DYNAMICS_KEYS)
-    if unknown:
-        raise InputError("dynamics", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(DYNAMICS_KEYS)}")
-    if units not in LENGTH_UNITS:
-        raise InputError("units", f"{show_value(units)} is not supported: the files are in mm (the [dynamics] table's "
-                         "journal_radius too; its other values are SI)")
-    if follower == "translating" and "journal_radius" in table:
-        raise InputError("dynamics.journal_radius", "applies to a rocker's pivot journal (friction moment mu r N); a "
-                         "translating follower's friction is in its guide (dynamics.friction alone): remove it")
-    if "mass" not in table:
-        raise InputError("dynamics.mass", "is required (kg, or kg m^2 about the pivot for a rocker)")
-    v = {k: _num(f"dynamics.{k}", table[k]) for k in table}
-    spring = None
-    if "preload" in v and "spring_rate" not in v:
-        raise InputError("dynamics.spring_rate", "a preload needs its spring rate")
-    rate = None
-    if "spring_rate" in v and "preload" in v:
-        spring = Spring(v["spring_rate"], v["preload"])
-    elif "spring_rate" in v:
-        rate = _num("dynamics.spring_rate", v["spring_rate"], lo=0.0)
-    margin = _num("dynamics.margin", v.get("margin", 1.2), lo=1.0)
-    dyn = FollowerDynamics(
-        mass=v["mass"],
-        load=v.get("load", 0.0),
-        spring=spring,
-        friction=v.get("friction", 0.0),
-        journal_radius=v.get("journal_radius", 0.0),
-        length_unit=LENGTH_UNITS[units],
-        max_spring_force=v.get("max_spring_force"),
-    )
-    return DynamicsSpec(dyn, margin, rate)
+    if spec.dynamics.spring is not None:
+        return spec.dynamics.spring
+    return spring_for_contact(design, spec.dynamics, rpm=rpm, margin=spec.margin, rate=spec.rate)
 
 
 @dataclass(frozen=True)
@@ -888,13 +727,13 @@ def design_forces(design: CamDesign, centre) -> tuple[DesignForces | None, str |
         ``None`` with a note when the design has no ``[dynamics]``, is form
         closed (no closing spring) or has no speed.
     """
-    spec = design.extra.get("dynamics") if isinstance(design.extra, dict) else None
+    spec = design.dynamics
     if spec is None:
         return None, None
     if design.limits.closure != "force":
         return None, "form-closed cam: no closing spring to size"
     if not design.rpm:
         return None, "[dynamics] needs cam.rpm for the forces"
-    spring = spec.spring(design)
+    spring = chosen_spring(spec, design)
     dyn = spec.dynamics.with_spring(spring)
     return DesignForces(spring, cam_forces(design, centre, dyn), jump_speed(design, dyn)), None

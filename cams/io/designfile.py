@@ -16,8 +16,13 @@ Schema (see ``examples/``)::
     [solve]      method ("exact" | "convex" | "exhaustive"), samples, objective ("R0" | "L", rocker)
     [profile]    tolerance (chord, mm; default 0.001), min_curvature_radius (optional)
     [dynamics]   optional, force closure: mass, load, spring_rate, preload, friction,
-                 journal_radius, margin, max_spring_force (see cams.dynamics.forces.dynamics_from_dict);
-                 parsed into ``design.extra["dynamics"]`` (a cams.dynamics.forces.DynamicsSpec)
+                 journal_radius, margin, max_spring_force (see :func:`dynamics_from_dict`);
+                 mapped onto ``design.dynamics`` (a :class:`cams.model.dynamics.DynamicsSpec`)
+
+Every table maps onto a typed field of the design (``[solve] objective`` onto ``objective``,
+``[profile]`` onto ``tolerance`` and ``min_curvature_radius``, ``[cam] bore_radius`` onto
+``bore_radius``): the loader checks the file's shape (tables, known keys, numbers where numbers
+belong) and the model's ``__post_init__`` checks the values, with one message each.
 
 A flat-faced follower (``face = "flat"``) gives a :class:`cams.model.design.FlatFaceDesign`
 instead: its size is limited by convexity, not by a pressure angle::
@@ -41,21 +46,28 @@ for a flat face: each is refused with a one-line error naming it.
 from __future__ import annotations
 
 import math
-
 from pathlib import Path
 
 import numpy as np
 
-from cams.model.design import CamDesign, FlatFaceDesign, Limits
+from cams.dynamics.forces import DYNAMICS_KEYS, LENGTH_UNITS
 from cams.io.files import check_document, check_keys, read_toml, toml_integer
 from cams.io.files import toml_number as _num
 from cams.io.files import toml_table as _table
-from cams.model.follower import FlatRocker, FlatTranslating, Rocker, Translating, sense_of
-from laws.errors import InputError, check_option, show_value
+from cams.model.design import MAX_SAMPLES, CamDesign, FlatFaceDesign, Limits, check_lift
+from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, journal_error
+from cams.model.follower import (
+    FlatRocker,
+    FlatTranslating,
+    Rocker,
+    Translating,
+    sense_of,
+)
+from laws.errors import InputError, check_number, check_option, show_value
 from laws.program import Phase, Program
 from laws.registry import get_law
 
-__all__ = ["load_design", "design_from_dict", "MAX_SAMPLES"]
+__all__ = ["load_design", "design_from_dict", "dynamics_from_dict", "MAX_SAMPLES"]
 
 _KEYS = {
     "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics"},
@@ -116,10 +128,6 @@ def _check_keys(table: dict, where: str, field: str) -> None:
 #: would be lost in that round-off.
 MIN_PHASE_ANGLE = 1e-6
 
-#: The most steps per phase of the sampled methods (``[solve] samples``): memory and time grow with the
-#: samples (about 1 kB a sample for the convex method), and the exact method needs none.
-MAX_SAMPLES = 100_000
-
 #: Lengths (mm) a design may use: from a picometre to 1000 km; outside, round-off or overflow would
 #: make the answers meaningless (the solvers work to 1e-12 of the design's scale).
 LENGTH_RANGE = (1e-9, 1e9)
@@ -164,8 +172,8 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         lengths kept in mm; the rocker's swing and heights, the phase angles
         (scaled to sum to exactly 2 pi) and the pressure-angle limits in
         radians; ``rise_direction`` and ``rotation`` as senses (+1
-        counter-clockwise). ``extra`` holds ``"objective"``, the file as
-        ``"raw"`` and, with a [dynamics] table, ``"dynamics"``.
+        counter-clockwise); ``[solve] objective``, ``[profile]``, ``[cam]
+        bore_radius`` and ``[dynamics]`` as the design's typed fields.
 
     Raises
     ------
@@ -200,17 +208,15 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
                 raise InputError(f"follower.{k}", "applies to translating followers; a rocker takes arm and swing")
         arm = _num(fo, "arm", "follower.arm")
         swing = _num(fo, "swing", "follower.swing")
-        if not 0 < swing < 180:
-            raise InputError("follower.swing", f"must be in (0, 180) degrees, got {swing!r}")
         follower = Rocker(arm, roller, sense=sense_of("follower.rise_direction", fo.get("rise_direction", "cw")))
         lift = np.radians(swing)
+        check_lift(lift, True)  # the model's rule, before the motion's heights are read against the swing
     else:
         for k in ("arm", "swing", "rise_direction"):
             if k in fo:
                 raise InputError(f"follower.{k}", "applies to rocker followers; a translating follower takes stroke and offset")
         stroke = _num(fo, "stroke", "follower.stroke")
-        if stroke <= 0:
-            raise InputError("follower.stroke", f"must be > 0, got {stroke!r}")
+        check_lift(stroke, False)  # the model's rule, before the motion's heights are read against the stroke
         follower = Translating(roller, offset=_num(fo, "offset", "follower.offset", required=False), stroke_scale=stroke)
         lift = stroke
 
@@ -227,9 +233,6 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     _check_keys(li, "limits", "limits")
     pa = _num(li, "pressure_angle", "limits.pressure_angle")
     rpa = _num(li, "return_pressure_angle", "limits.return_pressure_angle", required=False)
-    for name, v in (("pressure_angle", pa), ("return_pressure_angle", rpa)):
-        if v is not None and not 0 < v < 90:
-            raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {v!r}")
     closure = li.get("closure", "force")  # checked with the return limit by Limits
     limits = Limits(
         pressure_angle=np.radians(pa),
@@ -239,26 +242,26 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         centre_distance=_num(li, "centre_distance", "limits.centre_distance", required=False),
         min_base_radius=_num(li, "min_base_radius", "limits.min_base_radius", required=False),
     )
-    _check_keys(_table(d, "profile"), "profile", "profile")
+    pt = _table(d, "profile")
+    _check_keys(pt, "profile", "profile")
     so = _table(d, "solve")
     _check_keys(so, "solve", "solve")
-    samples = toml_integer(so, "samples", "solve.samples", default=360, lo=2, hi=MAX_SAMPLES)
-    objective = check_option("solve.objective", so.get("objective", "R0"), ("R0", "L"))
-    if objective == "L" and kind != "rocker":
-        raise InputError("solve.objective", "'L' (least centre distance) applies to rocker followers; a translating "
-                         "follower's cam is sized by R0 ('R0')")
-    name = _name(d)
-    design = CamDesign(
-        follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=name,
+    samples = so.get("samples", 360)
+    if isinstance(samples, bool) or not isinstance(samples, int):  # a whole number: its range is the model's
+        toml_integer(so, "samples", "solve.samples", default=360, lo=2, hi=MAX_SAMPLES)
+    # the values of [solve] objective, [profile] and the bore are the model's to check (one message each)
+    return CamDesign(
+        follower=follower, program=program, limits=limits, cam_sense=cam_sense, rpm=rpm, name=_name(d),
         method=so.get("method", "exact"), samples=samples, base_radius=base_radius, centre=centre,
-        extra={"objective": objective, "raw": d,
-               **_dynamics(d, kind)},
+        objective=so.get("objective", "R0"), tolerance=_value(pt, "tolerance"),
+        min_curvature_radius=_value(pt, "min_curvature_radius"), bore_radius=_value(cam, "bore_radius"),
+        dynamics=_dynamics(d, kind),
     )
-    # [profile] and the bore are checked on loading, so cams solve refuses what cams check would
-    from cams.profile.roller import profile_options
 
-    profile_options(design)
-    return design
+
+def _value(table: dict, key: str):
+    """``table[key]`` as given (None when absent): the model checks it, and names it as it stands in the file."""
+    return table.get(key)
 
 
 def _chosen(cam: dict) -> tuple[float | None, tuple[float, float] | None]:
@@ -366,8 +369,6 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
                                  "swing, centre_distance and face_offset")
         check_keys(fo, _KEYS["flat_rocker"], "follower")
         swing = _num(fo, "swing", "follower.swing")
-        if not 0 < swing < 180:
-            raise InputError("follower.swing", f"must be in (0, 180) degrees, got {swing!r}")
         if "centre_distance" not in fo:
             raise InputError("follower.centre_distance", "is required for a flat-faced rocker: the distance L from "
                              "the pivot to the cam centre (mm, > 0)")
@@ -377,6 +378,7 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         follower = FlatRocker(L, _num(fo, "face_offset", "follower.face_offset", default=0.0),
                               sense=sense_of("follower.rise_direction", fo.get("rise_direction", "cw")))
         lift = np.radians(swing)
+        check_lift(lift, True)  # the model's rule, before the motion's heights are read against the swing
         default_min_radius = 0.1 * L * lift
     else:
         for k in ("swing", "rise_direction", "centre_distance", "face_offset"):
@@ -385,8 +387,7 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
                                  "takes stroke and offset")
         check_keys(fo, _KEYS["flat_translating"], "follower")
         stroke = _num(fo, "stroke", "follower.stroke")
-        if stroke <= 0:
-            raise InputError("follower.stroke", f"must be > 0, got {stroke!r}")
+        check_lift(stroke, False)  # the model's rule, before the motion's heights are read against the stroke
         follower = FlatTranslating(_num(fo, "offset", "follower.offset", default=0.0), stroke_scale=stroke)
         lift = stroke
         default_min_radius = 0.1 * stroke
@@ -420,19 +421,88 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         min_base_radius=_num(li, "min_base_radius", "limits.min_base_radius", required=False),
         base_radius=_num(cam, "base_radius", "cam.base_radius", required=False),
         bore_radius=_num(cam, "bore_radius", "cam.bore_radius", required=False),
-        tolerance=_num(pt, "tolerance", "profile.tolerance", default=1e-3),
-        extra={"raw": d},
+        tolerance=_num(pt, "tolerance", "profile.tolerance", required=False),
     )
 
 
-def _dynamics(d: dict, kind: str) -> dict:
-    """The optional [dynamics] table, as ``{"dynamics": DynamicsSpec}`` or ``{}`` (``kind``: the follower's)."""
+def _dynamics(d: dict, kind: str) -> DynamicsSpec | None:
+    """The optional [dynamics] table (None without one); ``kind``: the follower's."""
     if "dynamics" not in d:
-        return {}
-    from cams.dynamics.forces import dynamics_from_dict
-
+        return None
     units = d.get("units", "mm")
-    return {"dynamics": dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm", follower=kind)}
+    return dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm", follower=kind)
+
+
+def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None = None) -> DynamicsSpec:
+    """A design file's ``[dynamics]`` table, mapped onto a :class:`cams.model.dynamics.DynamicsSpec`.
+
+    Keys (SI units except ``journal_radius``, in mm):
+    ``mass`` (kg; kg m^2 for a rocker), ``load`` (N; N m), ``spring_rate``
+    (N/m; N m/rad), ``preload`` (N; N m), ``friction``, ``journal_radius``
+    (rocker only), ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N;
+    N m). A spring is set when ``spring_rate`` and ``preload`` are both
+    given; with only the rate, the preload is left to
+    :func:`cams.dynamics.forces.spring_for_contact`.
+
+    Parameters
+    ----------
+    table : dict
+    units : str
+        The file's length unit: ``"mm"`` only.
+    follower : {"rocker", "translating"} or None
+        The follower's kind; ``"translating"`` refuses the key
+        ``journal_radius`` (a translating follower's friction is in its guide;
+        the design refuses a journal radius other than 0 with the same
+        message, :func:`cams.model.dynamics.check_dynamics_follower`). None:
+        not checked.
+
+    Returns
+    -------
+    DynamicsSpec
+
+    Raises
+    ------
+    InputError
+        Unknown keys, a missing mass, values that are not numbers, a unit
+        other than mm, ``journal_radius`` for a translating follower; the
+        values' ranges are checked by the model's classes.
+
+    Examples
+    --------
+    >>> d = dynamics_from_dict({"mass": 0.4, "spring_rate": 3000, "preload": 20})
+    >>> d.dynamics.spring, d.margin
+    (Spring(rate=3000.0, preload=20.0), 1.2)
+    """
+    if not isinstance(table, dict):
+        raise InputError("dynamics", "must be a table")
+    unknown = set(table) - set(DYNAMICS_KEYS)
+    if unknown:
+        raise InputError("dynamics", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(DYNAMICS_KEYS)}")
+    if units not in LENGTH_UNITS:
+        raise InputError("units", f"{show_value(units)} is not supported: the files are in mm (the [dynamics] table's "
+                         "journal_radius too; its other values are SI)")
+    if follower == "translating" and "journal_radius" in table:
+        raise journal_error()
+    if "mass" not in table:
+        raise InputError("dynamics.mass", "is required (kg, or kg m^2 about the pivot for a rocker)")
+    v = {k: check_number(f"dynamics.{k}", table[k]) for k in table}
+    if "preload" in v and "spring_rate" not in v:
+        raise InputError("dynamics.spring_rate", "a preload needs its spring rate")
+    both = "spring_rate" in v and "preload" in v
+    spec = DynamicsSpec(
+        FollowerDynamics(
+            mass=v["mass"],
+            load=v.get("load", 0.0),
+            spring=Spring(v["spring_rate"], v["preload"]) if both else None,
+            friction=v.get("friction", 0.0),
+            journal_radius=v.get("journal_radius", 0.0),
+            length_unit=LENGTH_UNITS[units],
+            max_spring_force=v.get("max_spring_force"),
+        ),
+        margin=v.get("margin", 1.2),
+        rate=None if both else v.get("spring_rate"),
+    )
+    return spec
 
 
 def load_design(path: str | Path) -> CamDesign | FlatFaceDesign:

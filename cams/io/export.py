@@ -35,7 +35,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cams.io.files import atomic_write, check_output_path
+from cams.io.files import atomic_write
 from cams.profile.roller import Profile
 from laws.errors import InputError
 

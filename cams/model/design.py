@@ -6,10 +6,11 @@ command line speak degrees, and :func:`cams.io.designfile.load_design` converts.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
+from cams.model.dynamics import DynamicsSpec, check_dynamics_follower
 from cams.model.follower import (
     FlatFollower,
     FlatRocker,
@@ -17,14 +18,41 @@ from cams.model.follower import (
     Rocker,
     RollerFollower,
     Translating,
+    check_length,
 )
+from cams.model.options import ProfileOptions, check_objective, check_tolerance
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
-__all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES"]
+__all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES", "check_lift"]
 
 METHODS = ("exact", "convex", "exhaustive")
 CLOSURES = ("force", "form")
+
+#: The most steps per phase of the sampled methods (``[solve] samples``): memory and time grow with the
+#: samples (about 1 kB a sample for the convex method), and the exact method needs none.
+MAX_SAMPLES = 100_000
+
+
+def _degrees_shown(angle: float) -> str:
+    """An angle kept in radians as the user gave it in degrees, for a message (12 significant digits: the
+    round trip through radians does not show)."""
+    return show_value(float(f"{float(np.degrees(angle)):.12g}"))
+
+
+def check_lift(lift: float, rocker: bool) -> None:
+    """Refuse a rocker's swing outside (0, 180) degrees (``lift`` in radians) or a stroke that is not > 0.
+
+    Raises
+    ------
+    InputError
+        On ``follower.swing`` (rocker) or ``follower.stroke`` (translating), the value in the file's unit.
+    """
+    if rocker:
+        if not (np.isfinite(lift) and 0 < lift < np.pi):
+            raise InputError("follower.swing", f"must be in (0, 180) degrees, got {_degrees_shown(lift)}")
+    elif not (np.isfinite(lift) and lift > 0):
+        raise InputError("follower.stroke", f"must be > 0, got {show_value(lift)}")
 
 
 @dataclass(frozen=True)
@@ -60,7 +88,7 @@ class Limits:
             if v is None:
                 continue
             if not (np.isfinite(v) and 0 < v < np.pi / 2):
-                raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {show_value(np.degrees(v))}")
+                raise InputError(f"limits.{name}", f"must be in (0, 90) degrees, got {_degrees_shown(v)}")
         check_option("limits.closure", self.closure, CLOSURES)
         if self.closure == "force" and self.return_pressure_angle is not None:
             raise InputError("limits.return_pressure_angle", 'applies to form closure (closure = "form"); under force '
@@ -104,6 +132,21 @@ class CamDesign:
     centre : (float, float) or None
         A chosen cam centre in the follower's fixed frame (length,
         :mod:`cams.model.follower`): the cam is checked, not sized.
+    objective : {"R0", "L"}
+        What the sizing minimizes when ``limits.centre_distance`` is free:
+        the base radius, or the centre distance (rocker only).
+    tolerance : float or None
+        Chord tolerance of the sampled profile (length); None: the default
+        for the cam's size (:func:`cams.profile.roller.cap_tolerance`).
+    min_curvature_radius : float or None
+        Smallest radius of curvature the working profile may have (length);
+        None: not checked.
+    bore_radius : float or None
+        Radius of the cam's bore (length), checked against the working
+        profile; None: not checked.
+    dynamics : DynamicsSpec or None
+        The follower's dynamics (a file's ``[dynamics]``): forces, spring and
+        jump speed of a force-closed cam; None: no forces.
     """
 
     follower: RollerFollower
@@ -116,21 +159,31 @@ class CamDesign:
     samples: int = 360
     base_radius: float | None = None
     centre: tuple[float, float] | None = None
-    extra: dict = field(default_factory=dict, compare=False, hash=False)
+    objective: str = "R0"
+    tolerance: float | None = None
+    min_curvature_radius: float | None = None
+    bore_radius: float | None = None
+    dynamics: DynamicsSpec | None = None
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
+        # in the order a design file's tables are read, so that a file with two faults names the same one
+        if isinstance(self.samples, bool) or not isinstance(self.samples, (int, np.integer)) \
+                or not 2 <= self.samples <= MAX_SAMPLES:
+            raise InputError("solve.samples", f"must be an integer from 2 to {MAX_SAMPLES}, got "
+                             f"{show_value(self.samples)}")
+        check_objective(self.objective, isinstance(self.follower, Rocker))
+        if self.dynamics is not None:
+            if not isinstance(self.dynamics, DynamicsSpec):
+                raise InputError("dynamics", f"must be a DynamicsSpec, got {type(self.dynamics).__name__}")
+            check_dynamics_follower(self.dynamics, isinstance(self.follower, Rocker))
         if self.cam_sense not in (1, -1):
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         check_option("solve.method", self.method, METHODS)
         self._check_chosen()
-        if not (isinstance(self.samples, (int, np.integer)) and self.samples >= 2):
-            raise InputError("solve.samples", f"must be an integer >= 2, got {self.samples!r}")
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
             raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
-        if isinstance(self.follower, Rocker):
-            if not self.program.lift < np.pi:
-                raise InputError("follower.swing", "must be < 180 degrees")
-        elif isinstance(self.follower, Translating):
+        check_lift(self.program.lift, isinstance(self.follower, Rocker))
+        if isinstance(self.follower, Translating):
             if self.limits.safety_factor != 1.0:
                 raise InputError(
                     "limits.safety_factor",
@@ -139,8 +192,9 @@ class CamDesign:
                 )
             if self.limits.centre_distance is not None:
                 raise InputError("limits.centre_distance", "applies to rocker followers only; use follower.offset")
-        else:  # pragma: no cover - guarded by the type
+        elif not isinstance(self.follower, Rocker):  # pragma: no cover - guarded by the type
             raise InputError("follower.kind", "must be 'rocker' or 'translating'")
+        ProfileOptions(self.tolerance, self.min_curvature_radius, self.bore_radius)  # checks the three
 
     @property
     def scale(self) -> float:
@@ -165,7 +219,7 @@ class CamDesign:
         if lim.min_base_radius is not None:
             raise InputError(key, "fixes the cam: a floor on R0 (limits.min_base_radius) has nothing to size; "
                              "remove one of them")
-        if self.extra.get("objective", "R0") != "R0":
+        if self.objective != "R0":
             raise InputError("solve.objective", f"nothing is minimized for a cam chosen by {key}; remove it")
         if self.centre is not None:
             c = self.centre
@@ -285,8 +339,9 @@ class FlatFaceDesign:
         A chosen R0 (length) instead of the smallest: checked, not sized.
     bore_radius : float or None
         Bore radius (length) to check the profile against.
-    tolerance : float
-        Chord tolerance of the sampled profile (length).
+    tolerance : float or None
+        Chord tolerance of the sampled profile (length); None: the default
+        for the cam's size (:func:`cams.profile.roller.cap_tolerance`).
     """
 
     follower: FlatFollower
@@ -298,8 +353,7 @@ class FlatFaceDesign:
     min_base_radius: float | None = None
     base_radius: float | None = None
     bore_radius: float | None = None
-    tolerance: float = 1e-3
-    extra: dict = field(default_factory=dict, compare=False, hash=False)
+    tolerance: float | None = None
 
     face = "flat"
 
@@ -310,16 +364,13 @@ class FlatFaceDesign:
             raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
         if not isinstance(self.follower, (FlatTranslating, FlatRocker)):
             raise InputError("follower", "must be a FlatTranslating or FlatRocker follower")
-        if isinstance(self.follower, FlatRocker) and not self.program.lift < np.pi:
-            raise InputError("follower.swing", "must be < 180 degrees")
+        check_lift(self.program.lift, isinstance(self.follower, FlatRocker))
         for name, fld in (("min_radius", "limits.min_radius"), ("min_base_radius", "limits.min_base_radius"),
-                          ("base_radius", "cam.base_radius"), ("bore_radius", "cam.bore_radius"),
-                          ("tolerance", "profile.tolerance")):
-            v = getattr(self, name)
-            if v is None and name not in ("min_radius", "tolerance"):
-                continue
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (np.isfinite(v) and v > 0):
-                raise InputError(fld, f"must be a number > 0, got {v!r}")
+                          ("base_radius", "cam.base_radius"), ("bore_radius", "cam.bore_radius")):
+            if getattr(self, name) is not None or name == "min_radius":
+                check_length(fld, getattr(self, name))
+        if self.tolerance is not None:
+            check_tolerance(self.tolerance, "profile.tolerance")
         if self.base_radius is not None and self.min_base_radius is not None:  # as for a roller follower
             raise InputError("cam.base_radius", "fixes the cam: a floor on R0 (limits.min_base_radius) has nothing "
                              "to size; remove one of them")

@@ -17,7 +17,12 @@ from pathlib import Path
 
 import numpy as np
 
-from cams.kinematics.inversion import invert_phase, pressure_angle, smallest_cam_radius, to_fixed_frame
+from cams.kinematics.inversion import (
+    invert_phase,
+    pressure_angle,
+    smallest_cam_radius,
+    to_fixed_frame,
+)
 from cams.words import binding_text, phase_words
 from laws.units import TWO_PI, rpm_to_omega
 

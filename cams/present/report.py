@@ -158,7 +158,7 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"] if not any(n in f for f in cam.assessment.failures)]  # said once
     sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
-    df = cam.forces if "dynamics" in d.extra else None
+    df = cam.forces if d.dynamics is not None else None
     if df is not None:
         sections.append(("Forces at the cam", _force_rows(df, f.kind)))
     return sections
@@ -211,8 +211,8 @@ def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
 
 def _figures(cam):
     """The pictures, each titled as failing when the cam is not usable (:mod:`cams.assess`)."""
-    from cams.present import plots
     from cams.assess import knife_in_groove
+    from cams.present import plots
 
     if getattr(cam, "flat", False):
         figs = [("Motion diagrams", plots.plot_motion(cam.design)),

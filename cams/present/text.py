@@ -7,7 +7,15 @@ with their units by :mod:`cams.words`.
 
 from __future__ import annotations
 
-from cams.words import binding_text, bore_text, check_words, deg, length_format, off_by, spring_text
+from cams.words import (
+    binding_text,
+    bore_text,
+    check_words,
+    deg,
+    length_format,
+    off_by,
+    spring_text,
+)
 from cams.words import check_value as _fmt
 
 __all__ = ["print_summary", "print_flat_summary", "print_cam_forces", "print_assessment", "print_checks",

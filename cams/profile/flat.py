@@ -28,6 +28,7 @@ Angles in radians, lengths in the design's unit (mm).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -48,6 +49,9 @@ from cams.model.design import FlatFaceDesign
 from cams.model.follower import FlatRocker, FlatTranslating, check_length
 from laws.errors import InputError
 from laws.program import Program
+
+if TYPE_CHECKING:  # the design's module imports this one's followers
+    from cams.model.design import FlatFaceDesign
 
 __all__ = [
     "FlatFaceProfile",

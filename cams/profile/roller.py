@@ -42,6 +42,12 @@ from cams.kinematics.inversion import (
 )
 from cams.kinematics.vectors import cross, xy
 from cams.model.design import CamDesign
+from cams.model.options import (
+    ProfileOptions,
+    check_tolerance,
+    profile_options,
+    resolve_tolerance,
+)
 from laws.errors import InputError
 from laws.program import Motion
 from laws.units import TWO_PI
@@ -56,6 +62,7 @@ __all__ = [
     "offset_radius",
     "build_profile",
     "profile_options",
+    "resolve_tolerance",
     "default_bore_radius",
     "smallest_cam_radius",
     "DEFAULT_TOLERANCE",
@@ -71,7 +78,7 @@ DEFAULT_TOLERANCE = 1e-3
 MAX_TOLERANCE_FRACTION = 0.05
 #: The default tolerance is at most this fraction of the cam's smallest radius (below 1 mm: finer than 1 um).
 DEFAULT_TOLERANCE_FRACTION = 1e-3
-#: Keys the ``[profile]`` table of a design file may hold.
+#: Keys the ``[profile]`` table of a design file may hold (:mod:`cams.io.designfile` maps them onto the design).
 PROFILE_KEYS = ("tolerance", "min_curvature_radius")
 #: Largest number of samples of one profile (guards against endless refinement).
 MAX_POINTS = 2_000_000
@@ -86,55 +93,6 @@ class ProfileSizeError(InputError):
     """
 
 
-@dataclass(frozen=True)
-class ProfileOptions:
-    """Profile settings of a design file (``[profile]`` and ``[cam]`` tables).
-
-    Attributes
-    ----------
-    tolerance : float or None
-        Chord tolerance (largest sagitta between samples and curve), length;
-        None: the default for the cam's size (:func:`cap_tolerance`).
-    min_curvature_radius : float or None
-        User minimum of the working profile's radius of curvature (length).
-    bore_radius : float or None
-        Bore radius of the cam (length); ``None``: :func:`default_bore_radius`.
-    tolerance_field : str
-        Where the tolerance was given (``"profile.tolerance"`` or
-        ``"--tolerance"``), for the messages.
-    """
-
-    tolerance: float | None = None
-    min_curvature_radius: float | None = None
-    bore_radius: float | None = None
-    tolerance_field: str = "profile.tolerance"
-
-    def __post_init__(self):
-        if self.tolerance is not None:
-            _check_tolerance(self.tolerance, self.tolerance_field)
-        for name, field in (("min_curvature_radius", "profile.min_curvature_radius"), ("bore_radius", "cam.bore_radius")):
-            v = getattr(self, name)
-            if v is not None and not (isinstance(v, (int, float)) and not isinstance(v, bool) and np.isfinite(v) and v > 0):
-                raise InputError(field, f"must be a number > 0, got {v!r}")
-
-
-def _check_tolerance(tol, field: str) -> float:
-    if isinstance(tol, bool) or not isinstance(tol, (int, float, np.floating)) or not np.isfinite(tol) or tol <= 0:
-        raise InputError(field, f"chord tolerance must be a number > 0 (length unit), got {tol!r}")
-    return float(tol)
-
-
-def resolve_tolerance(from_file, override=None) -> tuple[float | None, str]:
-    """The chord tolerance to use and the field a bad one is reported under.
-
-    ``override`` (the command line's ``--tolerance``) wins over ``from_file``
-    (``[profile] tolerance``); both None give None: the default for the
-    cam's size (:func:`cap_tolerance`). Returns ``(tolerance, field)``; raises
-    :class:`InputError` naming that field unless the tolerance is a number > 0.
-    """
-    field = "profile.tolerance" if override is None else "--tolerance"
-    tol = from_file if override is None else override
-    return (None if tol is None else _check_tolerance(tol, field)), field
 
 
 def smallest_radius(R0: float, roller_radius: float = 0.0) -> float:
@@ -178,38 +136,11 @@ def cap_tolerance(tolerance: float | None, smallest: float, field: str) -> float
     if tolerance is None:
         return float(min(DEFAULT_TOLERANCE, DEFAULT_TOLERANCE_FRACTION * smallest)) if smallest > 0 \
             else DEFAULT_TOLERANCE
-    tol = _check_tolerance(tolerance, field)
+    tol = check_tolerance(tolerance, field)
     if cap > 0 and tol > cap:
         raise InputError(field, f"chord tolerance {tol:g} mm is more than {100 * MAX_TOLERANCE_FRACTION:g} % of the "
                          f"cam's smallest radius {smallest:.6g} mm; the largest accepted is {cap:.6g} mm")
     return tol
-
-
-def profile_options(design: CamDesign, *, tolerance: float | None = None) -> ProfileOptions:
-    """Read ``[profile]`` (tolerance, min_curvature_radius) and ``[cam]`` bore_radius.
-
-    Parameters
-    ----------
-    design : CamDesign
-        A design loaded from a file (its raw tables are in ``design.extra``).
-    tolerance : float, optional
-        Overrides ``[profile] tolerance`` (the command line's ``--tolerance``).
-
-    Raises
-    ------
-    InputError
-        Unknown ``[profile]`` keys, a tolerance or radius that is not > 0.
-    """
-    raw = design.extra.get("raw", {}) if isinstance(design.extra, dict) else {}
-    pt = raw.get("profile", {})
-    if not isinstance(pt, dict):
-        raise InputError("profile", "must be a table")
-    unknown = set(pt) - set(PROFILE_KEYS)
-    if unknown:
-        raise InputError("profile", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(PROFILE_KEYS)}")
-    cam = raw.get("cam", {}) if isinstance(raw.get("cam", {}), dict) else {}
-    tol, field = resolve_tolerance(pt.get("tolerance"), tolerance)
-    return ProfileOptions(tol, pt.get("min_curvature_radius"), cam.get("bore_radius"), tolerance_field=field)
 
 
 @dataclass(frozen=True, eq=False)

@@ -5,7 +5,7 @@ import json
 import pytest
 
 from cams.cam import Cam
-from cams.dynamics.forces import cam_forces, jump_speed
+from cams.dynamics.forces import cam_forces, chosen_spring, jump_speed
 from cams.cli import main
 from cams.present.report import report_sections
 from tests.conftest import EXAMPLES
@@ -17,8 +17,8 @@ def test_solve_json_reports_the_forces(capsys):
     assert main(["solve", str(FILE), "--json"]) == 0
     fo = json.loads(capsys.readouterr().out)["forces"]
     cam = Cam.from_file(FILE)
-    spec = cam.design.extra["dynamics"]
-    dyn = spec.dynamics.with_spring(spec.spring(cam.design))
+    spec = cam.design.dynamics
+    dyn = spec.dynamics.with_spring(chosen_spring(spec, cam.design))
     cf = cam_forces(cam.design, cam.solution.centre, dyn)
     assert fo["max_contact_force"] == pytest.approx(float(cf.contact.max()), rel=1e-12)
     assert fo["jump_rpm"] == pytest.approx(jump_speed(cam.design, dyn).rpm, rel=1e-12)

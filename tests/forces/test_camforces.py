@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, jamming_limit, jump_speed, spring_for_contact
+from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, chosen_spring, jamming_limit, jump_speed, spring_for_contact
 from cams.io.designfile import design_from_dict, load_design
 from tests.conftest import EXAMPLES, rocker_dict
 from laws.errors import InputError
@@ -229,13 +229,13 @@ def test_spring_that_cannot_keep_contact_message():
 def test_design_file_dynamics_table():
     d = design_from_dict(rocker_dict(cam={"rpm": 300}, dynamics={"mass": 0.004, "load": 0.5, "spring_rate": 2.0, "friction": 0.1,
                                                                   "journal_radius": 6.0, "margin": 1.3}))
-    ds = d.extra["dynamics"]
+    ds = d.dynamics
     dyn = ds.dynamics
     assert ds.margin == 1.3 and ds.rate == 2.0 and dyn.spring is None and dyn.length_unit == 1e-3 and dyn.journal_radius == 6.0
-    sp = ds.spring(d)
+    sp = chosen_spring(ds, d)
     assert sp == spring_for_contact(d, dyn, margin=1.3, rate=2.0)
     assert sp.rate == 2.0 and sp.preload > 0
-    assert "dynamics" not in design_from_dict(rocker_dict()).extra
+    assert design_from_dict(rocker_dict()).dynamics is None
 
 
 @pytest.mark.parametrize(

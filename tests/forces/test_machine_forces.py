@@ -54,7 +54,7 @@ def test_machine_file_forces_table():
     (load,) = fs.loads
     assert isinstance(load, Resistance) and (load.approach, load.overrun) == (0.05, 0.05)  # from [cutting]
     assert opt.delta == 0.05 and opt.passes == 2 and opt.samples == 360
-    assert spec.cam.extra["dynamics"].rate == 3.0
+    assert spec.cam.dynamics.rate == 3.0
 
 
 def test_machine_forces_api():
@@ -160,7 +160,7 @@ def test_spring_that_cannot_keep_contact(tmp_path, capsys):
 def test_machine_from_dict_keeps_the_cam_dynamics():
     d = tomllib.loads(DATA.read_text(encoding="utf-8"))
     spec = machine_from_dict(d)
-    assert spec.cam.rpm == pytest.approx(60.0) and spec.cam.extra["dynamics"].margin == 1.5
+    assert spec.cam.rpm == pytest.approx(60.0) and spec.cam.dynamics.margin == 1.5
 
 
 def test_plotting_imports_matplotlib_lazily():

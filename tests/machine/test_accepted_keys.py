@@ -14,7 +14,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from cams.dynamics.forces import LENGTH_UNITS, dynamics_from_dict
+from cams.dynamics.forces import LENGTH_UNITS
+from cams.io.designfile import dynamics_from_dict
 from cams.cli import main
 from cams.machine.kinetostatics import ForceSpec, LinkMass, Resistance, analyse_forces, force_spec_from_dict
 from cams.machine.linkage.machines import CrankSlider
@@ -115,7 +116,7 @@ def test_journal_radius_of_a_translating_follower(tmp_path, capsys):
     e = refused(d)
     assert e.field == "dynamics.journal_radius" and "rocker" in str(e) and "guide" in str(e)
     del d["dynamics"]["journal_radius"]
-    assert machine_from_dict(d).cam.extra["dynamics"].dynamics.journal_radius == 0.0
+    assert machine_from_dict(d).cam.dynamics.dynamics.journal_radius == 0.0
 
 
 def test_dynamics_from_dict_follower_kind():

@@ -111,7 +111,7 @@ def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
     ----------
     spec : MachineSpec
         ``spec.extra["forces"]`` (from ``[forces]``) gives the linkage's data;
-        ``spec.cam.extra["dynamics"]`` (from ``[dynamics]``) the follower's.
+        ``spec.cam.dynamics`` (from ``[dynamics]``) the follower's.
     centre : array_like or None
         The cam's centre (``SolveResult.centre``); needed for the cam's forces.
     found : cams.machine.timing.MachineResult, optional
@@ -164,7 +164,7 @@ def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
                                  "([forces.links.crank] inertia)") from None
     else:
         notes.append("no [forces] table: no linkage forces")
-    if spec.cam.extra.get("dynamics") is not None and centre is None:
+    if spec.cam.dynamics is not None and centre is None:
         notes.append("no cam centre: no cam forces")
     elif centre is not None:
         df, note = design_forces(spec.cam, centre)

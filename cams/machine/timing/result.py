@@ -140,7 +140,7 @@ def design_machine(spec: MachineSpec, *, method: str | None = None) -> MachineRe
     win = windows(spec.linkage, spec.cutting)
     tm = place_cam(win, spec.cam.program, spec.drive, spec.timing)
     design = spec.cam if method is None else spec.cam.with_(method=method)
-    res = solve(design, objective=design.extra.get("objective", "R0"))
+    res = solve(design, objective=design.objective)
     unit = "rad" if isinstance(spec.cam.follower, Rocker) else spec.units
     dia = cycle_diagram(spec.linkage, win, spec.cutting, spec.cam.program, tm, follower_unit=unit)
     cam = Cam(design, solution=res)  # the cam just sized: assessed, not solved again
