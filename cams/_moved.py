@@ -33,7 +33,7 @@ MOVED: dict[str, tuple[str, ...]] = {
     "cams.pressure": ("cams.verify.pressure",),
     "cams.flatface": ("cams.profile.flat", "optimize.flat", "cams.checks.flat", "cams.kinematics.flat",
                       "cams.model.follower", "cams.model.design", "cams.checks.base"),
-    "cams.camforces": ("cams.dynamics.forces",),
+    "cams.camforces": ("cams.dynamics.forces", "cams.model.dynamics", "cams.io.designfile"),
     "cams.files": ("cams.io.files",),
     "cams.designfile": ("cams.io.designfile",),
     "cams.export": ("cams.io.export",),
@@ -45,7 +45,7 @@ MOVED: dict[str, tuple[str, ...]] = {
     "cams.plots": ("cams.present.plots",),
     "cams.report": ("cams.present.report",),
     # old modules whose names are packages now: their __init__ forwards the old names
-    "cams.profile": ("cams.profile.roller", "cams.kinematics.inversion"),
+    "cams.profile": ("cams.profile.roller", "cams.model.options", "cams.kinematics.inversion"),
     "cams.checks": ("cams.checks.profile", "cams.checks.base", "cams.solve"),
     "cams.machine": ("cams.machine.timing",),
 }

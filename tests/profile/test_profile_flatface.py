@@ -141,26 +141,6 @@ def test_flat_face_bad_input():
         oscillating_flat_face(sw, centre_distance=100.0, base_radius=30.0, rise_sense=2)
 
 
-def test_old_names_still_import_from_the_profile_module_for_one_release():
-    """The names cams.profile.flat held before the split by stage, with a warning naming the new home."""
-    import importlib
-
-    import cams.profile.flat as old
-
-    homes = {**old._MOVED, "FlatTranslating": "cams.model.follower", "FlatRocker": "cams.model.follower"}
-    assert set(homes) | set(old.__all__) >= {
-        "FlatFaceProfile", "translating_flat_face", "oscillating_flat_face", "min_base_radius_translating",
-        "min_base_radius_oscillating", "FlatTranslating", "FlatRocker", "FlatFaceSolution", "FlatCheckReport",
-        "flat_face_cam", "flat_face_profile", "size_flat_face", "check_flat_face"}  # the __all__ before the split
-    for name, home in old._MOVED.items():
-        with pytest.warns(DeprecationWarning, match=home):
-            assert getattr(old, name) is getattr(importlib.import_module(home), name)
-    for name in ("FlatTranslating", "FlatRocker"):
-        assert getattr(old, name) is getattr(importlib.import_module(homes[name]), name)
-    with pytest.raises(AttributeError):
-        old.no_such_name  # noqa: B018
-
-
 @pytest.mark.parametrize("rise", ["cw", "ccw"])
 @pytest.mark.parametrize("f", [0.0, 7.0, -5.0])
 def test_flat_rocker_in_the_rocker_frame_of_the_model(rise, f):
