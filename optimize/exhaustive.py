@@ -25,7 +25,7 @@ import numpy as np
 
 from cams.model.design import CamDesign
 from laws.errors import InfeasibleError, InputError
-from optimize.planar import feasible_mask, line_crossings
+from optimize.planar import line_crossings
 from optimize.result import Binding, CentreSolution
 from optimize.zone import sample_wedges
 
