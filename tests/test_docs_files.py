@@ -18,11 +18,11 @@ from pathlib import Path
 import pytest
 
 import cams.dynamics.forces as camforces
-import cams.model.design as design_mod
 import cams.io.designfile as designfile
 import cams.machine.kinetostatics as kinetostatics
-import cams.machine.timing as machine_mod
 import cams.machine.machinefile as machinefile
+import cams.machine.timing as machine_mod
+import cams.model.design as design_mod
 import cams.profile.roller as profile_mod
 from laws.registry import LAWS
 

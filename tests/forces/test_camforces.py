@@ -11,9 +11,9 @@ import pytest
 
 from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, jamming_limit, jump_speed, spring_for_contact
 from cams.io.designfile import design_from_dict, load_design
-from tests.conftest import EXAMPLES, rocker_dict
 from laws.errors import InputError
 from optimize.solve import solve
+from tests.conftest import EXAMPLES, rocker_dict
 
 from .sim import simulate
 

@@ -196,8 +196,8 @@ def test_hodographs_draw_the_reactions():
     import matplotlib.pyplot as plt
 
     from cams.machine.kinetostatics import machine_forces
-    from cams.machine.timing import design_machine
     from cams.machine.machinefile import load_machine
+    from cams.machine.timing import design_machine
 
     spec = load_machine(DATA)
     mf = machine_forces(spec, design_machine(spec).solve.centre)
@@ -206,7 +206,7 @@ def test_hodographs_draw_the_reactions():
     try:
         axes = [ax for ax in fig.axes if ax.get_visible()]
         assert len(axes) == len(lk.model.joints)
-        for ax, j in zip(axes, lk.model.joints):
+        for ax, j in zip(axes, lk.model.joints, strict=True):
             xy = ax.lines[0].get_xydata()
             R = lk.reactions[j.name]
             assert ax.get_title().startswith(j.name)
@@ -227,8 +227,8 @@ def test_forces_reuse_what_the_machine_design_found(monkeypatch):
     same forces as when it finds them itself."""
     import cams.machine.timing as machine_mod
     from cams.machine.kinetostatics import machine_forces
-    from cams.machine.timing import design_machine
     from cams.machine.machinefile import load_machine
+    from cams.machine.timing import design_machine
 
     spec = load_machine(DATA)
     res = design_machine(spec)

@@ -15,8 +15,8 @@ from cams.checks.profile import (
     curvature_extremes,
     pressure_from_profile,
 )
-from cams.verify.pressure import check_pressure, pressure_angle
 from cams.profile.roller import ProfileOptions, pitch_curve
+from cams.verify.pressure import check_pressure, pressure_angle
 from laws.errors import InputError
 
 ALL = ("rocker_force", "rocker_form", "translating_force", "translating_form_centric")
