@@ -122,17 +122,19 @@ class Angle:
 
     Attributes
     ----------
-    angle : ndarray
+    angle : ndarray or float
         Radians, counter-clockwise from +x.
-    omega : ndarray
+    omega : ndarray or float
         Angular velocity, rad/s (counter-clockwise positive).
-    alpha : ndarray
+    alpha : ndarray or float
         Angular acceleration, rad/s^2.
+
+    A fixed direction (a guide) has float members.
     """
 
-    angle: np.ndarray
-    omega: np.ndarray
-    alpha: np.ndarray
+    angle: np.ndarray | float
+    omega: np.ndarray | float
+    alpha: np.ndarray | float
 
     @property
     def unit(self) -> np.ndarray:
@@ -181,7 +183,7 @@ def solve_real(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> tuple[np.ndarray,
         return cross(c, b) / det, cross(a, c) / det
 
 
-def acute_angle(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def acute_angle(a: np.ndarray | float, b: np.ndarray | float) -> np.ndarray:
     """Acute angle between two lines of directions ``a`` and ``b`` (radians), in [0, pi/2].
 
     Examples
