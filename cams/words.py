@@ -215,7 +215,9 @@ def bore_text(radius: float, suggested: bool) -> str:
 
 
 def check_value(x: float | None, unit: str, f: str = ".6f") -> str:
-    """A check's value (:class:`cams.checks.profile.Check`): lengths in mm with format ``f``, angles by :func:`deg`, counts.
+    """A check's value (:class:`cams.checks.profile.Check`).
+
+    Lengths in mm with format ``f``, angles by :func:`deg`, counts.
 
     >>> check_value(2.0, "")
     '2'

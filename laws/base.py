@@ -42,7 +42,7 @@ class Law(ABC):
             (derivatives with respect to ``u``).
         """
         uu = np.clip(np.asarray(u, dtype=float), 0.0, 1.0)
-        out = np.empty((4,) + uu.shape)
+        out = np.empty((4, *uu.shape))
         s, s1, s2, s3 = self._evaluate(uu)
         out[0], out[1], out[2], out[3] = s, s1, s2, s3
         return out

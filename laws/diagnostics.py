@@ -210,7 +210,7 @@ def find_impacts(program: Program, *, rtol: float = 1e-6) -> list[Impact]:
         p = program.phases[i]
         sign = 1.0 if p.kind == "rise" else -1.0
         h = program.height_of(i)
-        for jump in law_jumps(p.law):
+        for jump in law_jumps(program.law_of(i)):
             order = 1 if jump.kind == "hard" else 2
             size = sign * h * jump.size / p.angle**order
             if abs(size) > rtol * (v_ref if order == 1 else a_ref):

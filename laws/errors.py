@@ -8,6 +8,7 @@ print it as one line and exit with code 2.
 from __future__ import annotations
 
 import math
+from typing import Literal, overload
 
 import numpy as np
 
@@ -50,6 +51,12 @@ def check_option(field: str, value: object, allowed: tuple[str, ...]) -> str:
     return value
 
 
+@overload
+def check_number(field: str, value: object, *, lo: float | None = ..., strict: bool = ...,
+                 allow_none: Literal[False] = ...) -> float: ...
+@overload
+def check_number(field: str, value: object, *, lo: float | None = ..., strict: bool = ...,
+                 allow_none: bool) -> float | None: ...
 def check_number(field: str, value: object, *, lo: float | None = None, strict: bool = False,
                  allow_none: bool = False) -> float | None:
     """Return ``value`` as a float if it is a finite number within bounds, else raise :class:`InputError`.

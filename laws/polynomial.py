@@ -121,7 +121,7 @@ class PolynomialLaw(Law):
         [35.0, -84.0, 70.0, -20.0]
         """
         first = _conditions("start", start)
-        last = [(0, 1.0)] + _conditions("end", end)
+        last = [(0, 1.0), *_conditions("end", end)]
         n = 1 + len(first) + len(last)
         # conditions at u = 0 fix c_k = S^(k)(0) / k! directly; the rest solve
         # the conditions at u = 1: sum_p p!/(p-k)! c_p = S^(k)(1)

@@ -65,7 +65,7 @@ class Phase:
 
     kind: str
     angle: float
-    law: Law | None = None
+    law: Law | str | None = None
     height: float | None = None
 
 
@@ -156,7 +156,8 @@ class Program:
             elif p.kind == "return":
                 level -= self.height_of(i)
             if level > self.lift + tol or level < -tol:
-                raise InputError(f"motion[{i}]", f"takes the follower to {level:.6g}, outside [0, lift={self.lift:.6g}]")
+                raise InputError(f"motion[{i}]",
+                                 f"takes the follower to {level:.6g}, outside [0, lift={self.lift:.6g}]")
             top = max(top, level)
         if abs(level) > tol:
             raise InputError("motion", f"the follower ends the cycle at {level:.6g}, must return to 0")
@@ -170,6 +171,19 @@ class Program:
         if p.kind == "dwell":
             return 0.0
         return self.lift if p.height is None else float(p.height)
+
+    def law_of(self, i: int) -> Law:
+        """Normalized law of rise or return phase ``i`` (a law's name was replaced by the law at construction).
+
+        Raises
+        ------
+        InputError
+            Phase ``i`` is a dwell, which has no law.
+        """
+        law = self.phases[i].law
+        if not isinstance(law, Law):
+            raise InputError(f"motion[{i}].law", "a dwell has no law")
+        return law
 
     @cached_property
     def starts(self) -> np.ndarray:
@@ -209,7 +223,7 @@ class Program:
             z = np.zeros_like(u)
             return Motion(base + z, z, z.copy(), z.copy())
         h = self.height_of(i)
-        S = p.law.evaluate(u)
+        S = self.law_of(i).evaluate(u)
         b = p.angle
         sign = 1.0 if p.kind == "rise" else -1.0
         s = base + sign * h * S[0]

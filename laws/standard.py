@@ -7,7 +7,7 @@ is normalized, ``S(0) = 0``, ``S(1) = 1``, ``u`` in [0, 1].
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 from typing import ClassVar
 
 import numpy as np
@@ -68,7 +68,7 @@ class Cycloidal(Law):
         return u - s / (2 * PI), 1 - c, 2 * PI * s, 4 * PI**2 * c
 
 
-@lru_cache(maxsize=None)
+@cache
 def _derivative_matrix(coeffs: tuple[float, ...]) -> np.ndarray:
     """Power-basis coefficients of S and its first three derivatives, as columns (n, 4)."""
     p = np.polynomial.polynomial
@@ -85,7 +85,7 @@ def _poly(coeffs: tuple[float, ...], u: np.ndarray):
     """Evaluate ``sum c_k u^k`` and its first three derivatives (one matrix product)."""
     C = _derivative_matrix(tuple(coeffs))
     # the powers u^0 .. u^(n-1) by repeated products (a power function per element is slower)
-    U = np.empty(u.shape + (C.shape[0],))
+    U = np.empty((*u.shape, C.shape[0]))
     U[..., 0] = 1.0
     for k in range(1, C.shape[0]):
         U[..., k] = U[..., k - 1] * u if k > 1 else u

@@ -79,7 +79,7 @@ class TableLaw(Law):
     s: tuple[float, ...]
     clamped: bool = field(default=False, kw_only=True)
     name: str = field(default="table", kw_only=True)
-    _spline: "BSpline" = field(init=False, repr=False, compare=False, hash=False)
+    _spline: BSpline = field(init=False, repr=False, compare=False, hash=False)
 
     def __post_init__(self):
         u = _column("table.u", self.u)
@@ -92,7 +92,8 @@ class TableLaw(Law):
             raise InputError("table.u", f"{how} degree-{DEGREE} spline needs at least {need} points, got {u.size}")
         if np.any(np.diff(u) <= 0):
             i = int(np.argmax(np.diff(u) <= 0))
-            raise InputError("table.u", f"must be strictly increasing, but u[{i + 1}] = {u[i + 1]:g} <= u[{i}] = {u[i]:g}")
+            raise InputError("table.u",
+                             f"must be strictly increasing, but u[{i + 1}] = {u[i + 1]:g} <= u[{i}] = {u[i]:g}")
         if abs(u[0]) > END_TOL or abs(u[-1] - 1.0) > END_TOL:
             raise InputError("table.u", f"must start at 0 and end at 1, got {u[0]:g} .. {u[-1]:g}")
         if abs(s[0]) > END_TOL or abs(s[-1] - 1.0) > END_TOL:
@@ -101,7 +102,8 @@ class TableLaw(Law):
         bc = ([(1, 0.0), (2, 0.0)], [(1, 0.0), (2, 0.0)]) if self.clamped else None
         from scipy.interpolate import make_interp_spline  # here: importing it costs 0.3 s
 
-        spline = make_interp_spline(u, s, k=DEGREE, bc_type=bc)
+        # scipy documents bc_type as a pair of lists of (derivative order, value); its stubs allow numbers only
+        spline = make_interp_spline(u, s, k=DEGREE, bc_type=bc)  # type: ignore[arg-type]
         object.__setattr__(self, "u", tuple(u.tolist()))
         object.__setattr__(self, "s", tuple(s.tolist()))
         object.__setattr__(self, "_spline", spline)

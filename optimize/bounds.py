@@ -97,7 +97,7 @@ def interior_point(design: CamDesign, near: np.ndarray) -> tuple[np.ndarray, flo
             bounds=[(None, None), (None, None), (0, scale)],
             method="highs",
         )
-        if res.status == 0 and res.x[2] > 0:
+        if res.status == 0 and res.x is not None and res.x[2] > 0:
             cands.append(res.x[:2])
     except Exception:  # pragma: no cover - linprog failure only loses a candidate
         pass

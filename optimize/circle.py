@@ -9,7 +9,7 @@ fixed L: the least R0, i.e. the seed's "larger x").
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 

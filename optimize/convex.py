@@ -39,14 +39,15 @@ def _solve(design, objective, samples, extra):
     except cp.error.SolverError as e:  # pragma: no cover - solver failure is reported
         raise InfeasibleError("solve.method", f"the convex solver failed: {e}") from e
     if prob.status not in ("optimal", "optimal_inaccurate") or x.value is None:
-        raise InfeasibleError("limits.pressure_angle", f"no cam centre satisfies the limits (solver status: {prob.status})")
+        raise InfeasibleError("limits.pressure_angle",
+                              f"no cam centre satisfies the limits (solver status: {prob.status})")
     return W, N, c, np.asarray(x.value) * s
 
 
 def _binding(W, N, O, c, atol):
     h = N @ O - c
     act = np.nonzero(h >= -atol)[0]
-    return tuple(Binding.of_line(W, k) for k in act), act
+    return tuple(Binding.of_line(W, int(k)) for k in act), act
 
 
 def nearest_convex(
@@ -109,9 +110,9 @@ def weighted_convex(
 
     pts = [np.asarray(p, float) for p in points]
     W, N, c, O = _solve(
-        design, lambda x, s: sum(w * cp.norm(x - p / s) for w, p in zip(weights, pts)), samples, None
+        design, lambda x, s: sum(w * cp.norm(x - p / s) for w, p in zip(weights, pts, strict=True)), samples, None
     )
     binding, _ = _binding(W, N, O, c, 1e-6 * _magnitude(design, O))
-    obj = float(sum(w * np.linalg.norm(O - p) for w, p in zip(weights, pts)))
+    obj = float(sum(w * np.linalg.norm(O - p) for w, p in zip(weights, pts, strict=True)))
     return CentreSolution(centre=O, objective=obj, method="convex", samples=samples, binding=binding,
                           violation=float(np.max(N @ O - c)))

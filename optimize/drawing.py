@@ -73,7 +73,9 @@ def analogue_diagram(design: CamDesign, n: int = 121) -> list[AnalogueCurve]:
         (:mod:`cams.model.follower`), length unit; ``phi`` cam angles, radians from
         the start of the cycle.
     """
-    base = design.with_(limits=replace(design.limits, safety_factor=1.0)) if design.limits.safety_factor != 1 else design
+    base = design
+    if design.limits.safety_factor != 1:
+        base = design.with_(limits=replace(design.limits, safety_factor=1.0))
     out = []
     u = np.linspace(0.0, 1.0, n)
     for i, p in enumerate(base.program.phases):

@@ -167,7 +167,7 @@ def nearest_exact(
         if not add(np.stack([pk.nx[bad], pk.ny[bad]], axis=1), pk.offset[bad]):
             break
     O = q.x
-    if pk is None or not np.array_equal(at, O):
+    if pk is None or at is None or not np.array_equal(at, O):
         pk = scan_peaks(t, O)
     v = float(np.max(pk.value))
     obj = float(np.linalg.norm(O - T))
@@ -193,7 +193,7 @@ def nearest_exact(
     )
     return CentreSolution(
         centre=centre, objective=float(np.linalg.norm(centre - T)), method="exact", samples=None, binding=binding,
-        error_bound=bound, violation=v, iterations=state["it"], lower_bound=lower, certified=certified,
+        error_bound=bound, violation=v, iterations=int(state["it"]), lower_bound=lower, certified=certified,
     )
 
 
@@ -222,7 +222,8 @@ def _feasible_point(design: CamDesign, t, O: np.ndarray, pk, rel: float, T: np.n
                     return None
                 upper = max(upper, float(np.linalg.norm(G - T)))
             return F, upper
-        F = push_inside(design, F, v)
-        if F is None:
+        moved = push_inside(design, F, v)
+        if moved is None:
             return None
+        F = moved
     return None

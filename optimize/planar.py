@@ -180,7 +180,7 @@ class NearestPoint:
                 self.lam = self.lam - t * r
                 up += t
                 if t1 <= t2:
-                    self.active = A + [p]
+                    self.active = [*A, p]
                     self.lam = np.append(self.lam, up)
                     break
                 self.active = A[:k] + A[k + 1:]
@@ -314,7 +314,7 @@ def clip_polygon(N: np.ndarray, c: np.ndarray, box: tuple[float, float, float, f
     """
     x0, y0, x1, y1 = box
     poly = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]], dtype=float)
-    for n, cc in zip(N, c):
+    for n, cc in zip(N, c, strict=True):
         if len(poly) == 0:
             break
         s = poly @ n - cc

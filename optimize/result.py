@@ -30,7 +30,7 @@ class Binding:
     side: int
 
     @classmethod
-    def of_line(cls, wedges, k: int) -> "Binding":
+    def of_line(cls, wedges, k: int) -> Binding:
         """The constraint of line ``k`` of ``wedges.lines()`` (two lines a sampled position, t-t first).
 
         Parameters

@@ -296,10 +296,10 @@ def _even_and_ends(grid: int) -> np.ndarray:
 
 def _scan_positions(design: CamDesign, grid: int) -> np.ndarray:
     u = _even_and_ends(grid)
-    bps = {b for i, _ in design.constrained_phases() for b in design.program.phases[i].law.breakpoints}
-    if not bps:
+    found = {b for i, _ in design.constrained_phases() for b in design.program.law_of(i).breakpoints}
+    if not found:
         return u
-    bps = np.array(sorted(bps))
+    bps = np.array(sorted(found))
     return np.unique(np.concatenate([u, bps, bps - _BREAK_GAP, bps + _BREAK_GAP]))
 
 

@@ -18,13 +18,13 @@ from pathlib import Path
 import pytest
 
 import cams.dynamics.forces as camforces
-import cams.model.design as design_mod
 import cams.io.designfile as designfile
 import cams.machine.kinetostatics as kinetostatics
 import cams.machine.kinetostatics.loads as kinetostatics_loads
-import cams.machine.timing.placement as timing_placement
-import cams.machine.timing.cycle as timing_cycle
 import cams.machine.machinefile as machinefile
+import cams.machine.timing.cycle as timing_cycle
+import cams.machine.timing.placement as timing_placement
+import cams.model.design as design_mod
 import cams.profile.roller as profile_mod
 from laws.registry import LAWS
 

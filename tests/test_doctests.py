@@ -71,7 +71,7 @@ DOCTEST_MODULES = [
 ]
 
 #: Modules checked for a complete ``__all__``.
-ALL_MODULES = DOCTEST_MODULES + ["laws.base"]
+ALL_MODULES = [*DOCTEST_MODULES, "laws.base"]
 
 
 @pytest.mark.parametrize("name", DOCTEST_MODULES)

@@ -127,11 +127,11 @@ def test_the_rule_itself_has_no_cycle() -> None:
     seen: dict[str, int] = {}
 
     def visit(layer: str, path: tuple[str, ...]) -> None:
-        assert layer not in path, f"the layer rule has a cycle: {' -> '.join(path + (layer,))}"
+        assert layer not in path, f"the layer rule has a cycle: {' -> '.join((*path, layer))}"
         if seen.get(layer):
             return
         for dep in MAY_IMPORT[layer]:
-            visit(dep, path + (layer,))
+            visit(dep, (*path, layer))
         seen[layer] = 1
 
     for layer in MAY_IMPORT:

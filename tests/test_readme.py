@@ -4,8 +4,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
-
 from cams.cli import main
 
 README = Path(__file__).resolve().parents[1] / "README.md"

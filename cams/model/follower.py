@@ -102,17 +102,17 @@ class Rocker:
         """Rocker pivot O1, the reference point of the centre distance L."""
         return np.zeros(2)
 
-    def position(self, s: np.ndarray) -> np.ndarray:
+    def position(self, s: np.ndarray | float) -> np.ndarray:
         """Roller centre A at swing ``s`` (radians); shape ``s.shape + (2,)``."""
         th = self.sense * np.asarray(s, dtype=float)
         return self.arm * np.stack([np.cos(th), np.sin(th)], axis=-1)
 
-    def tangent(self, s: np.ndarray) -> np.ndarray:
+    def tangent(self, s: np.ndarray | float) -> np.ndarray:
         """``dA/ds``: roller-centre displacement per radian of swing."""
         th = self.sense * np.asarray(s, dtype=float)
         return self.sense * self.arm * np.stack([-np.sin(th), np.cos(th)], axis=-1)
 
-    def frame(self, s: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def frame(self, s: np.ndarray | float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``position(s), tangent(s), lever(s)`` at once (one sine and cosine)."""
         th = self.sense * np.asarray(s, dtype=float)
         lev = np.empty(th.shape + (2,))
@@ -124,7 +124,7 @@ class Rocker:
         T[..., 1] = self.sense * A[..., 0]
         return A, T, lev
 
-    def lever(self, s: np.ndarray) -> np.ndarray:
+    def lever(self, s: np.ndarray | float) -> np.ndarray:
         """Unit vector from the pivot to the roller centre (the line D lies on)."""
         th = self.sense * np.asarray(s, dtype=float)
         return np.stack([np.cos(th), np.sin(th)], axis=-1)
@@ -168,21 +168,21 @@ class Translating:
         """Reference point (the roller centre at the near dwell)."""
         return np.zeros(2)
 
-    def position(self, s: np.ndarray) -> np.ndarray:
+    def position(self, s: np.ndarray | float) -> np.ndarray:
         """Roller centre A at stroke ``s``; shape ``s.shape + (2,)``."""
         s = np.asarray(s, dtype=float)
         return np.stack([np.zeros_like(s), s], axis=-1)
 
-    def tangent(self, s: np.ndarray) -> np.ndarray:
+    def tangent(self, s: np.ndarray | float) -> np.ndarray:
         """``dA/ds``: the unit vector along the follower's rise."""
         s = np.asarray(s, dtype=float)
         return np.stack([np.zeros_like(s), np.ones_like(s)], axis=-1)
 
-    def frame(self, s: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def frame(self, s: np.ndarray | float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``position(s), tangent(s), lever(s)`` at once."""
         return self.position(s), self.tangent(s), self.lever(s)
 
-    def lever(self, s: np.ndarray) -> np.ndarray:
+    def lever(self, s: np.ndarray | float) -> np.ndarray:
         """Unit vector along which the instant point D moves off A (+X)."""
         s = np.asarray(s, dtype=float)
         return np.stack([np.ones_like(s), np.zeros_like(s)], axis=-1)

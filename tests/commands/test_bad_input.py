@@ -233,12 +233,12 @@ def documented_numeric_keys() -> list[tuple]:
             continue
         if header is None or "key" not in header or set(cells[0]) <= set("-"):
             continue
-        row = dict(zip(header, cells))
+        row = dict(zip(header, cells, strict=False))  # a row may have fewer cells
         m = re.fullmatch(r"`([a-z_0-9]+)`", row["key"])
         allowed = re.sub(r'`"[^"]*"`', "", row.get("allowed", ""))  # words are options, not numbers
         if m and "table" not in allowed and re.search(r"\d|number|integer|[<>≤≥]", allowed):
             k = (section, row.get("table", ""), m.group(1))
-            keys.append(k + ("machine",) if machine and k in HOMES and HOMES[k][0] not in MACHINES else k)
+            keys.append((*k, "machine") if machine and k in HOMES and HOMES[k][0] not in MACHINES else k)
     return keys
 
 
@@ -303,7 +303,7 @@ def test_samples_has_an_upper_bound(samples, tmp_path, capsys):
     rc, err = _run(tmp_path, _set(ROCKER_FORM, "solve.samples", samples), capsys)
     assert rc == 2 and err.count("\n") == 1
     # beyond the size of any number in a file the general bound speaks, else the range of samples
-    assert "solve.samples" in err and (f"{MAX_SAMPLES}" in err or samples > MAX_NUMBER and "too large" in err)
+    assert "solve.samples" in err and (f"{MAX_SAMPLES}" in err or (samples > MAX_NUMBER and "too large" in err))
 
 
 def test_samples_at_the_bound_is_accepted():
@@ -388,7 +388,7 @@ def test_malformed_design_files_one_line_in_every_command(command, tmp_path, cap
                    "profile": ["--csv", str(tmp_path / "p.csv")],
                    "plot": ["--out", str(tmp_path / "pl")],
                    "report": ["--out", str(tmp_path / "rp")]}
-        argv = [command, str(f)] + options.get(command, [])
+        argv = [command, str(f), *options.get(command, [])]
         capsys.readouterr()
         assert main(argv) == 2, (command, expected)
         err = capsys.readouterr().err

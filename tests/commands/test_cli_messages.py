@@ -146,7 +146,7 @@ def test_ctrl_c_while_the_imports_run_is_one_line_and_exit_130(delay, tmp_path):
     The delays count from NumPy's first mapping, not from the process's start: before it only the interpreter's
     own start-up runs (its ``site`` module, whose Ctrl-C no program can take; a loaded machine can make it last
     longer than any fixed delay), then ``import cams.cli``, which loads only the standard library (next test)."""
-    cmd = _cams_command() + ["solve", str(_slow_design(tmp_path))]
+    cmd = [*_cams_command(), "solve", str(_slow_design(tmp_path))]
     p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
     _wait_for_numpy(p.pid)
     time.sleep(delay)

@@ -7,8 +7,8 @@ import json
 import pytest
 
 from cams.cli import main
-from cams.model.design import FlatFaceDesign
 from cams.io.designfile import design_from_dict, load_design
+from cams.model.design import FlatFaceDesign
 from cams.model.follower import FlatRocker, FlatTranslating
 from laws.errors import InputError
 from tests.conftest import EXAMPLES

@@ -5,8 +5,8 @@ import json
 import pytest
 
 from cams.cam import Cam
-from cams.dynamics.forces import cam_forces, chosen_spring, jump_speed
 from cams.cli import main
+from cams.dynamics.forces import cam_forces, chosen_spring, jump_speed
 from cams.present.report import report_sections
 from tests.conftest import EXAMPLES
 

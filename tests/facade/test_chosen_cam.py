@@ -17,8 +17,8 @@ import pytest
 from cams.cli import main
 from cams.io.designfile import design_from_dict
 from cams.io.files import read_toml
-from laws.errors import InputError
 from cams.solve import solve
+from laws.errors import InputError
 from tests.conftest import EXAMPLES
 from tests.stress.helpers import to_toml
 

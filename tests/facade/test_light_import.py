@@ -10,7 +10,7 @@ HEAVY = ("matplotlib", "cvxpy", "ezdxf")
 
 
 def _loaded_after(code: str, heavy: tuple[str, ...] = HEAVY) -> list[str]:
-    prog = code + "\nimport sys\nprint(' '.join(m for m in %r if m in sys.modules))" % (heavy,)
+    prog = code + f"\nimport sys\nprint(' '.join(m for m in {heavy!r} if m in sys.modules))"
     r = subprocess.run([sys.executable, "-c", prog], capture_output=True, text=True, check=True)
     return r.stdout.split()
 

@@ -8,9 +8,9 @@ import pytest
 
 from cams.cli import main
 from cams.io.designfile import design_from_dict
+from cams.solve import solve
 from cams.sweep import MAX_DESIGNS, parse_vary, sweep
 from laws.errors import InputError
-from cams.solve import solve
 from tests.conftest import EXAMPLES, rocker_dict
 
 

@@ -9,11 +9,19 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, chosen_spring, jamming_limit, jump_speed, spring_for_contact
+from cams.dynamics.forces import (
+    FollowerDynamics,
+    Spring,
+    cam_forces,
+    chosen_spring,
+    jamming_limit,
+    jump_speed,
+    spring_for_contact,
+)
 from cams.io.designfile import design_from_dict, load_design
-from tests.conftest import EXAMPLES, rocker_dict
-from laws.errors import InputError
 from cams.solve import solve
+from laws.errors import InputError
+from tests.conftest import EXAMPLES, rocker_dict
 
 from .sim import simulate
 

@@ -11,8 +11,8 @@ import pytest
 
 from cams.cli import main
 from cams.machine.kinetostatics import machine_forces
-from cams.machine.timing import design_machine
 from cams.machine.machinefile import load_machine
+from cams.machine.timing import design_machine
 
 ROOT = Path(__file__).resolve().parents[2]
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"

@@ -19,15 +19,15 @@ import numpy as np
 import pytest
 
 from cams.machine.kinetostatics import (
+    JOINTS,
     ConstantFriction,
-    Friction,
     ForceSpec,
+    Friction,
     GasPressure,
     LinkMass,
     Resistance,
     analyse_forces,
     build_model,
-    JOINTS,
 )
 from cams.machine.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump, SlottingMachine
 from laws.errors import InputError

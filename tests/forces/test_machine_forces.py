@@ -194,8 +194,8 @@ def test_flywheel_without_link_masses_but_with_loads_is_sized(tmp_path, capsys):
 def test_hodographs_draw_the_reactions():
     """Each panel of the hodograph figure traces its pair's reaction vector (R_x, R_y) over the whole cycle."""
     from cams.machine.kinetostatics import machine_forces
-    from cams.machine.timing import design_machine
     from cams.machine.machinefile import load_machine
+    from cams.machine.timing import design_machine
 
     spec = load_machine(DATA)
     mf = machine_forces(spec, design_machine(spec).solve.centre)
@@ -224,8 +224,8 @@ def test_forces_reuse_what_the_machine_design_found(monkeypatch):
     same forces as when it finds them itself."""
     import cams.machine.timing as machine_mod
     from cams.machine.kinetostatics import machine_forces
-    from cams.machine.timing import design_machine
     from cams.machine.machinefile import load_machine
+    from cams.machine.timing import design_machine
 
     spec = load_machine(DATA)
     res = design_machine(spec)

@@ -8,11 +8,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, jump_speed, rigid_impacts
 from cams.cli import main
+from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, jump_speed, rigid_impacts
 from cams.io.designfile import load_design
-from laws.units import rpm_to_omega
 from cams.solve import solve
+from laws.units import rpm_to_omega
 
 ROOT = Path(__file__).resolve().parents[2]
 FEED = ROOT / "examples" / "slotting_feed_cam.toml"
@@ -110,8 +110,9 @@ def test_cams_machine_forces_with_a_linear_rise(tmp_path, capsys):
 
 def test_no_deceleration_means_no_jump_speed_in_words(tmp_path, capsys):
     """An all-linear program has no deceleration between its impacts: the jump speed there is 'none', not 'inf rpm'."""
-    from cams.cli import main
     from pathlib import Path
+
+    from cams.cli import main
 
     src = Path(__file__).resolve().parents[2] / "examples" / "slotting_feed_cam.toml"
     text = src.read_text(encoding="utf-8").replace('law = "parabolic"', 'law = "linear"').replace('law = "harmonic"', 'law = "linear"')

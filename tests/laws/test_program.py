@@ -36,7 +36,7 @@ def programs(draw):
     weights = np.array(draw(st.lists(st.floats(0.05, 1.0), min_size=len(seq), max_size=len(seq))))
     angles = weights / weights.sum() * TWO_PI
     phases = []
-    for (kind, h), a in zip(seq, angles):
+    for (kind, h), a in zip(seq, angles, strict=True):
         law = None if kind == "dwell" else get_law(draw(st.sampled_from(LAW_NAMES)))
         phases.append(Phase(kind, float(a), law, None if kind == "dwell" else float(h)))
     return Program(tuple(phases), lift=lift)

@@ -38,9 +38,9 @@ import numpy as np
 import pytest
 
 from cams.machine.linkage import analyse
-from cams.machine.timing import windows
-from cams.machine.machinefile import load_machine
 from cams.machine.linkage.machines import OpposedTwin
+from cams.machine.machinefile import load_machine
+from cams.machine.timing import windows
 
 ROOT = Path(__file__).resolve().parents[2]
 SLOTTING_FILE = ROOT / "examples" / "machines" / "slotting_machine.toml"

@@ -5,9 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from laws.errors import show_value
 from cams.machine.linkage.machines import CrankSlider
-from laws.errors import InputError
+from laws.errors import InputError, show_value
 
 
 @pytest.mark.parametrize(

@@ -14,13 +14,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from cams.cli import main
 from cams.dynamics.forces import LENGTH_UNITS
 from cams.io.designfile import dynamics_from_dict
-from cams.cli import main
 from cams.machine.kinetostatics import ForceSpec, LinkMass, Resistance, analyse_forces, force_spec_from_dict
 from cams.machine.linkage.machines import CrankSlider
-from cams.machine.timing import Drive, Timing, design_machine, place_cam, windows
 from cams.machine.machinefile import machine_from_dict
+from cams.machine.timing import Drive, Timing, design_machine, place_cam, windows
 from laws.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -291,7 +291,7 @@ def _intervals(flags: np.ndarray, c_deg: np.ndarray, period_deg: float) -> list[
 
 
 def _cycle_grid(sim: Sim) -> np.ndarray:
-    n = int(round(360.0 * sim.turns / STEP_DEG))
+    n = round(360.0 * sim.turns / STEP_DEG)
     return np.arange(n + 1) * STEP_DEG  # 0 .. 360 q inclusive
 
 

@@ -23,10 +23,10 @@ import pytest
 
 from cams.cli import main
 from cams.io.designfile import design_from_dict
+from cams.solve import solve
 from cams.verify.pressure import check_pressure
 from laws.errors import InfeasibleError
 from optimize.diagnose import _attained, diagnosed, explain_infeasible, relaxations
-from cams.solve import solve
 from tests.conftest import EXAMPLES, rocker_dict
 from tests.validation.reference import ReferenceZone
 

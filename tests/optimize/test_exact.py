@@ -10,8 +10,8 @@ import pytest
 
 import optimize.exact as exact
 from cams.io.designfile import design_from_dict, load_design
-from optimize.exact import ExchangeInvariantError, nearest_exact
 from cams.solve import solve
+from optimize.exact import ExchangeInvariantError, nearest_exact
 from tests.conftest import EXAMPLES
 from tests.stress.helpers import assert_minimal
 
@@ -55,7 +55,7 @@ def _arm(k: float) -> dict:
 def test_nonminimal_design_is_minimal_and_scales_exactly():
     """Arm 10, 100, 1000: R0 exactly proportional, certified, and no admissible centre 1e-6 closer."""
     rs = [solve(design_from_dict(_arm(k)), method="exact") for k in (10.0, 100.0, 1000.0)]
-    for r, k in zip(rs, (10.0, 100.0, 1000.0)):
+    for r, k in zip(rs, (10.0, 100.0, 1000.0), strict=True):
         assert r.verified and r.certified is True
         assert r.R0 / k == pytest.approx(rs[0].R0 / 10.0, rel=1e-9)
         assert r.error_bound <= 1e-9 * r.R0
@@ -134,7 +134,7 @@ def test_decreasing_relaxation_raises(monkeypatch):
     calls = {"n": 0}
 
     def shrinking(self, *a, **k):
-        x = real(self, *a, **k)
+        real(self, *a, **k)
         calls["n"] += 1
         if calls["n"] == 2:
             self.y = 0.5 * self.y

@@ -17,10 +17,10 @@ import numpy as np
 import pytest
 
 from cams.io.designfile import design_from_dict
+from cams.solve import solve
 from laws.errors import InfeasibleError
 from optimize.exhaustive import candidates, first_admissible
 from optimize.planar import feasible_mask, nearest_point
-from cams.solve import solve
 from tests.stress.test_stress_properties import random_design
 
 #: A rocker whose least R0 lies on one t1-t1 line (a design of the random campaign).

@@ -17,9 +17,9 @@ import numpy as np
 import pytest
 
 from cams.io.designfile import design_from_dict
+from cams.solve import solve
 from cams.verify.pressure import check_pressure
 from optimize.circle import admissible_arcs, best_on_circle, violation_function
-from cams.solve import solve
 from tests.conftest import rocker_dict
 
 SCALES = (1e-3, 1.0, 1e3)

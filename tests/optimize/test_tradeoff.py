@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from cams.io.designfile import design_from_dict
-from cams.verify.pressure import check_pressure
 from cams.solve import solve
+from cams.verify.pressure import check_pressure
 from optimize.tradeoff import tradeoff
 from tests.conftest import rocker_dict
 

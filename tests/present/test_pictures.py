@@ -11,15 +11,14 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
-from matplotlib.text import Text  # noqa: E402
+import numpy as np
+import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-from cams.present import plots  # noqa: E402
-from cams.cam import Cam  # noqa: E402
-from cams.io.designfile import design_from_dict  # noqa: E402
-from tests.conftest import EXAMPLES, rocker_dict  # noqa: E402
+from cams.cam import Cam
+from cams.io.designfile import design_from_dict
+from cams.present import plots
+from tests.conftest import EXAMPLES, rocker_dict
 
 ALL_EXAMPLES = sorted(p.stem for p in EXAMPLES.glob("*.toml"))
 

@@ -63,7 +63,7 @@ def test_pressure_picture_peak_matches_the_check(cams_by_name):
     cam = cams_by_name["rocker_form"]
     fig = plot_pressure(cam.solution)
     ax = fig.axes[0]
-    rise = [ln for ln in ax.lines if ln.get_label() == "rise"][0]
+    rise = next(ln for ln in ax.lines if ln.get_label() == "rise")
     assert np.max(rise.get_ydata()) == pytest.approx(np.degrees(cam.solution.pressure.rise), abs=0.05)
 
 

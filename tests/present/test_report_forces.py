@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import pytest
-
 from cams.cam import Cam
 from cams.present.report import report_sections, write_report
 from tests.conftest import EXAMPLES

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from cams.io.designfile import design_from_dict
-from cams.verify.pressure import contact_normal
 from cams.solve import solve
+from cams.verify.pressure import contact_normal
 from tests.conftest import rocker_dict
 
 
@@ -68,7 +68,7 @@ def test_binding_line_names_follow_the_sign_of_the_pressure_angle(key):
     rep = res.to_dict()
     assert rep["binding"]
     limits = dict(design.constrained_phases())
-    for b, d in zip(res.binding, rep["binding"]):
+    for b, d in zip(res.binding, rep["binding"], strict=True):
         g = signed_pressure_angle(design, res.centre, b.phase, b.phi)
         want = limits[b.phase] if d["line"] == "t-t" else -limits[b.phase]
         assert g == pytest.approx(want, abs=1e-7), (d, np.degrees(g))

@@ -13,7 +13,7 @@ from __future__ import annotations
 import subprocess
 import sys
 import tomllib
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 import numpy as np
@@ -30,7 +30,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 NAMES = ("rocker_force", "rocker_form", "slotting_feed_cam", "translating_force", "translating_form_centric")
 
 
-@lru_cache(maxsize=None)
+@cache
 def _case(name: str, return_law: str | None = None):
     """``(design, centre)``: an example, its return law replaced if given, at the example's solved centre."""
     from cams.solve import solve

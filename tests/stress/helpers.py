@@ -30,9 +30,9 @@ import numpy as np
 import pytest
 
 from cams.io.designfile import design_from_dict
+from cams.solve import solve
 from cams.verify.pressure import check_pressure, check_pressure_many
 from laws.errors import CamsError, InfeasibleError, InputError
-from cams.solve import solve
 from tests.conftest import rocker_dict as base_rocker_dict
 
 #: Largest time one guarded call may take (seconds).
@@ -290,7 +290,7 @@ def assert_minimal(result, shrink: float = 1e-6) -> None:
     ang = np.concatenate([np.linspace(0, 2 * np.pi, 360, endpoint=False), a0 + np.radians(np.linspace(-1, 1, 161))])
     pts = A0 + rho * np.stack([np.cos(ang), np.sin(ang)], axis=1)
     maybe = pts[_coarse_excess(design, pts) <= 0]
-    for p, rep in zip(maybe, check_pressure_many(design, maybe, tol=0.0)):
+    for p, rep in zip(maybe, check_pressure_many(design, maybe, tol=0.0), strict=True):
         assert not rep.ok, (
             f"a centre at R0 (1 - {shrink:g}) = {rho!r} is admissible: {p.tolist()} "
             f"(answer R0 = {result.R0!r}, error bound {result.error_bound!r})")

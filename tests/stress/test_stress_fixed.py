@@ -214,6 +214,6 @@ def test_fixed_L_floor_between_least_and_reachable():
     A0 = design.follower.position(0.0)
     t = np.linspace(-np.pi, np.pi, 3601)
     pts = 115.0 * np.stack([np.cos(t), np.sin(t)], axis=1)
-    ok = [p for p, rep in zip(pts, check_pressure_many(design, pts, grid=400)) if rep.ok]
+    ok = [p for p, rep in zip(pts, check_pressure_many(design, pts, grid=400), strict=True) if rep.ok]
     assert ok, "the circle meets the zone"
     assert min(np.linalg.norm(p - A0) for p in ok) >= out.R0 * (1 - 1e-3)

@@ -84,7 +84,7 @@ def test_profile_scales(kind, closure, length):
     assert p.min_work_radius / k == pytest.approx(pr.min_work_radius, rel=1e-7)
     assert c.passed == cr.passed
     rep, rep_ref = c.to_dict(), cr.to_dict()
-    for (path, v), (_, v0) in zip(walk(rep), walk(rep_ref)):
+    for (path, v), (_, _v0) in zip(walk(rep), walk(rep_ref), strict=True):
         if isinstance(v, float):
             assert np.isfinite(v), path
     assert [ch["passed"] for ch in rep["checks"]] == [ch["passed"] for ch in rep_ref["checks"]]

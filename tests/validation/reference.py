@@ -271,7 +271,7 @@ class ReferenceZone:
         ty = self.a[None, :, 1] - (self.Bs * ox + self.Bc * oy)
         return (tx * self.q[:, 0] + ty * self.q[:, 1]) / np.hypot(tx, ty)
 
-    def admissible(self, centres: np.ndarray, *, chunk: int = 32, prefilter: "ReferenceZone | None" = None
+    def admissible(self, centres: np.ndarray, *, chunk: int = 32, prefilter: ReferenceZone | None = None
                    ) -> np.ndarray:
         """True where every position has gamma <= its limit (strictly, no tolerance).
 

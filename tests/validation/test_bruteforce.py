@@ -31,7 +31,7 @@ all-pairs method finds the edge point.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 import pytest
@@ -45,17 +45,17 @@ from .reference import brute_force_nearest, brute_force_on_line, max_excess, max
 ALL = {**BRUTE_DESIGNS, **CENTRIC_DESIGNS}
 
 
-@lru_cache(maxsize=None)
+@cache
 def _design(name):
     return design_from_dict(ALL[name])
 
 
-@lru_cache(maxsize=None)
+@cache
 def _solved(name, method):
     return solve(_design(name), method=method)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _brute(name):
     d = _design(name)
     A0 = path(spec_of(d), 0.0)

@@ -9,14 +9,14 @@ circle with the reference test; nothing from optimize.circle / optimize.zone.
 from __future__ import annotations
 
 import re
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 import pytest
 
 from cams.io.designfile import design_from_dict
-from laws.errors import InfeasibleError
 from cams.solve import solve
+from laws.errors import InfeasibleError
 
 from .designs import BRUTE_DESIGNS
 from .reference import ReferenceZone, brute_force_nearest, max_excess, path, spec_of
@@ -26,23 +26,23 @@ NAMES = ["rocker force, opposite senses", "rocker force, same sense", "rocker fo
 FRACTIONS = ["near_min", "between", "at_min_R0", "beyond"]
 
 
-@lru_cache(maxsize=None)
+@cache
 def _base(name):
     return design_from_dict(BRUTE_DESIGNS[name])
 
 
-@lru_cache(maxsize=None)
+@cache
 def _zone(name, n=2000):
     return ReferenceZone(_base(name), n)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _L_min(name):
     """Smallest admissible L: the admissible centre nearest to the pivot, by brute force."""
     return brute_force_nearest(_base(name), [0.0, 0.0])
 
 
-@lru_cache(maxsize=None)
+@cache
 def _min_R0(name):
     return solve(_base(name), method="exact")
 
@@ -69,7 +69,7 @@ def scan_circle(name, L, *, n=7200, levels=3):
     th = np.linspace(-np.pi, np.pi, n, endpoint=False)
     cell = 2 * np.pi / n
     found_t, found_R = [], []
-    for lev in range(levels + 1):
+    for _lev in range(levels + 1):
         C = L * np.stack([np.cos(th), np.sin(th)], axis=1)
         ok = z.admissible(C, prefilter=_zone(name, 400))
         R = np.linalg.norm(C - A0, axis=1)

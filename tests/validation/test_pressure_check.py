@@ -154,7 +154,7 @@ def test_many_equals_one_at_a_time():
         C = rng.normal(size=(40, 2)) * d.scale
         many = check_pressure_many(d, C, grid=300)
         assert len(many) == len(C)
-        for c, m in zip(C, many):
+        for c, m in zip(C, many, strict=True):
             one = check_pressure(d, c, grid=300)
             assert one.ok == m.ok
             for a, b in ((one.rise, m.rise), (one.ret, m.ret)):

@@ -111,7 +111,7 @@ class Point:
         """Magnitude of the acceleration."""
         return np.abs(self.acc)
 
-    def relative(self, other: "Point") -> "Point":
+    def relative(self, other: Point) -> Point:
         """This point's state relative to ``other`` (differences of all three)."""
         return Point(self.pos - other.pos, self.vel - other.vel, self.acc - other.acc)
 
@@ -122,17 +122,19 @@ class Angle:
 
     Attributes
     ----------
-    angle : ndarray
+    angle : ndarray or float
         Radians, counter-clockwise from +x.
-    omega : ndarray
+    omega : ndarray or float
         Angular velocity, rad/s (counter-clockwise positive).
-    alpha : ndarray
+    alpha : ndarray or float
         Angular acceleration, rad/s^2.
+
+    A fixed direction (a guide) has float members.
     """
 
-    angle: np.ndarray
-    omega: np.ndarray
-    alpha: np.ndarray
+    angle: np.ndarray | float
+    omega: np.ndarray | float
+    alpha: np.ndarray | float
 
     @property
     def unit(self) -> np.ndarray:
@@ -181,7 +183,7 @@ def solve_real(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> tuple[np.ndarray,
         return cross(c, b) / det, cross(a, c) / det
 
 
-def acute_angle(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def acute_angle(a: np.ndarray | float, b: np.ndarray | float) -> np.ndarray:
     """Acute angle between two lines of directions ``a`` and ``b`` (radians), in [0, pi/2].
 
     Examples
@@ -209,7 +211,8 @@ def ground(z: complex | np.ndarray) -> Point:
     return Point(z, zero, zero.copy())
 
 
-def crank(centre: Point, radius: float, phi: np.ndarray, *, omega: float = 1.0, alpha: float = 0.0) -> tuple[Point, Angle]:
+def crank(centre: Point, radius: float, phi: np.ndarray, *, omega: float = 1.0,
+          alpha: float = 0.0) -> tuple[Point, Angle]:
     """The input crank: a point at ``radius`` from ``centre`` at angle ``phi``.
 
     Parameters
@@ -312,7 +315,8 @@ def pllp(c1: np.ndarray, d1: float, d2: float, c2: np.ndarray, *, branch: int = 
     return np.where(bad, np.nan + 0j, X), np.asarray(bad)
 
 
-def plpp(c: np.ndarray, d: float, p0: np.ndarray, u: np.ndarray, *, branch: int = 1) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def plpp(c: np.ndarray, d: float, p0: np.ndarray, u: np.ndarray, *,
+         branch: int = 1) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Crossing of a circle and a line: ``X = p0 + s u`` with ``|X - c| = d``.
 
     Parameters
@@ -356,7 +360,8 @@ def _check_branch(branch: int) -> None:
         raise ValueError(f"branch must be +1 or -1, got {branch!r}")
 
 
-def rrr(c1: Point, d1: float, d2: float, c2: Point, *, branch: int = 1, field: str = "linkage") -> tuple[Point, Angle, Angle]:
+def rrr(c1: Point, d1: float, d2: float, c2: Point, *, branch: int = 1,
+        field: str = "linkage") -> tuple[Point, Angle, Angle]:
     """RRR dyad: two links ``c1-X`` (length ``d1``) and ``c2-X`` (``d2``) joined at X.
 
     Loop: ``X = c1 + d1 e^{i t1} = c2 + d2 e^{i t2}``. Velocity:
@@ -409,7 +414,8 @@ def rrr(c1: Point, d1: float, d2: float, c2: Point, *, branch: int = 1, field: s
     return Point(X, vel, acc), Angle(np.angle(r1), w1, e1), Angle(np.angle(r2), w2, e2)
 
 
-def rrp(c: Point, d: float, origin: Point, guide: Angle, *, branch: int = 1, field: str = "linkage") -> tuple[Point, Angle, Slide]:
+def rrp(c: Point, d: float, origin: Point, guide: Angle, *, branch: int = 1,
+        field: str = "linkage") -> tuple[Point, Angle, Slide]:
     """RRP dyad: a link ``c-X`` of length ``d`` whose end X slides on a guide line.
 
     The guide passes through ``origin`` (a point of the guide's link) with
@@ -456,7 +462,8 @@ def rrp(c: Point, d: float, origin: Point, guide: Angle, *, branch: int = 1, fie
         need = float(np.max(np.where(bad, h, -np.inf)))
         raise AssemblyError(
             field,
-            f"a link of {d:.6g} cannot reach its guide, which lies up to {need:.6g} away; it would fit with a length >= {need:.6g}",
+            f"a link of {d:.6g} cannot reach its guide, which lies up to {need:.6g} away; "
+            f"it would fit with a length >= {need:.6g}",
             bad,
         )
     r = X - c.pos
@@ -524,7 +531,8 @@ def rpr(block: Point, pivot: Point, *, offset: float = 0.0, field: str = "linkag
     return Angle(np.angle(u), W, We), Slide(s, s1, s2)
 
 
-def rpp(c: Point, origin: complex, guide_angle: float, slot_angle: float, *, field: str = "linkage") -> tuple[Slide, Slide]:
+def rpp(c: Point, origin: complex, guide_angle: float, slot_angle: float, *,
+        field: str = "linkage") -> tuple[Slide, Slide]:
     """RPP dyad: a block pinned at ``c`` slides in a slot of a link that translates on a fixed guide.
 
     The translating link's reference point moves on the fixed line

@@ -253,7 +253,8 @@ def slotted_lever_synthesis(
             "linkage.time_ratio",
             f"K = {K:.6g} is too large: a {what} linkage allows 1 < K <= {MAX_TIME_RATIO:g} (at larger K the "
             f"return stroke takes under {360 / (MAX_TIME_RATIO + 1):.2g} deg of crank and the crank passes next to the "
-            "pivot)" + ("" if rr is None else f"; with rod_ratio = {rr:.6g} also K < {_below(slotting_time_ratio_limit(rr))}"),
+            "pivot)"
+            + ("" if rr is None else f"; with rod_ratio = {rr:.6g} also K < {_below(slotting_time_ratio_limit(rr))}"),
         )
     half = theta / 2
     bar = H / (2 * np.sin(half))
@@ -311,7 +312,9 @@ def crank_slider_crank(stroke: float, rod: float, offset: float = 0.0) -> float:
     if e == 0:
         r = H / 2
         if r >= l:
-            raise InfeasibleError("linkage.rod", f"a rod of {l:.6g} needs a crank shorter than itself; the stroke must be < {2 * l:.6g}")
+            raise InfeasibleError(
+                "linkage.rod", f"a rod of {l:.6g} needs a crank shorter than itself; the stroke must be < {2 * l:.6g}"
+            )
         return r
     rmax = l - e  # beyond this the rod cannot reach the slider's line at every angle
     if rmax <= 0:
@@ -322,5 +325,6 @@ def crank_slider_crank(stroke: float, rod: float, offset: float = 0.0) -> float:
 
     Hmax = f(rmax) + H
     if H >= Hmax:
-        raise InfeasibleError("linkage.stroke", f"rod {l:.6g} with offset {e:.6g} allows a stroke < {Hmax:.6g}, got {H:.6g}")
+        raise InfeasibleError("linkage.stroke",
+                              f"rod {l:.6g} with offset {e:.6g} allows a stroke < {Hmax:.6g}, got {H:.6g}")
     return float(brentq(f, 0.0, rmax, xtol=1e-14 * l, rtol=1e-15))
