@@ -27,8 +27,8 @@ __all__ = ["pressure_angle", "contact_normal", "PressureReport", "check_pressure
 def contact_normal(design: CamDesign, centre: np.ndarray, s: np.ndarray, ds: np.ndarray):
     """Outward contact normal, rise direction and cam-centre-to-roller vector (fixed frame).
 
-    The inversion formula (:func:`_normal`, by components), used by
-    :func:`pressure_angle`, :func:`check_pressure` and :mod:`cams.camforces`.
+    The one place of the inversion formula (used by :func:`pressure_angle` and
+    :mod:`cams.camforces`).
 
     Parameters
     ----------
