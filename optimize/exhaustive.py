@@ -139,18 +139,17 @@ def _by_distance(d: np.ndarray, first: int = 4096):
     The same order as a stable :func:`numpy.argsort`, without sorting the far
     candidates when a near one is admissible.
     """
-    lo, k = -np.inf, first
-    while True:
-        rest = np.flatnonzero((d > lo) & np.isfinite(d))
-        if not len(rest):
-            return
+    rest, k = np.flatnonzero(np.isfinite(d)), first
+    while len(rest):
+        # the candidates not yet yielded shrink with each band: the far ones are not scanned again
         if k < len(rest):
-            hi = np.partition(d[rest], k)[k]
-            rest = rest[d[rest] <= hi]
+            dr = d[rest]
+            near = dr <= np.partition(dr, k)[k]
+            band, rest = rest[near], rest[~near]
         else:
-            hi = np.inf
-        yield rest[np.argsort(d[rest], kind="stable")]
-        lo, k = hi, 2 * k
+            band, rest = rest, rest[:0]
+        yield band[np.argsort(d[band], kind="stable")]
+        k *= 2
 
 
 def nearest_exhaustive(

@@ -45,23 +45,37 @@ def contact_normal(design: CamDesign, centre: np.ndarray, s: np.ndarray, ds: np.
         on the cam centre with no relative motion: undefined), unit direction of
         the rise, and ``A - O`` (length unit). ``cos(gamma) = n . e``.
     """
-    f = design.follower
     O = np.asarray(centre, dtype=float)
-    A = f.position(s)
-    T = f.tangent(s)
-    V = np.asarray(ds)[..., None] * T
-    r = A - O
+    nx, ny, ex, ey, rx, ry = _normal(design, O[..., 0], O[..., 1], s, ds)
+    return np.stack([nx, ny], axis=-1), np.stack([ex, ey], axis=-1), np.stack([rx, ry], axis=-1)
+
+
+def _normal(design: CamDesign, ox, oy, s: np.ndarray, ds: np.ndarray):
+    """The one place of the inversion formula, by components: ``nx, ny, ex, ey, rx, ry`` of :func:`contact_normal`.
+
+    ``ox, oy`` (the centre's coordinates) broadcast with ``s`` and ``ds``.
+    Every value is computed from its own position and centre alone, by the
+    same operations whatever the shapes, so a centre's values do not depend on
+    the other centres or positions evaluated with it.
+    """
+    A, T, _ = design.follower.frame(s)
+    tx, ty = T[..., 0], T[..., 1]
+    rx, ry = A[..., 0] - ox, A[..., 1] - oy
+    ds = np.asarray(ds)
     eps = design.cam_sense
-    W = V - eps * np.stack([-r[..., 1], r[..., 0]], axis=-1)
+    # W = dA/dphi - eps k x (A - O), the roller centre's velocity relative to the cam (per radian)
+    wx = ds * tx - eps * -ry
+    wy = ds * ty - eps * rx
     # outward normal: W turned by eps * 90 degrees
-    n = eps * np.stack([-W[..., 1], W[..., 0]], axis=-1)
-    norm = np.linalg.norm(n, axis=-1, keepdims=True)
+    nx, ny = eps * -wy, eps * wx
+    norm = np.sqrt(nx * nx + ny * ny)
     # |n| = |W| is of the size of |A - O| and of the follower's motion (both scale with the unit); it is
     # near 0 only at the degenerate A = O, so a fraction of the follower's size cannot mislabel a defined normal
     defined = norm > 1e-12 * design.scale
-    n = np.where(defined, n / np.where(defined, norm, 1.0), np.nan)
-    e = T / np.linalg.norm(T, axis=-1, keepdims=True)
-    return n, e, r
+    norm = np.where(defined, norm, 1.0)
+    nx, ny = np.where(defined, nx / norm, np.nan), np.where(defined, ny / norm, np.nan)
+    t = np.sqrt(tx * tx + ty * ty)
+    return nx, ny, tx / t, ty / t, rx, ry
 
 
 def pressure_angle(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndarray) -> np.ndarray:
@@ -84,8 +98,9 @@ def pressure_angle(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndar
         maxima below skip.
     """
     m = design.program.evaluate_phase(phase, np.asarray(u, dtype=float))
-    n, e, _ = contact_normal(design, centre, m.s, m.ds)
-    return np.arccos(np.clip(np.sum(n * e, axis=-1), -1.0, 1.0))
+    O = np.asarray(centre, dtype=float)
+    nx, ny, ex, ey, _, _ = _normal(design, O[..., 0], O[..., 1], m.s, m.ds)
+    return np.arccos(np.clip(nx * ex + ny * ey, -1.0, 1.0))
 
 
 @dataclass(frozen=True)
@@ -114,54 +129,80 @@ ZOOM_STEPS = 10
 CHUNK = 200_000
 
 
-def _angles(design: CamDesign, i: int, centres: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """Pressure angle (radians) in phase ``i``; -1 where undefined (below every angle).
+def _angles(design: CamDesign, ox, oy, s: np.ndarray, ds: np.ndarray) -> np.ndarray:
+    """Pressure angle (radians) at the motion ``s, ds`` for the centres ``(ox, oy)`` (broadcast); -1 where undefined.
 
-    ``centres`` has shape ``u.shape + (2,)`` (one centre per position) or
-    broadcasts to it.
+    -1 lies below every angle, so the maxima below skip the undefined positions.
     """
+    nx, ny, ex, ey, _, _ = _normal(design, ox, oy, s, ds)
+    g = np.arccos(np.clip(nx * ex + ny * ey, -1.0, 1.0))
+    g[np.isnan(g)] = -1.0
+    return g
+
+
+def _motion(design: CamDesign, i: int, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``s, s'`` of phase ``i`` at the normalized positions ``u`` (any shape)."""
     m = design.program.evaluate_phase(i, u.ravel())
-    n, e, _ = contact_normal(design, centres, m.s.reshape(u.shape), m.ds.reshape(u.shape))
-    g = np.arccos(np.clip(np.sum(n * e, axis=-1), -1.0, 1.0))
-    return np.nan_to_num(g, nan=-1.0)
+    return m.s.reshape(u.shape), m.ds.reshape(u.shape)
 
 
-def _phase_max(design: CamDesign, centres: np.ndarray, i: int, grid: int) -> tuple[np.ndarray, np.ndarray]:
-    """Largest pressure angle in phase ``i`` for each of the centres (shape (k, 2)), and its normalized position.
+def _phases_max(design: CamDesign, centres: np.ndarray, phases: list[int],
+                grid: int) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Largest pressure angle in each of ``phases`` for each of the centres (shape (k, 2)), and its position.
 
     Every local maximum of the sampled angle (the phase ends included: the
     angle may jump at a join between phases, where each side is its own
     one-sided limit) is refined, all at once, by zooming into its bracket of
     two sampling steps; the largest refined value wins. Refining only the
-    highest sample would miss a second peak that the sampling lowered.
+    highest sample would miss a second peak that the sampling lowered. The
+    peaks of all phases and centres are zoomed together; each value is
+    computed from its own centre and position alone (:func:`_normal`), so a
+    centre's result does not depend on the other centres checked with it.
 
     Returns
     -------
-    g, u : ndarray, shape (k,)
+    list of (g, u), one per phase, each ndarray of shape (k,)
         Radians (-1 where the angle is undefined throughout) and positions in [0, 1].
     """
+    k = len(centres)
+    ox, oy = centres[:, 0, None], centres[:, 1, None]
     u = np.linspace(0.0, 1.0, grid + 1)
-    g = _angles(design, i, centres[:, None, :], np.broadcast_to(u, (len(centres), grid + 1)))
-    low = np.full((len(centres), 1), -np.inf)
-    left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
-    c, k = np.nonzero((g >= left) & (g >= right) & (g >= 0.0))
-    best_g, best_u = g[c, k], u[k]
-    lo, hi = u[np.maximum(k - 1, 0)], u[np.minimum(k + 1, grid)]
+    low = np.full((k, 1), -np.inf)
+    peaks = []
+    for q, i in enumerate(phases):
+        g = _angles(design, ox, oy, *_motion(design, i, u))  # the motion once for every centre
+        left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
+        c, j = np.nonzero((g >= left) & (g >= right) & (g >= 0.0))
+        peaks.append((c, j, np.full(len(c), q), g[c, j]))
+    c, j, ph, best_g = (np.concatenate(a) for a in zip(*peaks, strict=True))
+    best_u = u[j]
+    lo, hi = u[np.maximum(j - 1, 0)], u[np.minimum(j + 1, grid)]
+    cuts = np.searchsorted(ph, np.arange(len(phases) + 1)).tolist()  # the peaks come grouped by phase
     t = np.linspace(0.0, 1.0, ZOOM_POINTS)
     rows = np.arange(len(c))
+    pox, poy = ox[c], oy[c]
+    s, ds = np.empty((len(c), ZOOM_POINTS)), np.empty((len(c), ZOOM_POINTS))
     for _ in range(ZOOM_STEPS):
         x = lo[:, None] + (hi - lo)[:, None] * t
-        gx = _angles(design, i, centres[c][:, None, :], x)
-        j = np.argmax(gx, axis=1)
-        better = gx[rows, j] > best_g
-        best_g = np.where(better, gx[rows, j], best_g)
-        best_u = np.where(better, x[rows, j], best_u)
-        lo, hi = x[rows, np.maximum(j - 1, 0)], x[rows, np.minimum(j + 1, ZOOM_POINTS - 1)]
-    # the best peak of each centre: sort by (centre, value), keep the last of each centre
-    out_g, out_u = np.full(len(centres), -1.0), np.zeros(len(centres))
-    order = np.lexsort((best_g, c))
-    out_g[c[order]], out_u[c[order]] = best_g[order], best_u[order]
-    return out_g, out_u
+        for q, i in enumerate(phases):
+            a, b = cuts[q], cuts[q + 1]
+            if b > a:
+                s[a:b], ds[a:b] = _motion(design, i, x[a:b])
+        gx = _angles(design, pox, poy, s, ds)
+        jx = np.argmax(gx, axis=1)
+        better = gx[rows, jx] > best_g
+        best_g = np.where(better, gx[rows, jx], best_g)
+        best_u = np.where(better, x[rows, jx], best_u)
+        lo, hi = x[rows, np.maximum(jx - 1, 0)], x[rows, np.minimum(jx + 1, ZOOM_POINTS - 1)]
+    out = []
+    for q in range(len(phases)):
+        a, b = cuts[q], cuts[q + 1]
+        # the best peak of each centre: sort by (centre, value), keep the last of each centre
+        out_g, out_u = np.full(k, -1.0), np.zeros(k)
+        order = np.lexsort((best_g[a:b], c[a:b]))
+        out_g[c[a:b][order]], out_u[c[a:b][order]] = best_g[a:b][order], best_u[a:b][order]
+        out.append((out_g, out_u))
+    return out
 
 
 def _as_centres(centres) -> np.ndarray:
@@ -194,9 +235,13 @@ def check_pressure_many(design: CamDesign, centres: np.ndarray, *, grid: int = 2
     Returns
     -------
     list of PressureReport
-        One per centre, in order; each is ``check_pressure(design, centre)`` to
-        rounding (the angles to a few units in the last place; the cam angle
-        of a flat maximum to what its flatness allows).
+        One per centre, in order; each is ``check_pressure(design, centre)``:
+        every value is computed from its own centre alone, by the same
+        operations however many centres are checked together, so the reports
+        are equal to the last digit wherever the motion law's values do not
+        depend on how many positions are evaluated at once (the polynomial
+        laws of :mod:`laws.standard` are evaluated by a matrix product, whose
+        rounding does: there, to a few units in the last place).
 
     Raises
     ------
@@ -211,11 +256,12 @@ def check_pressure_many(design: CamDesign, centres: np.ndarray, *, grid: int = 2
     rise, rise_at = np.full(k, np.nan), np.full(k, np.nan)
     ret, ret_at = np.full(k, np.nan), np.full(k, np.nan)
     block = max(1, CHUNK // (grid + 1))
-    for i, p in enumerate(prog.phases):
-        if p.kind == "dwell":
-            continue
-        g, u = np.concatenate([np.stack(_phase_max(design, C[a:a + block], i, grid), axis=1)
-                               for a in range(0, k, block)] or [np.empty((0, 2))]).T
+    phases = [i for i, p in enumerate(prog.phases) if p.kind != "dwell"]
+    parts = [_phases_max(design, C[a:a + block], phases, grid) for a in range(0, k, block)] if phases else []
+    for q, i in enumerate(phases):
+        p = prog.phases[i]
+        g = np.concatenate([part[q][0] for part in parts] or [np.empty(0)])
+        u = np.concatenate([part[q][1] for part in parts] or [np.empty(0)])
         g = np.where(g >= 0.0, g, np.nan)
         at = prog.starts[i] + u * p.angle
         worst, where = (rise, rise_at) if p.kind == "rise" else (ret, ret_at)
@@ -244,7 +290,8 @@ def check_pressure(design: CamDesign, centre: np.ndarray, *, grid: int = 2000, t
     into its bracket of two steps (tenfold a step, :data:`ZOOM_STEPS` steps);
     the largest wins. ``ok`` is True when the constrained phases stay within
     their limits plus ``tol`` radians. :func:`check_pressure_many` does the
-    same for many centres at once.
+    same for many centres at once, vectorized (this is
+    ``check_pressure_many(design, [centre])[0]``).
 
     Parameters
     ----------

@@ -45,12 +45,18 @@ def _value(msg: str, word: str) -> float:
     return float(re.search(word + r" is ([0-9.]+) deg", msg).group(1))
 
 
+def _reference_admissible(design, P: np.ndarray) -> np.ndarray:
+    """Which of the centres ``P`` the reference finds admissible at 200 steps a phase (those rejected at 8 of
+    the same positions first: the same answer, less work)."""
+    return ReferenceZone(design, 200).admissible(P, prefilter=ReferenceZone(design, 8))
+
+
 def _grid_admissible(design, half: float = 3000.0, step: float = 15.0) -> np.ndarray:
     """Centres of a grid about the pivot that the reference finds admissible (200 steps a phase)."""
     x = np.arange(-half, half + step, step)
     X, Y = np.meshgrid(x, x)
     P = np.stack([X.ravel(), Y.ravel()], axis=1)
-    return P[ReferenceZone(design, 200).admissible(P)]
+    return P[_reference_admissible(design, P)]
 
 
 def _brute_force_brackets(dct, key: str, value_deg: float, **grid):
@@ -153,7 +159,7 @@ def _admissible_on_circle(design, L: float, n: int = 20000) -> np.ndarray:
     """Centres at distance L from the pivot (n evenly round) that the validation reference finds admissible."""
     a = np.linspace(0.0, 2.0 * np.pi, n, endpoint=False)
     P = design.follower.pivot + L * np.stack([np.cos(a), np.sin(a)], axis=1)
-    return P[ReferenceZone(design, 200).admissible(P)]
+    return P[_reference_admissible(design, P)]
 
 
 @pytest.mark.parametrize("L", [200.0, 400.0])

@@ -156,3 +156,45 @@ def test_first_admissible_is_the_first_in_order():
         mask = feasible_mask(P, N, c, 1e-12)
         want = int(np.argmax(mask)) if mask.any() else None
         assert first_admissible(P, N, c, atol) == want
+
+
+def _by_distance_before(d: np.ndarray, first: int = 4096):
+    """The previous banding of :func:`optimize.exhaustive._by_distance` (every band rescanned all candidates),
+    kept as the reference."""
+    lo, k = -np.inf, first
+    while True:
+        rest = np.flatnonzero((d > lo) & np.isfinite(d))
+        if not len(rest):
+            return
+        if k < len(rest):
+            hi = np.partition(d[rest], k)[k]
+            rest = rest[d[rest] <= hi]
+        else:
+            hi = np.inf
+        yield rest[np.argsort(d[rest], kind="stable")]
+        lo, k = hi, 2 * k
+
+
+def test_bands_are_those_of_the_previous_implementation(monkeypatch):
+    """The same bands in the same order (ties and non-finite distances included), and the same answers on
+    several designs, as the previous implementation."""
+    import optimize.exhaustive as ex
+
+    rng = np.random.default_rng(4)
+    for n, first in ((1, 4), (10, 4), (1000, 7), (30000, 4096), (5000, 1)):
+        d = np.round(rng.random(n) * 50)  # many ties
+        d[rng.random(n) < 0.05] = np.inf
+        d[rng.random(n) < 0.02] = np.nan
+        got, ref = list(ex._by_distance(d, first)), list(_by_distance_before(d, first))
+        assert len(got) == len(ref) and all(np.array_equal(a, b) for a, b in zip(got, ref))
+    from cams.io.designfile import load_design
+    from tests.conftest import EXAMPLES, rocker_dict
+
+    designs = [design_from_dict(rocker_dict()), design_from_dict(rocker_dict(limits={"closure": "form"})),
+               design_from_dict(rocker_dict(limits={"closure": "form", "safety_factor": 1.2}))]
+    designs += [load_design(EXAMPLES / f"{n}.toml") for n in ("rocker_form", "translating_form_centric")]
+    new = [ex.nearest_exhaustive(d, d.follower.position(0.0), samples=120) for d in designs]
+    monkeypatch.setattr(ex, "_by_distance", _by_distance_before)
+    old = [ex.nearest_exhaustive(d, d.follower.position(0.0), samples=120) for d in designs]
+    for a, b in zip(new, old):
+        assert np.array_equal(a.centre, b.centre) and a.objective == b.objective and a.binding == b.binding
