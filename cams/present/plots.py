@@ -107,6 +107,19 @@ def mark_failing(fig, title: str):
     return fig
 
 
+
+def _add_polygon(ax, points: np.ndarray, **style) -> None:
+    """A filled polygon through ``points`` (shape (n, 2)), the axes' limits taken from its points at once.
+
+    ``ax.fill``/``add_patch`` walk every vertex of the path in Python to update the limits: slow for a
+    profile of thousands of points, drawn at every frame of an animation.
+    """
+    from matplotlib.patches import Polygon
+
+    ax.add_artist(Polygon(points, closed=True, **style))
+    ax.update_datalim(points)
+    ax.autoscale_view()
+
 def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
     """The allowable-centre zone of a solved design (seed 001, figure 3.13).
 
@@ -349,7 +362,7 @@ def _draw_flat_mechanism(ax, cam, profile, phi: float):
     sol = cam.solution
     centre = sol.centre
     work = to_fixed_frame(profile.work, centre, d.cam_sense, phi)
-    ax.fill(work[:, 0], work[:, 1], fc="#e2e8f0", ec="#1a202c", lw=1.2, label="cam profile")
+    _add_polygon(ax, work, fc="#e2e8f0", ec="#1a202c", lw=1.2, label="cam profile")
     ax.add_patch(Circle(centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
                         label=_radii_label(profile.R0, None)))
     origin, direction = (v[0] for v in sol.face_line(np.array([phi])))
@@ -391,7 +404,7 @@ def _draw_mechanism(ax, cam, profile, phi: float):
     f = d.follower
     work = _cam_in_fixed_frame(profile, profile.work, phi)
     pitch = _cam_in_fixed_frame(profile, profile.pitch, phi)
-    ax.fill(work[:, 0], work[:, 1], fc="#e2e8f0", ec="#1a202c", lw=1.2, label="working profile")
+    _add_polygon(ax, work, fc="#e2e8f0", ec="#1a202c", lw=1.2, label="working profile")
     if profile.outer is not None:
         outer = _cam_in_fixed_frame(profile, profile.outer, phi)
         ax.plot(outer[:, 0], outer[:, 1], color="#1a202c", lw=1.2, label="groove, outer wall")
