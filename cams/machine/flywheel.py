@@ -59,7 +59,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from laws.errors import InputError, check_option, show_value
+from laws.errors import InputError, check_number, check_option, show_value
 from laws.units import (  # rpm_to_omega re-exported (cams.machine.flywheel.rpm_to_omega)
     omega_to_rpm,
     rpm_to_omega,
@@ -85,10 +85,12 @@ def _array(field: str, v, n: int | None = None) -> np.ndarray:
     return a
 
 
-def _positive(field: str, v) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v) or v <= 0:
-        raise InputError(field, f"must be a number > 0, got {show_value(v)}")
-    return float(v)
+def _positive(field: str, v: object) -> float:
+    """:func:`laws.errors.check_number` (> 0), with this module's message "must be a number > 0, got ..."."""
+    try:
+        return check_number(field, v, lo=0.0, strict=True)
+    except InputError:
+        raise InputError(field, f"must be a number > 0, got {show_value(v)}") from None
 
 
 def _check_cycle(phi: np.ndarray, cycle: float) -> None:

@@ -12,7 +12,7 @@ import numpy as np
 from cams.machine.linkage.analysis import analyse
 from cams.machine.linkage.primitives import Angle, AssemblyError, Slide
 from cams.model.follower import rotation_word
-from laws.errors import InfeasibleError, InputError
+from laws.errors import InfeasibleError, InputError, check_number
 from laws.errors import show_value as _show
 from laws.units import TWO_PI, rpm_to_omega
 
@@ -53,19 +53,6 @@ def describe_angles(phi: np.ndarray, mask: np.ndarray, *, periodic: bool = False
         runs[0][0] = runs.pop()[0]
     text = [f"{deg[a]:.1f}" if a == b else f"{deg[a]:.1f}-{deg[b]:.1f}" for a, b in runs]
     return ", ".join(text) + " deg"
-
-
-def _num(field_: str, v) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v):
-        raise InputError(field_, f"must be a number, got {_show(v)}")
-    return float(v)
-
-
-def _pos(field_: str, v) -> float:
-    v = _num(field_, v)
-    if v <= 0:
-        raise InputError(field_, f"must be > 0, got {_show(v)}")
-    return v
 
 
 def _sign(field_: str, v, words=("+1", "-1")) -> None:
@@ -167,7 +154,7 @@ class _Base:
     def _check_common(self) -> None:
         _sign("linkage.crank_rotation", self.crank_sense, ("ccw", "cw"))
         if self.rpm is not None:
-            _pos("linkage.rpm", self.rpm)
+            check_number("linkage.rpm", self.rpm, lo=0.0, strict=True)
 
     @property
     def omega(self) -> float:

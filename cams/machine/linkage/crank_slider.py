@@ -10,8 +10,6 @@ from cams.machine.linkage.common import (
     LinkStates,
     Pair,
     _Base,
-    _num,
-    _pos,
     _sign,
     _still,
     _verify_course,
@@ -28,6 +26,7 @@ from cams.machine.linkage.primitives import (
     rrp,
 )
 from cams.machine.linkage.synthesis import crank_slider_crank
+from laws.errors import check_number
 
 __all__ = ["CrankSlider", "CrankSliderKinematics"]
 
@@ -106,12 +105,12 @@ class CrankSlider(_Base):
     )
 
     def __post_init__(self):
-        _pos("linkage.crank", self.crank)
-        _pos("linkage.rod", self.rod)
-        _num("linkage.offset", self.offset)
+        check_number("linkage.crank", self.crank, lo=0.0, strict=True)
+        check_number("linkage.rod", self.rod, lo=0.0, strict=True)
+        check_number("linkage.offset", self.offset)
         _sign("linkage.slider_side", self.slider_side, ("right", "left"))
         if self.rod_cg is not None:
-            _num("linkage.rod_cg", self.rod_cg)
+            check_number("linkage.rod_cg", self.rod_cg)
         self._check_common()
         need = self.crank + abs(self.offset)
         if not self.rod > need:
@@ -121,7 +120,7 @@ class CrankSlider(_Base):
             )
 
     @classmethod
-    def from_stroke(cls, stroke: float, rod: float, *, offset: float = 0.0, **kw) -> "CrankSlider":
+    def from_stroke(cls, stroke: float, rod: float, *, offset: float = 0.0, **kw) -> CrankSlider:
         """Synthesis from the stroke H and the rod (seed 002, formula 1.1: l_OA = H/2 when central).
 
         Examples

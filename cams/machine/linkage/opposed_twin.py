@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cams.machine.linkage.common import LinkStates, Pair, _Base, _num, _pos, _still
+from cams.machine.linkage.common import LinkStates, Pair, _Base, _still
 from cams.machine.linkage.primitives import (
     Angle,
     AssemblyError,
@@ -18,6 +18,7 @@ from cams.machine.linkage.primitives import (
     on_link,
     rrp,
 )
+from laws.errors import check_number
 
 __all__ = ["OpposedTwin", "OpposedTwinKinematics"]
 
@@ -90,10 +91,10 @@ class OpposedTwin(_Base):
     )
 
     def __post_init__(self):
-        _pos("linkage.crank", self.crank)
-        _pos("linkage.rod", self.rod)
-        _num("linkage.rod_cg", self.rod_cg)
-        _num("linkage.phase", self.phase)
+        check_number("linkage.crank", self.crank, lo=0.0, strict=True)
+        check_number("linkage.rod", self.rod, lo=0.0, strict=True)
+        check_number("linkage.rod_cg", self.rod_cg)
+        check_number("linkage.phase", self.phase)
         self._check_common()
         if not self.rod > self.crank:
             raise AssemblyError("linkage.rod", f"the rods must be longer than the crank ({self.crank:.6g}), got {self.rod:.6g}")

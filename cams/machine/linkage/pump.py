@@ -9,8 +9,6 @@ import numpy as np
 from cams.machine.linkage.common import (
     LinkStates,
     Pair,
-    _num,
-    _pos,
     _sign,
     _still,
     _swing_bar_checks,
@@ -33,6 +31,7 @@ from cams.machine.linkage.synthesis import (
     SlottedLeverSynthesis,
     slotted_lever_synthesis,
 )
+from laws.errors import check_number
 
 __all__ = ["SlottedLeverPump", "PumpKinematics"]
 
@@ -127,8 +126,8 @@ class SlottedLeverPump(_SwingingLever):
 
     def __post_init__(self):
         for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("lever", self.lever)):
-            _pos(f"linkage.{f}", v)
-        _num("linkage.guide_x", self.guide_x)
+            check_number(f"linkage.{f}", v, lo=0.0, strict=True)
+        check_number("linkage.guide_x", self.guide_x)
         _sign("linkage.lever_side", self.lever_side, ("same", "opposite"))
         self._check_common()
         _swing_bar_checks(self.crank, self.centre_distance, self.lever, self.lever_side, "slotted lever", "linkage.lever")
@@ -136,7 +135,7 @@ class SlottedLeverPump(_SwingingLever):
     @classmethod
     def from_course(
         cls, time_ratio: float, stroke: float, centre_distance: float, *, lever_side: int = -1, **kw
-    ) -> "SlottedLeverPump":
+    ) -> SlottedLeverPump:
         """Synthesis from K, H and O1O2 (seed 004, section 1.4): theta, l_O1A = L sin(theta/2), l_O2C = H / (2 sin(theta/2)).
 
         Examples
