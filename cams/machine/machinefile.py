@@ -31,11 +31,12 @@ Schema (see ``examples/machines/``)::
     [cam]       bore_radius only (checked against the sized cam's working profile by
                 cams.machine.timing.design_machine): rotation and rpm follow from the crank and the drive
     [forces]    optional: masses, loads, friction and the flywheel's delta of the linkage
-                (:func:`force_spec_from_dict`); parsed into ``spec.extra["forces"]``
+                (:func:`force_spec_from_dict`); parsed into ``spec.forces`` and ``spec.force_options``
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from pathlib import Path
 
 import numpy as np
@@ -190,8 +191,8 @@ def machine_from_dict(d: dict) -> MachineSpec:
         follower direction in radians) and the cam's design, built by
         :func:`cams.io.designfile.design_from_dict` from the file's cam tables
         with the cam's sense ``crank sense * drive sense`` and speed
-        ``linkage.rpm * drive ratio`` (rev/min). ``extra`` holds the file as
-        ``"raw"`` and, with a [forces] table, ``"forces"``.
+        ``linkage.rpm * drive ratio`` (rev/min). With a [forces] table,
+        ``forces`` and ``force_options`` (:func:`force_spec_from_dict`).
 
     Raises
     ------
@@ -253,10 +254,11 @@ def machine_from_dict(d: dict) -> MachineSpec:
         raise InputError("follower.face", "a machine's feed cam is sized for roller followers only; size a "
                          "flat-faced follower's cam on its own with cams solve")
     design = design_from_dict(dd)  # checks [dynamics] too (journal_radius: a rocker's only)
-    extra = {"raw": d}
+    forces, force_options = None, ForceOptions()
     if "forces" in d:
-        extra["forces"] = force_spec_from_dict(d["forces"], linkage.kind, units=units, cutting=cutting)
-    return MachineSpec(name=name, linkage=linkage, cutting=cutting, drive=drive, timing=timing, cam=design, units=units, extra=extra)
+        forces, force_options = force_spec_from_dict(d["forces"], linkage.kind, units=units, cutting=cutting)
+    return MachineSpec(name=name, linkage=linkage, cutting=cutting, drive=drive, timing=timing, cam=design,
+                       units=units, forces=forces, force_options=force_options)
 
 
 def load_machine(path: str | Path) -> MachineSpec:
@@ -285,12 +287,11 @@ _LOAD_KEYS = {
 }
 
 
-def _keys(table, allowed, field_: str) -> dict:
+def _keys(table: object, allowed: Iterable[str], field_: str) -> dict:
+    """``table`` if it is a table with no key outside ``allowed`` (:func:`cams.io.files.check_keys`)."""
     if not isinstance(table, dict):
         raise InputError(field_, "must be a table")
-    unknown = set(table) - set(allowed)
-    if unknown:
-        raise InputError(field_, f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(sorted(allowed))}")
+    check_keys(table, set(allowed), field_)
     return table
 
 

@@ -47,7 +47,7 @@ window = "working"
 
 def test_machine_file_forces_table():
     spec = load_machine(DATA)
-    fs, opt = spec.extra["forces"]
+    fs, opt = spec.forces, spec.force_options
     assert fs.links["tool"].mass == pytest.approx(71.4) and fs.length_unit == 1e-3
     assert set(fs.friction) == {"O2", "A", "A_slot", "O3", "B", "C", "C_guide"}
     assert fs.friction["A_slot"].coefficient == 0.15 and fs.friction["O3"].radius == 15.0

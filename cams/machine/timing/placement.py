@@ -51,12 +51,12 @@ class Drive:
             raise InputError("drive.mesh", "sense must be +1 or -1")
 
     @classmethod
-    def shaft(cls) -> "Drive":
+    def shaft(cls) -> Drive:
         """The cam on the crank's shaft (seed 003: the feed cam is fixed on O2)."""
         return cls()
 
     @classmethod
-    def gears(cls, z_crank: int, z_cam: int, *, mesh: str = "external") -> "Drive":
+    def gears(cls, z_crank: int, z_cam: int, *, mesh: str = "external") -> Drive:
         """A gear pair: Z_crank on the crank's shaft drives Z_cam on the cam's (seed 004: Z5-Z6)."""
         for f, z in (("drive.z_crank", z_crank), ("drive.z_cam", z_cam)):
             if isinstance(z, bool) or not isinstance(z, int) or z < 1:
