@@ -205,7 +205,7 @@ def test_hodographs_draw_the_reactions():
     fig = hodograph_figure(lk, marks=12)
     axes = [ax for ax in fig.axes if ax.get_visible()]
     assert len(axes) == len(lk.model.joints)
-    for ax, j in zip(axes, lk.model.joints):
+    for ax, j in zip(axes, lk.model.joints, strict=True):
         xy = ax.lines[0].get_xydata()
         R = lk.reactions[j.name]
         assert ax.get_title().startswith(j.name)

@@ -83,12 +83,15 @@ class MachineForces:
         if self.cam is not None:
             from cams.dynamics.forces import jump_dict
 
-            cam = {**self.cam.to_dict(), "spring": {"rate": self.spring.rate, "preload": self.spring.preload},
+            spring = self.spring
+            assert spring is not None  # found with the cam's forces (cams.dynamics.forces.design_forces)
+            cam = {**self.cam.to_dict(), "spring": {"rate": spring.rate, "preload": spring.preload},
                    **jump_dict(self.jump), "ok": bool(self.cam.ok)}
             if "between_impacts" in cam and self.jump is not None:
                 cam["between_impacts"]["jump_rpm"] = self.jump.between_impacts_rpm
             if self.cam_timing is not None:
-                cam["angle_reference"] = (f"*_at_deg, cam_angle_deg: {CAM_ANGLE}; *_at_cycle_deg, cycle_deg: {CYCLE_ANGLE} "
+                cam["angle_reference"] = (f"*_at_deg, cam_angle_deg: {CAM_ANGLE}; "
+                                          f"*_at_cycle_deg, cycle_deg: {CYCLE_ANGLE} "
                                           f"(every time the cam is there in {self.cam_timing.period[1]} crank turn(s))")
 
                 def cyc(a):
@@ -105,7 +108,8 @@ class MachineForces:
 
 
 CYCLE_ANGLE = "cycle angle from position 1"
-"""How a machine's reports name their crank angles: the crank's rotation from position 1 (:mod:`cams.machine.timing`)."""
+"""How a machine's reports name their crank angles: the crank's rotation from position 1
+(:mod:`cams.machine.timing`)."""
 CAM_ANGLE = "cam angle from the start of its program"
 
 

@@ -149,7 +149,8 @@ class GasPressure:
         ok = not isinstance(p, bool) and isinstance(p, (int, float, np.integer, np.floating)) and np.isfinite(p)
         turns = [n for n in (1, 2) if ok and abs(float(p) - n * TWO_PI) <= 1e-9]
         if not turns:
-            raise InputError("forces.loads.period", f"must be 2 pi or 4 pi radians (one or two crank turns), got {show_value(p)}")
+            raise InputError("forces.loads.period",
+                             f"must be 2 pi or 4 pi radians (one or two crank turns), got {show_value(p)}")
         object.__setattr__(self, "period", turns[0] * TWO_PI)
         check_table("forces.loads.angles", self.angles, self.pressure, self.period)
 
@@ -200,9 +201,11 @@ class Resistance:
             v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) or not np.isfinite(v) \
                     or not 0 <= v < 1:
-                raise InputError(f"forces.loads.{name}", f"must be a fraction of the stroke in [0, 1), got {show_value(v)}")
+                raise InputError(f"forces.loads.{name}",
+                                 f"must be a fraction of the stroke in [0, 1), got {show_value(v)}")
             if self.window != "cut" and v != 0:
-                raise InputError(f"forces.loads.{name}", f"applies to window = 'cut' only (the part of the working stroke "
+                raise InputError(f"forces.loads.{name}",
+                                 f"applies to window = 'cut' only (the part of the working stroke "
                                  f"in the work); window = {self.window!r} does not use it")
         if self.approach + self.overrun >= 1:
             raise InputError("forces.loads.overrun", f"approach + overrun must be < 1 (a part of the stroke is cut), "

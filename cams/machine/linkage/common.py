@@ -6,6 +6,7 @@ The machines themselves: :mod:`cams.machine.linkage.machines`.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -142,13 +143,21 @@ class _Base:
         """``"revolute"`` or ``"prismatic"``: the kind of the pair ``name``."""
         return next(p.kind for p in cls.pairs if p.name == name)
 
-    def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:  # pragma: no cover - every machine has its own
+    def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:  # pragma: no cover - each machine's own
         """Motion of the moving links' centres of mass and of the pairs at crank angles ``phi`` (radians).
 
         ``omega``: the crank's speed, rad/s (signed). ``cg(name, default)``: the
         distance of a turning link's centre of mass from its first joint along
         the link (machine length unit), ``default`` when the forces give none.
         """
+        raise NotImplementedError
+
+    def kinematics(self, phi: np.ndarray, *, omega: float | None = None) -> Any:  # pragma: no cover - each machine
+        """Every point and link at crank angles ``phi`` (radians); each machine returns its own record."""
+        raise NotImplementedError
+
+    def lengths(self) -> dict:  # pragma: no cover - each machine has its own
+        """JSON-ready: the type, the lengths (the machine's unit), the crank's rotation and speed."""
         raise NotImplementedError
 
     def _check_common(self) -> None:
@@ -213,7 +222,8 @@ def _verify_course(machine, *, stroke: float, time_ratio: float | None = None, a
     except InfeasibleError as e:
         if isinstance(e, AssemblyError):
             raise
-        raise InputError(field_, f"the synthesized linkage does not move as asked ({str(e).split(': ', 1)[-1]}){tail}") from None
+        raise InputError(field_, f"the synthesized linkage does not move as asked "
+                                 f"({str(e).split(': ', 1)[-1]}){tail}") from None
     if time_ratio is not None and not abs(rep.time_ratio - time_ratio) <= 1e-9 * time_ratio:
         raise InputError(
             "linkage.time_ratio",

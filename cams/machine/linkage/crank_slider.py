@@ -1,4 +1,7 @@
-"""The crank-slider mechanism (seed 002): :class:`CrankSlider` and its kinematics (frames: :mod:`cams.machine.linkage.machines`)."""
+"""The crank-slider mechanism (seed 002): :class:`CrankSlider` and its kinematics.
+
+Frames: :mod:`cams.machine.linkage.machines`.
+"""
 
 from __future__ import annotations
 
@@ -116,7 +119,8 @@ class CrankSlider(_Base):
         if not self.rod > need:
             raise AssemblyError(
                 "linkage.rod",
-                f"a rod of {self.rod:.6g} cannot follow the crank all the way round; it needs l_AB > l_OA + |e| = {need:.6g}",
+                f"a rod of {self.rod:.6g} cannot follow the crank all the way round; "
+                f"it needs l_AB > l_OA + |e| = {need:.6g}",
             )
 
     @classmethod
@@ -147,7 +151,8 @@ class CrankSlider(_Base):
 
         def run(p):
             A, cr = crank(ground(0j), self.crank, p, omega=w)
-            B, rod, sl = rrp(A, self.rod, ground(1j * self.offset), Angle(0.0, 0.0, 0.0), branch=self.slider_side, field="linkage.rod")
+            B, rod, sl = rrp(A, self.rod, ground(1j * self.offset), Angle(0.0, 0.0, 0.0), branch=self.slider_side,
+                             field="linkage.rod")
             S = None if self.rod_cg is None else on_link(A, rod, self.rod_cg)
             mu = np.pi / 2 - acute_angle(rod.angle, 0.0)
             return CrankSliderKinematics(p, A, cr, rod, B, sl, S, mu)
@@ -170,7 +175,8 @@ class CrankSlider(_Base):
         zero = np.zeros_like(phi)
         O = Point(zero + 0j, zero + 0j, zero + 0j)
         rod_cg = self.rod_cg if self.rod_cg is not None else self.rod / 2
-        cgs = {"crank": on_link(O, k.crank, cg("crank", 0.0)), "rod": on_link(k.A, k.rod, cg("rod", rod_cg)), "slider": k.B}
+        cgs = {"crank": on_link(O, k.crank, cg("crank", 0.0)), "rod": on_link(k.A, k.rod, cg("rod", rod_cg)),
+               "slider": k.B}
         angles = {"crank": k.crank, "rod": k.rod, "slider": _still(phi)}
         points = {"O": O.pos, "A": k.A.pos, "B": k.B.pos, "B_guide": k.B.pos}
         return LinkStates(cgs, angles, points, {"B_guide": np.ones_like(phi, dtype=complex)})

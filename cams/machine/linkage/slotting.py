@@ -1,4 +1,7 @@
-"""The slotting machine's six-bar linkage (seed 003): :class:`SlottingMachine` and its kinematics (frames: :mod:`cams.machine.linkage.machines`)."""
+"""The slotting machine's six-bar linkage (seed 003): :class:`SlottingMachine` and its kinematics.
+
+Frames: :mod:`cams.machine.linkage.machines`.
+"""
 
 from __future__ import annotations
 
@@ -150,7 +153,9 @@ class SlottingMachine(_SwingingLever):
     )
 
     def __post_init__(self):
-        for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("bar", self.bar), ("rod", self.rod)):
+        lengths = (("crank", self.crank), ("centre_distance", self.centre_distance), ("bar", self.bar),
+                   ("rod", self.rod))
+        for f, v in lengths:
             check_number(f"linkage.{f}", v, lo=0.0, strict=True)
         check_number("linkage.guide_x", self.guide_x)
         _sign("linkage.bar_side", self.bar_side, ("same", "opposite"))
@@ -202,6 +207,7 @@ class SlottingMachine(_SwingingLever):
         """
         _sign("linkage.bar_side", bar_side, ("same", "opposite"))
         syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance, rod_ratio)
+        assert syn.rod is not None and syn.rod_ratio is not None  # a rod_ratio gives the rod
         m = cls(
             crank=syn.crank,
             centre_distance=syn.centre_distance,

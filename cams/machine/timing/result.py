@@ -102,7 +102,8 @@ class MachineResult:
 
     @property
     def notes(self) -> list[str]:
-        """Remarks: the bore check's outcome (a bore the profile cuts into fails :attr:`ok`) and those that do not fail."""
+        """Remarks: the bore check's outcome (a bore the profile cuts into fails :attr:`ok`) and those that do not
+        fail."""
         out = []
         b = self.bore
         if b is not None:
@@ -122,7 +123,7 @@ class MachineResult:
     def ok(self) -> bool:
         """No overlap and a usable feed cam (:attr:`cams.assess.Assessment.usable`: certified, verified and
         buildable, the bore included), as every other command judges a cam."""
-        return not self.overlap and bool(self.assessment.usable)
+        return not self.overlap and self.assessment is not None and bool(self.assessment.usable)
 
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the file's unit, angles in degrees."""
@@ -136,9 +137,10 @@ class MachineResult:
             "analysis": self.stroke.to_dict(),
             "windows": self.windows.to_dict(),
             "drive": self.spec.drive.to_dict(),
-            "timing": {**self.timing.to_dict(), "margin_deg": deg(self.spec.timing.margin), "placement": self.spec.timing.placement},
+            "timing": {**self.timing.to_dict(), "margin_deg": deg(self.spec.timing.margin),
+                       "placement": self.spec.timing.placement},
             "cam": self.solve.to_dict(),
-            **self.assessment.to_dict(),
+            **({} if self.assessment is None else self.assessment.to_dict()),
             "overlap": self.overlap,
             "bore": self.bore,
             "notes": self.notes,
