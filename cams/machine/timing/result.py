@@ -83,7 +83,8 @@ class MachineResult:
 
     ``assessment``: the feed cam judged by the rule every command shares
     (:func:`cams.assess.assess_cam`): verified, buildable (a working profile,
-    no undercut, a valid closed profile, the bore, ``[dynamics]``) and certified.
+    no undercut, a valid closed profile, the bore, ``[dynamics]``) and certified;
+    :func:`design_machine` always sets it (a result without one is not :attr:`ok`).
     """
 
     spec: MachineSpec
