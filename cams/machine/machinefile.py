@@ -42,9 +42,7 @@ from pathlib import Path
 import numpy as np
 
 from cams.io.designfile import design_from_dict
-from cams.io.files import check_document, check_keys, read_toml
-from cams.io.files import toml_number as _num
-from cams.io.files import toml_table as _table
+from cams.io.files import check_document, check_keys, read_toml, toml_number, toml_table
 from cams.machine.kinetostatics.loads import (
     WINDOWS,
     ConstantFriction,
@@ -119,7 +117,7 @@ def _side(table: dict, key: str, default: str) -> int:
 
 def _required(table: dict, key: str, field: str) -> float:
     """A required number of the file (:func:`cams.io.files.toml_number` raises when it is missing)."""
-    value = _num(table, key, field)
+    value = toml_number(table, key, field)
     assert value is not None  # required: a missing entry has raised
     return value
 
@@ -152,7 +150,7 @@ def _linkage(lk: dict) -> SlottingMachine | CrankSlider | SlottedLeverPump:
     f = {k: _required(lk, k, f"linkage.{k}") for k in need}
     crank_sense = sense_of("linkage.crank_rotation",
                            check_option("linkage.crank_rotation", lk.get("crank_rotation", "ccw"), ("ccw", "cw")))
-    rpm = _num(lk, "rpm", "linkage.rpm", required=False)
+    rpm = toml_number(lk, "rpm", "linkage.rpm", required=False)
     if kind == "slotting":
         bar_side, tool_side = _side(lk, "bar_side", "opposite"), _side(lk, "tool_side", "above")
         if use_course:
@@ -165,7 +163,7 @@ def _linkage(lk: dict) -> SlottingMachine | CrankSlider | SlottedLeverPump:
     if kind == "crank_slider":
         offset = _or(lk, "offset", "linkage.offset", 0.0)
         slider_side = _side(lk, "slider_side", "right")
-        rod_cg = _num(lk, "rod_cg", "linkage.rod_cg", required=False)
+        rod_cg = toml_number(lk, "rod_cg", "linkage.rod_cg", required=False)
         if use_course:
             return CrankSlider.from_stroke(f["stroke"], f["rod"], offset=offset, slider_side=slider_side,
                                            rod_cg=rod_cg, crank_sense=crank_sense, rpm=rpm)
@@ -241,25 +239,25 @@ def machine_from_dict(d: dict) -> MachineSpec:
     if units != "mm":
         raise InputError("units", f"{units!r} is not supported: machine files are in mm" if isinstance(units, str)
                          else f"must be the string 'mm', got {units}")
-    linkage = _linkage(_table(d, "linkage"))
-    cu = _table(d, "cutting")
+    linkage = _linkage(toml_table(d, "linkage"))
+    cu = toml_table(d, "cutting")
     _check_keys(cu, _KEYS["cutting"], "cutting")
     cutting = CuttingZone(
         approach=_or(cu, "approach", "cutting.approach", 0.0),
         overrun=_or(cu, "overrun", "cutting.overrun", 0.0),
         working=cu.get("working", "slow"),
     )
-    drive = _drive(_table(d, "drive"))
-    ti = _table(d, "timing")
+    drive = _drive(toml_table(d, "drive"))
+    ti = toml_table(d, "timing")
     _check_keys(ti, _KEYS["timing"], "timing")
-    fd = _num(ti, "follower_direction", "timing.follower_direction", required=False)
+    fd = toml_number(ti, "follower_direction", "timing.follower_direction", required=False)
     timing = Timing(
         margin=float(np.radians(_or(ti, "margin", "timing.margin", 0.0))),
         placement=ti.get("placement", "centre"),
         follower_direction=None if fd is None else float(np.radians(fd)),
     )
     check_follower_direction(timing, drive)
-    cam = _table(d, "cam")
+    cam = toml_table(d, "cam")
     for k in ("rotation", "rpm"):
         if k in cam:
             raise InputError(f"cam.{k}",

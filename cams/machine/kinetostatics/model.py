@@ -29,8 +29,7 @@ from cams.machine.kinetostatics.loads import (
 from cams.machine.linkage.common import _Base
 from cams.machine.linkage.machines import MACHINES
 from cams.machine.linkage.primitives import Angle, Point
-from laws.errors import InputError, show_value
-from laws.errors import check_number as _num
+from laws.errors import InputError, check_number, show_value
 from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["Body", "Joint", "AppliedLoad", "Model", "build_model", "LINKS", "JOINTS", "GUIDED", "PINNED", "message_of",
@@ -260,7 +259,7 @@ def build_model(linkage, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
     n = linkage.rpm if rpm is None else rpm
     if n is None:
         raise InputError("linkage.rpm", "the forces need the crank's speed; give linkage.rpm")
-    n = _num("linkage.rpm", n, lo=0.0, strict=True)
+    n = check_number("linkage.rpm", n, lo=0.0, strict=True)
     speed = linkage.crank_sense * rpm_to_omega(n)  # signed crank speed, rad/s
     turns = cycle_turns(spec)
     if phi is None:
