@@ -30,7 +30,8 @@ def print_machine(rep: dict) -> None:
         if syn.get("rod_ratio") is not None:
             course += f", rod ratio = {syn['rod_ratio']:g}"
         print(f"  synthesis from {course}: swing theta = {syn['swing_deg']:.4f} deg")
-    lengths = ", ".join(f"{k} = {v:.4f} {u}" for k, v in lk.items() if isinstance(v, float) and not k.endswith("_deg") and k != "rpm")
+    lengths = ", ".join(f"{k} = {v:.4f} {u}" for k, v in lk.items()
+                        if isinstance(v, float) and not k.endswith("_deg") and k != "rpm")
     print(f"  lengths: {lengths}")
     a = rep["analysis"]
     print(
@@ -39,7 +40,8 @@ def print_machine(rep: dict) -> None:
         f"min transmission angle {a['min_transmission_deg']:.3f} deg at {a['min_transmission_at_deg']:.3f} deg"
     )
     w = rep["windows"]
-    print(f"  cycle angle from position 1 (end of the working stroke, frame {w['origin_frame_deg']:.3f} deg), crank {w['crank_rotation']}:")
+    print(f"  cycle angle from position 1 (end of the working stroke, frame {w['origin_frame_deg']:.3f} deg), "
+          f"crank {w['crank_rotation']}:")
     print(f"    return {_iv(w['return'])}, working {_iv(w['working'])}")
     print(f"    cutting {_iv(w['cutting'])}, out of work {_iv(w['out_of_work'])}, {w['out_of_work_span']:.3f} deg")
     t = rep["timing"]
@@ -74,12 +76,15 @@ def print_forces(rep: dict, *, follower: str = "rocker") -> None:
     lk = rep.get("linkage")
     if lk is not None:
         mb = lk["balancing_moment"]
-        passes = {1: "no friction from the reactions", 2: "two-stage friction"}.get(lk["passes"], f"{lk['passes']} friction passes")
+        passes = {1: "no friction from the reactions", 2: "two-stage friction"}.get(
+            lk["passes"], f"{lk['passes']} friction passes")
         print(f"  forces at {lk['rpm']:.4g} rpm ({passes}); angles: {lk['angle_reference']}:")
-        print(f"    balancing moment: max |M_b| = {mb['max_abs']:.4g} N m at {mb['at_deg']:.1f} deg, mean {mb['mean']:.4g} N m; "
+        print(f"    balancing moment: max |M_b| = {mb['max_abs']:.4g} N m at {mb['at_deg']:.1f} deg, "
+              f"mean {mb['mean']:.4g} N m; "
               f"Zhukovsky's lever agrees within {mb['virtual_work_max_difference']:.2g} N m")
         for name, p in lk["pairs"].items():
-            print(f"    pair {name:8s} ({p['kind']:9s}): max {p['max']:.5g} N at {p['at_deg']:.1f} deg, mean {p['mean']:.5g} N")
+            print(f"    pair {name:8s} ({p['kind']:9s}): max {p['max']:.5g} N at {p['at_deg']:.1f} deg, "
+                  f"mean {p['mean']:.5g} N")
         if lk["friction_power_mean_W"]:
             parts = ", ".join(f"{k} {v:.3g} W" for k, v in lk["friction_power_mean_W"].items())
             print(f"    friction losses: mean {lk['friction_power_total_mean_W']:.4g} W ({parts}); "
@@ -191,5 +196,6 @@ def register(sub) -> None:
     q.add_argument("--plot", metavar="DIR", help="write the cycle diagram (with --forces also the reactions, balancing "
                    "moment, energy curves and cam forces) as PNGs into DIR")
     q.add_argument("--forces", action="store_true",
-                   help="kinetostatics of the linkage ([forces]), its flywheel ([forces] delta) and the cam's forces ([dynamics])")
+                   help="kinetostatics of the linkage ([forces]), its flywheel ([forces] delta) "
+                        "and the cam's forces ([dynamics])")
     q.set_defaults(func=run)

@@ -59,7 +59,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from laws.errors import InputError, check_option, show_value
+from laws.errors import InputError, check_number, check_option, show_value
 from laws.units import (  # rpm_to_omega re-exported (cams.machine.flywheel.rpm_to_omega)
     omega_to_rpm,
     rpm_to_omega,
@@ -85,10 +85,12 @@ def _array(field: str, v, n: int | None = None) -> np.ndarray:
     return a
 
 
-def _positive(field: str, v) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v) or v <= 0:
-        raise InputError(field, f"must be a number > 0, got {show_value(v)}")
-    return float(v)
+def _positive(field: str, v: object) -> float:
+    """:func:`laws.errors.check_number` (> 0), with this module's message "must be a number > 0, got ..."."""
+    try:
+        return check_number(field, v, lo=0.0, strict=True)
+    except InputError:
+        raise InputError(field, f"must be a number > 0, got {show_value(v)}") from None
 
 
 def _check_cycle(phi: np.ndarray, cycle: float) -> None:
@@ -194,7 +196,7 @@ class FlywheelResult:
 
     def to_dict(self, *, step_deg: float = 5.0) -> dict:
         """JSON-ready summary and curves every ``step_deg`` degrees."""
-        k = max(1, int(round(np.radians(step_deg) / (self.phi[1] - self.phi[0]))))
+        k = max(1, round(float(np.radians(step_deg) / (self.phi[1] - self.phi[0]))))
         pick = slice(None, None, k)
         return {
             "angle_reference": self.reference,
@@ -224,7 +226,8 @@ def _cycle(cycle) -> float:
     for turns in (1, 2):
         if ok and abs(float(cycle) - turns * 2 * np.pi) <= 1e-9:
             return turns * 2 * np.pi
-    raise InputError("flywheel.cycle", f"must be 2 pi or 4 pi radians (one or two crank turns), got {show_value(cycle)}")
+    raise InputError("flywheel.cycle",
+                     f"must be 2 pi or 4 pi radians (one or two crank turns), got {show_value(cycle)}")
 
 
 def _resample(phi: np.ndarray, y: np.ndarray, x: np.ndarray, how: str, cycle: float):
@@ -316,8 +319,10 @@ def flywheel(
     how = check_option("flywheel.interpolation", interpolation, INTERPOLATIONS)
     cycle = _cycle(cycle)
     rpm = _positive("flywheel.rpm", rpm)
-    if isinstance(delta, bool) or not isinstance(delta, (int, float, np.floating)) or not np.isfinite(delta) or not 0 < delta < 1:
-        raise InputError("flywheel.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")
+    if (isinstance(delta, bool) or not isinstance(delta, (int, float, np.floating)) or not np.isfinite(delta)
+            or not 0 < delta < 1):
+        raise InputError("flywheel.delta",
+                         f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")
     delta = float(delta)
     phi = _array("flywheel.phi", phi)
     _check_cycle(phi, cycle)
@@ -326,7 +331,8 @@ def flywheel(
     J = _array("flywheel.inertia", inertia, n)
     if np.any(J < 0):
         k = int(np.argmin(J))
-        raise InputError("flywheel.inertia", f"a moment of inertia cannot be negative: {J[k]:.6g} kg m^2 at {np.degrees(phi[k]):.6g} deg")
+        raise InputError("flywheel.inertia",
+                         f"a moment of inertia cannot be negative: {J[k]:.6g} kg m^2 at {np.degrees(phi[k]):.6g} deg")
     if isinstance(dense, bool) or not isinstance(dense, (int, np.integer)) or dense < 12:
         raise InputError("flywheel.dense", f"must be an integer >= 12, got {show_value(dense)}")
 
@@ -336,7 +342,8 @@ def flywheel(
     Mr_x, Ar, _ = _resample(phi, Mr, x, how, cycle)
     J_x, _, dJ = _resample(phi, J, x, how, cycle)
     if np.any(J_x < 0):
-        raise InputError("flywheel.inertia", "the spline through the inertias dips below 0; use interpolation = 'linear'")
+        raise InputError("flywheel.inertia",
+                         "the spline through the inertias dips below 0; use interpolation = 'linear'")
     if driving is None:
         Md_x = np.full_like(x, Ar[-1] / cycle)
         Ad = Md_x * (x - x[0])
@@ -358,7 +365,8 @@ def flywheel(
     JF = max(needed, 0.0)
     Jt = J_x + JF
     if np.any(Jt <= 0):
-        raise InputError("flywheel.inertia", "the machine has no inertia at some angle; give the crank's own moment of inertia")
+        raise InputError("flywheel.inertia",
+                         "the machine has no inertia at some angle; give the crank's own moment of inertia")
     if JF > 0:
         T0 = -float(np.max(dE - 0.5 * Jt * w_hi2))
     else:  # the linkage alone: choose T0 so that the mean speed is omega_m

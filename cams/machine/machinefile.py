@@ -31,19 +31,18 @@ Schema (see ``examples/machines/``)::
     [cam]       bore_radius only (checked against the sized cam's working profile by
                 cams.machine.timing.design_machine): rotation and rpm follow from the crank and the drive
     [forces]    optional: masses, loads, friction and the flywheel's delta of the linkage
-                (:func:`force_spec_from_dict`); parsed into ``spec.extra["forces"]``
+                (:func:`force_spec_from_dict`); parsed into ``spec.forces`` and ``spec.force_options``
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from pathlib import Path
 
 import numpy as np
 
 from cams.io.designfile import design_from_dict
-from cams.io.files import check_document, check_keys, read_toml
-from cams.io.files import toml_number as _num
-from cams.io.files import toml_table as _table
+from cams.io.files import check_document, check_keys, read_toml, toml_number, toml_table
 from cams.machine.kinetostatics.loads import (
     WINDOWS,
     ConstantFriction,
@@ -53,6 +52,7 @@ from cams.machine.kinetostatics.loads import (
     G,
     GasPressure,
     LinkMass,
+    Load,
     Resistance,
 )
 from cams.machine.kinetostatics.model import message_of, pinned_cg_message
@@ -69,6 +69,7 @@ from cams.machine.timing import (
     Timing,
     check_follower_direction,
 )
+from cams.model.design import CamDesign
 from cams.model.follower import rotation_word, sense_of
 from laws.errors import InputError, check_number, check_option, show_value
 
@@ -114,7 +115,19 @@ def _side(table: dict, key: str, default: str) -> int:
     return words[check_option(f"linkage.{key}", table.get(key, default), tuple(words))]
 
 
-def _linkage(lk: dict):
+def _required(table: dict, key: str, field: str) -> float:
+    """A required number of the file (:func:`cams.io.files.toml_number` raises when it is missing)."""
+    value = toml_number(table, key, field)
+    assert value is not None  # required: a missing entry has raised
+    return value
+
+
+def _or(table: dict, key: str, field: str, default: float) -> float:
+    """An optional number of the file, ``default`` when it is absent."""
+    return _required(table, key, field) if key in table else default
+
+
+def _linkage(lk: dict) -> SlottingMachine | CrankSlider | SlottedLeverPump:
     if "type" not in lk:
         raise InputError("linkage.type", f"is required, one of {', '.join(map(repr, LINKAGE_TYPES))}")
     kind = check_option("linkage.type", lk.get("type"), LINKAGE_TYPES)
@@ -125,38 +138,45 @@ def _linkage(lk: dict):
     if given_course and given_lengths:
         raise InputError(
             "linkage",
-            f"give either the course data ({', '.join(sorted(course))}) or the lengths ({', '.join(sorted(lengths))}), "
-            f"not both: got {', '.join(given_course)} and {', '.join(given_lengths)}",
+            f"give either the course data ({', '.join(sorted(course))}) or the lengths "
+            f"({', '.join(sorted(lengths))}), not both: got {', '.join(given_course)} and {', '.join(given_lengths)}",
         )
     use_course = bool(given_course)
     need = course if use_course else lengths
     for k in sorted(need):
         if k not in lk:
-            raise InputError(f"linkage.{k}", f"is required with the {'course data' if use_course else 'lengths'} of a {kind} linkage")
-    f = {k: _num(lk, k, f"linkage.{k}") for k in need}
-    common = {
-        "crank_sense": sense_of("linkage.crank_rotation",
-                                check_option("linkage.crank_rotation", lk.get("crank_rotation", "ccw"), ("ccw", "cw"))),
-        "rpm": _num(lk, "rpm", "linkage.rpm", required=False),
-    }
+            raise InputError(f"linkage.{k}",
+                             f"is required with the {'course data' if use_course else 'lengths'} of a {kind} linkage")
+    f = {k: _required(lk, k, f"linkage.{k}") for k in need}
+    crank_sense = sense_of("linkage.crank_rotation",
+                           check_option("linkage.crank_rotation", lk.get("crank_rotation", "ccw"), ("ccw", "cw")))
+    rpm = toml_number(lk, "rpm", "linkage.rpm", required=False)
     if kind == "slotting":
-        sides = {"bar_side": _side(lk, "bar_side", "opposite"), "tool_side": _side(lk, "tool_side", "above")}
+        bar_side, tool_side = _side(lk, "bar_side", "opposite"), _side(lk, "tool_side", "above")
         if use_course:
-            return SlottingMachine.from_course(f["time_ratio"], f["stroke"], f["centre_distance"], f["rod_ratio"], **sides, **common)
-        return SlottingMachine(**f, **sides, **common)
+            return SlottingMachine.from_course(f["time_ratio"], f["stroke"], f["centre_distance"], f["rod_ratio"],
+                                               bar_side=bar_side, tool_side=tool_side,
+                                               crank_sense=crank_sense, rpm=rpm)
+        return SlottingMachine(crank=f["crank"], centre_distance=f["centre_distance"], bar=f["bar"], rod=f["rod"],
+                               guide_x=f["guide_x"], bar_side=bar_side, tool_side=tool_side,
+                               crank_sense=crank_sense, rpm=rpm)
     if kind == "crank_slider":
-        opts = {
-            "offset": _num(lk, "offset", "linkage.offset", default=0.0),
-            "slider_side": _side(lk, "slider_side", "right"),
-            "rod_cg": _num(lk, "rod_cg", "linkage.rod_cg", required=False),
-        }
+        offset = _or(lk, "offset", "linkage.offset", 0.0)
+        slider_side = _side(lk, "slider_side", "right")
+        rod_cg = toml_number(lk, "rod_cg", "linkage.rod_cg", required=False)
         if use_course:
-            return CrankSlider.from_stroke(f["stroke"], f["rod"], **opts, **common)
-        return CrankSlider(**f, **opts, **common)
-    opts = {"lever_side": _side(lk, "lever_side", "opposite"), "guide_x": _num(lk, "guide_x", "linkage.guide_x", default=0.0)}
+            return CrankSlider.from_stroke(f["stroke"], f["rod"], offset=offset, slider_side=slider_side,
+                                           rod_cg=rod_cg, crank_sense=crank_sense, rpm=rpm)
+        return CrankSlider(crank=f["crank"], rod=f["rod"], offset=offset, slider_side=slider_side, rod_cg=rod_cg,
+                           crank_sense=crank_sense, rpm=rpm)
+    lever_side = _side(lk, "lever_side", "opposite")
+    guide_x = _or(lk, "guide_x", "linkage.guide_x", 0.0)
     if use_course:
-        return SlottedLeverPump.from_course(f["time_ratio"], f["stroke"], f["centre_distance"], **opts, **common)
-    return SlottedLeverPump(**f, **opts, **common)
+        return SlottedLeverPump.from_course(f["time_ratio"], f["stroke"], f["centre_distance"],
+                                            lever_side=lever_side, guide_x=guide_x,
+                                            crank_sense=crank_sense, rpm=rpm)
+    return SlottedLeverPump(crank=f["crank"], centre_distance=f["centre_distance"], lever=f["lever"],
+                            lever_side=lever_side, guide_x=guide_x, crank_sense=crank_sense, rpm=rpm)
 
 
 def _drive(dr: dict) -> Drive:
@@ -190,8 +210,8 @@ def machine_from_dict(d: dict) -> MachineSpec:
         follower direction in radians) and the cam's design, built by
         :func:`cams.io.designfile.design_from_dict` from the file's cam tables
         with the cam's sense ``crank sense * drive sense`` and speed
-        ``linkage.rpm * drive ratio`` (rev/min). ``extra`` holds the file as
-        ``"raw"`` and, with a [forces] table, ``"forces"``.
+        ``linkage.rpm * drive ratio`` (rev/min). With a [forces] table,
+        ``forces`` and ``force_options`` (:func:`force_spec_from_dict`).
 
     Raises
     ------
@@ -209,7 +229,8 @@ def machine_from_dict(d: dict) -> MachineSpec:
         if d.get("follower") is not None or d.get("motion") is not None:
             raise InputError("linkage", "the file has no [linkage] table: it is a cam design file, to be sized "
                              "with `cams solve`; a machine file adds a [linkage] table (see examples/machines/)")
-        raise InputError("linkage", "the file has no [linkage] table; a machine file needs one (see examples/machines/)")
+        raise InputError("linkage",
+                         "the file has no [linkage] table; a machine file needs one (see examples/machines/)")
     _check_keys(d, _KEYS[""], "")
     name = d.get("name", "machine")
     if not isinstance(name, str):
@@ -218,28 +239,29 @@ def machine_from_dict(d: dict) -> MachineSpec:
     if units != "mm":
         raise InputError("units", f"{units!r} is not supported: machine files are in mm" if isinstance(units, str)
                          else f"must be the string 'mm', got {units}")
-    linkage = _linkage(_table(d, "linkage"))
-    cu = _table(d, "cutting")
+    linkage = _linkage(toml_table(d, "linkage"))
+    cu = toml_table(d, "cutting")
     _check_keys(cu, _KEYS["cutting"], "cutting")
     cutting = CuttingZone(
-        approach=_num(cu, "approach", "cutting.approach", default=0.0),
-        overrun=_num(cu, "overrun", "cutting.overrun", default=0.0),
+        approach=_or(cu, "approach", "cutting.approach", 0.0),
+        overrun=_or(cu, "overrun", "cutting.overrun", 0.0),
         working=cu.get("working", "slow"),
     )
-    drive = _drive(_table(d, "drive"))
-    ti = _table(d, "timing")
+    drive = _drive(toml_table(d, "drive"))
+    ti = toml_table(d, "timing")
     _check_keys(ti, _KEYS["timing"], "timing")
-    fd = _num(ti, "follower_direction", "timing.follower_direction", required=False)
+    fd = toml_number(ti, "follower_direction", "timing.follower_direction", required=False)
     timing = Timing(
-        margin=float(np.radians(_num(ti, "margin", "timing.margin", default=0.0))),
+        margin=float(np.radians(_or(ti, "margin", "timing.margin", 0.0))),
         placement=ti.get("placement", "centre"),
         follower_direction=None if fd is None else float(np.radians(fd)),
     )
     check_follower_direction(timing, drive)
-    cam = _table(d, "cam")
+    cam = toml_table(d, "cam")
     for k in ("rotation", "rpm"):
         if k in cam:
-            raise InputError(f"cam.{k}", "is set by the machine (linkage.crank_rotation, linkage.rpm and [drive]); remove it")
+            raise InputError(f"cam.{k}",
+                             "is set by the machine (linkage.crank_rotation, linkage.rpm and [drive]); remove it")
     _check_keys(cam, _KEYS["cam"], "cam")
     cam_sense = linkage.crank_sense * drive.sense
     cam_table = {**cam, "rotation": rotation_word(cam_sense)}
@@ -253,10 +275,12 @@ def machine_from_dict(d: dict) -> MachineSpec:
         raise InputError("follower.face", "a machine's feed cam is sized for roller followers only; size a "
                          "flat-faced follower's cam on its own with cams solve")
     design = design_from_dict(dd)  # checks [dynamics] too (journal_radius: a rocker's only)
-    extra = {"raw": d}
+    assert isinstance(design, CamDesign)  # a flat face was refused above
+    forces, force_options = None, ForceOptions()
     if "forces" in d:
-        extra["forces"] = force_spec_from_dict(d["forces"], linkage.kind, units=units, cutting=cutting)
-    return MachineSpec(name=name, linkage=linkage, cutting=cutting, drive=drive, timing=timing, cam=design, units=units, extra=extra)
+        forces, force_options = force_spec_from_dict(d["forces"], linkage.kind, units=units, cutting=cutting)
+    return MachineSpec(name=name, linkage=linkage, cutting=cutting, drive=drive, timing=timing, cam=design,
+                       units=units, forces=forces, force_options=force_options)
 
 
 def load_machine(path: str | Path) -> MachineSpec:
@@ -285,12 +309,11 @@ _LOAD_KEYS = {
 }
 
 
-def _keys(table, allowed, field_: str) -> dict:
+def _keys(table: object, allowed: Iterable[str], field_: str) -> dict:
+    """``table`` if it is a table with no key outside ``allowed`` (:func:`cams.io.files.check_keys`)."""
     if not isinstance(table, dict):
         raise InputError(field_, "must be a table")
-    unknown = set(table) - set(allowed)
-    if unknown:
-        raise InputError(field_, f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(sorted(allowed))}")
+    check_keys(table, set(allowed), field_)
     return table
 
 
@@ -367,8 +390,9 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
         if "coefficient" not in v:
             raise InputError(f"{f}.coefficient", "is required")
         if "radius" in v and (name == "prismatic" or (name != "revolute" and is_prismatic(name))):
-            raise InputError(f"{f}.radius", "applies to a revolute pair's journal (friction moment mu r R); a prismatic "
-                             "pair's friction is the force mu N along its guide and has no radius: remove it")
+            raise InputError(f"{f}.radius", "applies to a revolute pair's journal (friction moment mu r R); "
+                             "a prismatic pair's friction is the force mu N along its guide and has no radius: "
+                             "remove it")
         c = check_number(f"{f}.coefficient", v["coefficient"], lo=0.0)
         entries[name] = Friction(c, check_number(f"{f}.radius", v.get("radius", 0.0), lo=0.0))
 
@@ -381,7 +405,7 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
             friction[p] = entries["prismatic"]
         elif not prismatic and "revolute" in entries:
             friction[p] = entries["revolute"]
-    loads = []
+    loads: list[Load] = []
     raw = t.get("loads", [])
     if not isinstance(raw, list):
         raise InputError("forces.loads", "must be a list of tables ([[forces.loads]])")
@@ -395,8 +419,8 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
             raise InputError(f"{f}.body", "is required")
         body = ld["body"]
         if body not in names:
-            raise InputError(f"{f}.body", f"{show_value(body)} is not a link of a {kind} linkage; a load acts on a link "
-                             f"that slides on a guide: {', '.join(map(repr, guided))}")
+            raise InputError(f"{f}.body", f"{show_value(body)} is not a link of a {kind} linkage; "
+                             f"a load acts on a link that slides on a guide: {', '.join(map(repr, guided))}")
         if body not in guided:
             raise InputError(f"{f}.body", f"{body!r} does not slide on a guide; a load acts along a guide, on one of "
                              f"{', '.join(map(repr, guided))}")
@@ -431,11 +455,12 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
                     if window != "cut":
                         for key in ("approach", "overrun"):
                             if key in ld:
-                                raise InputError(f"{f}.{key}", f"applies to window = 'cut' only (the part of the working "
-                                                 f"stroke in the work); window = {window!r} does not use it: remove it")
+                                raise InputError(f"{f}.{key}", "applies to window = 'cut' only (the part of the "
+                                                 f"working stroke in the work); window = {window!r} does not use "
+                                                 "it: remove it")
                     if window == "always" and "working" in ld:
-                        raise InputError(f"{f}.working", "applies to windows 'cut' and 'working'; window = 'always' acts "
-                                         "over the whole cycle whichever stroke works: remove it")
+                        raise InputError(f"{f}.working", "applies to windows 'cut' and 'working'; window = "
+                                         "'always' acts over the whole cycle whichever stroke works: remove it")
                     frac = {key: ld.get(key, 0.0 if cz is None or window != "cut" else getattr(cz, key))
                             for key in ("approach", "overrun")}
                     loads.append(Resistance(body, F, window=window, **frac,
@@ -457,10 +482,11 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
     if delta is not None:
         delta = check_number("forces.delta", delta)
         if not 0 < delta < 1:
-            raise InputError("forces.delta", f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")
+            raise InputError("forces.delta",
+                             f"the coefficient of speed fluctuation must be in (0, 1), got {show_value(delta)}")
     from cams.machine.flywheel import INTERPOLATIONS
 
     interp = check_option("forces.interpolation", t.get("interpolation", "linear"), INTERPOLATIONS)
-    spec = ForceSpec(links=links, loads=tuple(loads), friction=friction, gravity=check_number("forces.gravity", t.get("gravity", G)),
-                     length_unit=LENGTH_UNITS[units])
+    spec = ForceSpec(links=links, loads=tuple(loads), friction=friction,
+                     gravity=check_number("forces.gravity", t.get("gravity", G)), length_unit=LENGTH_UNITS[units])
     return spec, ForceOptions(samples=samples, passes=passes, delta=delta, interpolation=interp)

@@ -11,6 +11,7 @@ program.
 
 from __future__ import annotations
 
+from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -117,13 +118,14 @@ def hodograph_figure(result: ForceResult, *, title: str = "hodographs", marks: i
     axes = fig.subplots(rows, cols, squeeze=False)
     cyc = result.model.cycle
     at = [int(np.argmin(np.abs(np.mod(c - cyc * k / marks + cyc / 2, cyc) - cyc / 2))) for k in range(marks)]
-    for ax, j in zip(axes.ravel(), joints):
+    for ax, j in zip(axes.ravel(), joints, strict=False):
         R = result.reactions[j.name]
         ax.plot(np.real(R)[o], np.imag(R)[o], lw=1.2)
         ax.plot([0.0], [0.0], "k+", ms=8)
         for k, i in enumerate(at):
             ax.plot(np.real(R[i]), np.imag(R[i]), "o", ms=3, color="C3")
-            ax.annotate(str(k + 1), (np.real(R[i]), np.imag(R[i])), fontsize=7, xytext=(3, 3), textcoords="offset points")
+            ax.annotate(str(k + 1), (np.real(R[i]), np.imag(R[i])), fontsize=7, xytext=(3, 3),
+                        textcoords="offset points")
         ax.set_title(f"{j.name} ({j.kind})", fontsize=9)
         ax.set_aspect("equal", adjustable="datalim")
         ax.grid(True, alpha=0.3)
@@ -193,6 +195,7 @@ def cam_forces_figure(cf: CamForces, *, title: str = "cam forces", timing: CamTi
         (every cam sample at each cycle angle where it occurs over the
         repeating period); without, the cam angle from the start of its program.
     """
+    o: slice | np.ndarray
     if timing is None:
         deg, o = np.degrees(cf.phi), slice(None)
         xlabel = f"{CAM_ANGLE}, deg"
@@ -219,11 +222,13 @@ def cam_forces_figure(cf: CamForces, *, title: str = "cam forces", timing: CamTi
     impacts = getattr(cf, "impacts", ())
     for n, imp in enumerate(impacts):  # rigid impacts: unbounded force (or contact lost) there
         xs = [np.degrees(imp.phi)] if timing is None else np.degrees(
-            np.mod(timing.mount + (imp.phi + TWO_PI * np.arange(timing.period[0])) / timing.ratio, TWO_PI * timing.period[1]))
+            np.mod(timing.mount + (imp.phi + TWO_PI * np.arange(timing.period[0])) / timing.ratio,
+                   TWO_PI * timing.period[1]))
         for x in xs:
             for ax in (ax1, ax2):
                 ax.axvline(x, color="C3", lw=1.0, ls=":",
-                           label=("rigid impact (unbounded / contact lost)" if ax is ax1 and n == 0 and x == xs[0] else None))
+                           label=("rigid impact (unbounded / contact lost)"
+                                  if ax is ax1 and n == 0 and x == xs[0] else None))
     if impacts:
         ax1.legend(loc="upper right")
     for ax in (ax1, ax2):
@@ -276,5 +281,5 @@ def write_machine_plots(folder: str | Path, stem: str, diagram: CycleDiagram | N
     d = Path(folder)
     paths = []
     for name, fig in machine_figures(diagram, forces, title=title).items():
-        paths.append(atomic_write(d / f"{stem}_{name}.png", field, lambda tmp, fig=fig: fig.savefig(tmp, format="png")))
+        paths.append(atomic_write(d / f"{stem}_{name}.png", field, partial(fig.savefig, format="png")))
     return paths

@@ -47,7 +47,7 @@ window = "working"
 
 def test_machine_file_forces_table():
     spec = load_machine(DATA)
-    fs, opt = spec.extra["forces"]
+    fs, opt = spec.forces, spec.force_options
     assert fs.links["tool"].mass == pytest.approx(71.4) and fs.length_unit == 1e-3
     assert set(fs.friction) == {"O2", "A", "A_slot", "O3", "B", "C", "C_guide"}
     assert fs.friction["A_slot"].coefficient == 0.15 and fs.friction["O3"].radius == 15.0
@@ -205,7 +205,7 @@ def test_hodographs_draw_the_reactions():
     fig = hodograph_figure(lk, marks=12)
     axes = [ax for ax in fig.axes if ax.get_visible()]
     assert len(axes) == len(lk.model.joints)
-    for ax, j in zip(axes, lk.model.joints):
+    for ax, j in zip(axes, lk.model.joints, strict=True):
         xy = ax.lines[0].get_xydata()
         R = lk.reactions[j.name]
         assert ax.get_title().startswith(j.name)

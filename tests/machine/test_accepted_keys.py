@@ -150,7 +150,7 @@ def test_cg_of_a_sliding_body_is_refused_on_loading(tmp_path, capsys, link):
 def test_cg_of_a_turning_link_is_used():
     d = raw(FORCES)
     d["forces"]["links"]["bar"]["cg"] = 30.0
-    fs, _ = machine_from_dict(d).extra["forces"]
+    fs = machine_from_dict(d).forces
     assert fs.links["bar"].cg == 30.0
 
 
@@ -230,7 +230,7 @@ def test_resistance_windows_that_need_no_approach():
     d = raw(FORCES)
     d["forces"]["loads"] = [{"kind": "resistance", "body": "tool", "force": 10.0, "window": "working"},
                             {"kind": "resistance", "body": "tool", "force": 5.0, "window": "always"}]
-    fs, _ = machine_from_dict(d).extra["forces"]
+    fs = machine_from_dict(d).forces
     assert [(ld.approach, ld.overrun) for ld in fs.loads] == [(0.0, 0.0), (0.0, 0.0)]  # not [cutting]'s 0.05
 
 

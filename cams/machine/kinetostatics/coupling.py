@@ -9,6 +9,7 @@ timing (:class:`cams.machine.timing.CamTiming`).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -18,8 +19,12 @@ from cams.machine.kinetostatics.solve import analyse_forces
 from laws.errors import InputError
 from laws.units import TWO_PI
 
-__all__ = ["MachineForces", "machine_forces", "CYCLE_ANGLE", "CAM_ANGLE"]
+if TYPE_CHECKING:
+    from cams.dynamics.forces import CamForces, JumpSpeed, Spring
+    from cams.machine.flywheel import FlywheelResult
+    from cams.machine.timing import CamTiming
 
+__all__ = ["MachineForces", "machine_forces", "CYCLE_ANGLE", "CAM_ANGLE"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -40,12 +45,12 @@ class MachineForces:
     """
 
     linkage: ForceResult | None = None
-    flywheel: object = None
-    cam: object = None
-    spring: object = None
-    jump: object = None
-    notes: tuple = ()
-    cam_timing: object = None
+    flywheel: FlywheelResult | None = None
+    cam: CamForces | None = None
+    spring: Spring | None = None
+    jump: JumpSpeed | None = None
+    notes: tuple[str, ...] = ()
+    cam_timing: CamTiming | None = None
 
     @property
     def ok(self) -> bool:
@@ -78,12 +83,15 @@ class MachineForces:
         if self.cam is not None:
             from cams.dynamics.forces import jump_dict
 
-            cam = {**self.cam.to_dict(), "spring": {"rate": self.spring.rate, "preload": self.spring.preload},
+            spring = self.spring
+            assert spring is not None  # found with the cam's forces (cams.dynamics.forces.design_forces)
+            cam = {**self.cam.to_dict(), "spring": {"rate": spring.rate, "preload": spring.preload},
                    **jump_dict(self.jump), "ok": bool(self.cam.ok)}
             if "between_impacts" in cam and self.jump is not None:
                 cam["between_impacts"]["jump_rpm"] = self.jump.between_impacts_rpm
             if self.cam_timing is not None:
-                cam["angle_reference"] = (f"*_at_deg, cam_angle_deg: {CAM_ANGLE}; *_at_cycle_deg, cycle_deg: {CYCLE_ANGLE} "
+                cam["angle_reference"] = (f"*_at_deg, cam_angle_deg: {CAM_ANGLE}; "
+                                          f"*_at_cycle_deg, cycle_deg: {CYCLE_ANGLE} "
                                           f"(every time the cam is there in {self.cam_timing.period[1]} crank turn(s))")
 
                 def cyc(a):
@@ -100,7 +108,8 @@ class MachineForces:
 
 
 CYCLE_ANGLE = "cycle angle from position 1"
-"""How a machine's reports name their crank angles: the crank's rotation from position 1 (:mod:`cams.machine.timing`)."""
+"""How a machine's reports name their crank angles: the crank's rotation from position 1
+(:mod:`cams.machine.timing`)."""
 CAM_ANGLE = "cam angle from the start of its program"
 
 
@@ -110,7 +119,7 @@ def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
     Parameters
     ----------
     spec : MachineSpec
-        ``spec.extra["forces"]`` (from ``[forces]``) gives the linkage's data;
+        ``spec.forces`` and ``spec.force_options`` (from ``[forces]``) give the linkage's data;
         ``spec.cam.dynamics`` (from ``[dynamics]``) the follower's.
     centre : array_like or None
         The cam's centre (``SolveResult.centre``); needed for the cam's forces.
@@ -141,9 +150,8 @@ def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
         centre = found.solve.centre if centre is None else centre
     else:
         win = windows(spec.linkage, spec.cutting)
-    forces = spec.extra.get("forces")
-    if forces is not None:
-        fs, opt = forces
+    fs, opt = spec.forces, spec.force_options
+    if fs is not None:
         turns = cycle_turns(fs)
         c = np.linspace(0.0, TWO_PI * turns, opt.samples * turns, endpoint=False)
         lk = analyse_forces(spec.linkage, fs, phi=win.frame_angle(c), passes=opt.passes, origin=win.origin)

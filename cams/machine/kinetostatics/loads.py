@@ -11,8 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from laws.errors import InputError, check_option, show_value
-from laws.errors import check_number as _num
+from laws.errors import InputError, check_number, check_option, show_value
 from laws.units import TWO_PI
 
 __all__ = ["LinkMass", "Friction", "GasPressure", "Resistance", "ConstantFriction", "Load", "ForceSpec", "ForceOptions",
@@ -50,9 +49,9 @@ class LinkMass:
     cg: float | None = None
 
     def __post_init__(self):
-        _num("forces.links.mass", self.mass, lo=0.0)
-        _num("forces.links.inertia", self.inertia, lo=0.0)
-        _num("forces.links.cg", self.cg, allow_none=True)
+        check_number("forces.links.mass", self.mass, lo=0.0)
+        check_number("forces.links.inertia", self.inertia, lo=0.0)
+        check_number("forces.links.cg", self.cg, allow_none=True)
 
 
 @dataclass(frozen=True)
@@ -72,8 +71,8 @@ class Friction:
     radius: float = 0.0
 
     def __post_init__(self):
-        _num("forces.friction.coefficient", self.coefficient, lo=0.0)
-        _num("forces.friction.radius", self.radius, lo=0.0)
+        check_number("forces.friction.coefficient", self.coefficient, lo=0.0)
+        check_number("forces.friction.radius", self.radius, lo=0.0)
 
 
 def check_table(field_: str, angles, values, period: float) -> tuple[np.ndarray, np.ndarray]:
@@ -143,13 +142,14 @@ class GasPressure:
     period: float = TWO_PI
 
     def __post_init__(self):
-        _num("forces.loads.bore", self.bore, lo=0.0, strict=True)
-        _num("forces.loads.start", self.start)
+        check_number("forces.loads.bore", self.bore, lo=0.0, strict=True)
+        check_number("forces.loads.start", self.start)
         p = self.period
         ok = not isinstance(p, bool) and isinstance(p, (int, float, np.integer, np.floating)) and np.isfinite(p)
         turns = [n for n in (1, 2) if ok and abs(float(p) - n * TWO_PI) <= 1e-9]
         if not turns:
-            raise InputError("forces.loads.period", f"must be 2 pi or 4 pi radians (one or two crank turns), got {show_value(p)}")
+            raise InputError("forces.loads.period",
+                             f"must be 2 pi or 4 pi radians (one or two crank turns), got {show_value(p)}")
         object.__setattr__(self, "period", turns[0] * TWO_PI)
         check_table("forces.loads.angles", self.angles, self.pressure, self.period)
 
@@ -194,15 +194,17 @@ class Resistance:
     def __post_init__(self):
         from cams.machine.linkage.analysis import WORKING
 
-        _num("forces.loads.force", self.force, lo=0.0)
+        check_number("forces.loads.force", self.force, lo=0.0)
         check_option("forces.loads.window", self.window, WINDOWS)
         for name in ("approach", "overrun"):
             v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) or not np.isfinite(v) \
                     or not 0 <= v < 1:
-                raise InputError(f"forces.loads.{name}", f"must be a fraction of the stroke in [0, 1), got {show_value(v)}")
+                raise InputError(f"forces.loads.{name}",
+                                 f"must be a fraction of the stroke in [0, 1), got {show_value(v)}")
             if self.window != "cut" and v != 0:
-                raise InputError(f"forces.loads.{name}", f"applies to window = 'cut' only (the part of the working stroke "
+                raise InputError(f"forces.loads.{name}",
+                                 f"applies to window = 'cut' only (the part of the working stroke "
                                  f"in the work); window = {self.window!r} does not use it")
         if self.approach + self.overrun >= 1:
             raise InputError("forces.loads.overrun", f"approach + overrun must be < 1 (a part of the stroke is cut), "
@@ -218,7 +220,7 @@ class ConstantFriction:
     force: float
 
     def __post_init__(self):
-        _num("forces.loads.force", self.force, lo=0.0)
+        check_number("forces.loads.force", self.force, lo=0.0)
 
 
 Load = GasPressure | Resistance | ConstantFriction
@@ -249,8 +251,8 @@ class ForceSpec:
     length_unit: float = 1e-3
 
     def __post_init__(self):
-        _num("forces.gravity", self.gravity)
-        _num("forces.length_unit", self.length_unit, lo=0.0, strict=True)
+        check_number("forces.gravity", self.gravity)
+        check_number("forces.length_unit", self.length_unit, lo=0.0, strict=True)
         for k, v in self.links.items():
             if not isinstance(v, LinkMass):
                 raise InputError(f"forces.links.{k}", f"must be a LinkMass, got {type(v).__name__}")

@@ -26,23 +26,26 @@ from cams.machine.kinetostatics.loads import (
     check_table,
     cycle_turns,
 )
+from cams.machine.linkage.common import _Base
 from cams.machine.linkage.machines import MACHINES
 from cams.machine.linkage.primitives import Angle, Point
-from laws.errors import InputError, show_value
-from laws.errors import check_number as _num
+from laws.errors import InputError, check_number, show_value
 from laws.units import TWO_PI, rpm_to_omega
 
-__all__ = ["Body", "Joint", "AppliedLoad", "Model", "build_model", "LINKS", "JOINTS", "GUIDED", "PINNED", "message_of", "pinned_cg_message"]
+__all__ = ["Body", "Joint", "AppliedLoad", "Model", "build_model", "LINKS", "JOINTS", "GUIDED", "PINNED", "message_of",
+           "pinned_cg_message"]
 
 
 LINKS = {kind: cls.links for kind, cls in MACHINES.items()}
-"""Moving links of each machine kind (seed 003: 1..5; seed 002: 1..3; seed 000: 1..5; seed 004: 1..5), as the machines declare them."""
+"""Moving links of each machine kind (seed 003: 1..5; seed 002: 1..3; seed 000: 1..5; seed 004: 1..5), as the
+machines declare them."""
 
 JOINTS = {kind: tuple(p.name for p in cls.pairs) for kind, cls in MACHINES.items()}
 """Pairs of each machine kind, as the machines declare them (:attr:`Pair.kind`: revolute or prismatic)."""
 
 GUIDED = {kind: cls.guided() for kind, cls in MACHINES.items()}
-"""Links of each machine kind that slide on a guide (the first link of a prismatic pair): the bodies a load can act on."""
+"""Links of each machine kind that slide on a guide (the first link of a prismatic pair): the bodies a load can
+act on."""
 
 PINNED = tuple(dict.fromkeys(name for g in GUIDED.values() for name in g))
 """Links whose centre of mass is their pin: they slide (and a block turns with its guide), so ``cg`` does not apply."""
@@ -111,7 +114,7 @@ class Model:
     gravity: float
     output: str
     sense: int
-    linkage: object = None
+    linkage: _Base | None = None
     cycle: float = TWO_PI
     origin: float = 0.0
 
@@ -160,7 +163,8 @@ def _guide(model: Model, name: str) -> np.ndarray:
     for j in model.joints:
         if j.kind == "prismatic" and j.a == k:
             return j.axis
-    raise InputError("forces.loads.body", f"{name!r} does not slide on a guide; loads along a guide need a slider or piston")
+    raise InputError("forces.loads.body",
+                     f"{name!r} does not slide on a guide; loads along a guide need a slider or piston")
 
 
 def _load_window(model: Model, ld: Resistance) -> np.ndarray:
@@ -169,7 +173,12 @@ def _load_window(model: Model, ld: Resistance) -> np.ndarray:
     from cams.machine.timing import CuttingZone, windows
 
     m = model.linkage
-    zone = CuttingZone(approach=ld.approach, overrun=ld.overrun, working=ld.working) if ld.window == "cut" else CuttingZone(working=ld.working)
+    if m is None:
+        raise InputError("forces.loads.window", "a load's window needs the linkage the model was built from")
+    if ld.window == "cut":
+        zone = CuttingZone(approach=ld.approach, overrun=ld.overrun, working=ld.working)
+    else:
+        zone = CuttingZone(working=ld.working)
     win = windows(m, zone)
     c = win.cycle_angle(model.phi)
     a, b = win.cut_start, win.cut_end
@@ -195,7 +204,8 @@ def _external_loads(model: Model, spec: ForceSpec) -> list[AppliedLoad]:
             pp = np.interp(np.mod(rot, ld.period), a, p)
             area = np.pi * (ld.bore * u) ** 2 / 4
             toward = -np.sign(np.real(np.conj(axis) * b.cg.pos))  # along the axis toward the crank centre
-            out.append(AppliedLoad(f"gas on {ld.body}", k, pp * area * toward * axis, b.cg.pos, np.zeros_like(model.phi)))
+            out.append(AppliedLoad(f"gas on {ld.body}", k, pp * area * toward * axis, b.cg.pos,
+                                   np.zeros_like(model.phi)))
         else:
             v = np.real(np.conj(axis) * b.cg.vel)
             on = np.ones_like(model.phi, dtype=bool) if isinstance(ld, ConstantFriction) else _load_window(model, ld)
@@ -249,7 +259,7 @@ def build_model(linkage, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
     n = linkage.rpm if rpm is None else rpm
     if n is None:
         raise InputError("linkage.rpm", "the forces need the crank's speed; give linkage.rpm")
-    n = _num("linkage.rpm", n, lo=0.0, strict=True)
+    n = check_number("linkage.rpm", n, lo=0.0, strict=True)
     speed = linkage.crank_sense * rpm_to_omega(n)  # signed crank speed, rad/s
     turns = cycle_turns(spec)
     if phi is None:
@@ -262,16 +272,19 @@ def build_model(linkage, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
     pairs = tuple(p.name for p in linkage.pairs)
     for k, lm in spec.links.items():
         if k not in names:
-            raise InputError(f"forces.links.{k}", f"is not a link of a {kind} linkage, must be one of {', '.join(map(repr, names))}")
+            raise InputError(f"forces.links.{k}",
+                             f"is not a link of a {kind} linkage, must be one of {', '.join(map(repr, names))}")
         if k in linkage.guided() and lm.cg is not None:
             raise InputError(f"forces.links.{k}.cg", pinned_cg_message(k, kind))
     for k in spec.friction:
         if k not in pairs:
-            raise InputError(f"forces.friction.{k}", f"is not a pair of a {kind} linkage, must be one of {', '.join(map(repr, pairs))}")
+            raise InputError(f"forces.friction.{k}",
+                             f"is not a pair of a {kind} linkage, must be one of {', '.join(map(repr, pairs))}")
     states = linkage.link_states(phi, speed, lambda name, default: _cg(spec, name, default))
     u = spec.length_unit
     bodies = tuple(
-        Body(nm, _mass(spec, nm).mass, _mass(spec, nm).inertia, _scale(states.cg[nm], u), states.angle[nm]) for nm in names
+        Body(nm, _mass(spec, nm).mass, _mass(spec, nm).inertia, _scale(states.cg[nm], u), states.angle[nm])
+        for nm in names
     )
     idx = {nm: i for i, nm in enumerate(names)}
     js = []
@@ -281,7 +294,8 @@ def build_model(linkage, spec: ForceSpec, *, phi=None, samples: int = 360, rpm: 
             fr = Friction(fr.coefficient, fr.radius * u)
         axis = states.axis.get(p.name)
         js.append(Joint(p.name, p.kind, idx[p.first], -1 if p.second is None else idx[p.second],
-                        np.asarray(states.point[p.name]) * u, None if axis is None else np.asarray(axis, dtype=complex), fr))
+                        np.asarray(states.point[p.name]) * u,
+                        None if axis is None else np.asarray(axis, dtype=complex), fr))
     model = Model(kind, phi, float(speed), bodies, tuple(js), (), 0, float(spec.gravity), linkage._output,
                   linkage.crank_sense, linkage, TWO_PI * turns, float(origin))
     loads = tuple(_external_loads(model, spec))

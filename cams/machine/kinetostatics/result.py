@@ -198,8 +198,8 @@ class ForceResult:
         order = np.argsort(c)
         Mr = self.reduced_resisting + (self.reduced_friction if friction else 0.0)
         rpm = omega_to_rpm(abs(self.omega))
-        return flywheel(c[order], Mr[order], self.reduced_inertia[order], rpm=rpm, delta=delta, interpolation=interpolation,
-                        cycle=cycle, reference=self.angle_reference)
+        return flywheel(c[order], Mr[order], self.reduced_inertia[order], rpm=rpm, delta=delta,
+                        interpolation=interpolation, cycle=cycle, reference=self.angle_reference)
 
     def to_dict(self) -> dict:
         """JSON-ready summary: extremes of the reactions and the balancing moment, friction losses.

@@ -27,12 +27,14 @@ __all__ = ["solve_model", "analyse_forces"]
 
 
 def _relative(model: Model, j: Joint) -> np.ndarray:
-    """Relative angular velocity omega_a - omega_b (revolute, rad/s) or sliding velocity of a on b along the guide (m/s)."""
+    """Relative angular velocity omega_a - omega_b (revolute, rad/s) or sliding velocity of a on b along the guide
+    (m/s)."""
     wa = model.bodies[j.a].link.omega
     wb = 0.0 if j.b < 0 else model.bodies[j.b].link.omega
     if j.kind == "revolute":
         return np.broadcast_to(wa - wb, model.phi.shape).astype(float)
     dv = model.velocity(j.a, j.point) - model.velocity(j.b, j.point)
+    assert j.axis is not None  # a prismatic pair has its guide's axis (build_model)
     return np.real(np.conj(j.axis) * dv)
 
 

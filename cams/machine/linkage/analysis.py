@@ -34,12 +34,19 @@ WORKING = ("slow", "fast", "forward", "backward")
 class Machine(Protocol):
     """What :func:`analyse` and the coupling need from a linkage."""
 
-    crank_sense: int
+    @property
+    def crank_sense(self) -> int:  # pragma: no cover - protocol
+        """+1: the crank turns counter-clockwise, -1: clockwise."""
+        ...
 
     def output(self, phi: np.ndarray, omega: float = 1.0) -> Slide:  # pragma: no cover - protocol
         ...
 
     def transmission(self, phi: np.ndarray) -> np.ndarray:  # pragma: no cover - protocol
+        ...
+
+    def lengths(self) -> dict:  # pragma: no cover - protocol
+        """JSON-ready: the type, the lengths (the machine's unit), the crank's rotation and speed."""
         ...
 
 

@@ -6,13 +6,14 @@ The machines themselves: :mod:`cams.machine.linkage.machines`.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from cams.machine.linkage.analysis import analyse
 from cams.machine.linkage.primitives import Angle, AssemblyError, Slide
 from cams.model.follower import rotation_word
-from laws.errors import InfeasibleError, InputError
+from laws.errors import InfeasibleError, InputError, check_number
 from laws.errors import show_value as _show
 from laws.units import TWO_PI, rpm_to_omega
 
@@ -53,19 +54,6 @@ def describe_angles(phi: np.ndarray, mask: np.ndarray, *, periodic: bool = False
         runs[0][0] = runs.pop()[0]
     text = [f"{deg[a]:.1f}" if a == b else f"{deg[a]:.1f}-{deg[b]:.1f}" for a, b in runs]
     return ", ".join(text) + " deg"
-
-
-def _num(field_: str, v) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v):
-        raise InputError(field_, f"must be a number, got {_show(v)}")
-    return float(v)
-
-
-def _pos(field_: str, v) -> float:
-    v = _num(field_, v)
-    if v <= 0:
-        raise InputError(field_, f"must be > 0, got {_show(v)}")
-    return v
 
 
 def _sign(field_: str, v, words=("+1", "-1")) -> None:
@@ -155,7 +143,7 @@ class _Base:
         """``"revolute"`` or ``"prismatic"``: the kind of the pair ``name``."""
         return next(p.kind for p in cls.pairs if p.name == name)
 
-    def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:  # pragma: no cover - every machine has its own
+    def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:  # pragma: no cover - each machine's own
         """Motion of the moving links' centres of mass and of the pairs at crank angles ``phi`` (radians).
 
         ``omega``: the crank's speed, rad/s (signed). ``cg(name, default)``: the
@@ -164,10 +152,18 @@ class _Base:
         """
         raise NotImplementedError
 
+    def kinematics(self, phi: np.ndarray, *, omega: float | None = None) -> Any:  # pragma: no cover - each machine
+        """Every point and link at crank angles ``phi`` (radians); each machine returns its own record."""
+        raise NotImplementedError
+
+    def lengths(self) -> dict:  # pragma: no cover - each machine has its own
+        """JSON-ready: the type, the lengths (the machine's unit), the crank's rotation and speed."""
+        raise NotImplementedError
+
     def _check_common(self) -> None:
         _sign("linkage.crank_rotation", self.crank_sense, ("ccw", "cw"))
         if self.rpm is not None:
-            _pos("linkage.rpm", self.rpm)
+            check_number("linkage.rpm", self.rpm, lo=0.0, strict=True)
 
     @property
     def omega(self) -> float:
@@ -226,7 +222,8 @@ def _verify_course(machine, *, stroke: float, time_ratio: float | None = None, a
     except InfeasibleError as e:
         if isinstance(e, AssemblyError):
             raise
-        raise InputError(field_, f"the synthesized linkage does not move as asked ({str(e).split(': ', 1)[-1]}){tail}") from None
+        raise InputError(field_, f"the synthesized linkage does not move as asked "
+                                 f"({str(e).split(': ', 1)[-1]}){tail}") from None
     if time_ratio is not None and not abs(rep.time_ratio - time_ratio) <= 1e-9 * time_ratio:
         raise InputError(
             "linkage.time_ratio",

@@ -1,4 +1,7 @@
-"""The crank-slider mechanism (seed 002): :class:`CrankSlider` and its kinematics (frames: :mod:`cams.machine.linkage.machines`)."""
+"""The crank-slider mechanism (seed 002): :class:`CrankSlider` and its kinematics.
+
+Frames: :mod:`cams.machine.linkage.machines`.
+"""
 
 from __future__ import annotations
 
@@ -10,8 +13,6 @@ from cams.machine.linkage.common import (
     LinkStates,
     Pair,
     _Base,
-    _num,
-    _pos,
     _sign,
     _still,
     _verify_course,
@@ -28,6 +29,7 @@ from cams.machine.linkage.primitives import (
     rrp,
 )
 from cams.machine.linkage.synthesis import crank_slider_crank
+from laws.errors import check_number
 
 __all__ = ["CrankSlider", "CrankSliderKinematics"]
 
@@ -106,22 +108,23 @@ class CrankSlider(_Base):
     )
 
     def __post_init__(self):
-        _pos("linkage.crank", self.crank)
-        _pos("linkage.rod", self.rod)
-        _num("linkage.offset", self.offset)
+        check_number("linkage.crank", self.crank, lo=0.0, strict=True)
+        check_number("linkage.rod", self.rod, lo=0.0, strict=True)
+        check_number("linkage.offset", self.offset)
         _sign("linkage.slider_side", self.slider_side, ("right", "left"))
         if self.rod_cg is not None:
-            _num("linkage.rod_cg", self.rod_cg)
+            check_number("linkage.rod_cg", self.rod_cg)
         self._check_common()
         need = self.crank + abs(self.offset)
         if not self.rod > need:
             raise AssemblyError(
                 "linkage.rod",
-                f"a rod of {self.rod:.6g} cannot follow the crank all the way round; it needs l_AB > l_OA + |e| = {need:.6g}",
+                f"a rod of {self.rod:.6g} cannot follow the crank all the way round; "
+                f"it needs l_AB > l_OA + |e| = {need:.6g}",
             )
 
     @classmethod
-    def from_stroke(cls, stroke: float, rod: float, *, offset: float = 0.0, **kw) -> "CrankSlider":
+    def from_stroke(cls, stroke: float, rod: float, *, offset: float = 0.0, **kw) -> CrankSlider:
         """Synthesis from the stroke H and the rod (seed 002, formula 1.1: l_OA = H/2 when central).
 
         Examples
@@ -148,7 +151,8 @@ class CrankSlider(_Base):
 
         def run(p):
             A, cr = crank(ground(0j), self.crank, p, omega=w)
-            B, rod, sl = rrp(A, self.rod, ground(1j * self.offset), Angle(0.0, 0.0, 0.0), branch=self.slider_side, field="linkage.rod")
+            B, rod, sl = rrp(A, self.rod, ground(1j * self.offset), Angle(0.0, 0.0, 0.0), branch=self.slider_side,
+                             field="linkage.rod")
             S = None if self.rod_cg is None else on_link(A, rod, self.rod_cg)
             mu = np.pi / 2 - acute_angle(rod.angle, 0.0)
             return CrankSliderKinematics(p, A, cr, rod, B, sl, S, mu)
@@ -171,7 +175,8 @@ class CrankSlider(_Base):
         zero = np.zeros_like(phi)
         O = Point(zero + 0j, zero + 0j, zero + 0j)
         rod_cg = self.rod_cg if self.rod_cg is not None else self.rod / 2
-        cgs = {"crank": on_link(O, k.crank, cg("crank", 0.0)), "rod": on_link(k.A, k.rod, cg("rod", rod_cg)), "slider": k.B}
+        cgs = {"crank": on_link(O, k.crank, cg("crank", 0.0)), "rod": on_link(k.A, k.rod, cg("rod", rod_cg)),
+               "slider": k.B}
         angles = {"crank": k.crank, "rod": k.rod, "slider": _still(phi)}
         points = {"O": O.pos, "A": k.A.pos, "B": k.B.pos, "B_guide": k.B.pos}
         return LinkStates(cgs, angles, points, {"B_guide": np.ones_like(phi, dtype=complex)})

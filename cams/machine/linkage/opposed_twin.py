@@ -1,4 +1,7 @@
-"""The two-cylinder mechanism of seed 000: :class:`OpposedTwin` and its kinematics (frames: :mod:`cams.machine.linkage.machines`)."""
+"""The two-cylinder mechanism of seed 000: :class:`OpposedTwin` and its kinematics.
+
+Frames: :mod:`cams.machine.linkage.machines`.
+"""
 
 from __future__ import annotations
 
@@ -6,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cams.machine.linkage.common import LinkStates, Pair, _Base, _num, _pos, _still
+from cams.machine.linkage.common import LinkStates, Pair, _Base, _still
 from cams.machine.linkage.primitives import (
     Angle,
     AssemblyError,
@@ -18,6 +21,7 @@ from cams.machine.linkage.primitives import (
     on_link,
     rrp,
 )
+from laws.errors import check_number
 
 __all__ = ["OpposedTwin", "OpposedTwinKinematics"]
 
@@ -90,13 +94,14 @@ class OpposedTwin(_Base):
     )
 
     def __post_init__(self):
-        _pos("linkage.crank", self.crank)
-        _pos("linkage.rod", self.rod)
-        _num("linkage.rod_cg", self.rod_cg)
-        _num("linkage.phase", self.phase)
+        check_number("linkage.crank", self.crank, lo=0.0, strict=True)
+        check_number("linkage.rod", self.rod, lo=0.0, strict=True)
+        check_number("linkage.rod_cg", self.rod_cg)
+        check_number("linkage.phase", self.phase)
         self._check_common()
         if not self.rod > self.crank:
-            raise AssemblyError("linkage.rod", f"the rods must be longer than the crank ({self.crank:.6g}), got {self.rod:.6g}")
+            raise AssemblyError("linkage.rod",
+                                f"the rods must be longer than the crank ({self.crank:.6g}), got {self.rod:.6g}")
 
     def kinematics(self, phi, *, omega: float | None = None) -> OpposedTwinKinematics:
         """Positions, velocities and accelerations at crank angles ``phi`` (angle of OA, radians)."""
@@ -134,6 +139,7 @@ class OpposedTwin(_Base):
             "piston5": k.D,
         }
         angles = {"crank": crank_, "rod2": k.rod2, "piston3": _still(phi), "rod4": k.rod4, "piston5": _still(phi)}
-        points = {"O": O.pos, "A": k.A.pos, "B": k.B.pos, "B_guide": k.B.pos, "C": k.C.pos, "D": k.D.pos, "D_guide": k.D.pos}
+        points = {"O": O.pos, "A": k.A.pos, "B": k.B.pos, "B_guide": k.B.pos, "C": k.C.pos, "D": k.D.pos,
+                  "D_guide": k.D.pos}
         x = np.ones_like(phi, dtype=complex)
         return LinkStates(cgs, angles, points, {"B_guide": x, "D_guide": x})

@@ -1,4 +1,7 @@
-"""The pump with a swinging slotted lever (seed 004): :class:`SlottedLeverPump` and its kinematics (frames: :mod:`cams.machine.linkage.machines`)."""
+"""The pump with a swinging slotted lever (seed 004): :class:`SlottedLeverPump` and its kinematics.
+
+Frames: :mod:`cams.machine.linkage.machines`.
+"""
 
 from __future__ import annotations
 
@@ -9,8 +12,6 @@ import numpy as np
 from cams.machine.linkage.common import (
     LinkStates,
     Pair,
-    _num,
-    _pos,
     _sign,
     _still,
     _swing_bar_checks,
@@ -33,6 +34,7 @@ from cams.machine.linkage.synthesis import (
     SlottedLeverSynthesis,
     slotted_lever_synthesis,
 )
+from laws.errors import check_number
 
 __all__ = ["SlottedLeverPump", "PumpKinematics"]
 
@@ -127,17 +129,20 @@ class SlottedLeverPump(_SwingingLever):
 
     def __post_init__(self):
         for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("lever", self.lever)):
-            _pos(f"linkage.{f}", v)
-        _num("linkage.guide_x", self.guide_x)
+            check_number(f"linkage.{f}", v, lo=0.0, strict=True)
+        check_number("linkage.guide_x", self.guide_x)
         _sign("linkage.lever_side", self.lever_side, ("same", "opposite"))
         self._check_common()
-        _swing_bar_checks(self.crank, self.centre_distance, self.lever, self.lever_side, "slotted lever", "linkage.lever")
+        _swing_bar_checks(self.crank, self.centre_distance, self.lever, self.lever_side, "slotted lever",
+                          "linkage.lever")
 
     @classmethod
     def from_course(
         cls, time_ratio: float, stroke: float, centre_distance: float, *, lever_side: int = -1, **kw
-    ) -> "SlottedLeverPump":
-        """Synthesis from K, H and O1O2 (seed 004, section 1.4): theta, l_O1A = L sin(theta/2), l_O2C = H / (2 sin(theta/2)).
+    ) -> SlottedLeverPump:
+        """Synthesis from K, H and O1O2 (seed 004, section 1.4).
+
+        theta, l_O1A = L sin(theta/2), l_O2C = H / (2 sin(theta/2)).
 
         Examples
         --------
@@ -146,7 +151,8 @@ class SlottedLeverPump(_SwingingLever):
         (262.5, 250.0)
         """
         syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance)
-        m = cls(crank=syn.crank, centre_distance=syn.centre_distance, lever=syn.bar, lever_side=lever_side, synthesis=syn, **kw)
+        m = cls(crank=syn.crank, centre_distance=syn.centre_distance, lever=syn.bar, lever_side=lever_side,
+                synthesis=syn, **kw)
         _verify_course(m, stroke=syn.stroke, time_ratio=syn.time_ratio,
                        allowed=f"a slotted-lever pump allows 1 < K <= {MAX_TIME_RATIO:g}")
         return m
@@ -193,7 +199,8 @@ class SlottedLeverPump(_SwingingLever):
             "piston": E,
         }
         angles = {"crank": k.crank, "block": k.lever, "lever": k.lever, "pin_block": _still(phi), "piston": _still(phi)}
-        points = {"O1": O1.pos, "A": k.A.pos, "A_slot": k.A.pos, "O2": O2.pos, "C": k.C.pos, "C_slot": k.C.pos, "E": E.pos}
+        points = {"O1": O1.pos, "A": k.A.pos, "A_slot": k.A.pos, "O2": O2.pos, "C": k.C.pos, "C_slot": k.C.pos,
+                  "E": E.pos}
         axes = {"A_slot": k.lever.unit, "C_slot": np.ones_like(phi, dtype=complex),
                 "E": np.full_like(phi, 1j, dtype=complex)}
         return LinkStates(cgs, angles, points, axes)

@@ -1,4 +1,7 @@
-"""The slotting machine's six-bar linkage (seed 003): :class:`SlottingMachine` and its kinematics (frames: :mod:`cams.machine.linkage.machines`)."""
+"""The slotting machine's six-bar linkage (seed 003): :class:`SlottingMachine` and its kinematics.
+
+Frames: :mod:`cams.machine.linkage.machines`.
+"""
 
 from __future__ import annotations
 
@@ -9,8 +12,6 @@ import numpy as np
 from cams.machine.linkage.common import (
     LinkStates,
     Pair,
-    _num,
-    _pos,
     _sign,
     _still,
     _swing_bar_checks,
@@ -36,6 +37,7 @@ from cams.machine.linkage.synthesis import (
     slotted_lever_synthesis,
     slotting_time_ratio_limit,
 )
+from laws.errors import check_number
 
 __all__ = ["SlottingMachine", "SlottingKinematics"]
 
@@ -151,9 +153,11 @@ class SlottingMachine(_SwingingLever):
     )
 
     def __post_init__(self):
-        for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("bar", self.bar), ("rod", self.rod)):
-            _pos(f"linkage.{f}", v)
-        _num("linkage.guide_x", self.guide_x)
+        lengths = (("crank", self.crank), ("centre_distance", self.centre_distance), ("bar", self.bar),
+                   ("rod", self.rod))
+        for f, v in lengths:
+            check_number(f"linkage.{f}", v, lo=0.0, strict=True)
+        check_number("linkage.guide_x", self.guide_x)
         _sign("linkage.bar_side", self.bar_side, ("same", "opposite"))
         _sign("linkage.tool_side", self.tool_side, ("above", "below"))
         self._check_common()
@@ -189,7 +193,7 @@ class SlottingMachine(_SwingingLever):
         tool_side: int = 1,
         crank_sense: int = 1,
         rpm: float | None = None,
-    ) -> "SlottingMachine":
+    ) -> SlottingMachine:
         """Synthesis from the course data (seed 003, table 1-1): K, H, L_O2O3, l_BC/l_O3B.
 
         The guide y-y goes through the middle of the sagitta of B's arc (the
@@ -203,6 +207,7 @@ class SlottingMachine(_SwingingLever):
         """
         _sign("linkage.bar_side", bar_side, ("same", "opposite"))
         syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance, rod_ratio)
+        assert syn.rod is not None and syn.rod_ratio is not None  # a rod_ratio gives the rod
         m = cls(
             crank=syn.crank,
             centre_distance=syn.centre_distance,

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from laws.errors import InfeasibleError, InputError
+from laws.errors import InfeasibleError, InputError, check_number
 from laws.errors import show_value as _show
 
 __all__ = [
@@ -60,10 +60,12 @@ def _below(x: float) -> str:
     return t
 
 
-def _positive(field: str, v: float) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) or not np.isfinite(v) or v <= 0:
-        raise InputError(field, f"must be a number > 0, got {_show(v)}")
-    return float(v)
+def _positive(field: str, v: object) -> float:
+    """:func:`laws.errors.check_number` (> 0), with this module's message "must be a number > 0, got ..."."""
+    try:
+        return check_number(field, v, lo=0.0, strict=True)
+    except InputError:
+        raise InputError(field, f"must be a number > 0, got {_show(v)}") from None
 
 
 def swing_from_time_ratio(K: float, *, field: str = "linkage.time_ratio") -> float:

@@ -56,7 +56,8 @@ class CuttingZone:
         _frac("cutting.approach", self.approach)
         _frac("cutting.overrun", self.overrun)
         if self.approach + self.overrun >= 1:
-            raise InputError("cutting", f"approach + overrun must be < 1 (a part of the stroke is cut), got {self.approach + self.overrun:g}")
+            raise InputError("cutting", "approach + overrun must be < 1 (a part of the stroke is cut), "
+                             f"got {self.approach + self.overrun:g}")
         check_option("cutting.working", self.working, WORKING)
 
 
@@ -94,7 +95,8 @@ class Windows:
 
     @property
     def out_of_work(self) -> tuple[float, float]:
-        """(start, end) of the tool's out-of-work window, start in [0, 2 pi); it runs through position 1 (end > 2 pi)."""
+        """(start, end) of the tool's out-of-work window, start in [0, 2 pi); it runs through position 1
+        (end > 2 pi)."""
         start = self.cut_end - TWO_PI if self.cut_end >= TWO_PI else self.cut_end
         return start, self.cut_start + TWO_PI - (self.cut_end - start)
 

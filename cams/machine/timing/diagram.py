@@ -115,7 +115,8 @@ def cycle_diagram(
     idx = program.phase_of(cam)
     kinds = np.array([p.kind for p in program.phases])[idx]
     feeding = kinds == "rise"
-    # a sample exactly on a window's edge may be both (the cut's first instant and the rise's last): ignore zero-length contact
+    # a sample exactly on a window's edge may be both (the cut's first instant and the rise's last):
+    # ignore zero-length contact
     inner_cut = cut & np.roll(cut, 1) & np.roll(cut, -1)
     overlap = bool(np.any(inner_cut & feeding))
     ret = bool(np.any(inner_cut & (kinds == "return")))

@@ -51,12 +51,12 @@ class Drive:
             raise InputError("drive.mesh", "sense must be +1 or -1")
 
     @classmethod
-    def shaft(cls) -> "Drive":
+    def shaft(cls) -> Drive:
         """The cam on the crank's shaft (seed 003: the feed cam is fixed on O2)."""
         return cls()
 
     @classmethod
-    def gears(cls, z_crank: int, z_cam: int, *, mesh: str = "external") -> "Drive":
+    def gears(cls, z_crank: int, z_cam: int, *, mesh: str = "external") -> Drive:
         """A gear pair: Z_crank on the crank's shaft drives Z_cam on the cam's (seed 004: Z5-Z6)."""
         for f, z in (("drive.z_crank", z_crank), ("drive.z_cam", z_cam)):
             if isinstance(z, bool) or not isinstance(z, int) or z < 1:
@@ -178,12 +178,15 @@ def check_follower_direction(timing: Timing, drive: Drive) -> None:
         return
     gears = "" if drive.teeth is None else f"gears {drive.teeth[0]}/{drive.teeth[1]}: "
     if drive.ratio != 1:
-        why = f"{gears}the cam turns {drive.ratio:g} times per crank turn, so the angle between them changes from turn to turn"
+        why = (f"{gears}the cam turns {drive.ratio:g} times per crank turn, so the angle between them changes "
+               "from turn to turn")
     else:
-        why = f"{gears}with an external mesh the cam turns against the crank, so the angle between them changes as they turn"
+        why = (f"{gears}with an external mesh the cam turns against the crank, so the angle between them changes "
+               "as they turn")
     raise InputError("timing.follower_direction",
-                     f"gives the key angle between the crank and the cam's start radius, fixed only when the cam turns "
-                     f"with the crank ([drive] kind = 'shaft', or equal gears with mesh = 'internal'); {why}: remove it")
+                     "gives the key angle between the crank and the cam's start radius, fixed only when the cam "
+                     "turns with the crank ([drive] kind = 'shaft', or equal gears with mesh = 'internal'); "
+                     f"{why}: remove it")
 
 
 def _rise_intervals(program: Program) -> list[tuple[float, float]]:
@@ -248,7 +251,8 @@ def place_cam(win: Windows, program: Program, drive: Drive, timing: Timing) -> C
         raise InfeasibleError(
             "motion",
             f"feed window too short: the tool is out of the work for {np.degrees(Lw):.4g} deg of crank angle "
-            f"({np.degrees(w0) % 360:.4g} to {np.degrees(w1) % 360:.4g} deg after position 1); {what} take{'s' if len(rises) == 1 else ''} "
+            f"({np.degrees(w0) % 360:.4g} to {np.degrees(w1) % 360:.4g} deg after position 1); "
+            f"{what} take{'s' if len(rises) == 1 else ''} "
             f"{np.degrees(b1 - a0):.4g} deg of cam = {np.degrees(span):.4g} deg of crank at ratio {i:g}, plus 2 x "
             f"{np.degrees(m):.4g} deg margin; the largest feasible rise angle is {np.degrees(largest):.4g} deg"
             + (" (less the other phases between the rises)" if len(rises) > 1 else "")

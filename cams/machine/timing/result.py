@@ -6,14 +6,21 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from cams.cam import Cam
+from cams.machine.kinetostatics.loads import ForceOptions, ForceSpec
 from cams.machine.linkage.analysis import Machine, StrokeReport
 from cams.machine.timing.cycle import CuttingZone, Windows, deg, windows
 from cams.machine.timing.diagram import CycleDiagram, cycle_diagram
 from cams.machine.timing.placement import CamTiming, Drive, Timing, place_cam
 from cams.model.design import CamDesign
 from cams.model.follower import Rocker
+from laws.errors import InputError
+
+if TYPE_CHECKING:
+    from cams.assess import Assessment
+    from cams.solve import SolveResult
 
 __all__ = ["MachineSpec", "MachineResult", "design_machine"]
 
@@ -34,6 +41,18 @@ class MachineSpec:
         The cam's design; its ``cam_sense`` and ``rpm`` follow the crank and the drive.
     units : str
         Length unit of the file.
+    forces : ForceSpec or None
+        The linkage's masses, loads and friction (a machine file's ``[forces]``
+        table); None: no linkage forces.
+    force_options : ForceOptions
+        How the forces are sampled and the flywheel sized (``[forces]``'s
+        samples, passes, delta, interpolation).
+
+    Raises
+    ------
+    InputError
+        ``forces`` not a :class:`ForceSpec` (or None), ``force_options`` not a
+        :class:`ForceOptions`.
     """
 
     name: str
@@ -43,7 +62,14 @@ class MachineSpec:
     timing: Timing
     cam: CamDesign
     units: str = "mm"
-    extra: dict = field(default_factory=dict, compare=False, hash=False)
+    forces: ForceSpec | None = None
+    force_options: ForceOptions = field(default_factory=ForceOptions)
+
+    def __post_init__(self) -> None:
+        if self.forces is not None and not isinstance(self.forces, ForceSpec):
+            raise InputError("forces", f"must be a ForceSpec or None, got {type(self.forces).__name__}")
+        if not isinstance(self.force_options, ForceOptions):
+            raise InputError("forces", f"options must be a ForceOptions, got {type(self.force_options).__name__}")
 
 
 @dataclass(frozen=True)
@@ -57,17 +83,18 @@ class MachineResult:
 
     ``assessment``: the feed cam judged by the rule every command shares
     (:func:`cams.assess.assess_cam`): verified, buildable (a working profile,
-    no undercut, a valid closed profile, the bore, ``[dynamics]``) and certified.
+    no undercut, a valid closed profile, the bore, ``[dynamics]``) and certified;
+    :func:`design_machine` always sets it (a result without one is not :attr:`ok`).
     """
 
     spec: MachineSpec
     stroke: StrokeReport
     windows: Windows
     timing: CamTiming
-    solve: object  # cams.solve.SolveResult
+    solve: SolveResult
     diagram: CycleDiagram
     bore: dict | None = None
-    assessment: object = None  # cams.assess.Assessment
+    assessment: Assessment | None = None
 
     @property
     def overlap(self) -> bool:
@@ -76,7 +103,8 @@ class MachineResult:
 
     @property
     def notes(self) -> list[str]:
-        """Remarks: the bore check's outcome (a bore the profile cuts into fails :attr:`ok`) and those that do not fail."""
+        """Remarks: the bore check's outcome (a bore the profile cuts into fails :attr:`ok`) and those that do not
+        fail."""
         out = []
         b = self.bore
         if b is not None:
@@ -96,7 +124,7 @@ class MachineResult:
     def ok(self) -> bool:
         """No overlap and a usable feed cam (:attr:`cams.assess.Assessment.usable`: certified, verified and
         buildable, the bore included), as every other command judges a cam."""
-        return not self.overlap and bool(self.assessment.usable)
+        return not self.overlap and self.assessment is not None and bool(self.assessment.usable)
 
     def to_dict(self) -> dict:
         """JSON-ready report: lengths in the file's unit, angles in degrees."""
@@ -110,9 +138,10 @@ class MachineResult:
             "analysis": self.stroke.to_dict(),
             "windows": self.windows.to_dict(),
             "drive": self.spec.drive.to_dict(),
-            "timing": {**self.timing.to_dict(), "margin_deg": deg(self.spec.timing.margin), "placement": self.spec.timing.placement},
+            "timing": {**self.timing.to_dict(), "margin_deg": deg(self.spec.timing.margin),
+                       "placement": self.spec.timing.placement},
             "cam": self.solve.to_dict(),
-            **self.assessment.to_dict(),
+            **({} if self.assessment is None else self.assessment.to_dict()),
             "overlap": self.overlap,
             "bore": self.bore,
             "notes": self.notes,
