@@ -186,7 +186,7 @@ def test_bands_are_those_of_the_previous_implementation(monkeypatch):
         d[rng.random(n) < 0.05] = np.inf
         d[rng.random(n) < 0.02] = np.nan
         got, ref = list(ex._by_distance(d, first)), list(_by_distance_before(d, first))
-        assert len(got) == len(ref) and all(np.array_equal(a, b) for a, b in zip(got, ref))
+        assert len(got) == len(ref) and all(np.array_equal(a, b) for a, b in zip(got, ref, strict=True))
     from cams.io.designfile import load_design
     from tests.conftest import EXAMPLES, rocker_dict
 
@@ -196,5 +196,5 @@ def test_bands_are_those_of_the_previous_implementation(monkeypatch):
     new = [ex.nearest_exhaustive(d, d.follower.position(0.0), samples=120) for d in designs]
     monkeypatch.setattr(ex, "_by_distance", _by_distance_before)
     old = [ex.nearest_exhaustive(d, d.follower.position(0.0), samples=120) for d in designs]
-    for a, b in zip(new, old):
+    for a, b in zip(new, old, strict=True):
         assert np.array_equal(a.centre, b.centre) and a.objective == b.objective and a.binding == b.binding
