@@ -61,7 +61,7 @@ class Cam:
         return getattr(self.design, "face", "roller") == "flat"
 
     @classmethod
-    def from_file(cls, path) -> "Cam":
+    def from_file(cls, path) -> Cam:
         """Load a design file (no computation)."""
         from cams.io.designfile import load_design
 

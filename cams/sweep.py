@@ -188,9 +188,9 @@ def _solve_one(args) -> dict:
     from cams.io.designfile import design_from_dict
 
     d = copy.deepcopy(base)
-    for k, v in zip(keys, values):
+    for k, v in zip(keys, values, strict=True):
         _set(d, k, _number(v))
-    row = {k: _number(v) for k, v in zip(keys, values)}
+    row = {k: _number(v) for k, v in zip(keys, values, strict=True)}
     row.update({c: None for c in COLUMNS})
     try:
         design = design_from_dict(d)
@@ -274,8 +274,9 @@ def _check_base(base: dict, keys: tuple[str, ...], combos: list) -> None:
 
     def probe(values):
         d = copy.deepcopy(base)
-        for k, v in zip(keys, values or ()):
-            _set(d, k, _number(v))
+        if values is not None:  # None: the base design alone
+            for k, v in zip(keys, values, strict=True):
+                _set(d, k, _number(v))
         try:
             design_from_dict(d)
         except CamsError as e:

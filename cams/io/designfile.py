@@ -214,10 +214,12 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     else:
         for k in ("arm", "swing", "rise_direction"):
             if k in fo:
-                raise InputError(f"follower.{k}", "applies to rocker followers; a translating follower takes stroke and offset")
+                raise InputError(f"follower.{k}",
+                                 "applies to rocker followers; a translating follower takes stroke and offset")
         stroke = _num(fo, "stroke", "follower.stroke")
         check_lift(stroke, False)  # the model's rule, before the motion's heights are read against the stroke
-        follower = Translating(roller, offset=_num(fo, "offset", "follower.offset", required=False), stroke_scale=stroke)
+        offset = _num(fo, "offset", "follower.offset", required=False)
+        follower = Translating(roller, offset=offset, stroke_scale=stroke)
         lift = stroke
 
     cam = _table(d, "cam")
@@ -356,7 +358,7 @@ def _program(d: dict, kind: str, lift: float) -> Program:
     # exact 2 pi: scale away rounding of the degree inputs
     angles = np.radians([s[1] for s in specs])
     angles *= 2 * np.pi / angles.sum()
-    return Program(tuple(Phase(s[0], float(a), s[2], s[3]) for s, a in zip(specs, angles)), lift)
+    return Program(tuple(Phase(s[0], float(a), s[2], s[3]) for s, a in zip(specs, angles, strict=True)), lift)
 
 
 def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
@@ -475,9 +477,7 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
     """
     if not isinstance(table, dict):
         raise InputError("dynamics", "must be a table")
-    unknown = set(table) - set(DYNAMICS_KEYS)
-    if unknown:
-        raise InputError("dynamics", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(DYNAMICS_KEYS)}")
+    check_keys(table, DYNAMICS_KEYS, "dynamics")  # listed in the table's documented order
     if units not in LENGTH_UNITS:
         raise InputError("units", f"{show_value(units)} is not supported: the files are in mm (the [dynamics] table's "
                          "journal_radius too; its other values are SI)")

@@ -36,8 +36,8 @@ import re
 import stat
 import sys
 import tempfile
+from collections.abc import Callable, Collection, Iterable, Iterator
 from pathlib import Path
-from typing import Callable, Iterable, Iterator
 
 from laws.errors import InputError, show_value
 
@@ -259,26 +259,28 @@ def toml_integer(table: dict, key: str, field: str, *, default: int, lo: int, hi
     return v
 
 
-def check_keys(table: dict, allowed: set, field: str) -> None:
-    """Refuse entries of ``table`` outside ``allowed``.
+def check_keys(table: dict, allowed: Collection[str], field: str) -> None:
+    """Refuse entries of ``table`` outside ``allowed``: the one unknown-key check of the files.
 
     Parameters
     ----------
     table : dict
         A parsed TOML table.
-    allowed : set of str
-        Its allowed keys.
+    allowed : set or sequence of str
+        Its allowed keys: a set is listed sorted in the message, a sequence
+        (a table's documented order, e.g. the ``[dynamics]`` keys) as given.
     field : str
         Name of the table in the error message.
 
     Raises
     ------
     InputError
-        Unknown keys; the message lists them and the allowed ones, sorted.
+        Unknown keys; the message lists them sorted, then the allowed ones.
     """
-    unknown = set(table) - allowed
+    unknown = set(table) - set(allowed)
     if unknown:
-        raise InputError(field, f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(sorted(allowed))}")
+        shown = sorted(allowed) if isinstance(allowed, (set, frozenset)) else list(allowed)
+        raise InputError(field, f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(shown)}")
 
 
 def _folder(p: Path) -> Path:
