@@ -155,7 +155,7 @@ def imports() -> dict:
 
 def sweep_designs(size: int) -> dict:
     """``size`` designs through :func:`cams.sweep.sweep` on every core."""
-    from cams.io.files import read_toml
+    from cams.io.document import read_toml
     from cams.sweep import sweep
 
     base = read_toml(ROOT / "examples" / "rocker_force.toml")

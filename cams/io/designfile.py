@@ -51,9 +51,9 @@ from pathlib import Path
 import numpy as np
 
 from cams.dynamics.forces import DYNAMICS_KEYS, LENGTH_UNITS
-from cams.io.files import check_document, check_keys, read_toml, toml_integer
-from cams.io.files import toml_number as _num
-from cams.io.files import toml_table as _table
+from cams.io.document import check_document, check_keys, read_toml, toml_integer
+from cams.io.document import toml_number as _num
+from cams.io.document import toml_table as _table
 from cams.model.design import MAX_SAMPLES, CamDesign, FlatFaceDesign, Limits, check_lift
 from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, journal_error
 from cams.model.follower import (

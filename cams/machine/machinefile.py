@@ -41,9 +41,9 @@ from pathlib import Path
 import numpy as np
 
 from cams.io.designfile import design_from_dict
-from cams.io.files import check_document, check_keys, read_toml
-from cams.io.files import toml_number as _num
-from cams.io.files import toml_table as _table
+from cams.io.document import check_document, check_keys, read_toml
+from cams.io.document import toml_number as _num
+from cams.io.document import toml_table as _table
 from cams.machine.kinetostatics.loads import (
     WINDOWS,
     ConstantFriction,
