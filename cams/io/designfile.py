@@ -376,9 +376,8 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         if "centre_distance" not in fo:
             raise InputError("follower.centre_distance", "is required for a flat-faced rocker: the distance L from "
                              "the pivot to the cam centre (mm, > 0)")
-        L = _num(fo, "centre_distance", "follower.centre_distance")
-        if L <= 0:
-            raise InputError("follower.centre_distance", f"must be > 0, got {L!r}")
+        L = check_number("follower.centre_distance", _num(fo, "centre_distance", "follower.centre_distance"),
+                         lo=0.0, strict=True)
         follower = FlatRocker(L, _num(fo, "face_offset", "follower.face_offset", default=0.0),
                               sense=sense_of("follower.rise_direction", fo.get("rise_direction", "cw")))
         lift = np.radians(swing)
