@@ -87,8 +87,8 @@ def parse_vary(spec: str) -> tuple[str, np.ndarray]:
     key = key.strip()
     try:
         if ":" in rng:
-            a, b, n = rng.split(":")
-            n = int(n)
+            a, b, count = rng.split(":")
+            n = int(count)
             if n < 1:
                 raise ValueError
             if n > MAX_DESIGNS:
@@ -190,7 +190,7 @@ def _solve_one(args) -> dict:
     d = copy.deepcopy(base)
     for k, v in zip(keys, values, strict=True):
         _set(d, k, _number(v))
-    row = {k: _number(v) for k, v in zip(keys, values, strict=True)}
+    row: dict[str, int | float | str | bool | None] = {k: _number(v) for k, v in zip(keys, values, strict=True)}
     row.update({c: None for c in COLUMNS})
     try:
         design = design_from_dict(d)
@@ -331,13 +331,13 @@ def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None 
     """
     _check_workers(workers)
     keys = tuple(k for k, _ in vary)
-    seen = {}
-    for k in keys:
-        parts = key_parts(k)
+    seen: dict[tuple[str, ...], str] = {}  # key parts -> the key as given
+    for key in keys:
+        parts = key_parts(key)
         if parts in seen:
-            same = "" if seen[parts] == k else f" (as {seen[parts]!r})"
-            raise InputError("--vary", f"{k!r} is varied twice{same}; give each key once with all its values")
-        seen[parts] = k
+            same = "" if seen[parts] == key else f" (as {seen[parts]!r})"
+            raise InputError("--vary", f"{key!r} is varied twice{same}; give each key once with all its values")
+        seen[parts] = key
     count = math.prod(len(v) for _, v in vary)
     if count > MAX_DESIGNS:
         raise InputError("--vary", f"the sweep has {count:,} designs; at most {MAX_DESIGNS:,} are accepted")

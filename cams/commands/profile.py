@@ -110,7 +110,7 @@ def run(args) -> int:
         print(json.dumps(rep, indent=2), file=out)
     else:
         f = length_format(rep["R0"])  # enough digits for the cam's size
-        if prof is None:
+        if prof is None or bore is None:  # a bore whenever there is a profile
             print(f"{rep['name']}: no profile: R0 = {rep['R0']:{f}} mm", file=out)
         elif flat:
             print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "

@@ -421,7 +421,8 @@ def _stream(tmp: str, path: str | os.PathLike, field: str) -> None:
         raise InputError(field, f"cannot write {str(path)!r}: {e.strerror or e}") from None
 
 
-def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None], *, suffix: str = ".tmp") -> Path:
+def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], object], *,
+                 suffix: str = ".tmp") -> Path:
     """Call ``write(tmp)`` for a temporary file, then move it to ``path`` (or stream it there).
 
     A regular file (or a new name) is replaced by rename: whole or nothing. A
@@ -438,7 +439,8 @@ def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], Non
     field : str
         Name of the option for error messages (e.g. ``"--csv"``).
     write : callable
-        Writes the whole content to the temporary file name it is given.
+        Writes the whole content to the temporary file name it is given
+        (what it returns is not used).
     suffix : str, optional
         End of the temporary file's name, for writers that choose the format
         from it (e.g. ``".gif"``).
