@@ -36,6 +36,7 @@ import subprocess  # noqa: E402
 import sys  # noqa: E402
 import time  # noqa: E402
 from pathlib import Path  # noqa: E402
+from typing import Any  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -60,7 +61,7 @@ def whole_design(repeats: int) -> list[dict]:
     rows = []
     for path in EXAMPLES:
         design = load_design(path)
-        stages = {"solve": [], "profile": [], "checks": [], "total": []}
+        stages: dict[str, list[float]] = {"solve": [], "profile": [], "checks": [], "total": []}
         for k in range(repeats + 1):
             zone.clear_cache()
             cam = Cam(design)
@@ -101,7 +102,7 @@ def _wall(cmd: list[str], repeats: int) -> tuple[float, subprocess.CompletedProc
 def cli(repeats: int) -> dict:
     """``cams solve`` as a process, imports included."""
     example = str(ROOT / "examples" / "rocker_force.toml")
-    out = {"file": "examples/rocker_force.toml", "target_s": CLI_TARGET}
+    out: dict[str, Any] = {"file": "examples/rocker_force.toml", "target_s": CLI_TARGET}
     t, _ = _wall([sys.executable, "-c", "pass"], repeats)
     out["python_startup_s"] = t
     t, r = _wall([sys.executable, "-m", "cams.cli", "solve", example], repeats)
@@ -126,7 +127,7 @@ def imports() -> dict:
         return r.stdout.split()
 
     example = str(ROOT / "examples" / "rocker_force.toml")
-    out = {
+    out: dict[str, Any] = {
         "heavy": list(HEAVY),
         "after_import_cams": loaded("import cams"),
         "after_import_cams_cli": loaded("import cams.cli"),
@@ -185,7 +186,7 @@ def main(argv=None):
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
-    result = {"machine": machine()}
+    result: dict[str, Any] = {"machine": machine()}
     result["whole_design"] = whole_design(a.repeats)
     result["cli"] = cli(a.repeats)
     result["imports"] = imports()

@@ -46,6 +46,7 @@ import sys  # noqa: E402
 import time  # noqa: E402
 import tracemalloc  # noqa: E402
 from pathlib import Path  # noqa: E402
+from typing import Any  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -219,7 +220,7 @@ def bench_allpairs(ds, refs, steps, max_gb: float, log):
 
 def summarize(rows, max_gb: float):
     """The issue's figures: exact's time at 1e-9, the speed ratio against all-pairs at 10,000 steps, memory."""
-    out = {}
+    out: dict[str, Any] = {}
     ex = [r for r in rows if r["method"] == "exact"]
     by_tol = {tol: [r for r in ex if r["param"] == tol] for tol in EXACT_TOLS}
     worst = {tol: max(r["rel_error"] for r in rs) for tol, rs in by_tol.items()}
@@ -279,7 +280,7 @@ def plot(rows, path):
     ax = fig.add_subplot()
     colors = {"exact": "#c53030", "convex": "#2b6cb0", "exhaustive": "#2f855a"}
     for method, col in colors.items():
-        by_param = {}
+        by_param: dict[float, list[tuple[float, float]]] = {}  # parameter -> (seconds, relative error)
         for r in rows:
             if r["method"] == method and r["seconds"] and r["rel_error"] is not None:
                 by_param.setdefault(r["param"], []).append((r["seconds"], max(r["rel_error"], 1e-17)))
@@ -289,7 +290,8 @@ def plot(rows, path):
         order = sorted(by_param, reverse=(method == "exact"))
         xs = [statistics.median(t for t, _ in by_param[k]) for k in order]
         ys = [max(e for _, e in by_param[k]) for k in order]
-        ax.scatter(*zip(*pts, strict=True), s=6, color=col, alpha=0.3)
+        seconds, errors = zip(*pts, strict=True)
+        ax.scatter(seconds, errors, s=6, color=col, alpha=0.3)
         ax.plot(xs, ys, "o-", color=col, label=f"{method} (median time, worst error)")
     ax.axhline(TARGET_ERROR, color="0.5", lw=0.8, ls="--")
     ax.set_xscale("log")
