@@ -46,6 +46,7 @@ import sys  # noqa: E402
 import time  # noqa: E402
 import tracemalloc  # noqa: E402
 from pathlib import Path  # noqa: E402
+from typing import Any  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -87,7 +88,8 @@ def _rocker(law, closure, rise_dir="cw", rotation="ccw"):
         "cam": {"rotation": rotation},
         "motion": [{"phase": "rise", "law": law, "angle": 120}, {"phase": "dwell", "angle": 30},
                    {"phase": "return", "law": law, "angle": 110}, {"phase": "dwell"}],
-        "limits": {"pressure_angle": 45, "closure": closure, **({"return_pressure_angle": 50} if closure == "form" else {})},
+        "limits": {"pressure_angle": 45, "closure": closure,
+                   **({"return_pressure_angle": 50} if closure == "form" else {})},
     }
 
 
@@ -149,12 +151,13 @@ def bench_exact(ds, repeats: int, log):
         log(f"{d.name}: reference R0 = {ref:.13g} (independent check: admissible {ok}, "
             f"largest pressure angle - limit = {reached:.1e} rad)")
         for tol in EXACT_TOLS:
-            r, t = _median_time(lambda: nearest_exact(d, A0, tol=tol), repeats, cold=True)
+            r, t = _median_time(lambda d=d, A0=A0, tol=tol: nearest_exact(d, A0, tol=tol), repeats, cold=True)
             row = dict(design=d.name, method="exact", param=tol, seconds=t, rel_error=abs(r.objective - ref) / ref,
                        R0=r.objective, error_bound=r.error_bound, reference=ref, reference_checked=ok,
                        reference_limit_gap_rad=reached)
             if tol == 1e-12:
-                _, row["seconds_warm"] = _median_time(lambda: nearest_exact(d, A0, tol=tol), repeats, cold=False)
+                _, row["seconds_warm"] = _median_time(lambda d=d, A0=A0, tol=tol: nearest_exact(d, A0, tol=tol),
+                                                      repeats, cold=False)
             rows.append(row)
     return rows, refs
 
@@ -167,7 +170,8 @@ def bench_convex(ds, refs, steps, log):
         A0 = d.follower.position(0.0)
         ref = refs[d.name]
         for n in steps:
-            r, t = _median_time(lambda: nearest_convex(d, A0, samples=n), 1 if n >= 300 else 3, cold=False)
+            r, t = _median_time(lambda d=d, A0=A0, n=n: nearest_convex(d, A0, samples=n),
+                                1 if n >= 300 else 3, cold=False)
             rows.append(dict(design=d.name, method="convex", param=n, seconds=t,
                              rel_error=abs(r.objective - ref) / ref, R0=r.objective))
         log(f"{d.name}: convex done")
@@ -216,7 +220,7 @@ def bench_allpairs(ds, refs, steps, max_gb: float, log):
 
 def summarize(rows, max_gb: float):
     """The issue's figures: exact's time at 1e-9, the speed ratio against all-pairs at 10,000 steps, memory."""
-    out = {}
+    out: dict[str, Any] = {}
     ex = [r for r in rows if r["method"] == "exact"]
     by_tol = {tol: [r for r in ex if r["param"] == tol] for tol in EXACT_TOLS}
     worst = {tol: max(r["rel_error"] for r in rs) for tol, rs in by_tol.items()}
@@ -248,8 +252,9 @@ def summarize(rows, max_gb: float):
     if ratios:
         out["allpairs_10000_over_exact_speed_ratio_median"] = statistics.median(x["ratio"] for x in ratios)
     mem = {}
-    force = [r for r in rows if r["method"] == "exhaustive" and r["design"].startswith(("rocker force", "translating force"))]
-    form = [r for r in rows if r["method"] == "exhaustive" and not r["design"].startswith(("rocker force", "translating force"))]
+    one_phase = ("rocker force", "translating force")
+    force = [r for r in rows if r["method"] == "exhaustive" and r["design"].startswith(one_phase)]
+    form = [r for r in rows if r["method"] == "exhaustive" and not r["design"].startswith(one_phase)]
     for label, rs in (("one_phase", force), ("two_phases", form)):
         steps = sorted({r["param"] for r in rs})
         mem[label] = {str(n): {"measured_peak_gb": max((r["peak_gb"] for r in rs if r["param"] == n and r["peak_gb"]),
@@ -275,7 +280,7 @@ def plot(rows, path):
     ax = fig.add_subplot()
     colors = {"exact": "#c53030", "convex": "#2b6cb0", "exhaustive": "#2f855a"}
     for method, col in colors.items():
-        by_param = {}
+        by_param: dict[float, list[tuple[float, float]]] = {}  # parameter -> (seconds, relative error)
         for r in rows:
             if r["method"] == method and r["seconds"] and r["rel_error"] is not None:
                 by_param.setdefault(r["param"], []).append((r["seconds"], max(r["rel_error"], 1e-17)))
@@ -285,7 +290,8 @@ def plot(rows, path):
         order = sorted(by_param, reverse=(method == "exact"))
         xs = [statistics.median(t for t, _ in by_param[k]) for k in order]
         ys = [max(e for _, e in by_param[k]) for k in order]
-        ax.scatter(*zip(*pts), s=6, color=col, alpha=0.3)
+        seconds, errors = zip(*pts, strict=True)
+        ax.scatter(seconds, errors, s=6, color=col, alpha=0.3)
         ax.plot(xs, ys, "o-", color=col, label=f"{method} (median time, worst error)")
     ax.axhline(TARGET_ERROR, color="0.5", lw=0.8, ls="--")
     ax.set_xscale("log")

@@ -34,7 +34,7 @@ MOVED: dict[str, tuple[str, ...]] = {
     "cams.flatface": ("cams.profile.flat", "optimize.flat", "cams.checks.flat", "cams.kinematics.flat",
                       "cams.model.follower", "cams.model.design", "cams.checks.base"),
     "cams.camforces": ("cams.dynamics.forces", "cams.model.dynamics", "cams.io.designfile"),
-    "cams.files": ("cams.io.files",),
+    "cams.files": ("cams.io.files", "cams.io.document"),
     "cams.designfile": ("cams.io.designfile",),
     "cams.export": ("cams.io.export",),
     "cams.templates": ("cams.io.templates",),

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from functools import cached_property
 
-from cams.model.design import CamDesign
+from cams.model.design import CamDesign, FlatFaceDesign
 
 __all__ = ["Cam"]
 
@@ -37,7 +37,7 @@ class Cam:
         taken as the cam's, not solved again.
     """
 
-    def __init__(self, design: CamDesign, *, objective: str | None = None, method: str | None = None,
+    def __init__(self, design: CamDesign | FlatFaceDesign, *, objective: str | None = None, method: str | None = None,
                  tolerance: float | None = None, solution=None):
         self.design = design
         self.objective = objective or getattr(design, "objective", "R0")
@@ -58,10 +58,10 @@ class Cam:
     @property
     def flat(self) -> bool:
         """True for a flat-faced follower (sized by convexity)."""
-        return getattr(self.design, "face", "roller") == "flat"
+        return isinstance(self.design, FlatFaceDesign)
 
     @classmethod
-    def from_file(cls, path) -> "Cam":
+    def from_file(cls, path) -> Cam:
         """Load a design file (no computation)."""
         from cams.io.designfile import load_design
 
@@ -70,7 +70,7 @@ class Cam:
     @cached_property
     def solution(self):
         """The sized cam (:class:`cams.solve.SolveResult`), solved on first use."""
-        if self.flat:
+        if isinstance(self.design, FlatFaceDesign):  # as self.flat, narrowing the design's type
             from optimize.flat import size_flat_face
 
             return size_flat_face(self.design)
@@ -81,7 +81,7 @@ class Cam:
     @cached_property
     def tradeoff(self):
         """The R0-L trade-off (rocker only; None for a translating follower)."""
-        if self.flat or self.design.follower.kind != "rocker":
+        if isinstance(self.design, FlatFaceDesign) or self.design.follower.kind != "rocker":
             return None
         from optimize.tradeoff import tradeoff
 
@@ -97,7 +97,7 @@ class Cam:
     @cached_property
     def profile(self):
         """The sampled pitch curve and working profile(s) at the design's chord tolerance."""
-        if self.flat:
+        if isinstance(self.design, FlatFaceDesign):  # as self.flat, narrowing the design's type
             from cams.profile.flat import flat_face_profile
 
             opts = self.options
@@ -111,7 +111,7 @@ class Cam:
     @cached_property
     def checks(self):
         """Jamming, undercut, validity and bore checks of the finished profile."""
-        if self.flat:
+        if isinstance(self.design, FlatFaceDesign):  # as self.flat, narrowing the design's type
             from cams.checks.flat import check_flat_face
 
             return check_flat_face(self.design, self.solution, self.profile)
@@ -122,7 +122,7 @@ class Cam:
     @cached_property
     def _forces(self):
         """``(DesignForces or None, note or None)`` of :func:`cams.dynamics.forces.design_forces`, computed once."""
-        if self.flat:
+        if isinstance(self.design, FlatFaceDesign):  # as self.flat, narrowing the design's type
             return None, None
         from cams.dynamics.forces import design_forces
 

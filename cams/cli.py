@@ -31,7 +31,7 @@ def _interrupted_while_loading(signum, frame) -> None:  # pragma: no cover - run
 class _Parser(argparse.ArgumentParser):
     """argparse with usage errors as one line and exit code 2."""
 
-    def error(self, message):  # noqa: D102
+    def error(self, message):
         from cams.commands.common import EXIT_BAD_INPUT
 
         self.exit(EXIT_BAD_INPUT, f"{self.prog}: error: {message}\n")

@@ -87,8 +87,8 @@ def parse_vary(spec: str) -> tuple[str, np.ndarray]:
     key = key.strip()
     try:
         if ":" in rng:
-            a, b, n = rng.split(":")
-            n = int(n)
+            a, b, count = rng.split(":")
+            n = int(count)
             if n < 1:
                 raise ValueError
             if n > MAX_DESIGNS:
@@ -188,9 +188,9 @@ def _solve_one(args) -> dict:
     from cams.io.designfile import design_from_dict
 
     d = copy.deepcopy(base)
-    for k, v in zip(keys, values):
+    for k, v in zip(keys, values, strict=True):
         _set(d, k, _number(v))
-    row = {k: _number(v) for k, v in zip(keys, values)}
+    row: dict[str, int | float | str | bool | None] = {k: _number(v) for k, v in zip(keys, values, strict=True)}
     row.update({c: None for c in COLUMNS})
     try:
         design = design_from_dict(d)
@@ -274,8 +274,9 @@ def _check_base(base: dict, keys: tuple[str, ...], combos: list) -> None:
 
     def probe(values):
         d = copy.deepcopy(base)
-        for k, v in zip(keys, values or ()):
-            _set(d, k, _number(v))
+        if values is not None:  # None: the base design alone
+            for k, v in zip(keys, values, strict=True):
+                _set(d, k, _number(v))
         try:
             design_from_dict(d)
         except CamsError as e:
@@ -330,13 +331,13 @@ def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None 
     """
     _check_workers(workers)
     keys = tuple(k for k, _ in vary)
-    seen = {}
-    for k in keys:
-        parts = key_parts(k)
+    seen: dict[tuple[str, ...], str] = {}  # key parts -> the key as given
+    for key in keys:
+        parts = key_parts(key)
         if parts in seen:
-            same = "" if seen[parts] == k else f" (as {seen[parts]!r})"
-            raise InputError("--vary", f"{k!r} is varied twice{same}; give each key once with all its values")
-        seen[parts] = k
+            same = "" if seen[parts] == key else f" (as {seen[parts]!r})"
+            raise InputError("--vary", f"{key!r} is varied twice{same}; give each key once with all its values")
+        seen[parts] = key
     count = math.prod(len(v) for _, v in vary)
     if count > MAX_DESIGNS:
         raise InputError("--vary", f"the sweep has {count:,} designs; at most {MAX_DESIGNS:,} are accepted")

@@ -20,7 +20,7 @@ def run(args) -> int:
     if is_flat(design):
         refuse_method(args.method)
     cam = Cam(design, method=None if is_flat(design) else args.method, tolerance=args.tolerance)
-    cam.options  # bad options fail before solving
+    _ = cam.options  # bad options fail before solving
     a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
     report = cam.computed("checks")  # None: a knife edge in a groove, or no profile at the tolerance
     rep = {"name": design.name, "passed": False, "checks": []} if report is None else report.to_dict()

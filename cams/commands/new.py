@@ -24,8 +24,8 @@ def run(args) -> int:
     )
 
     path = check_output_path(args.out, "--out")
-    kind, target = output_kind(path)
-    if kind == "file" and target.exists() and not args.force:  # a device, a FIFO or - is written to, not replaced
+    out = output_kind(path)
+    if out[0] == "file" and out[1].exists() and not args.force:  # a device, a FIFO or - is written to, not replaced
         from laws.errors import InputError
 
         raise InputError("--out", f"{str(path)!r} exists; use --force to overwrite")

@@ -106,7 +106,7 @@ def run(args) -> int:
         elif args.animate:
             from cams.present.plots import animate_profile
 
-            title = a.title()
+            title = "" if a is None else a.title()  # --animate always assesses
             written.append(atomic_write(out / f"{_slug(cam.design.name)}_turn.gif", "--out",
                                         lambda tmp: animate_profile(cam, tmp, title=title), suffix=".gif"))
     for p in written:

@@ -110,7 +110,7 @@ def run(args) -> int:
         print(json.dumps(rep, indent=2), file=out)
     else:
         f = length_format(rep["R0"])  # enough digits for the cam's size
-        if prof is None:
+        if prof is None or bore is None:  # a bore whenever there is a profile
             print(f"{rep['name']}: no profile: R0 = {rep['R0']:{f}} mm", file=out)
         elif flat:
             print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
@@ -136,18 +136,19 @@ def register(sub) -> None:
         help="solve, then export the cam profile as CSV, DXF or SVG",
         description="Solve a design file and write its profile in the cam frame (mm): pitch curve, working "
                     "profile (and outer groove wall), sampled within a chord tolerance. A flat-faced follower's cam "
-                    "has no pitch curve: CSV columns phi_deg,work_x,work_y. The files of a cam that fails a check (not verified, "
-                    "or not buildable: no working profile, undercut, an invalid profile, the bore, [dynamics]) are "
-                    "written only with --allow-failed. Exit code 0: usable, 1: a check fails, 2: bad input.",
+                    "has no pitch curve: CSV columns phi_deg,work_x,work_y. The files of a cam that fails a check "
+                    "(not verified, or not buildable: no working profile, undercut, an invalid profile, the bore, "
+                    "[dynamics]) are written only with --allow-failed. Exit code 0: usable, 1: a check fails, "
+                    "2: bad input.",
         epilog="example: cams profile examples/rocker_force.toml --csv cam.csv --dxf cam.dxf --svg cam.svg",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--csv", metavar="OUT", help="write phi_deg,pitch_x,pitch_y,work_x,work_y[,outer_x,outer_y] "
                    "(flat face: phi_deg,work_x,work_y)")
-    q.add_argument("--dxf", metavar="OUT", help="write a DXF drawing: layers PROFILE (working profile), OUTER (a "
-                   "groove's outer wall), PITCH (roller-centre path), BASE (circle of radius R0, the pitch curve's base "
-                   "circle), BORE")
+    q.add_argument("--dxf", metavar="OUT", help="write a DXF drawing: layers PROFILE (working profile), OUTER "
+                   "(a groove's outer wall), PITCH (roller-centre path), BASE (circle of radius R0, the pitch curve's "
+                   "base circle), BORE")
     q.add_argument("--svg", metavar="OUT", help="write an SVG drawing to scale")
     q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"),

@@ -28,10 +28,11 @@ def _run_flat(args, cam) -> int:
 def run(args) -> int:
     from cams.cam import Cam
     from cams.io.designfile import load_design
+    from cams.model.design import FlatFaceDesign
 
     design = load_design(args.file)
     cam = Cam(design, method=None if is_flat(design) else args.method)
-    if is_flat(design):
+    if isinstance(design, FlatFaceDesign):  # is_flat, narrowing the design's type for what follows
         return _run_flat(args, cam)
     result = cam.solution
     rep = result.to_dict()

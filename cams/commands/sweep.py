@@ -23,7 +23,8 @@ def run(args) -> int:
 
 
 def _run(args) -> int:
-    from cams.io.files import atomic_write, check_output_paths, read_toml
+    from cams.io.document import read_toml
+    from cams.io.files import atomic_write, check_output_paths
     from cams.sweep import csv_header, csv_row, parse_vary, sweep
 
     if args.jobs is not None and args.jobs < 1:

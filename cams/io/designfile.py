@@ -51,9 +51,9 @@ from pathlib import Path
 import numpy as np
 
 from cams.dynamics.forces import DYNAMICS_KEYS, LENGTH_UNITS
-from cams.io.files import check_document, check_keys, read_toml, toml_integer
-from cams.io.files import toml_number as _num
-from cams.io.files import toml_table as _table
+from cams.io.document import check_document, check_keys, read_toml, toml_integer
+from cams.io.document import toml_number as _num
+from cams.io.document import toml_table as _table
 from cams.model.design import MAX_SAMPLES, CamDesign, FlatFaceDesign, Limits, check_lift
 from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, journal_error
 from cams.model.follower import (
@@ -63,6 +63,7 @@ from cams.model.follower import (
     Translating,
     sense_of,
 )
+from laws.base import Law
 from laws.errors import InputError, check_number, check_option, show_value
 from laws.program import Phase, Program
 from laws.registry import get_law
@@ -148,9 +149,9 @@ def _check_length_range(d: dict) -> None:
             continue
         for k in keys:
             v = t.get(k)
-            number = isinstance(v, (int, float)) and not isinstance(v, bool) \
-                and not (isinstance(v, float) and math.isnan(v))
-            if number and v != 0 and not lo <= abs(v) <= hi:  # ints of any size; inf is outside too
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or (isinstance(v, float) and math.isnan(v)):
+                continue  # not a number: the loader says so
+            if v != 0 and not lo <= abs(v) <= hi:  # ints of any size; inf is outside too
                 raise InputError(f"{table}.{k}", f"{show_value(v)} mm is outside the lengths a design may use "
                                  f"({lo:g} to {hi:g} mm in size)")
 
@@ -202,6 +203,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     _refuse(fo, "follower", _ONLY_FLAT)
     _check_keys(fo, "follower", "follower")
     roller = _num(fo, "roller_radius", "follower.roller_radius", required=False, default=0.0)
+    follower: Rocker | Translating
     if kind == "rocker":
         for k in ("stroke", "offset"):
             if k in fo:
@@ -214,10 +216,12 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
     else:
         for k in ("arm", "swing", "rise_direction"):
             if k in fo:
-                raise InputError(f"follower.{k}", "applies to rocker followers; a translating follower takes stroke and offset")
+                raise InputError(f"follower.{k}",
+                                 "applies to rocker followers; a translating follower takes stroke and offset")
         stroke = _num(fo, "stroke", "follower.stroke")
         check_lift(stroke, False)  # the model's rule, before the motion's heights are read against the stroke
-        follower = Translating(roller, offset=_num(fo, "offset", "follower.offset", required=False), stroke_scale=stroke)
+        offset = _num(fo, "offset", "follower.offset", required=False)
+        follower = Translating(roller, offset=offset, stroke_scale=stroke)
         lift = stroke
 
     cam = _table(d, "cam")
@@ -272,7 +276,8 @@ def _chosen(cam: dict) -> tuple[float | None, tuple[float, float] | None]:
         return base_radius, None
     if not isinstance(centre, list) or len(centre) != 2:
         raise InputError("cam.centre", f"must be [x, y] in mm (the follower's fixed frame), got {centre!r}")
-    xy = tuple(_num({"v": v}, "v", f"cam.centre[{i}]") for i, v in enumerate(centre))
+    x, y = (_num({"v": v}, "v", f"cam.centre[{i}]") for i, v in enumerate(centre))
+    xy = (x, y)
     hi = LENGTH_RANGE[1]
     if not max(abs(v) for v in xy) <= hi:
         raise InputError("cam.centre", f"{list(xy)!r} mm is outside the lengths a design may use (up to {hi:g} mm)")
@@ -294,7 +299,7 @@ def _program(d: dict, kind: str, lift: float) -> Program:
                          + ("" if motion is None else f", got {show_value(motion)}"))
     # the lift as the file gives it, for messages: a rocker's swing in degrees, a stroke in the length unit
     shown_lift, unit, lift_name = (np.degrees(lift), "degrees", "swing") if kind == "rocker" else (lift, "mm", "stroke")
-    specs = []
+    specs: list[tuple[str, float | None, Law | None, float | None]] = []  # phase, degrees, law, height
     missing = []
     for i, m in enumerate(motion):
         f = f"motion[{i}]"
@@ -312,7 +317,7 @@ def _program(d: dict, kind: str, lift: float) -> Program:
         elif ang < MIN_PHASE_ANGLE:
             raise InputError(f"{f}.angle", f"must be at least {MIN_PHASE_ANGLE:g} degrees (the angles' sum is "
                              f"checked to that), got {ang:g}")
-        law = None
+        law: Law | None = None
         if ph != "dwell":
             if "law" not in m:
                 raise InputError(f"{f}.law", f"a {ph} needs a law")
@@ -324,15 +329,14 @@ def _program(d: dict, kind: str, lift: float) -> Program:
             raise InputError(f"{f}.height", "a dwell takes no height")
         if h is not None and not 0 < h <= shown_lift * (1 + 1e-12):
             raise InputError(f"{f}.height", f"must be in (0, {shown_lift:g}] {unit} (the {lift_name}), got {h:g}")
-        specs.append([ph, ang, law, h])
+        specs.append((ph, ang, law, h))
     if len(missing) > 1:
         raise InputError("motion", "only one dwell may omit its angle")
     total = sum(s[1] for s in specs if s[1] is not None)
+    rest = 360.0 - total  # the angle of the dwell that omits it
     if missing:
-        rest = 360.0 - total
         if rest < MIN_PHASE_ANGLE:
             raise InputError(f"motion[{missing[0]}].angle", f"the other phases take {total:g} degrees, nothing is left")
-        specs[missing[0]][1] = rest
     elif abs(total - 360.0) > MIN_PHASE_ANGLE:
         raise InputError("motion", f"phase angles sum to {total:.10g} degrees, must sum to 360 (or leave one dwell's "
                          "angle out: it takes the rest)")
@@ -350,13 +354,12 @@ def _program(d: dict, kind: str, lift: float) -> Program:
                          "and returns must balance (give heights, or add a return)")
     if abs(top - shown_lift) > 1e-9 * shown_lift:
         raise InputError("motion", f"the follower reaches only {top:.6g} {unit}, the {lift_name} is {shown_lift:g}")
-    for spec in specs:
-        if spec[3] is not None and kind == "rocker":
-            spec[3] = float(np.radians(spec[3]))
-    # exact 2 pi: scale away rounding of the degree inputs
-    angles = np.radians([s[1] for s in specs])
+    # a rocker's heights in radians; exact 2 pi: scale away rounding of the degree inputs
+    heights = [float(np.radians(h)) if h is not None and kind == "rocker" else h for _, _, _, h in specs]
+    angles = np.radians([rest if a is None else a for _, a, _, _ in specs])
     angles *= 2 * np.pi / angles.sum()
-    return Program(tuple(Phase(s[0], float(a), s[2], s[3]) for s, a in zip(specs, angles)), lift)
+    return Program(tuple(Phase(ph, float(a), law, h)
+                         for (ph, _, law, _), a, h in zip(specs, angles, heights, strict=True)), lift)
 
 
 def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
@@ -368,13 +371,13 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
                 raise InputError(f"follower.{k}", "applies to translating followers; a flat-faced rocker takes "
                                  "swing, centre_distance and face_offset")
         check_keys(fo, _KEYS["flat_rocker"], "follower")
+        follower: FlatRocker | FlatTranslating
         swing = _num(fo, "swing", "follower.swing")
         if "centre_distance" not in fo:
             raise InputError("follower.centre_distance", "is required for a flat-faced rocker: the distance L from "
                              "the pivot to the cam centre (mm, > 0)")
-        L = _num(fo, "centre_distance", "follower.centre_distance")
-        if L <= 0:
-            raise InputError("follower.centre_distance", f"must be > 0, got {L!r}")
+        L = check_number("follower.centre_distance", _num(fo, "centre_distance", "follower.centre_distance"),
+                         lo=0.0, strict=True)
         follower = FlatRocker(L, _num(fo, "face_offset", "follower.face_offset", default=0.0),
                               sense=sense_of("follower.rise_direction", fo.get("rise_direction", "cw")))
         lift = np.radians(swing)
@@ -475,9 +478,7 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
     """
     if not isinstance(table, dict):
         raise InputError("dynamics", "must be a table")
-    unknown = set(table) - set(DYNAMICS_KEYS)
-    if unknown:
-        raise InputError("dynamics", f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(DYNAMICS_KEYS)}")
+    check_keys(table, DYNAMICS_KEYS, "dynamics")  # listed in the table's documented order
     if units not in LENGTH_UNITS:
         raise InputError("units", f"{show_value(units)} is not supported: the files are in mm (the [dynamics] table's "
                          "journal_radius too; its other values are SI)")

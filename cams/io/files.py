@@ -1,8 +1,4 @@
-"""Reading TOML input files; writing files whole or not at all, and checking output paths first.
-
-Design and machine files are read by :func:`read_toml` and their tables
-checked with :func:`toml_table`, :func:`toml_number` and :func:`check_keys`,
-so that both name the offending field the same way.
+"""Writing files whole or not at all, and checking output paths first.
 
 Every file the project writes goes through :func:`atomic_write`: the content is
 written to a temporary file in the same folder and then renamed over the
@@ -10,7 +6,8 @@ target, so a failure leaves no partial file. A command writing several files
 does so inside :func:`all_or_nothing`: every file is rendered to its temporary
 first and they are all renamed into place only when every one succeeded, so a
 failure leaves none of them. :func:`check_output_paths` checks all the output
-options of a command at once, before any computation.
+options of a command at once, before any computation. (Reading the input
+files is :mod:`cams.io.document`.)
 
 What an output path names decides how it is written (:func:`output_kind`):
 
@@ -30,255 +27,26 @@ from __future__ import annotations
 
 import contextlib
 import contextvars
-import math
 import os
 import re
 import stat
 import sys
 import tempfile
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
-from typing import Callable, Iterable, Iterator
+from typing import Literal, TypeAlias
 
-from laws.errors import InputError, show_value
+from laws.errors import InputError
 
-__all__ = ["atomic_write", "all_or_nothing", "check_output_path", "check_output_paths", "ensure_folder", "read_toml",
-           "check_document", "toml_table", "toml_number", "toml_integer", "check_keys", "MAX_NUMBER", "MAX_DEPTH",
+__all__ = ["atomic_write", "all_or_nothing", "check_output_path", "check_output_paths", "ensure_folder",
            "output_kind", "writes_stdout", "STDOUT"]
 
 #: The output name for standard output.
 STDOUT = "-"
 
-#: The largest size of a number in a design or machine file (integers included): far beyond any quantity a
-#: cam or a machine has (lengths are further limited to 1e9 mm), and small enough that sums and products of a
-#: few such numbers stay finite and integers stay exact in floating point.
-MAX_NUMBER = 1e15
-#: The deepest nesting of tables and arrays a file may have (the files use 3 at most: a machine file's
-#: ``forces.friction.A``).
-MAX_DEPTH = 16
-
-
-def read_toml(path: str | os.PathLike) -> dict:
-    """Parse a TOML file.
-
-    Its numbers and nesting are checked by the loaders that build on it
-    (:func:`check_document`), so that the API's dicts get the same checks.
-
-    Parameters
-    ----------
-    path : path-like
-        The file, UTF-8 text; a leading byte-order mark is accepted.
-
-    Returns
-    -------
-    dict
-        The parsed document (tables as dicts, arrays of tables as lists).
-
-    Raises
-    ------
-    InputError
-        Field ``FILE``: the file cannot be read, is not UTF-8, is not valid
-        TOML or nests too deeply for the parser.
-    """
-    import tomllib
-
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8-sig")  # -sig: a byte-order mark some editors write is not content
-    except OSError as e:
-        raise InputError("FILE", f"cannot read {str(p)!r}: {e.strerror or e}") from None
-    except UnicodeDecodeError:
-        raise InputError("FILE", f"{str(p)!r} is not UTF-8 text") from None
-    try:
-        d = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
-        raise InputError("FILE", f"{p}: not valid TOML: {e}") from None
-    except RecursionError:
-        raise InputError("FILE", f"{p}: arrays or tables nested too deeply (at most {MAX_DEPTH} levels)") from None
-    return d
-
-
-def check_document(d: dict) -> None:
-    """Refuse an empty document, and what no key of a design or machine file allows, wherever it is.
-
-    A non-finite float (TOML's ``nan``, ``inf``), a number larger than
-    :data:`MAX_NUMBER` in size (a 100-bit integer, ``1e300``) and nesting
-    deeper than :data:`MAX_DEPTH` levels. The walk is iterative, so a deep
-    document cannot exhaust Python's stack. Types and ranges of each key are
-    checked by the loaders (:func:`toml_number`).
-
-    Parameters
-    ----------
-    d : dict
-        A parsed document (or a dict built like one, for the API).
-
-    Raises
-    ------
-    InputError
-        Naming the value's dotted path, e.g. ``motion[2].angle``; ``FILE`` for
-        an empty document or too deep a nesting.
-    """
-    if not d:
-        raise InputError("FILE", "the file is empty (no table, no key); see examples/ for complete files")
-    stack: list[tuple[str, object, int]] = [("", d, 0)]
-    while stack:
-        path, v, depth = stack.pop()
-        if isinstance(v, dict):
-            items = [(f"{path}.{k}" if path else str(k), x) for k, x in v.items()]
-        elif isinstance(v, (list, tuple)):
-            items = [(f"{path}[{i}]", x) for i, x in enumerate(v)]
-        else:
-            _finite(path, v)
-            continue
-        if depth >= MAX_DEPTH:
-            raise InputError(path or "FILE", f"arrays or tables nested too deeply (at most {MAX_DEPTH} levels)")
-        stack += [(q, x, depth + 1) for q, x in reversed(items)]
-
-
-def _finite(field: str, v: object) -> None:
-    """Refuse ``v`` if it is a number that is not finite or larger than :data:`MAX_NUMBER` in size."""
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        return
-    if isinstance(v, float) and not math.isfinite(v):
-        raise InputError(field, f"must be a finite number, got {v!r}")
-    if abs(v) > MAX_NUMBER:
-        raise InputError(field, f"{show_value(v)} is too large: numbers in a file are at most {MAX_NUMBER:g} in size")
-
-
-def toml_table(d: dict, key: str) -> dict:
-    """The table ``d[key]`` of a parsed TOML document, ``{}`` when absent.
-
-    Parameters
-    ----------
-    d : dict
-        A parsed document or table.
-    key : str
-        The table's name, also the field named in errors.
-
-    Returns
-    -------
-    dict
-        The table (not a copy).
-
-    Raises
-    ------
-    InputError
-        ``d[key]`` is not a table.
-    """
-    t = d.get(key, {})
-    if not isinstance(t, dict):
-        raise InputError(key, f"must be a table ([{key}]), got {_kind(t)}")
-    return t
-
-
-def _kind(v: object) -> str:
-    """What a TOML value is, for messages: ``an array``, ``the string 'x'``, ``the number 3``."""
-    if isinstance(v, dict):
-        return "a table"
-    if isinstance(v, list):
-        return "an array"
-    if isinstance(v, bool):
-        return f"the boolean {str(v).lower()}"
-    if isinstance(v, str):
-        return f"the string {v!r}"
-    if isinstance(v, (int, float)):
-        return f"the number {v!r}"
-    return f"a {type(v).__name__} value"
-
-
-def toml_number(table: dict, key: str, field: str, *, default=None, required: bool = True) -> float | None:
-    """The number ``table[key]`` as a float, in the file's own unit (no conversion).
-
-    Parameters
-    ----------
-    table : dict
-        A parsed TOML table.
-    key : str
-        The entry.
-    field : str
-        Name of the entry in error messages, e.g. ``"follower.arm"``.
-    default : float or None, optional
-        Returned when ``key`` is absent; a default other than None makes the
-        entry optional.
-    required : bool, optional
-        With ``default`` None, whether an absent entry is an error (else None
-        is returned).
-
-    Returns
-    -------
-    float or None
-        The value, ``default`` when absent.
-
-    Raises
-    ------
-    InputError
-        A required entry is missing, or the value is not a finite number of
-        size at most :data:`MAX_NUMBER` (booleans, strings, arrays and tables
-        are refused).
-    """
-    if key not in table:
-        if required and default is None:
-            raise InputError(field, "is required")
-        return default
-    v = table[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise InputError(field, f"must be a number, got {_kind(v)}")
-    _finite(field, v)
-    return float(v)
-
-
-def toml_integer(table: dict, key: str, field: str, *, default: int, lo: int, hi: int) -> int:
-    """The whole number ``table[key]`` within ``[lo, hi]``, ``default`` when absent.
-
-    Parameters
-    ----------
-    table : dict
-        A parsed TOML table.
-    key : str
-        The entry.
-    field : str
-        Name of the entry in error messages, e.g. ``"solve.samples"``.
-    default : int
-        Returned when ``key`` is absent.
-    lo, hi : int
-        The allowed range, both included.
-
-    Returns
-    -------
-    int
-
-    Raises
-    ------
-    InputError
-        The value is not an integer (``2.0`` and ``true`` are refused) or
-        lies outside ``[lo, hi]``; the message gives the range.
-    """
-    v = table.get(key, default)
-    if isinstance(v, bool) or not isinstance(v, int) or not lo <= v <= hi:
-        shown = show_value(v) if isinstance(v, int) and not isinstance(v, bool) else _kind(v)
-        raise InputError(field, f"must be an integer from {lo} to {hi}, got {shown}")
-    return v
-
-
-def check_keys(table: dict, allowed: set, field: str) -> None:
-    """Refuse entries of ``table`` outside ``allowed``.
-
-    Parameters
-    ----------
-    table : dict
-        A parsed TOML table.
-    allowed : set of str
-        Its allowed keys.
-    field : str
-        Name of the table in the error message.
-
-    Raises
-    ------
-    InputError
-        Unknown keys; the message lists them and the allowed ones, sorted.
-    """
-    unknown = set(table) - allowed
-    if unknown:
-        raise InputError(field, f"unknown key(s) {', '.join(sorted(unknown))}; allowed: {', '.join(sorted(allowed))}")
+#: What :func:`output_kind` returns: how an output name is written and where (the kind says which type it is).
+OutputKind: TypeAlias = (tuple[Literal["descriptor"], int] | tuple[Literal["file", "folder", "stream"], Path]
+                         | tuple[Literal["refused"], str])
 
 
 def _folder(p: Path) -> Path:
@@ -348,7 +116,7 @@ def _descriptor(path: str) -> int | None:
     return int(m.group(1)) if m else None
 
 
-def output_kind(path: str | os.PathLike) -> tuple[str, Path | int]:
+def output_kind(path: str | os.PathLike) -> OutputKind:
     """How an output name is written, and where.
 
     Parameters
@@ -390,12 +158,12 @@ def writes_stdout(path: str | os.PathLike | None) -> bool:
     """Whether output ``path`` goes to standard output (``-``, ``/dev/stdout`` or what descriptor 1 is)."""
     if path is None:
         return False
-    kind, where = output_kind(path)
-    if kind == "descriptor":
-        return where == 1
-    if kind == "stream":
+    out = output_kind(path)
+    if out[0] == "descriptor":
+        return out[1] == 1
+    if out[0] == "stream":
         try:
-            return os.path.samestat(os.stat(where), os.fstat(1))
+            return os.path.samestat(os.stat(out[1]), os.fstat(1))
         except OSError:
             return False
     return False
@@ -427,25 +195,25 @@ def check_output_path(path: str | os.PathLike, field: str) -> Path:
         raise InputError(field, "must name a file, got an empty path")
     p = Path(path)
     try:
-        kind, where = output_kind(path)
+        out = output_kind(path)
     except OSError as e:  # a name too long, a loop of links ...
         raise InputError(field, f"cannot write {str(p)!r}: {e.strerror or e}") from None
-    if kind == "descriptor":
+    if out[0] == "descriptor":
         try:
-            os.fstat(where)
+            os.fstat(out[1])
         except OSError:
-            raise InputError(field, f"cannot write {str(p)!r}: descriptor {where} is not open") from None
+            raise InputError(field, f"cannot write {str(p)!r}: descriptor {out[1]} is not open") from None
         return p
-    if kind == "folder":
+    if out[0] == "folder":
         raise InputError(field, f"cannot write {str(p)!r}: it is a folder")
-    if kind == "refused":
-        raise InputError(field, f"cannot write {str(p)!r}: it is {where}; give a regular file, a character device, "
+    if out[0] == "refused":
+        raise InputError(field, f"cannot write {str(p)!r}: it is {out[1]}; give a regular file, a character device, "
                          f"a FIFO or - (standard output)")
-    if kind == "stream":
+    if out[0] == "stream":
         if not os.access(p, os.W_OK):
             raise InputError(field, f"cannot write {str(p)!r}: permission denied")
         return p
-    folder = _folder(where)
+    folder = _folder(out[1])
     if not folder.is_dir():
         raise InputError(field, f"cannot write {str(p)!r}: folder {str(folder)!r} does not exist")
     if not os.access(folder, os.W_OK):
@@ -632,14 +400,16 @@ def _stream(tmp: str, path: str | os.PathLike, field: str) -> None:
         Naming ``field``: the target cannot be opened, did not take every byte
         (no space left, a closed pipe) or failed when closed.
     """
-    kind, where = output_kind(path)
+    out = output_kind(path)
     try:
-        if kind == "descriptor":
-            if where in (1, 2):  # what Python buffered for that stream goes first
-                (sys.stdout if where == 1 else sys.stderr).flush()
-            _write_all(where, tmp)
+        if out[0] == "descriptor":
+            if out[1] in (1, 2):  # what Python buffered for that stream goes first
+                (sys.stdout if out[1] == 1 else sys.stderr).flush()
+            _write_all(out[1], tmp)
             return
-        fd = os.open(where, os.O_WRONLY | getattr(os, "O_NOCTTY", 0))  # never created nor truncated
+        if out[0] == "refused":  # became a block device or a socket since it was checked
+            raise InputError(field, f"cannot write {str(path)!r}: it is {out[1]}")
+        fd = os.open(out[1], os.O_WRONLY | getattr(os, "O_NOCTTY", 0))  # never created nor truncated
         try:
             if stat.S_ISREG(os.fstat(fd).st_mode):  # replaced by a file since it was checked: not overwritten
                 raise InputError(field, f"cannot write {str(path)!r}: it changed from a device or FIFO to a file "
@@ -651,7 +421,8 @@ def _stream(tmp: str, path: str | os.PathLike, field: str) -> None:
         raise InputError(field, f"cannot write {str(path)!r}: {e.strerror or e}") from None
 
 
-def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], None], *, suffix: str = ".tmp") -> Path:
+def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], object], *,
+                 suffix: str = ".tmp") -> Path:
     """Call ``write(tmp)`` for a temporary file, then move it to ``path`` (or stream it there).
 
     A regular file (or a new name) is replaced by rename: whole or nothing. A
@@ -668,7 +439,8 @@ def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], Non
     field : str
         Name of the option for error messages (e.g. ``"--csv"``).
     write : callable
-        Writes the whole content to the temporary file name it is given.
+        Writes the whole content to the temporary file name it is given
+        (what it returns is not used).
     suffix : str, optional
         End of the temporary file's name, for writers that choose the format
         from it (e.g. ``".gif"``).
@@ -685,9 +457,10 @@ def atomic_write(path: str | os.PathLike, field: str, write: Callable[[str], Non
         pipe did not take the whole content; no file is left behind.
     """
     p = check_output_path(path, field)
-    kind, where = output_kind(path)
-    target = where if kind == "file" else None
+    out = output_kind(path)
+    target = out[1] if out[0] == "file" else None
     folder = _folder(target) if target is not None else None  # a stream's temporary goes to the system's folder
+    tmp: str | None  # None once a transaction owns the temporary
     try:
         fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{p.name or 'out'}.", suffix=suffix)
     except OSError as e:

@@ -42,7 +42,7 @@ from pathlib import Path
 import numpy as np
 
 from cams.io.designfile import design_from_dict
-from cams.io.files import check_document, check_keys, read_toml, toml_number, toml_table
+from cams.io.document import check_document, check_keys, read_toml, toml_number, toml_table
 from cams.machine.kinetostatics.loads import (
     WINDOWS,
     ConstantFriction,
@@ -310,7 +310,7 @@ _LOAD_KEYS = {
 
 
 def _keys(table: object, allowed: Iterable[str], field_: str) -> dict:
-    """``table`` if it is a table with no key outside ``allowed`` (:func:`cams.io.files.check_keys`)."""
+    """``table`` if it is a table with no key outside ``allowed`` (:func:`cams.io.document.check_keys`)."""
     if not isinstance(table, dict):
         raise InputError(field_, "must be a table")
     check_keys(table, set(allowed), field_)

@@ -17,7 +17,7 @@ import pytest
 
 from cams.cli import main
 from cams.io.designfile import MAX_SAMPLES, design_from_dict, load_design
-from cams.io.files import MAX_NUMBER
+from cams.io.document import MAX_NUMBER
 from cams.machine.machinefile import load_machine
 from laws.errors import InputError
 

@@ -294,7 +294,7 @@ def test_flat_rocker_swing_past_the_cam_centre_names_the_swing(tmp_path, capsys,
     """The face line would pass the cam centre: the error names follower.swing and the face offset that would fit
     (f + L cos(swing) > 0 with L = 120), not a key the file does not have."""
     text = ROCKER.read_text(encoding="utf-8")
-    lines = [("swing = %r" % swing) if ln.startswith("swing =") else ("face_offset = %r" % offset)
+    lines = [f"swing = {swing!r}" if ln.startswith("swing =") else f"face_offset = {offset!r}"
              if ln.startswith("face_offset =") else ln for ln in text.splitlines()]
     path = tmp_path / "r.toml"
     path.write_text("\n".join(lines) + "\n", encoding="utf-8")

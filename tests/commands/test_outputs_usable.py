@@ -300,7 +300,7 @@ def test_sweep_counts_a_not_certified_row_as_failing(capsys, tmp_path, monkeypat
     import dataclasses
 
     import cams.solve as solve_module
-    from cams.io.files import read_toml
+    from cams.io.document import read_toml
     from cams.sweep import sweep
 
     real = solve_module.solve

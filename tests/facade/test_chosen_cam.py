@@ -16,7 +16,7 @@ import pytest
 
 from cams.cli import main
 from cams.io.designfile import design_from_dict
-from cams.io.files import read_toml
+from cams.io.document import read_toml
 from cams.solve import solve
 from laws.errors import InputError
 from tests.conftest import EXAMPLES

@@ -60,3 +60,18 @@ assert check_flat_face is cams.checks.flat.check_flat_face and FlatRocker is cam
 """
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert r.returncode == 0, r.stderr
+
+
+def test_the_old_files_module_forwards_the_reading_and_the_writing_names():
+    """``cams.files`` was split: output in cams.io.files, reading and checking the document in cams.io.document."""
+    code = """
+import warnings
+warnings.simplefilter("ignore", DeprecationWarning)
+from cams.files import atomic_write, read_toml, check_keys, toml_number, MAX_NUMBER
+import cams.io.files, cams.io.document
+assert atomic_write is cams.io.files.atomic_write and read_toml is cams.io.document.read_toml
+assert check_keys is cams.io.document.check_keys and toml_number is cams.io.document.toml_number
+assert MAX_NUMBER == cams.io.document.MAX_NUMBER
+"""
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr

@@ -34,7 +34,7 @@ def program(lift: float, *phases: tuple) -> Program:
     angles = np.radians([p[1] for p in phases])
     angles *= 2 * np.pi / angles.sum()
     return Program(tuple(Phase(p[0], float(a), None if p[2] is None else get_law(p[2]))
-                         for p, a in zip(phases, angles)), lift)
+                         for p, a in zip(phases, angles, strict=True)), lift)
 
 
 def _cycle(rise: str, rise_deg: float, dwell_deg: float, ret: str, ret_deg: float) -> tuple:

@@ -11,7 +11,7 @@ import pytest
 
 from cams.cli import main
 from cams.io.designfile import design_from_dict, load_design
-from cams.io.files import read_toml
+from cams.io.document import read_toml
 from cams.solve import solve
 from tests.conftest import EXAMPLES
 
