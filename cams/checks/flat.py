@@ -49,7 +49,7 @@ class FlatCheckReport(ChecksMixin):
             "bore_radius": float(self.bore_radius),
             "R0": float(self.profile.R0),
             "points": len(self.profile),
-            "tolerance": float(self.profile.tolerance),
+            "tolerance": None if self.profile.tolerance is None else float(self.profile.tolerance),
         }
 
 

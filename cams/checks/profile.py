@@ -38,6 +38,7 @@ depend on the profile's sampling.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import partial
 
 import numpy as np
 
@@ -202,9 +203,10 @@ def _phase_maxima(design: CamDesign, centre: np.ndarray, grid: int, pressure=())
     out = []
     for i, p in enumerate(prog.phases):
         what = ("convex", "concave") + (("pressure",) if i in pressure else ())
-        best, at = maximize(lambda x: _phase_rates(design, centre, i, x, what), phase_positions(prog, i, grid),
-                            refine=p.kind != "dwell")
-        out.append({w: (float(b), float(prog.starts[i] + a * p.angle)) for w, b, a in zip(what, best, at)})
+        best, at = maximize(partial(_phase_rates, design, centre, i, what=what),
+                            phase_positions(prog, i, grid), refine=p.kind != "dwell")
+        out.append({w: (float(b), float(prog.starts[i] + a * p.angle))
+                    for w, b, a in zip(what, best, at, strict=True)})
     return out
 
 
@@ -339,7 +341,7 @@ def check_profile(
 
     # polygons
     checks.append(polygon_check("profile_polygon", prof.work, prof.phi))
-    if prof.groove:
+    if prof.outer is not None:  # a groove
         checks.append(polygon_check("outer_polygon", prof.outer, prof.phi))
 
     # bore: checked only against a bore the user gave ([cam] bore_radius); the default bore

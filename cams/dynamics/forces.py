@@ -73,6 +73,8 @@ time in s.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
+from typing import Any
 
 import numpy as np
 
@@ -129,7 +131,10 @@ def _grid(samples: int) -> np.ndarray:
 
 
 def _si(design: CamDesign, dyn: FollowerDynamics) -> float:
-    """SI units of the follower coordinate ``q`` per unit of the program's ``s``: 1 (rocker, rad) or m per length unit."""
+    """SI units of the follower coordinate ``q`` per unit of the program's ``s``.
+
+    1 for a rocker (rad), else metres per length unit.
+    """
     return 1.0 if isinstance(design.follower, Rocker) else dyn.length_unit
 
 
@@ -213,17 +218,19 @@ def rigid_impacts(design: CamDesign) -> tuple[RigidImpact, ...]:
     from laws.diagnostics import find_impacts
 
     rocker = isinstance(design.follower, Rocker)
-    return tuple(RigidImpact(float(i.phi), float(i.size), rocker) for i in find_impacts(design.program) if i.kind == "hard")
+    return tuple(RigidImpact(float(i.phi), float(i.size), rocker)
+                 for i in find_impacts(design.program) if i.kind == "hard")
 
 
-def impact_note(forces: "CamForces") -> str | None:
+def impact_note(forces: CamForces) -> str | None:
     """One line on the rigid impacts of a :class:`CamForces` for a report's notes; None without any."""
     if not forces.impacts:
         return None
     parts = []
     for i in forces.impacts:
         what = "contact force unbounded" if not i.separation else "the follower leaves the cam at any speed"
-        parts.append(f"{np.degrees(i.phi):.2f} deg ({i.velocity_jump(forces.omega, forces.length_unit):+.4g} {i.unit}: {what})")
+        jump = i.velocity_jump(forces.omega, forces.length_unit)
+        parts.append(f"{np.degrees(i.phi):.2f} deg ({jump:+.4g} {i.unit}: {what})")
     return ("rigid impacts (velocity jumps, infinite acceleration) at cam angle " + ", ".join(parts)
             + "; the forces and the jump speed are unbounded or lost there, the other figures are between the "
             "impacts; use a law without velocity jumps (e.g. cycloidal, modified trapezoid)")
@@ -370,7 +377,7 @@ class CamForces:
         finite = np.isfinite(self.contact)
         k = int(np.argmax(np.where(finite, self.contact, -np.inf)))
         kt = int(np.argmax(np.abs(self.torque)))
-        out = {
+        out: dict[str, Any] = {
             "rpm": self.rpm,
             "max_contact_force": float(self.contact[k]),
             "max_contact_at_deg": float(np.degrees(self.phi[k])),
@@ -556,12 +563,13 @@ def spring_for_contact(
     if dyn.max_spring_force is not None and top > dyn.max_spring_force * (1 + 1e-12):
         hint = ""
         if rate is not None:
-            free = spring_for_contact(design, FollowerDynamics(dyn.mass, dyn.load, None, dyn.friction, dyn.journal_radius, dyn.length_unit),
-                                      rpm=rpm, margin=margin, samples=samples)
+            unsprung = FollowerDynamics(dyn.mass, dyn.load, None, dyn.friction, dyn.journal_radius, dyn.length_unit)
+            free = spring_for_contact(design, unsprung, rpm=rpm, margin=margin, samples=samples)
             hint = f"; a free rate ({free.rate:.6g}) would need {free.preload + free.rate * qmax:.6g}"
         raise InputError(
             "dynamics.spring_rate" if rate is not None else "dynamics.max_spring_force",
-            f"a spring of rate {k:.6g} cannot keep contact at {omega_to_rpm(w):.6g} rpm with margin {m:g} at any preload "
+            f"a spring of rate {k:.6g} cannot keep contact at {omega_to_rpm(w):.6g} rpm with margin {m:g} "
+            "at any preload "
             f"within the spring's largest force {dyn.max_spring_force:.6g}: it needs {top:.6g}{hint}",
         )
     return Spring(rate=k, preload=F0)
@@ -630,7 +638,8 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
         raise InputError("dynamics.spring_rate", "the jump speed needs a spring")
     phi = _grid(samples)
     q = _kinematics(design, phi, dyn)[0]
-    hold = dyn.spring.force(q) + dyn.load
+    spring = dyn.spring
+    hold = spring.force(q) + dyn.load
     if np.any(hold < 0):
         k = int(np.argmin(hold))
         raise InputError(
@@ -645,10 +654,10 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
         """``g = -m q'' / (F0 + k q + P)`` in phase ``i`` and its derivative by the cam angle."""
         mo = prog.evaluate_phase(i, u)
         q, dq, d2q, d3q = mo.s * si, mo.ds * si, mo.d2s * si, mo.d3s * si
-        h = dyn.spring.force(q) + dyn.load
+        h = spring.force(q) + dyn.load
         with np.errstate(divide="ignore", invalid="ignore"):
             g = -dyn.mass * d2q / h
-            dg = -dyn.mass * (d3q * h - d2q * dyn.spring.rate * dq) / h**2
+            dg = -dyn.mass * (d3q * h - d2q * spring.rate * dq) / h**2
         return g[None], dg[None]
 
     best, at = 0.0, 0.0  # no deceleration: never pulled off (an infinite speed)
@@ -656,7 +665,7 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
         if p.kind == "dwell":
             continue
         n = max(8, int(np.ceil(samples * p.angle / TWO_PI)))
-        top, u = maximize(lambda x: pull(i, x), phase_positions(prog, i, n))
+        top, u = maximize(partial(pull, i), phase_positions(prog, i, n))
         if top[0] > best:
             best, at = float(top[0]), float(prog.starts[i] + u[0] * p.angle)
     w = float(np.sqrt(1.0 / best)) if best > 0 else np.inf
