@@ -33,7 +33,8 @@ MOVED: dict[str, tuple[str, ...]] = {
     "cams.pressure": ("cams.verify.pressure",),
     "cams.flatface": ("cams.profile.flat", "optimize.flat", "cams.checks.flat", "cams.kinematics.flat",
                       "cams.model.follower", "cams.model.design", "cams.checks.base"),
-    "cams.camforces": ("cams.dynamics.forces", "cams.model.dynamics", "cams.io.designfile"),
+    "cams.camforces": ("cams.dynamics.forces", "cams.dynamics.impacts", "cams.dynamics.jump", "cams.dynamics.motion",
+                       "cams.model.dynamics", "cams.io.designfile"),
     "cams.files": ("cams.io.files", "cams.io.document"),
     "cams.designfile": ("cams.io.designfile",),
     "cams.export": ("cams.io.export",),
@@ -88,7 +89,7 @@ def forward(old: str, name: str) -> object:
 class _Forward(importlib.abc.MetaPathFinder, importlib.abc.Loader):
     """Finds an old path and loads a module that forwards its attributes to the new homes."""
 
-    def find_spec(self, fullname, path, target=None):  # noqa: ANN001 - the finder protocol
+    def find_spec(self, fullname, path, target=None):
         homes = new_homes(fullname)
         if homes is None:
             return None
@@ -97,7 +98,7 @@ class _Forward(importlib.abc.MetaPathFinder, importlib.abc.Loader):
             return None
         return importlib.machinery.ModuleSpec(fullname, self, is_package=real.submodule_search_locations is not None)
 
-    def create_module(self, spec):  # noqa: ANN001
+    def create_module(self, spec):
         return None
 
     def exec_module(self, module: types.ModuleType) -> None:

@@ -13,17 +13,21 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from cams.checks.profile import CheckReport, check_profile
-from cams.model.design import METHODS, CamDesign
+from cams.model.design import METHODS, CamDesign, FlatFaceDesign
 from cams.model.follower import Rocker, Translating
 from cams.profile.roller import profile_options
 from cams.verify.pressure import PressureReport, check_pressure
 from laws.errors import InputError, check_option
 from optimize.result import Binding
 from optimize.sizing import OBJECTIVES, offset_x, size, vanishing_error
+
+if TYPE_CHECKING:
+    from cams.checks.flat import FlatCheckReport
 
 __all__ = ["SolveResult", "solve", "check_design", "excess", "pressure_failures"]
 
@@ -194,7 +198,7 @@ def pressure_failures(pressure: PressureReport) -> list[str]:
     out = []
     for kind, g, at, lim in (("rise", pressure.rise, pressure.rise_at, pressure.rise_limit),
                              ("return", pressure.ret, pressure.ret_at, pressure.return_limit)):
-        if g is None or lim is None or not g > lim + 1e-7:
+        if g is None or lim is None or at is None or not g > lim + 1e-7:
             continue
         d = np.degrees
         out.append(f"{kind} pressure angle {d(g):.4f} deg exceeds the limit {d(lim):.4f} deg by {d(g - lim):.4f} deg "
@@ -312,14 +316,15 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
                    certified=sized.certified)
 
 
-def check_design(design: CamDesign, *, tolerance: float | None = None, method: str | None = None) -> CheckReport:
+def check_design(design: CamDesign | FlatFaceDesign, *, tolerance: float | None = None,
+                 method: str | None = None) -> CheckReport | FlatCheckReport:
     """Solve ``design`` (:func:`cams.solve.solve`) and check the profile of the solved centre.
 
     A flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`) is
     sized by convexity and checked by :func:`cams.checks.flat.check_flat_face`
     (a :class:`cams.checks.flat.FlatCheckReport`); it takes no ``method``.
     """
-    if getattr(design, "face", "roller") == "flat":
+    if isinstance(design, FlatFaceDesign):
         from cams.checks.flat import check_flat_face
         from cams.profile.flat import flat_face_profile
         from cams.profile.roller import resolve_tolerance

@@ -31,8 +31,8 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Callable
 
 import numpy as np
 
@@ -41,7 +41,8 @@ from cams.model.follower import Rocker
 from laws.errors import InfeasibleError
 from optimize.result import CentreSolution
 
-__all__ = ["admissible_L_range", "diagnosed", "explain_infeasible", "Relaxation", "relaxations", "zone_margin", "zone_empty", "least_R0"]
+__all__ = ["admissible_L_range", "diagnosed", "explain_infeasible", "Relaxation", "relaxations", "zone_margin",
+           "zone_empty", "least_R0"]
 
 #: Loosest allowable pressure angle tried (degrees; the limits must stay below 90).
 LOOSEST_DEG = 89.99
@@ -144,7 +145,8 @@ def _margin_in_box(design: CamDesign, extra, half: float, iters: int) -> tuple[f
             return np.inf, np.inf, A0
         if res.status != 0:
             break
-        O, lower = res.x[:2], float(res.x[2])
+        x = np.asarray(res.x)
+        O, lower = x[:2], float(x[2])
         pk = scan_peaks(t, O)
         g = float(np.max(pk.value))
         if g < upper:
@@ -206,9 +208,9 @@ def _attained(R0_at: Callable[[float], float | None], bound: float, span: float)
     before.
     """
     for ks in ((1e-2, 1e-3, 1e-4), (1e-1, 1e-2, 1e-3)):
-        r = [R0_at(bound + k * span) for k in ks]
-        if None not in r:
-            d1, d2 = r[1] - r[0], r[2] - r[1]
+        r0, r1, r2 = (R0_at(bound + k * span) for k in ks)
+        if r0 is not None and r1 is not None and r2 is not None:
+            d1, d2 = r1 - r0, r2 - r1
             return not (d2 > 0 and d2 >= GROWTH * d1)
     return True
 
@@ -246,11 +248,14 @@ def relaxations(design: CamDesign, extra=None, L: float | None = None) -> list[R
     """
     lim = design.limits
     out = []
-    if L is None:
-        empty = zone_empty
-    else:
-        def empty(d: CamDesign, extra=None) -> bool:  # L held: the zone must reach its circle
-            return _misses_L(d, L)
+    empty: Callable[..., bool] = zone_empty
+    if L is not None:
+        held = L
+
+        def held_empty(d: CamDesign, extra=None) -> bool:  # L held: the zone must reach its circle
+            return _misses_L(d, held)
+
+        empty = held_empty
     loose = math.radians(LOOSEST_DEG)
     fields = ["limits.pressure_angle"]
     if lim.closure == "form" and any(p.kind == "return" for p in design.program.phases):
@@ -412,7 +417,7 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
 
 def _solver_failed(design: CamDesign, extra, err: InfeasibleError) -> InfeasibleError | None:
     """The error of a solver that found no centre in a zone that is not empty, or None if unconfirmed."""
-    lower, upper, O = zone_margin(design, extra)
+    _lower, upper, O = zone_margin(design, extra)
     if upper > 0:
         return None
     R0 = float(np.linalg.norm(O - design.follower.position(0.0)))

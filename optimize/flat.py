@@ -433,7 +433,7 @@ def size_flat_face(design: FlatFaceDesign) -> FlatFaceSolution:
             e = _renamed(e, "limits.min_radius")
             if design.base_radius is None:
                 raise InputError("limits.min_radius", f"{str(e)[len('limits.min_radius: '):]}; {hint}") from None
-            notes.append(f"no base radius reaches the limit: {str(e)}")
+            notes.append(f"no base radius reaches the limit: {e!s}")
         else:
             raise _renamed(e) from None
     if design.base_radius is not None:

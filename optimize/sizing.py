@@ -224,17 +224,20 @@ def size(design: CamDesign, *, method: str | None = None, objective: str = "R0")
             mode = "fixed_offset"
         if floor is not None and np.linalg.norm(centre - A0) < floor:
             mode = "floor_R0"
-            if extra is not None:
-                cands = [np.array([offset_x(f.offset), sg * np.sqrt(max(floor**2 - f.offset**2, 0.0))]) for sg in (1, -1)]
-                cands = [p for p in cands if floor >= abs(f.offset) and G(p) <= round_off(design, np.abs(p).sum())]
+            off = f.offset if isinstance(f, Translating) else None
+            if off is not None:  # the fixed offset (``extra`` is its line)
+                cands = [np.array([offset_x(off), sg * np.sqrt(max(floor**2 - off**2, 0.0))]) for sg in (1, -1)]
+                cands = [p for p in cands if floor >= abs(off) and G(p) <= round_off(design, np.abs(p).sum())]
                 if not cands:
-                    raise InfeasibleError("limits.min_base_radius", f"R0 = {floor:g} with offset {f.offset:g} is not admissible")
+                    raise InfeasibleError("limits.min_base_radius",
+                                          f"R0 = {floor:g} with offset {off:g} is not admissible")
                 centre = min(cands, key=G)
             else:
                 seeds = _seeds(design, A0, floor, sol.centre)
-                centre = best_on_circle(design, A0, floor, G, samples=samples, seeds=seeds)
-                if centre is None:  # pragma: no cover - the zone is unbounded beyond R0_min
+                on_floor = best_on_circle(design, A0, floor, G, samples=samples, seeds=seeds)
+                if on_floor is None:  # pragma: no cover - the zone is unbounded beyond R0_min
                     raise InfeasibleError("limits.min_base_radius", f"no admissible centre at R0 = {floor:g}")
+                centre = on_floor
             notes.append(f"R0 raised to the constructive floor {floor:g} mm (minimum {sol.objective:.6g} mm); "
                          "centre placed with the largest margin to the zone's edges")
         elif floor is not None:
@@ -242,8 +245,8 @@ def size(design: CamDesign, *, method: str | None = None, objective: str = "R0")
     else:
         mode = "fixed_L"
         dist = lambda O: float(np.linalg.norm(O - A0))  # noqa: E731
-        centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples)
-        if centre is None:
+        on_L = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples)
+        if on_L is None:
             # a narrow arc near the least L: seed it from the min-L centre (convexity)
             try:
                 near = nearest(design, f.pivot, method=method).centre
@@ -251,13 +254,14 @@ def size(design: CamDesign, *, method: str | None = None, objective: str = "R0")
                 from optimize.diagnose import explain_infeasible
 
                 raise (explain_infeasible(design, L=L_fixed) or e) from e
-            centre = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples,
-                                    seeds=_seeds(design, f.pivot, L_fixed, near))
-        if centre is None:
+            on_L = best_on_circle(design, f.pivot, L_fixed, dist, samples=samples,
+                                  seeds=_seeds(design, f.pivot, L_fixed, near))
+        if on_L is None:
             lo, hi = admissible_L_range(design)
             rng = f"from {lo:.6g} upward" if not np.isfinite(hi) else f"from {lo:.6g} to {hi:.6g}"
             raise InfeasibleError("limits.centre_distance",
                                   f"L = {L_fixed:g} misses the allowable-centre zone; admissible L {rng}")
+        centre = on_L
         least = dist(centre)
         if floor is not None and least >= floor:
             notes.append(f"constructive floor {floor:g} mm below the least R0 at this L ({least:.6g} mm): not binding")
@@ -270,7 +274,8 @@ def size(design: CamDesign, *, method: str | None = None, objective: str = "R0")
             if not cands:
                 raise InfeasibleError("limits.min_base_radius",
                                       f"R0 = {floor:g} is not admissible at L = {L_fixed:g} (the least R0 there is "
-                                      f"{least:.6g}; the admissible centres on that circle do not reach R0 = {floor:g})")
+                                      f"{least:.6g}; the admissible centres on that circle do not reach "
+                                      f"R0 = {floor:g})")
             centre = min(cands, key=G)
             mode = "fixed_L_and_R0"
             notes.append(f"R0 raised to the constructive floor {floor:g} mm (least at this L {least:.6g} mm)")

@@ -49,6 +49,7 @@ DOCTEST_MODULES = [
     # forces
     "cams.machine.flywheel",
     "cams.dynamics.forces",
+    "cams.dynamics.impacts",
     "cams.machine.kinetostatics",
     "cams.machine.kinetostatics.solve",
     # the kinematics kernel

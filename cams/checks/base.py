@@ -24,8 +24,9 @@ class Check:
     passed : bool
     worst : float or None
         Worst value found (unit ``unit``); ``None`` where it does not apply.
-    at_deg : float or None
-        Cam angle of the worst value, degrees in [0, 360).
+    at : float or None
+        Cam angle of the worst value, radians from the program's start
+        (:meth:`to_dict` gives it in degrees in [0, 360) as ``at_deg``).
     limit : float or None
         The value ``worst`` is compared with (unit ``unit``).
     unit : str
@@ -37,7 +38,7 @@ class Check:
     name: str
     passed: bool
     worst: float | None
-    at_deg: float | None
+    at: float | None
     limit: float | None
     unit: str
     message: str = ""
@@ -48,7 +49,7 @@ class Check:
             "name": self.name,
             "passed": bool(self.passed),
             "worst": _finite(self.worst),
-            "at_deg": _finite(self.at_deg),
+            "at_deg": _finite(_deg(self.at)),
             "limit": _finite(self.limit),
             "unit": self.unit,
         }
@@ -82,8 +83,8 @@ def _deg(phi: float | None) -> float | None:
 def polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:
     """The closed polyline ``pts`` is a valid simple polygon round the origin.
 
-    ``worst`` is the number of self-crossings (limit 0); ``at_deg`` the cam
-    angle of the sample nearest the first crossing (or shapely's reported
+    ``worst`` is the number of self-crossings (limit 0); ``at`` the cam
+    angle (radians) of the sample nearest the first crossing (or shapely's reported
     location of another defect).
     """
     import shapely
@@ -112,8 +113,8 @@ def polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:
             except ValueError:  # pragma: no cover - shapely's message format
                 loc = None
         if loc is not None:
-            at = _deg(phi[int(np.argmin(np.linalg.norm(pts - np.asarray(loc), axis=1)))])
-        where = "" if at is None else f", the first near cam angle {at:.4f} deg"
+            at = float(phi[int(np.argmin(np.linalg.norm(pts - np.asarray(loc), axis=1)))])
+        where = "" if at is None else f", the first near cam angle {_deg(at):.4f} deg"
         msg = f"{crossings} self-crossing(s){where}" if crossings else f"not a valid closed curve ({reason}){where}"
     elif not around:
         msg = "the closed curve does not surround the cam centre"
@@ -125,10 +126,10 @@ def bore_check(profile, bore: float, *, what: str = "working profile") -> Check:
 
     ``profile`` is a sampled cam (:class:`cams.profile.roller.Profile` or
     :class:`cams.profile.flat.FlatFaceProfile`): its ``min_work_radius`` is the
-    smallest radius, ``at_deg`` the cam angle of the sample nearest the centre;
+    smallest radius, ``at`` the cam angle (radians) of the sample nearest the centre;
     ``what`` names the curve in the message.
     """
     k = int(np.argmin(np.linalg.norm(profile.work, axis=1)))
     rmin = float(profile.min_work_radius)
-    return Check("bore", bool(rmin > bore), rmin, _deg(profile.phi[k]), float(bore), "mm",
+    return Check("bore", bool(rmin > bore), rmin, float(profile.phi[k]), float(bore), "mm",
                  f"{what}'s smallest radius {rmin:.6g} mm vs bore radius {bore:.6g} mm")

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from cams.checks.base import Check, ChecksMixin, _deg, bore_check, polygon_check
+from cams.checks.base import Check, ChecksMixin, bore_check, polygon_check
 from cams.profile.flat import FlatFaceProfile
 from cams.profile.roller import default_bore_radius
 
@@ -49,7 +49,7 @@ class FlatCheckReport(ChecksMixin):
             "bore_radius": float(self.bore_radius),
             "R0": float(self.profile.R0),
             "points": len(self.profile),
-            "tolerance": float(self.profile.tolerance),
+            "tolerance": None if self.profile.tolerance is None else float(self.profile.tolerance),
         }
 
 
@@ -66,7 +66,7 @@ def check_flat_face(design, solution, profile: FlatFaceProfile) -> FlatCheckRepo
     """
     rmin = design.min_radius
     ok = solution.min_rho >= rmin - solution.rho_tolerance
-    checks = [Check("convexity", bool(ok), float(solution.min_rho), _deg(solution.min_rho_at), float(rmin), "mm",
+    checks = [Check("convexity", bool(ok), float(solution.min_rho), solution.min_rho_at, float(rmin), "mm",
                     f"smallest radius of curvature of the profile {solution.min_rho:.6g} (limit {rmin:g})"),
               polygon_check("profile_polygon", profile.work, profile.phi)]
     bore = design.bore_radius if design.bore_radius is not None else default_bore_radius(profile)

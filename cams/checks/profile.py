@@ -38,13 +38,13 @@ depend on the profile's sampling.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import partial
 
 import numpy as np
 
 from cams.checks.base import (
     Check,
     ChecksMixin,
-    _deg,
     _finite,
     bore_check,
     polygon_check,
@@ -202,9 +202,10 @@ def _phase_maxima(design: CamDesign, centre: np.ndarray, grid: int, pressure=())
     out = []
     for i, p in enumerate(prog.phases):
         what = ("convex", "concave") + (("pressure",) if i in pressure else ())
-        best, at = maximize(lambda x: _phase_rates(design, centre, i, x, what), phase_positions(prog, i, grid),
-                            refine=p.kind != "dwell")
-        out.append({w: (float(b), float(prog.starts[i] + a * p.angle)) for w, b, a in zip(what, best, at)})
+        best, at = maximize(partial(_phase_rates, design, centre, i, what=what),
+                            phase_positions(prog, i, grid), refine=p.kind != "dwell")
+        out.append({w: (float(b), float(prog.starts[i] + a * p.angle))
+                    for w, b, a in zip(what, best, at, strict=True)})
     return out
 
 
@@ -314,18 +315,18 @@ def check_profile(
         if kind in by_kind:
             g, at, lim = by_kind[kind]
             ok = g <= lim + 1e-7
-            checks.append(Check(f"jamming_{kind}", bool(ok), float(np.degrees(g)), _deg(at), float(np.degrees(lim)),
+            checks.append(Check(f"jamming_{kind}", bool(ok), float(np.degrees(g)), at, float(np.degrees(lim)),
                                 "deg", f"largest pressure angle on the {kind} {np.degrees(g):.4f} deg "
                                 f"(limit {np.degrees(lim):.4f} deg)"))
 
     # undercut and sharp points
     ext = _curvature(design, centre, maxima)
-    checks.append(Check("undercut", bool(ext.convex > r), ext.convex, _deg(ext.convex_at), r, "mm",
+    checks.append(Check("undercut", bool(ext.convex > r), ext.convex, ext.convex_at, r, "mm",
                         f"smallest convex radius of curvature of the pitch curve {ext.convex:.6g} mm "
                         f"vs roller radius {r:g} mm"))
     largest = ext.convex
     if prof.groove:
-        checks.append(Check("undercut_outer", bool(ext.concave > r), ext.concave, _deg(ext.concave_at), r, "mm",
+        checks.append(Check("undercut_outer", bool(ext.concave > r), ext.concave, ext.concave_at, r, "mm",
                             f"smallest concave radius of curvature of the pitch curve {ext.concave:.6g} mm "
                             f"vs roller radius {r:g} mm (outer wall of the groove)"))
         largest = min(largest, ext.concave)
@@ -333,13 +334,13 @@ def check_profile(
         worst, at = ext.convex - r, ext.convex_at
         if prof.groove and ext.concave - r < worst:
             worst, at = ext.concave - r, ext.concave_at
-        checks.append(Check("min_curvature_radius", bool(worst >= opts.min_curvature_radius), worst, _deg(at),
+        checks.append(Check("min_curvature_radius", bool(worst >= opts.min_curvature_radius), worst, at,
                             float(opts.min_curvature_radius), "mm",
                             f"smallest convex radius of curvature of the working profile {worst:.6g}"))
 
     # polygons
     checks.append(polygon_check("profile_polygon", prof.work, prof.phi))
-    if prof.groove:
+    if prof.outer is not None:  # a groove
         checks.append(polygon_check("outer_polygon", prof.outer, prof.phi))
 
     # bore: checked only against a bore the user gave ([cam] bore_radius); the default bore

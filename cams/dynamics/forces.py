@@ -45,25 +45,8 @@ rotation) is the moment of the roller's force on the cam about the cam's
 centre, ``T = eps N (r x n)`` (``r`` from the cam centre to the roller
 centre); by the power balance it equals ``N |dA/dq| cos(gamma) dq/dphi``.
 
-Rigid impacts
--------------
-Where the program's velocity analogue ``dq/dphi`` jumps (a *hard impact* of
-:func:`laws.diagnostics.find_impacts`: a constant-velocity law meeting a
-dwell) the follower's acceleration is infinite, so no finite force model
-applies there (DYNACAM shows the force as infinite):
-
-* a jump *up* (``dq'`` > 0, e.g. the start of a linear rise, the end of a
-  linear return) needs an impulse from the cam: the contact force and the
-  camshaft torque are unbounded (:attr:`CamForces.unbounded`);
-* a jump *down* (the end of a linear rise, the start of a linear return)
-  needs an infinite pull from the spring: the follower leaves the cam at any
-  speed (:attr:`CamForces.separation`, a jump speed of 0).
-
-:class:`CamForces` lists them (:attr:`CamForces.impacts`); its sampled
-arrays hold the forces *between* the impacts, its ``ok`` is False with any
-of them, and its report gives the unbounded values as such (``inf``, with
-the finite values between the impacts under ``between_impacts``).
-:func:`jump_speed` returns 0 rpm at a jump down.
+Rigid impacts (velocity jumps of the program) are described in :mod:`cams.dynamics.impacts`;
+the jump speed is :mod:`cams.dynamics.jump`'s.
 
 Units: the design's lengths are in mm, the files' only length unit
 (``length_unit``: metres per design unit, 1e-3); forces in N, masses in kg,
@@ -73,18 +56,21 @@ time in s.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from cams.kinematics.extremum import maximize, phase_positions
+from cams.dynamics.impacts import RigidImpact, rigid_impacts
+from cams.dynamics.jump import JumpSpeed, jump_dict, jump_speed, jump_text
+from cams.dynamics.motion import _grid, _kinematics, _omega
 from cams.kinematics.inversion import contact_normal, invert, pressure_angle
 from cams.kinematics.vectors import cross
 from cams.model.design import CamDesign
 from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring
 from cams.model.follower import Rocker
-from laws.errors import InputError, show_value
+from laws.errors import InputError
 from laws.errors import check_number as _num
-from laws.units import TWO_PI, omega_to_rpm, rpm_to_omega
+from laws.units import omega_to_rpm
 
 __all__ = [
     "RigidImpact",
@@ -106,6 +92,7 @@ __all__ = [
     "DesignForces",
     "design_forces",
     "jump_dict",
+    "jump_text",
 ]
 
 LENGTH_UNITS = {"mm": 1e-3}
@@ -114,116 +101,15 @@ DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "journal_
 """Keys of a design file's optional ``[dynamics]`` table."""
 
 
-def _omega(design: CamDesign, rpm: float | None) -> float:
-    n = design.rpm if rpm is None else rpm
-    if n is None:
-        raise InputError("cam.rpm", "the cam's speed is needed for its forces; give cam.rpm")
-    _num("cam.rpm", n, lo=0.0, strict=True)
-    return rpm_to_omega(float(n))
-
-
-def _grid(samples: int) -> np.ndarray:
-    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 8:
-        raise InputError("dynamics.samples", f"must be an integer >= 8, got {show_value(samples)}")
-    return np.linspace(0.0, TWO_PI, int(samples), endpoint=False)
-
-
-def _si(design: CamDesign, dyn: FollowerDynamics) -> float:
-    """SI units of the follower coordinate ``q`` per unit of the program's ``s``: 1 (rocker, rad) or m per length unit."""
-    return 1.0 if isinstance(design.follower, Rocker) else dyn.length_unit
-
-
-def _kinematics(design: CamDesign, phi: np.ndarray, dyn: FollowerDynamics):
-    """q, dq/dphi, d2q/dphi2 in SI and the arm |dA/dq| (m)."""
-    mo = design.program.evaluate(phi)
-    u = _si(design, dyn)
-    arm = design.follower.arm * dyn.length_unit if isinstance(design.follower, Rocker) else 1.0
-    return mo.s * u, mo.ds * u, mo.d2s * u, arm
-
-
-@dataclass(frozen=True)
-class RigidImpact:
-    """A velocity jump of the follower (a hard impact): infinite acceleration at one cam angle.
-
-    Attributes
-    ----------
-    phi : float
-        Cam angle, radians from the program's start, in [0, 2 pi).
-    jump : float
-        ``dq/dphi`` after minus before: radians per radian (rocker) or design
-        length unit per radian (translating).
-    rocker : bool
-        The follower is a rocker (``q`` an angle).
-    """
-
-    phi: float
-    jump: float
-    rocker: bool
-
-    @property
-    def separation(self) -> bool:
-        """A jump down: the spring would have to pull infinitely hard, the follower leaves the cam at any speed."""
-        return self.jump < 0
-
-    @property
-    def effect(self) -> str:
-        """``"impulse"`` (jump up: unbounded contact force) or ``"separation"`` (jump down: contact lost)."""
-        return "separation" if self.separation else "impulse"
-
-    @property
-    def unit(self) -> str:
-        """Unit of :meth:`velocity_jump`: ``"deg/s"`` for a rocker, ``"mm/s"`` (the design's length unit) otherwise."""
-        return "deg/s" if self.rocker else "mm/s"
-
-    def velocity_jump(self, omega: float, length_unit: float = 1e-3) -> float:
-        """The follower's velocity jump at the cam speed ``omega`` (rad/s): deg/s, or mm/s for a translating follower.
-
-        ``length_unit`` (metres per design unit) converts the design's unit to mm.
-        """
-        v = self.jump * abs(omega)
-        return float(np.degrees(v)) if self.rocker else float(v * length_unit * 1e3)
-
-    def to_dict(self, omega: float, length_unit: float = 1e-3) -> dict:
-        """JSON-ready: cam angle in degrees, the velocity jump at ``omega`` and its effect."""
-        return {"cam_angle_deg": float(np.degrees(self.phi)), "velocity_jump": self.velocity_jump(omega, length_unit),
-                "unit": self.unit, "effect": self.effect}
-
-
-def jump_text(rpm, digits: int = 6) -> str:
-    """A jump speed for reports: ``"168.6 rpm"``, or ``"none ..."`` when nothing pulls the follower off the cam
-    (no deceleration: the speed is infinite, or None from JSON)."""
-    if rpm is None or not np.isfinite(rpm):
-        return "none (no deceleration pulls the follower off the cam)"
-    return f"{rpm:.{digits}g} rpm"
-
-
-def rigid_impacts(design: CamDesign) -> tuple[RigidImpact, ...]:
-    """The program's velocity jumps (:func:`laws.diagnostics.find_impacts`, hard ones), sorted by cam angle.
-
-    Examples
-    --------
-    >>> from cams.model.design import CamDesign, Limits
-    >>> from cams.model.follower import Translating
-    >>> from laws.program import Phase, Program
-    >>> prog = Program((Phase("rise", np.pi, "linear"), Phase("return", np.pi, "cycloidal")), 20.0)
-    >>> d = CamDesign(Translating(5.0, offset=0.0), prog, Limits(np.radians(30)))
-    >>> [(round(float(np.degrees(i.phi))), i.effect) for i in rigid_impacts(d)]
-    [(0, 'impulse'), (180, 'separation')]
-    """
-    from laws.diagnostics import find_impacts
-
-    rocker = isinstance(design.follower, Rocker)
-    return tuple(RigidImpact(float(i.phi), float(i.size), rocker) for i in find_impacts(design.program) if i.kind == "hard")
-
-
-def impact_note(forces: "CamForces") -> str | None:
+def impact_note(forces: CamForces) -> str | None:
     """One line on the rigid impacts of a :class:`CamForces` for a report's notes; None without any."""
     if not forces.impacts:
         return None
     parts = []
     for i in forces.impacts:
         what = "contact force unbounded" if not i.separation else "the follower leaves the cam at any speed"
-        parts.append(f"{np.degrees(i.phi):.2f} deg ({i.velocity_jump(forces.omega, forces.length_unit):+.4g} {i.unit}: {what})")
+        jump = i.shown_jump(forces.omega, forces.length_unit)
+        parts.append(f"{np.degrees(i.phi):.2f} deg ({jump:+.4g} {i.unit}: {what})")
     return ("rigid impacts (velocity jumps, infinite acceleration) at cam angle " + ", ".join(parts)
             + "; the forces and the jump speed are unbounded or lost there, the other figures are between the "
             "impacts; use a law without velocity jumps (e.g. cycloidal, modified trapezoid)")
@@ -370,7 +256,7 @@ class CamForces:
         finite = np.isfinite(self.contact)
         k = int(np.argmax(np.where(finite, self.contact, -np.inf)))
         kt = int(np.argmax(np.abs(self.torque)))
-        out = {
+        out: dict[str, Any] = {
             "rpm": self.rpm,
             "max_contact_force": float(self.contact[k]),
             "max_contact_at_deg": float(np.degrees(self.phi[k])),
@@ -556,116 +442,16 @@ def spring_for_contact(
     if dyn.max_spring_force is not None and top > dyn.max_spring_force * (1 + 1e-12):
         hint = ""
         if rate is not None:
-            free = spring_for_contact(design, FollowerDynamics(dyn.mass, dyn.load, None, dyn.friction, dyn.journal_radius, dyn.length_unit),
-                                      rpm=rpm, margin=margin, samples=samples)
+            unsprung = FollowerDynamics(dyn.mass, dyn.load, None, dyn.friction, dyn.journal_radius, dyn.length_unit)
+            free = spring_for_contact(design, unsprung, rpm=rpm, margin=margin, samples=samples)
             hint = f"; a free rate ({free.rate:.6g}) would need {free.preload + free.rate * qmax:.6g}"
         raise InputError(
             "dynamics.spring_rate" if rate is not None else "dynamics.max_spring_force",
-            f"a spring of rate {k:.6g} cannot keep contact at {omega_to_rpm(w):.6g} rpm with margin {m:g} at any preload "
+            f"a spring of rate {k:.6g} cannot keep contact at {omega_to_rpm(w):.6g} rpm with margin {m:g} "
+            "at any preload "
             f"within the spring's largest force {dyn.max_spring_force:.6g}: it needs {top:.6g}{hint}",
         )
     return Spring(rate=k, preload=F0)
-
-
-@dataclass(frozen=True)
-class JumpSpeed:
-    """The speed at which the follower leaves the cam (jump, отрыв).
-
-    Attributes
-    ----------
-    omega : float
-        Cam speed, rad/s, above which contact is lost; 0 with a velocity jump
-        down (contact is lost there at any speed).
-    rpm : float
-        The same in rev/min.
-    phi : float
-        Cam angle (radians) where contact is lost first.
-    at_impact : bool
-        The jump is at a velocity jump down (a rigid impact), at any speed.
-    between_impacts_rpm : float or None
-        With rigid impacts: the jump speed of the motion between them (the
-        samples' value, excluding the impacts); None without impacts.
-    """
-
-    omega: float
-    rpm: float
-    phi: float
-    at_impact: bool = False
-    between_impacts_rpm: float | None = None
-
-
-def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200) -> JumpSpeed:
-    """The cam speed above which the follower jumps, for the given spring.
-
-    Contact is lost where ``m omega^2 d2q/dphi^2 + F0 + k q + P`` turns
-    negative; only decelerations (``d2q < 0``) can pull the follower off, so
-    ``1 / omega_jump^2 = max of g = -m d2q/dphi^2 / (F0 + k q + P)``, the
-    pull-off per holding force, found per rise and return phase on a grid of
-    ``samples`` cam angles a turn and refined where its slope changes sign (the
-    kernel's search, :func:`cams.kinematics.extremum.maximize`; one-sided at
-    the phase ends, so a maximum on an acceleration jump is exact). A velocity
-    jump down (:func:`rigid_impacts`) is an infinite deceleration: the jump
-    speed is then 0 (``at_impact``) and the value between the impacts is kept
-    in ``between_impacts_rpm``.
-
-    Parameters
-    ----------
-    design : CamDesign
-    dyn : FollowerDynamics
-        With its ``spring``.
-    samples : int
-        Cam angles per turn scanned before refining.
-
-    Returns
-    -------
-    JumpSpeed
-
-    Raises
-    ------
-    InputError
-        No spring, or a spring (and load) that cannot hold the follower on
-        the cam even at rest.
-    """
-    if dyn.spring is None:
-        raise InputError("dynamics.spring_rate", "the jump speed needs a spring")
-    phi = _grid(samples)
-    q = _kinematics(design, phi, dyn)[0]
-    hold = dyn.spring.force(q) + dyn.load
-    if np.any(hold < 0):
-        k = int(np.argmin(hold))
-        raise InputError(
-            "dynamics.preload",
-            f"the spring and the load cannot hold the follower on the cam even at rest: "
-            f"{hold[k]:.6g} at cam angle {np.degrees(phi[k]):.6g} deg; raise the preload",
-        )
-    prog = design.program
-    si = _si(design, dyn)
-
-    def pull(i: int, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``g = -m q'' / (F0 + k q + P)`` in phase ``i`` and its derivative by the cam angle."""
-        mo = prog.evaluate_phase(i, u)
-        q, dq, d2q, d3q = mo.s * si, mo.ds * si, mo.d2s * si, mo.d3s * si
-        h = dyn.spring.force(q) + dyn.load
-        with np.errstate(divide="ignore", invalid="ignore"):
-            g = -dyn.mass * d2q / h
-            dg = -dyn.mass * (d3q * h - d2q * dyn.spring.rate * dq) / h**2
-        return g[None], dg[None]
-
-    best, at = 0.0, 0.0  # no deceleration: never pulled off (an infinite speed)
-    for i, p in enumerate(prog.phases):
-        if p.kind == "dwell":
-            continue
-        n = max(8, int(np.ceil(samples * p.angle / TWO_PI)))
-        top, u = maximize(lambda x: pull(i, x), phase_positions(prog, i, n))
-        if top[0] > best:
-            best, at = float(top[0]), float(prog.starts[i] + u[0] * p.angle)
-    w = float(np.sqrt(1.0 / best)) if best > 0 else np.inf
-    impacts = rigid_impacts(design)
-    down = [i for i in impacts if i.separation]
-    if down:
-        return JumpSpeed(omega=0.0, rpm=0.0, phi=down[0].phi, at_impact=True, between_impacts_rpm=omega_to_rpm(w))
-    return JumpSpeed(omega=w, rpm=omega_to_rpm(w), phi=float(np.mod(at, TWO_PI)),
-                     between_impacts_rpm=omega_to_rpm(w) if impacts else None)
 
 
 def chosen_spring(spec: DynamicsSpec, design: CamDesign, *, rpm: float | None = None) -> Spring:
@@ -709,13 +495,6 @@ class DesignForces:
         if "between_impacts" in out:
             out["between_impacts"]["jump_rpm"] = self.jump.between_impacts_rpm
         return out
-
-
-def jump_dict(jump: JumpSpeed | None) -> dict:
-    """``jump_rpm``, ``jump_at_deg`` (cam angle) and ``jump_at_impact`` of a jump speed (all None without one)."""
-    if jump is None:
-        return {"jump_rpm": None, "jump_at_deg": None, "jump_at_impact": None}
-    return {"jump_rpm": jump.rpm, "jump_at_deg": float(np.degrees(jump.phi)), "jump_at_impact": jump.at_impact}
 
 
 def design_forces(design: CamDesign, centre) -> tuple[DesignForces | None, str | None]:

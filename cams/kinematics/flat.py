@@ -47,6 +47,7 @@ Angles in radians, lengths in the design's unit (mm).
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 
 import numpy as np
 
@@ -94,7 +95,7 @@ def phase_minimum(fun: PhaseFunction, program: Program, grid: int = 2000) -> tup
         k = int(np.argmin(v))
         bu, bv = float(u[k]), float(v[k])
         if p.kind != "dwell":
-            bu, bv = zoom_minimum(lambda x, i=i: fun(i, x), u[max(k - 1, 0)], u[min(k + 1, grid)], bu, bv)
+            bu, bv = zoom_minimum(partial(fun, i), u[max(k - 1, 0)], u[min(k + 1, grid)], bu, bv)
         if bv < best:
             best, at = bv, float(program.starts[i] + bu * p.angle)
     return best, at

@@ -47,6 +47,7 @@ vectorized over the cam angles.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -117,7 +118,10 @@ class Inversion:
     t2: np.ndarray
 
     def to_cam(self, v: np.ndarray) -> np.ndarray:
-        """Vectors at these cam angles turned from the fixed frame's orientation into the cam frame, ``R(-eps phi) v``."""
+        """Vectors at these cam angles turned from the fixed frame's orientation into the cam frame.
+
+        That is ``R(-eps phi) v``.
+        """
         return rotate(v, -self.sense * self.phi)
 
     @property
@@ -510,7 +514,8 @@ def smallest_cam_radius(design: CamDesign, centre: np.ndarray, *, grid: int = 51
 
     best, best_phi = np.inf, 0.0
     for i, p in enumerate(prog.phases):
-        top, at = maximize(lambda x: minus_radius(i, x), phase_positions(prog, i, grid), refine=p.kind != "dwell")
+        top, at = maximize(partial(minus_radius, i), phase_positions(prog, i, grid),
+                           refine=p.kind != "dwell")
         if -top[0] < best - 1e-12 * design.scale:  # a tie within rounding keeps the earlier phase
             best, best_phi = float(-top[0]), float(prog.starts[i] + at[0] * p.angle)
     return float(best - design.follower.roller_radius), best_phi

@@ -21,7 +21,7 @@ def xy(x: np.ndarray | float, y: np.ndarray | float) -> np.ndarray:
     [[1.0, 0.0], [2.0, 0.0]]
     """
     x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
-    out = np.empty(x.shape + (2,))
+    out = np.empty((*x.shape, 2))
     out[..., 0] = x
     out[..., 1] = y
     return out

@@ -116,7 +116,7 @@ def _side(table: dict, key: str, default: str) -> int:
 
 
 def _required(table: dict, key: str, field: str) -> float:
-    """A required number of the file (:func:`cams.io.files.toml_number` raises when it is missing)."""
+    """A required number of the file (:func:`cams.io.document.toml_number` raises when it is missing)."""
     value = toml_number(table, key, field)
     assert value is not None  # required: a missing entry has raised
     return value

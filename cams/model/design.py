@@ -228,20 +228,20 @@ class CamDesign:
                 raise InputError("cam.centre", f"must be two numbers [x, y] (mm), got {list(c)!r}")
             if rocker and lim.centre_distance is not None:
                 raise InputError("cam.centre", "fixes L already: remove limits.centre_distance")
-            if not rocker and f.offset is not None:
+            if isinstance(f, Translating) and f.offset is not None:
                 raise InputError("cam.centre", "fixes the offset already (e = -x): remove follower.offset")
-            c = np.asarray(c, float)
+            cv = np.asarray(c, float)
             # refuses only a centre within rounding of A0 (R0 = 0) or of the pivot; any other is judged by the checks
-            if np.linalg.norm(c - f.position(0.0)) <= 1e-12 * self.scale:
+            if np.linalg.norm(cv - f.position(0.0)) <= 1e-12 * self.scale:
                 raise InputError("cam.centre", "is the roller centre at the near dwell (R0 = 0); the cam centre "
                                  "must lie away from it")
-            if rocker and np.linalg.norm(c) <= 1e-12 * self.scale:
+            if rocker and np.linalg.norm(cv) <= 1e-12 * self.scale:
                 raise InputError("cam.centre", "is the rocker's pivot (L = 0)")
             return
         R0 = self.base_radius
         if isinstance(R0, bool) or not isinstance(R0, (int, float, np.floating)) or not (np.isfinite(R0) and R0 > 0):
             raise InputError("cam.base_radius", f"must be a number > 0 (mm), got {R0!r}")
-        if rocker:
+        if isinstance(f, Rocker):
             L = lim.centre_distance
             if L is None:
                 raise InputError("cam.base_radius", "a rocker's cam centre needs limits.centre_distance (L) too, "
@@ -281,13 +281,16 @@ class CamDesign:
         A0 = f.position(0.0)
         if isinstance(f, Rocker):
             # crossings of |O - pivot| = L and |O - A0| = R0 (pivot at the origin, A0 on +X)
-            L, d = float(self.limits.centre_distance), float(np.linalg.norm(A0))
+            Lc = self.limits.centre_distance
+            assert Lc is not None  # refused at construction: a rocker's chosen R0 needs L (_check_chosen)
+            L, d = float(Lc), float(np.linalg.norm(A0))
             a = (L**2 - R0**2 + d**2) / (2 * d)
             h = np.sqrt(max(L**2 - a**2, 0.0))
             u = A0 / d
             v = np.array([-u[1], u[0]])
             base = a * u
         else:
+            assert f.offset is not None  # refused at construction: a chosen R0 needs the offset (_check_chosen)
             e = float(f.offset)
             return (np.array([-e, -np.sqrt(R0**2 - e**2)]) + A0,)
         # only merges the two crossings of tangent circles; both candidates are on both circles and judged anyway
@@ -307,7 +310,7 @@ class CamDesign:
 
     face = "roller"
 
-    def with_(self, **changes) -> "CamDesign":
+    def with_(self, **changes) -> CamDesign:
         """A copy with some fields changed."""
         from dataclasses import replace
 

@@ -115,7 +115,7 @@ class Rocker:
     def frame(self, s: np.ndarray | float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``position(s), tangent(s), lever(s)`` at once (one sine and cosine)."""
         th = self.sense * np.asarray(s, dtype=float)
-        lev = np.empty(th.shape + (2,))
+        lev = np.empty((*th.shape, 2))
         lev[..., 0] = np.cos(th)
         lev[..., 1] = np.sin(th)
         A = self.arm * lev

@@ -13,6 +13,7 @@ objects and only draw them.
 
 from __future__ import annotations
 
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -60,8 +61,8 @@ def _suptitle(fig, text: str, fontsize: float = 11.0) -> None:
 def _unique_handles(ax) -> tuple[list, list[str]]:
     """Legend handles and labels of ``ax``, each label once (its first artist stands for all of them)."""
     handles, labels = ax.get_legend_handles_labels()
-    first = {}
-    for h, lab in zip(handles, labels):
+    first: dict[str, object] = {}
+    for h, lab in zip(handles, labels, strict=True):
         first.setdefault(lab, h)
     return list(first.values()), list(first)
 
@@ -93,7 +94,7 @@ def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> li
     out = []
     for ext in formats:
         target = stem.with_suffix(f".{ext}")
-        out.append(atomic_write(target, "--out", lambda tmp, ext=ext: fig.savefig(tmp, format=ext, dpi=150)))
+        out.append(atomic_write(target, "--out", partial(fig.savefig, format=ext, dpi=150)))
     return out
 
 
@@ -152,7 +153,7 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
     if len(zd.polygon):
         lab = f"allowable zone (K_C = {d.limits.safety_factor:g})" if d.limits.safety_factor != 1 else "allowable zone"
         ax.add_patch(Polygon(zd.polygon, closed=True, fc="#8fc1ee", ec="#2b6cb0", lw=0.8, alpha=0.8, label=lab))
-    for phi, side, p0, p1, binding in zd.lines:
+    for _phi, side, p0, p1, binding in zd.lines:
         style = dict(color="#c53030", lw=1.4) if binding else dict(color="0.55", lw=0.5)
         ax.plot([p0[0], p1[0]], [p0[1], p1[1]], ls="-" if side == 0 else "--", **style)
     ax.plot([], [], color="0.55", lw=0.5, label="t-t lines")
@@ -208,7 +209,6 @@ def plot_motion(design, *, n: int = 721):
     :mod:`laws.diagnostics` reports them.
     """
     prog = design.program
-    phi = np.linspace(0.0, TWO_PI, n)
     # evaluate inside each phase, both ends included, so joints show their jumps
     xs, ys = [], []
     for i, p in enumerate(prog.phases):

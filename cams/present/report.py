@@ -98,8 +98,8 @@ def _check_rows(cam) -> list[tuple[str, str]]:
         cd = c.to_dict()
         at = "" if cd.get("at_deg") is None else f" at {deg(cd['at_deg'])}"
         lim_s = "" if cd.get("limit") is None else f" (limit {_fmt(cd['limit'], cd.get('unit', ''), f)})"
-        checks.append((check_words(cd["name"]),
-                       f"{'pass' if cd['passed'] else 'FAIL'}: {_fmt(cd.get('worst'), cd.get('unit', ''), f)}{at}{lim_s}"))
+        worst = _fmt(cd.get('worst'), cd.get('unit', ''), f)
+        checks.append((check_words(cd["name"]), f"{'pass' if cd['passed'] else 'FAIL'}: {worst}{at}{lim_s}"))
     given = any(c.name == "bore" for c in cam.checks.checks)
     checks.append(("bore", bore_text(cam.checks.bore_radius, not given)))
     return checks
@@ -202,7 +202,8 @@ def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
                      f"contact force max {force(bi['max_contact_force'])} at {deg(bi['max_contact_at_deg'])}, min "
                      f"{force(bi['min_contact_force'])}; camshaft torque max {torque_text(bi['max_torque'])} at "
                      f"{deg(bi['max_torque_at_deg'])}; jump speed {jump_text(bi['jump_rpm'])}"))
-    rows.append(("contact lost / jammed", f"{'yes' if fo['contact_lost'] else 'no'} / {'yes' if fo['jammed'] else 'no'}"))
+    lost, jammed = ('yes' if fo[k] else 'no' for k in ('contact_lost', 'jammed'))
+    rows.append(("contact lost / jammed", f"{lost} / {jammed}"))
     note = impact_note(df.forces)
     if note:
         rows.append(("note", note))

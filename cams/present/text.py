@@ -164,7 +164,8 @@ def print_checks(rep: dict) -> None:
     for c in rep["checks"]:
         at = "" if c["at_deg"] is None else f" at {deg(c['at_deg'])}"
         lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'], f)})"
-        print(f"  {'pass' if c['passed'] else 'FAIL'}  {check_words(c['name'])}: {_fmt(c['worst'], c['unit'], f)}{at}{lim}{_by(c)}")
+        worst = _fmt(c['worst'], c['unit'], f)
+        print(f"  {'pass' if c['passed'] else 'FAIL'}  {check_words(c['name'])}: {worst}{at}{lim}{_by(c)}")
     lr = rep.get("largest_roller_radius")
     if lr is not None:
         print(f"  roller radius {rep['roller_radius']:{f}} mm; largest without undercut {lr:{f}} mm, "

@@ -26,6 +26,8 @@ Angles are radians; lengths are the design's unit (mm).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import pairwise
+from typing import Protocol
 
 import numpy as np
 
@@ -231,7 +233,18 @@ def _polyline_min_radius(pts: np.ndarray) -> float:
     return float(np.min(np.linalg.norm(q, axis=1)))
 
 
-def default_bore_radius(profile: Profile) -> float:
+
+class _Radii(Protocol):
+    """What the default bore needs of a profile (a roller's or a flat face's)."""
+
+    @property
+    def R0(self) -> float: ...
+
+    @property
+    def min_work_radius(self) -> float: ...
+
+
+def default_bore_radius(profile: Profile | _Radii) -> float:
     """Default bore radius: ``0.3 R0``, capped at 0.8 of the working profile's smallest radius.
 
     Lengths in the design's unit; the cap keeps a wall between bore and profile.
@@ -242,7 +255,7 @@ def default_bore_radius(profile: Profile) -> float:
 def _motion(prog, ph: np.ndarray, u: np.ndarray) -> Motion:
     """Motion at positions ``u`` of phases ``ph`` (sorted by phase), one-sided at the phase ends."""
     cut = np.searchsorted(ph, np.arange(len(prog.phases) + 1))
-    parts = [prog.evaluate_phase(i, u[a:b]) for i, (a, b) in enumerate(zip(cut[:-1], cut[1:])) if b > a]
+    parts = [prog.evaluate_phase(i, u[a:b]) for i, (a, b) in enumerate(pairwise(cut)) if b > a]
     return Motion(*(np.concatenate([getattr(m, k) for m in parts]) for k in ("s", "ds", "d2s", "d3s")))
 
 
@@ -335,7 +348,10 @@ def _sample(design: CamDesign, centre, tol: float, r: float, groove: bool) -> li
 
 
 def _corner_arc(P: np.ndarray, n1: np.ndarray, n2: np.ndarray, dist: float, tol: float) -> np.ndarray:
-    """Points of the circle of radius ``|dist|`` about ``P`` from ``dist n1`` to ``dist n2`` (short way), ends excluded."""
+    """Points of the circle of radius ``|dist|`` about ``P`` from ``dist n1`` to ``dist n2``.
+
+    The short way round, ends excluded.
+    """
     a1, a2 = np.arctan2(n1[1], n1[0]), np.arctan2(n2[1], n2[0])
     da = (a2 - a1 + np.pi) % TWO_PI - np.pi
     rr = abs(dist)

@@ -56,7 +56,7 @@ def test_jamming_from_profile_agrees_with_the_pressure_module(solved, reports, n
     if design.limits.closure == "form":
         ret = reports[name]["jamming_return"]
         assert ret.worst == pytest.approx(np.degrees(ref.ret), abs=1e-6)
-        assert ret.at_deg == pytest.approx(np.degrees(ref.ret_at), abs=1e-3)
+        assert ret.to_dict()["at_deg"] == pytest.approx(np.degrees(ref.ret_at), abs=1e-3)
 
 
 def test_jamming_fails_for_a_centre_inside_the_zone_edge(solved):
@@ -89,14 +89,14 @@ def test_roller_too_large_is_undercut_at_the_right_angle(solved, design_with):
     u = rep["undercut"]
     assert not u.passed and not rep.passed
     assert u.worst == pytest.approx(rho_min, rel=1e-6)
-    assert u.at_deg == pytest.approx(at, abs=0.05)
+    assert u.to_dict()["at_deg"] == pytest.approx(at, abs=0.05)
     assert u.limit == 28.0
     assert rep.largest_roller_radius == pytest.approx(rho_min, rel=1e-6)
     assert rep.recommended_roller_radius == pytest.approx(RECOMMENDED_ROLLER_FRACTION * rho_min, rel=1e-6)
     # the working profile crosses itself there (a swallowtail spanning some degrees round it)
     poly = rep["profile_polygon"]
     assert not poly.passed and poly.worst >= 1 and poly.limit == 0
-    assert poly.at_deg == pytest.approx(at, abs=15.0)
+    assert poly.to_dict()["at_deg"] == pytest.approx(at, abs=15.0)
     # just below the limit: no undercut
     ok = check_profile(design_with("rocker_form", follower={"roller_radius": 0.99 * rho_min}), O)
     assert ok["undercut"].passed and ok["profile_polygon"].passed
@@ -110,7 +110,7 @@ def test_outer_wall_undercut_of_a_groove(solved, design_with):
     d = design_with("rocker_form", follower={"roller_radius": 1.05 * ext.concave})
     rep = check_profile(d, O)
     assert not rep["undercut_outer"].passed
-    assert rep["undercut_outer"].at_deg == pytest.approx(np.degrees(ext.concave_at))
+    assert rep["undercut_outer"].to_dict()["at_deg"] == pytest.approx(np.degrees(ext.concave_at))
     assert rep.largest_roller_radius == pytest.approx(min(ext.convex, ext.concave))
 
 
@@ -154,7 +154,7 @@ def test_linear_rise_has_a_sharp_point_at_its_convex_end(design_with):
         {"phase": "return", "law": "cycloidal", "angle": 120}, {"phase": "dwell"}])
     rep = check_profile(d, np.array([-5.0, -60.0]))
     u = rep["undercut"]
-    assert not u.passed and u.worst == 0.0 and u.at_deg == pytest.approx(150.0)
+    assert not u.passed and u.worst == 0.0 and u.to_dict()["at_deg"] == pytest.approx(150.0)
 
 
 @pytest.mark.parametrize("name", ["rocker_form", "translating_force"])
