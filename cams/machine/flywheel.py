@@ -49,7 +49,7 @@ The moments and the inertia are given as samples over one cycle. Between the
 samples they are interpolated piecewise-linearly (``interpolation="linear"``)
 or by a periodic cubic spline (``"spline"``); the curves are evaluated on a
 dense grid of ``dense`` points per cycle. With few samples (seed 004's 12
-positions) the result depends on that choice: see :mod:`tests.forces`.
+positions) the result depends on that choice: see :mod:`tests.machine.forces`.
 """
 
 from __future__ import annotations

@@ -26,7 +26,7 @@ from laws.errors import InputError
 ROOT = Path(__file__).resolve().parents[2]
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"
 PUMP = ROOT / "examples" / "machines" / "pump.toml"
-FORCES = ROOT / "tests" / "forces" / "data" / "slotting_forces.toml"
+FORCES = ROOT / "tests" / "machine" / "forces" / "data" / "slotting_forces.toml"
 
 
 def raw(path: Path) -> dict:

@@ -12,7 +12,7 @@ import pytest
 from cams.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
-DATA = ROOT / "tests" / "forces" / "data" / "slotting_forces.toml"
+DATA = ROOT / "tests" / "machine" / "forces" / "data" / "slotting_forces.toml"
 
 
 def test_drawing_leaves_the_backend_and_pyplot_alone():

@@ -15,7 +15,7 @@ from laws.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[2]
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"
-FORCES = ROOT / "tests" / "forces" / "data" / "slotting_forces.toml"
+FORCES = ROOT / "tests" / "machine" / "forces" / "data" / "slotting_forces.toml"
 
 
 def _raw(path: Path) -> dict:

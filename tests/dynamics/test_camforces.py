@@ -1,7 +1,7 @@
 """Forces at a force-closed cam (cams.dynamics.forces): contact force, torque, spring, jump speed, jamming.
 
 The jump speed is confirmed by a time simulation of the follower on a stiff one-sided
-contact (tests/forces/sim.py) that knows nothing of the closed-form contact force.
+contact (tests/dynamics/sim.py) that knows nothing of the closed-form contact force.
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ from cams.solve import solve
 from laws.errors import InputError
 from tests.conftest import EXAMPLES, rocker_dict
 
-from .sim import simulate
+from tests.dynamics.sim import simulate
 
 TRANS = load_design(EXAMPLES / "translating_force.toml")
 # a rocker with a rise and a return that differ, so that one position is the most critical

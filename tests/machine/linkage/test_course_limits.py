@@ -18,7 +18,7 @@ from cams.machine.linkage.synthesis import (
 )
 from laws.errors import InputError
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"
 PUMP = ROOT / "examples" / "machines" / "pump.toml"
 

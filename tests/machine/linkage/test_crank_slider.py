@@ -9,7 +9,7 @@ from scipy.optimize import fsolve
 from cams.machine.linkage import AssemblyError, analyse, crank_slider_crank
 from cams.machine.linkage.machines import CrankSlider, OpposedTwin, SlottedLeverPump
 from laws.errors import InfeasibleError, InputError
-from tests.linkage.conftest import assert_close, numeric_angle_derivatives, numeric_derivatives
+from tests.machine.linkage.conftest import assert_close, numeric_angle_derivatives, numeric_derivatives
 
 PHI = np.linspace(0.0, 2 * np.pi, 41, endpoint=False) + 0.02
 

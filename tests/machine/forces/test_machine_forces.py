@@ -17,7 +17,7 @@ from cams.machine.machinefile import load_machine, machine_from_dict
 from laws.errors import InputError
 
 HERE = Path(__file__).resolve().parent
-ROOT = HERE.parents[1]
+ROOT = HERE.parents[2]
 DATA = HERE / "data" / "slotting_forces.toml"
 PUMP = ROOT / "examples" / "machines" / "pump.toml"
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"

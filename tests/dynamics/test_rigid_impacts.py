@@ -17,7 +17,7 @@ from laws.units import rpm_to_omega
 ROOT = Path(__file__).resolve().parents[2]
 FEED = ROOT / "examples" / "slotting_feed_cam.toml"
 TRANS = ROOT / "examples" / "translating_force.toml"
-MACHINE = Path(__file__).resolve().parent / "data" / "slotting_forces.toml"
+MACHINE = Path(__file__).resolve().parents[1] / "machine" / "forces" / "data" / "slotting_forces.toml"
 
 
 def _strict(text: str):

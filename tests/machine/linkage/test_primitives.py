@@ -21,7 +21,7 @@ from cams.machine.linkage import (
     rrr,
     solve_real,
 )
-from tests.linkage.conftest import assert_close, numeric_angle_derivatives, numeric_derivatives
+from tests.machine.linkage.conftest import assert_close, numeric_angle_derivatives, numeric_derivatives
 
 PHI = np.linspace(0.05, 2 * np.pi - 0.05, 37)
 

@@ -14,7 +14,7 @@ from cams.machine.kinetostatics import machine_forces
 from cams.machine.machinefile import load_machine
 from cams.machine.timing import design_machine
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"
 FORCES_DATA = Path(__file__).resolve().parent / "data" / "slotting_forces.toml"
 

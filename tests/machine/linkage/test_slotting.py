@@ -9,7 +9,7 @@ from scipy.optimize import least_squares
 from cams.machine.linkage import AssemblyError, analyse, dead_positions
 from cams.machine.linkage.machines import SlottingMachine
 from laws.errors import InputError
-from tests.linkage.conftest import assert_close, numeric_angle_derivatives, numeric_derivatives
+from tests.machine.linkage.conftest import assert_close, numeric_angle_derivatives, numeric_derivatives
 
 PHI = np.linspace(0.0, 2 * np.pi, 49, endpoint=False) + 0.01
 

@@ -15,7 +15,7 @@ from cams.machine.linkage.machines import CrankSlider
 from cams.machine.machinefile import machine_from_dict
 from cams.machine.timing import design_machine
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"
 ANGLES = [0, 20, 60, 180, 360, 540, 720]
 PRESSURE = [5.0e6, 4.0e6, 1.5e6, 0.2e6, 0.0, 0.1e6, 5.0e6]

@@ -42,7 +42,7 @@ from cams.machine.linkage.machines import OpposedTwin
 from cams.machine.machinefile import load_machine
 from cams.machine.timing import windows
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 SLOTTING_FILE = ROOT / "examples" / "machines" / "slotting_machine.toml"
 PUMP_FILE = ROOT / "examples" / "machines" / "pump.toml"
 
