@@ -22,7 +22,6 @@ from cams.io.designfile import design_from_dict, load_design
 from cams.solve import solve
 from laws.errors import InputError
 from tests.conftest import EXAMPLES, rocker_dict
-
 from tests.dynamics.sim import simulate
 
 TRANS = load_design(EXAMPLES / "translating_force.toml")
