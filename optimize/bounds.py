@@ -29,22 +29,22 @@ def _recession_direction(design: CamDesign, grid: int = GRID) -> tuple[np.ndarra
 
     From the wedges at the scan positions of :func:`optimize.zone.zone_table`;
     the margin is reduced by how far a wedge's axis can turn between two scan
-    positions (it turns with the follower: ``omega s``), so it holds for every
+    positions (it turns with the follower: ``turn s``), so it holds for every
     cam angle.
     """
     t = zone_table(design, grid)
     if not t.phases:
         return None
-    # axis of the wedge = bisector of the two inward directions: -(n_t + n_t1), turned by omega s
+    # axis of the wedge = bisector of the two inward directions: -(n_t + n_t1), turned by turn s
     n = t.n0[:, 0] + t.n0[:, 1]
-    ang = (np.arctan2(-n[:, 1], -n[:, 0])[:, None] + t.omega * t.s[:, 0]).ravel()
+    ang = (np.arctan2(-n[:, 1], -n[:, 0])[:, None] + t.turn * t.s[:, 0]).ravel()
     lim = np.repeat(t.limit, t.s.shape[-1])
     ang = ang[0] + np.mod(ang - ang[0] + np.pi, 2 * np.pi) - np.pi
-    # between scan positions the axis turns by at most |omega s'| dphi, s' within |s''| dphi of the scan's
+    # between scan positions the axis turns by at most |turn s'| dphi, s' within |s''| dphi of the scan's
     dphi = np.max(np.diff(t.u)) * t.angle[:, None]
     w1 = np.max(np.abs(t.ds[:, 0]), axis=1, keepdims=True)
     w2 = np.max(np.abs(t.d2s[:, 0]), axis=1, keepdims=True)
-    drift = abs(t.omega) * float(np.max((w1 + w2 * dphi) * dphi))
+    drift = abs(t.turn) * float(np.max((w1 + w2 * dphi) * dphi))
     lo, hi = np.max(ang - lim) + drift, np.min(ang + lim) - drift
     if hi <= lo:
         return None

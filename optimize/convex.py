@@ -23,7 +23,7 @@ from optimize.zone import sample_wedges
 __all__ = ["nearest_convex", "weighted_convex"]
 
 
-def _solve(design, objective, samples, extra):
+def _solve(design, objective, samples, half_planes):
     import cvxpy as cp
 
     W = sample_wedges(design, samples)
@@ -31,8 +31,8 @@ def _solve(design, objective, samples, extra):
     s = design.scale  # a unit for the variables, not a tolerance: the result is checked on the continuum after
     x = cp.Variable(2)
     cons = [N @ x <= c / s]
-    if extra is not None and len(extra[0]):
-        cons.append(np.asarray(extra[0]) @ x <= np.asarray(extra[1]) / s)
+    if half_planes is not None and len(half_planes[0]):
+        cons.append(np.asarray(half_planes[0]) @ x <= np.asarray(half_planes[1]) / s)
     prob = cp.Problem(cp.Minimize(objective(x, s)), cons)
     try:
         prob.solve()
@@ -55,7 +55,7 @@ def nearest_convex(
     target: np.ndarray,
     *,
     samples: int,
-    extra: tuple[np.ndarray, np.ndarray] | None = None,
+    half_planes: tuple[np.ndarray, np.ndarray] | None = None,
     tol: float = 1e-9,
 ) -> CentreSolution:
     """Admissible centre nearest to ``target`` over the sampled zone (cvxpy).
@@ -65,10 +65,10 @@ def nearest_convex(
     import cvxpy as cp
 
     T = np.asarray(target, dtype=float)
-    W, N, c, O = _solve(design, lambda x, s: cp.norm(x - T / s), samples, extra)
-    # polish: the exact nearest point of the same sampled zone (and the extra half-planes)
-    eN = np.zeros((0, 2)) if extra is None else np.asarray(extra[0], float)
-    ec = np.zeros(0) if extra is None else np.asarray(extra[1], float)
+    W, N, c, O = _solve(design, lambda x, s: cp.norm(x - T / s), samples, half_planes)
+    # polish: the exact nearest point of the same sampled zone (and the half_planes half-planes)
+    eN = np.zeros((0, 2)) if half_planes is None else np.asarray(half_planes[0], float)
+    ec = np.zeros(0) if half_planes is None else np.asarray(half_planes[1], float)
     res = nearest_point(T, np.vstack([N, eN]), np.concatenate([c, ec]))
     if res is not None:
         O = res[0]

@@ -85,7 +85,8 @@ class Relaxation:
         return abs(self.bound - self.given) / abs(self.given)
 
 
-def zone_margin(design: CamDesign, extra=None, *, box: float = 1e6, iters: int = 40) -> tuple[float, float, np.ndarray]:
+def zone_margin(design: CamDesign, half_planes=None, *, box: float = 1e6,
+                iters: int = 40) -> tuple[float, float, np.ndarray]:
     """Bounds on the zone's largest inscribed margin: ``min over O of max signed distance outside``.
 
     The continuous function ``G(O)`` (:func:`optimize.zone.max_violation`,
@@ -101,7 +102,7 @@ def zone_margin(design: CamDesign, extra=None, *, box: float = 1e6, iters: int =
 
     Parameters
     ----------
-    extra : (N, c), optional
+    half_planes : (N, c), optional
         Half-planes held exactly (the line of a fixed offset).
 
     Returns
@@ -115,7 +116,7 @@ def zone_margin(design: CamDesign, extra=None, *, box: float = 1e6, iters: int =
     scale = design.scale
     half = box * scale
     while True:
-        lower, upper, best = _margin_in_box(design, extra, half, iters)
+        lower, upper, best = _margin_in_box(design, half_planes, half, iters)
         # a zone that starts beyond the box (a cam far larger than its follower: tiny phases) is not
         # empty: widen the box while the best point presses on it, up to R0 ~ 1e12 times the follower
         if not (lower > 0 and np.max(np.abs(best - design.follower.position(0.0))) >= half * (1 - 1e-9)
@@ -124,7 +125,7 @@ def zone_margin(design: CamDesign, extra=None, *, box: float = 1e6, iters: int =
         half *= 1e3
 
 
-def _margin_in_box(design: CamDesign, extra, half: float, iters: int) -> tuple[float, float, np.ndarray]:
+def _margin_in_box(design: CamDesign, half_planes, half: float, iters: int) -> tuple[float, float, np.ndarray]:
     """:func:`zone_margin` for centres within ``half`` (length unit) of A0 on each axis."""
     from scipy.optimize import linprog
 
@@ -133,8 +134,8 @@ def _margin_in_box(design: CamDesign, extra, half: float, iters: int) -> tuple[f
 
     A0 = design.follower.position(0.0)
     N, c = sample_wedges(design, 64).lines()
-    eN = np.zeros((0, 2)) if extra is None else np.asarray(extra[0], float)
-    ec = np.zeros(0) if extra is None else np.asarray(extra[1], float)
+    eN = np.zeros((0, 2)) if half_planes is None else np.asarray(half_planes[0], float)
+    ec = np.zeros(0) if half_planes is None else np.asarray(half_planes[1], float)
     bounds = [(A0[0] - half, A0[0] + half), (A0[1] - half, A0[1] + half), (None, None)]
     t = zone_table(design)
     lower, upper, best = -np.inf, np.inf, A0
@@ -161,12 +162,12 @@ def _margin_in_box(design: CamDesign, extra, half: float, iters: int) -> tuple[f
     return lower, upper, best
 
 
-def zone_empty(design: CamDesign, extra=None) -> bool:
+def zone_empty(design: CamDesign, half_planes=None) -> bool:
     """True unless :func:`zone_margin` shows a centre inside the continuous zone (``upper <= 0``).
 
     A margin left undecided after its iterations counts as empty.
     """
-    return bool(zone_margin(design, extra)[1] > 0)
+    return bool(zone_margin(design, half_planes)[1] > 0)
 
 
 def least_R0(design: CamDesign) -> float | None:
@@ -227,15 +228,15 @@ def _misses_L(design: CamDesign, L: float) -> bool:
     return not lo <= L <= hi
 
 
-def relaxations(design: CamDesign, extra=None, L: float | None = None) -> list[Relaxation]:
+def relaxations(design: CamDesign, half_planes=None, L: float | None = None) -> list[Relaxation]:
     """Every limit that alone can make the empty zone non-empty, with its nearest feasible value.
 
     Parameters
     ----------
     design : CamDesign
-        A design whose zone (with ``extra``) is empty, or with no admissible centre at distance ``L`` from
+        A design whose zone (with ``half_planes``) is empty, or with no admissible centre at distance ``L`` from
         the pivot.
-    extra : (N, c), optional
+    half_planes : (N, c), optional
         Additional half-planes held (the line of a fixed offset).
     L : float, optional
         A fixed centre distance held (rocker, length): the zone must reach the circle of radius ``L`` about
@@ -252,7 +253,7 @@ def relaxations(design: CamDesign, extra=None, L: float | None = None) -> list[R
     if L is not None:
         held = L
 
-        def held_empty(d: CamDesign, extra=None) -> bool:  # L held: the zone must reach its circle
+        def held_empty(d: CamDesign, half_planes=None) -> bool:  # L held: the zone must reach its circle
             return _misses_L(d, held)
 
         empty = held_empty
@@ -269,10 +270,10 @@ def relaxations(design: CamDesign, extra=None, L: float | None = None) -> list[R
         def with_value(v, key=key):
             return design.with_(limits=replace(lim, **{key: v}))
 
-        if empty(with_value(loose), extra):
+        if empty(with_value(loose), half_planes):
             continue
-        bound = _bisect(lambda v: empty(with_value(v), extra), loose, given, math.radians(ANGLE_TOL_DEG))
-        attained = extra is not None or L is not None or _attained(lambda v: least_R0(with_value(v)), bound,
+        bound = _bisect(lambda v: empty(with_value(v), half_planes), loose, given, math.radians(ANGLE_TOL_DEG))
+        attained = half_planes is not None or L is not None or _attained(lambda v: least_R0(with_value(v)), bound,
                                                                     loose - bound)
         out.append(Relaxation(name, given, bound, attained))
     if not out and len(fields) == 2:
@@ -280,17 +281,17 @@ def relaxations(design: CamDesign, extra=None, L: float | None = None) -> list[R
             return design.with_(limits=replace(lim, pressure_angle=v, return_pressure_angle=v))
 
         given = max(lim.pressure_angle, lim.return_limit)
-        if given < loose and not empty(both(loose), extra):
-            bound = _bisect(lambda v: empty(both(v), extra), loose, given, math.radians(ANGLE_TOL_DEG))
+        if given < loose and not empty(both(loose), half_planes):
+            bound = _bisect(lambda v: empty(both(v), half_planes), loose, given, math.radians(ANGLE_TOL_DEG))
             attained = L is not None or _attained(lambda v: least_R0(both(v)), bound, loose - bound)
             out.append(Relaxation("limits.pressure_angle", given, bound, attained, joint=True))
     if isinstance(design.follower, Rocker) and lim.safety_factor > 1.0:
         def with_k(v):
             return design.with_(limits=replace(lim, safety_factor=v))
 
-        if not empty(with_k(1.0), extra):
-            bound = _bisect(lambda v: empty(with_k(v), extra), 1.0, lim.safety_factor, K_TOL)
-            attained = extra is not None or L is not None or _attained(lambda v: least_R0(with_k(v)), bound,
+        if not empty(with_k(1.0), half_planes):
+            bound = _bisect(lambda v: empty(with_k(v), half_planes), 1.0, lim.safety_factor, K_TOL)
+            attained = half_planes is not None or L is not None or _attained(lambda v: least_R0(with_k(v)), bound,
                                                                         1.0 - bound)
             out.append(Relaxation("limits.safety_factor", lim.safety_factor, bound, attained))
     return sorted(out, key=lambda x: x.change)
@@ -332,14 +333,14 @@ def _where(design: CamDesign, r: Relaxation) -> str:
     return "on the rise and the return" if both else "on the rise"
 
 
-def explain_infeasible(design: CamDesign, extra=None, L: float | None = None) -> InfeasibleError | None:
+def explain_infeasible(design: CamDesign, half_planes=None, L: float | None = None) -> InfeasibleError | None:
     """One-line error naming the limit that binds and its nearest feasible value, the others held.
 
     Parameters
     ----------
     design : CamDesign
         A design for which a solver found no admissible centre.
-    extra : (N, c), optional
+    half_planes : (N, c), optional
         The half-planes of a fixed offset (``optimize.sizing._offset_line``).
     L : float, optional
         The fixed centre distance ``limits.centre_distance`` (rocker, length), held with the other limits.
@@ -347,18 +348,18 @@ def explain_infeasible(design: CamDesign, extra=None, L: float | None = None) ->
     Returns
     -------
     InfeasibleError or None
-        None when the continuous zone (with ``extra``) is not empty after all
+        None when the continuous zone (with ``half_planes``) is not empty after all
         (the caller keeps its own error). The field is the limit whose
         feasible value is the smallest relative change; the others that alone
         would do are listed after it.
     """
-    if not zone_empty(design, extra):
+    if not zone_empty(design, half_planes):
         return None
-    found = relaxations(design, extra, L)
+    found = relaxations(design, half_planes, L)
     held = "other limits held" if L is None else f"other limits and L = {L:g} mm held"
     if not found:
         if L is not None:
-            free = explain_infeasible(design, extra)
+            free = explain_infeasible(design, half_planes)
             return InfeasibleError("limits.pressure_angle", f"no cam centre satisfies the limits at L = {L:g} mm, "
                                    "and no limit relaxed alone with L held makes one admissible; without "
                                    f"limits.centre_distance, {free}")
@@ -379,7 +380,7 @@ def explain_infeasible(design: CamDesign, extra=None, L: float | None = None) ->
 
 
 def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolution]:
-    """Wrap a nearest-centre solver ``solver(design, target, *, extra=None, ...)``: explain an empty zone.
+    """Wrap a nearest-centre solver ``solver(design, target, *, half_planes=None, ...)``: explain an empty zone.
 
     An :class:`InfeasibleError` of an empty zone (field ``limits.pressure_angle``
     or ``follower.offset``) is replaced by :func:`explain_infeasible`'s, which
@@ -394,20 +395,20 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
     """
 
     @functools.wraps(solver)
-    def wrapper(design: CamDesign, target: np.ndarray, *args, extra=None, **kw):
+    def wrapper(design: CamDesign, target: np.ndarray, *args, half_planes=None, **kw):
         try:
-            sol = solver(design, target, *args, extra=extra, **kw)
+            sol = solver(design, target, *args, half_planes=half_planes, **kw)
         except InfeasibleError as e:
             if e.field not in ("limits.pressure_angle", "follower.offset"):
                 raise
-            why = explain_infeasible(design, extra)
+            why = explain_infeasible(design, half_planes)
             if why is None:
-                why = _solver_failed(design, extra, e)
+                why = _solver_failed(design, half_planes, e)
             if why is None:
                 raise
             raise why from e
         if sol.certified is False and sol.error_bound is None:
-            why = explain_infeasible(design, extra)
+            why = explain_infeasible(design, half_planes)
             if why is not None:
                 raise why
         return sol
@@ -415,9 +416,9 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
     return wrapper
 
 
-def _solver_failed(design: CamDesign, extra, err: InfeasibleError) -> InfeasibleError | None:
+def _solver_failed(design: CamDesign, half_planes, err: InfeasibleError) -> InfeasibleError | None:
     """The error of a solver that found no centre in a zone that is not empty, or None if unconfirmed."""
-    _lower, upper, O = zone_margin(design, extra)
+    _lower, upper, O = zone_margin(design, half_planes)
     if upper > 0:
         return None
     R0 = float(np.linalg.norm(O - design.follower.position(0.0)))

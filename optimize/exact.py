@@ -68,7 +68,7 @@ def nearest_exact(
     design: CamDesign,
     target: np.ndarray,
     *,
-    extra: tuple[np.ndarray, np.ndarray] | None = None,
+    half_planes: tuple[np.ndarray, np.ndarray] | None = None,
     tol: float = 0.0,
     max_iter: int | None = None,
 ) -> CentreSolution:
@@ -81,7 +81,7 @@ def nearest_exact(
         The roller centre at the near dwell (minimum R0) or the rocker pivot
         (minimum L), the follower's fixed frame (:mod:`cams.model.follower`),
         length unit.
-    extra : (N, c), optional
+    half_planes : (N, c), optional
         Additional half-planes ``N O <= c`` (e.g. a fixed offset as two).
     tol : float
         Allowed violation of a constraint relative to the magnitude of the
@@ -103,7 +103,7 @@ def nearest_exact(
     Raises
     ------
     InfeasibleError
-        When the zone (with ``extra``) is empty.
+        When the zone (with ``half_planes``) is empty.
     ExchangeInvariantError
         When the relaxation's distance decreases between iterations (never
         in exact arithmetic; beyond rounding it is a fault).
@@ -111,8 +111,8 @@ def nearest_exact(
     rel = max(float(tol), EPS)
     T = np.asarray(target, dtype=float)
     q = NearestPoint(T)
-    if extra is not None and len(extra[0]):
-        q.add(np.asarray(extra[0], float), np.asarray(extra[1], float))
+    if half_planes is not None and len(half_planes[0]):
+        q.add(np.asarray(half_planes[0], float), np.asarray(half_planes[1], float))
         try:
             q.solve()
         except InfeasibleError:

@@ -157,7 +157,7 @@ def nearest_exhaustive(
     target: np.ndarray,
     *,
     samples: int,
-    extra: tuple[np.ndarray, np.ndarray] | None = None,
+    half_planes: tuple[np.ndarray, np.ndarray] | None = None,
     tol: float = 1e-9,
 ) -> CentreSolution:
     """Nearest admissible candidate to ``target``: the seed's crossings, completed.
@@ -170,7 +170,7 @@ def nearest_exhaustive(
         L), in the follower's fixed frame (:mod:`cams.model.follower`), length unit.
     samples : int
         Steps per constrained phase (``samples + 1`` positions with both ends).
-    extra : (N, c), optional
+    half_planes : (N, c), optional
         Additional half-planes; a pair of opposite ones (a fixed offset line)
         is crossed with every sampled line instead, and the foot of the
         perpendicular from ``target`` on it is a candidate too.
@@ -207,8 +207,8 @@ def nearest_exhaustive(
     W = sample_wedges(design, samples)
     N_all, c_all = W.lines()
     T = np.asarray(target, dtype=float)
-    if extra is not None and len(extra[0]):
-        eN, ec = np.asarray(extra[0], float), np.asarray(extra[1], float)
+    if half_planes is not None and len(half_planes[0]):
+        eN, ec = np.asarray(half_planes[0], float), np.asarray(half_planes[1], float)
         P, ok = line_crossings(eN[:1], ec[:1], N_all, c_all)
         k = np.nonzero(ok[0])[0]
         foot = T - (eN[0] @ T - ec[0]) * eN[0]

@@ -97,7 +97,7 @@ def _offset_line(design: CamDesign):
 
 
 @diagnosed
-def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None, extra=None) -> CentreSolution:
+def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None, half_planes=None) -> CentreSolution:
     """Admissible centre nearest to ``target`` by the design's (or the given) method.
 
     Parameters
@@ -109,7 +109,7 @@ def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None,
         rocker pivot, the origin (minimum L).
     method : {"exact", "convex", "exhaustive"}, optional
         Overrides ``design.method``; the sampled methods use ``design.samples``.
-    extra : (N, c), optional
+    half_planes : (N, c), optional
         Additional half-planes ``N O <= c`` (unit normals, length unit), e.g.
         the line of a fixed offset.
 
@@ -122,7 +122,7 @@ def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None,
     Raises
     ------
     InfeasibleError
-        The zone (with ``extra``) is empty: the message names the limit that
+        The zone (with ``half_planes``) is empty: the message names the limit that
         binds and its nearest feasible value, the others held
         (:func:`optimize.diagnose.diagnosed`).
     InputError
@@ -132,14 +132,14 @@ def nearest(design: CamDesign, target: np.ndarray, *, method: str | None = None,
     if method == "exact":
         from optimize.exact import nearest_exact
 
-        return nearest_exact(design, target, extra=extra)
+        return nearest_exact(design, target, half_planes=half_planes)
     if method == "convex":
         from optimize.convex import nearest_convex
 
-        return nearest_convex(design, target, samples=design.samples, extra=extra)
+        return nearest_convex(design, target, samples=design.samples, half_planes=half_planes)
     from optimize.exhaustive import nearest_exhaustive
 
-    return nearest_exhaustive(design, target, samples=design.samples, extra=extra)
+    return nearest_exhaustive(design, target, samples=design.samples, half_planes=half_planes)
 
 
 
@@ -199,7 +199,7 @@ def size(design: CamDesign, *, method: str | None = None, objective: str = "R0")
     lim = design.limits
     A0 = f.position(0.0)
     samples = None if method == "exact" else design.samples
-    extra = _offset_line(design)
+    half_planes = _offset_line(design)
     notes: list[str] = []
     t0 = time.perf_counter()
     if objective == "L" and not isinstance(f, Rocker):
@@ -218,14 +218,14 @@ def size(design: CamDesign, *, method: str | None = None, objective: str = "R0")
     sol: CentreSolution | None = None
     if L_fixed is None:
         target = A0 if objective == "R0" else f.pivot
-        sol = nearest(design, target, method=method, extra=extra)
+        sol = nearest(design, target, method=method, half_planes=half_planes)
         centre, mode = sol.centre, ("min_R0" if objective == "R0" else "min_L")
-        if extra is not None:
+        if half_planes is not None:
             mode = "fixed_offset"
         if floor is not None and np.linalg.norm(centre - A0) < floor:
             mode = "floor_R0"
             off = f.offset if isinstance(f, Translating) else None
-            if off is not None:  # the fixed offset (``extra`` is its line)
+            if off is not None:  # the fixed offset (``half_planes`` is its line)
                 cands = [np.array([offset_x(off), sg * np.sqrt(max(floor**2 - off**2, 0.0))]) for sg in (1, -1)]
                 cands = [p for p in cands if floor >= abs(off) and G(p) <= round_off(design, np.abs(p).sum())]
                 if not cands:

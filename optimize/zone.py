@@ -32,14 +32,14 @@ The follower as a rigid body
 ----------------------------
 Both followers carry their geometry rigidly: at displacement ``s`` the roller
 centre A, the tangent ``T = dA/ds`` and the lever are those at ``s = 0`` turned
-by ``omega s`` about the origin and moved by ``tau s`` (rocker: ``omega`` = its
-sense, ``tau = 0``, the origin is the pivot; translating: ``omega = 0``,
+by ``turn s`` about the origin and moved by ``tau s`` (rocker: ``turn`` = its
+sense, ``tau = 0``, the origin is the pivot; translating: ``turn = 0``,
 ``tau`` = the unit vector of the rise). With ``V = s' T`` the wedge of a
 position is therefore the wedge at ``s = 0`` with the apex term ``s'`` put in,
 moved rigidly:
 
-    n(s) = R(omega s) n0,
-    D(s) = R(omega s) (P0 + s' Q0) + tau s,   P0 = A0 + k lever0,  Q0 = eps k x T0,
+    n(s) = R(turn s) n0,
+    D(s) = R(turn s) (P0 + s' Q0) + tau s,   P0 = A0 + k lever0,  Q0 = eps k x T0,
 
 (``k`` the K_C shift of the side), and the signed distance of a centre O
 outside a side is
@@ -49,8 +49,8 @@ outside a side is
 With ``p = n . O`` and ``m = (k x n) . O`` its derivatives along the cam angle
 are (``s', s'', s'''`` from the laws)
 
-    h'  = omega s' m - b1 s'' - bt s',
-    h'' = omega (s'' m - omega s'^2 p) - b1 s''' - bt s'',
+    h'  = turn s' m - b1 s'' - bt s',
+    h'' = turn (s'' m - turn s'^2 p) - b1 s''' - bt s'',
 
 which :func:`max_violation` uses to locate the largest violation by safeguarded
 Newton steps. :func:`_side_constants` is the one place of the wedge geometry;
@@ -122,7 +122,7 @@ class Wedges:
 # -- the wedge geometry ------------------------------------------------------------------------
 
 def _rigid_motion(design: CamDesign) -> tuple[float, np.ndarray]:
-    """``(omega, tau)``: the follower's geometry at ``s`` is that at 0 turned by ``omega s``, moved by ``tau s``."""
+    """``(turn, tau)``: the follower's geometry at ``s`` is that at 0 turned by ``turn s``, moved by ``tau s``."""
     f = design.follower
     if isinstance(f, Rocker):
         return float(f.sense), np.zeros(2)
@@ -164,9 +164,9 @@ def phase_wedges(design: CamDesign, i: int, limit: float, u: np.ndarray) -> Wedg
     """Wedges of phase ``i`` at normalized positions ``u`` (one-sided at its ends)."""
     u = np.asarray(u, dtype=float)
     m = design.program.evaluate_phase(i, u)
-    omega, tau = _rigid_motion(design)
+    turn, tau = _rigid_motion(design)
     n0, P0, Q0 = _side_constants(design, limit)
-    c, sn = np.cos(omega * m.s)[:, None], np.sin(omega * m.s)[:, None]
+    c, sn = np.cos(turn * m.s)[:, None], np.sin(turn * m.s)[:, None]
     n = len(u)
     normals = np.empty((n, 2, 2))
     normals[..., 0], normals[..., 1] = _turn(c, sn, n0[:, 0], n0[:, 1])
@@ -189,13 +189,13 @@ def _offset(b0, b1, bt, s, ds):
     return b0 + b1 * ds + bt * s
 
 
-def _slopes(omega, O, nx, ny, p, b1, bt, ds, d2s, d3s=None):
+def _slopes(turn, O, nx, ny, p, b1, bt, ds, d2s, d3s=None):
     """``h'`` and, given ``s'''``, also ``h''`` along the cam angle (module notes); ``p = n . O``."""
     m = nx * O[1] - ny * O[0]
-    d1 = omega * ds * m - b1 * d2s - bt * ds
+    d1 = turn * ds * m - b1 * d2s - bt * ds
     if d3s is None:
         return d1
-    return d1, omega * (d2s * m - omega * ds * ds * p) - b1 * d3s - bt * d2s
+    return d1, turn * (d2s * m - turn * ds * ds * p) - b1 * d3s - bt * d2s
 
 
 def _concat(parts: list[Wedges]) -> Wedges:
@@ -230,7 +230,7 @@ class ZoneTable:
         Program indices of the constrained phases.
     limit : ndarray, shape (P,)
         Their allowable pressure angles, radians.
-    omega : float
+    turn : float
         Turn of the follower per unit displacement (rocker: its sense; 0).
     n0 : ndarray, shape (P, 2, 2)
         Unit normals at ``s = 0``.
@@ -257,7 +257,7 @@ class ZoneTable:
     design: CamDesign
     phases: tuple[int, ...]
     limit: np.ndarray
-    omega: float
+    turn: float
     n0: np.ndarray
     b0: np.ndarray
     b1: np.ndarray
@@ -317,7 +317,7 @@ def clear_cache() -> None:
 def _zone_table(design: CamDesign, grid: int) -> ZoneTable:
     phases = design.constrained_phases()
     P = len(phases)
-    omega, tau = _rigid_motion(design)
+    turn, tau = _rigid_motion(design)
     n0 = np.zeros((P, 2, 2))
     b0, b1, bt = np.zeros((P, 2)), np.zeros((P, 2)), np.zeros((P, 2))
     for j, (_, lim) in enumerate(phases):
@@ -331,7 +331,7 @@ def _zone_table(design: CamDesign, grid: int) -> ZoneTable:
         m = design.program.evaluate_phase(i, u)
         mo[:, j, 0] = m.s, m.ds, m.d2s, m.d3s
     s, ds, d2s, d3s = mo
-    c, sn = np.cos(omega * s), np.sin(omega * s)
+    c, sn = np.cos(turn * s), np.sin(turn * s)
     B0, B1, BT = b0[..., None], b1[..., None], bt[..., None]
     angle = np.array([design.program.phases[i].angle for i, _ in phases])
     sides = np.stack([n0[..., 0], n0[..., 1], b0, b1, bt, np.repeat(angle[:, None], 2, axis=1)], axis=-1)
@@ -340,7 +340,7 @@ def _zone_table(design: CamDesign, grid: int) -> ZoneTable:
     off = _offset(B0, B1, BT, s, ds)
     return ZoneTable(
         design=design, phases=tuple(i for i, _ in phases), limit=np.array([lim for _, lim in phases], float),
-        omega=omega, n0=n0, b0=b0, b1=b1, bt=bt,
+        turn=turn, n0=n0, b0=b0, b1=b1, bt=bt,
         angle=angle, sides=sides, u=u, nx=nx, ny=ny, off=off, planes=np.stack([nx, ny, off]).reshape(3, -1),
         s=s, ds=ds, d2s=d2s, d3s=d3s, scale=float(design.scale),
     )
@@ -379,7 +379,7 @@ def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, H, iters: int) -> Peaks:
     result can only rise. Elsewhere the scan position ``i`` is the maximum.
     ``H`` holds the scan's ``h, h', h''``, flattened: shape (3, P * 2 * M).
     """
-    omega, u = t.omega, t.u
+    turn, u = t.turn, t.u
     M = len(u)
     f0 = jk * M + i
     f1 = f0 + cell
@@ -413,14 +413,14 @@ def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, H, iters: int) -> Peaks:
                 if hi > lo:
                     mo[:, lo:hi] = t.motion(jj, x[lo:hi])
             s, ds, d2s, d3s = mo
-            if omega:
-                nx, ny = _turn(np.cos(omega * s), np.sin(omega * s), n0x, n0y)
+            if turn:
+                nx, ny = _turn(np.cos(turn * s), np.sin(turn * s), n0x, n0y)
             else:
                 nx, ny = n0x, n0y
             p = nx * O[0] + ny * O[1]
             off = _offset(b0, b1, bt, s, ds)
             hx = p - off
-            d1, d2 = _slopes(omega, O, nx, ny, p, b1, bt, ds, d2s, d3s)
+            d1, d2 = _slopes(turn, O, nx, ny, p, b1, bt, ds, d2s, d3s)
             better = active & (hx > best_v)
             for dst, src in ((best_u, x), (best_v, hx), (best_x, nx), (best_y, ny), (best_c, off)):
                 np.copyto(dst, src, where=better)
@@ -450,7 +450,7 @@ def scan_peaks(t: ZoneTable, centre: np.ndarray, *, iters: int = 8) -> Peaks:
     O = np.asarray(centre, dtype=float)
     p = t.nx * O[0] + t.ny * O[1]
     h = p - t.off
-    h1, h2 = _slopes(t.omega, O, t.nx, t.ny, p, t.sides[:, 3].reshape(-1, 2, 1), t.sides[:, 4].reshape(-1, 2, 1),
+    h1, h2 = _slopes(t.turn, O, t.nx, t.ny, p, t.sides[:, 3].reshape(-1, 2, 1), t.sides[:, 4].reshape(-1, 2, 1),
                      t.ds, t.d2s, t.d3s)
     up, down = h1 > 0, h1 < 0
     point = ~up & ~down

@@ -223,7 +223,7 @@ def test_a_solver_that_fails_on_a_non_empty_zone_is_not_reported_as_infeasible_l
     """A solver refusing a feasible design: the error blames the solver and gives a centre checked independently."""
 
     @diagnosed
-    def refuses(design, target, *, extra=None):
+    def refuses(design, target, *, half_planes=None):
         raise InfeasibleError("limits.pressure_angle", "no cam centre satisfies the pressure-angle limits")
 
     d = design_from_dict(rocker_dict())
