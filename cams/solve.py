@@ -20,7 +20,7 @@ import numpy as np
 from cams.checks.profile import CheckReport, check_profile
 from cams.model.design import METHODS, CamDesign, FlatFaceDesign
 from cams.model.follower import Rocker, Translating
-from cams.profile.roller import profile_options
+from cams.model.options import profile_options
 from cams.verify.pressure import PressureReport, check_pressure
 from laws.errors import InputError, check_option
 from optimize.result import Binding
@@ -106,7 +106,7 @@ class SolveResult:
             the binding lines' cam angles, in degrees; the solver's mode,
             method, samples, error bound, margin, time (s) and notes.
         """
-        from cams.profile.roller import smallest_cam_radius
+        from cams.kinematics.inversion import smallest_cam_radius
 
         deg = lambda x: None if x is None else float(np.degrees(x))  # noqa: E731
         p = self.pressure
@@ -326,8 +326,8 @@ def check_design(design: CamDesign | FlatFaceDesign, *, tolerance: float | None 
     """
     if isinstance(design, FlatFaceDesign):
         from cams.checks.flat import check_flat_face
+        from cams.model.options import resolve_tolerance
         from cams.profile.flat import flat_face_profile
-        from cams.profile.roller import resolve_tolerance
 
         tol, field = resolve_tolerance(design.tolerance, tolerance)  # bad options fail before sizing
         solution = solve(design, method=method)

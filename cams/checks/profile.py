@@ -60,17 +60,11 @@ from cams.kinematics.inversion import (
 )
 from cams.kinematics.vectors import cross
 from cams.model.design import CamDesign
-from cams.profile.roller import (
-    Profile,
-    ProfileOptions,
-    build_profile,
-    default_bore_radius,
-    profile_options,
-)
+from cams.model.options import ProfileOptions, profile_options
+from cams.profile.roller import Profile, build_profile, default_bore_radius
 from laws.units import TWO_PI
 
 __all__ = [
-    "Check",
     "CheckReport",
     "pressure_from_profile",
     "curvature_extremes",

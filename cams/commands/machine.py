@@ -70,7 +70,7 @@ def print_forces(rep: dict, *, follower: str = "rocker") -> None:
     """
     import math
 
-    from cams.dynamics.forces import jump_text
+    from cams.dynamics.jump import jump_text
     from cams.words import deg, force, spring_text, torque
 
     lk = rep.get("linkage")

@@ -62,7 +62,7 @@ def _report(cam, prof, bore, given) -> dict:
         rep.update({"min_work_radius": prof.min_work_radius, "min_rho": sol.min_rho, "min_radius": design.min_radius,
                     "bore_radius": bore, "bore_suggested": given is None, "columns": "phi_deg,work_x,work_y"})
     else:
-        from cams.profile.roller import smallest_cam_radius
+        from cams.kinematics.inversion import smallest_cam_radius
 
         rep.update({"roller_radius": prof.roller_radius, "min_work_radius": prof.min_work_radius, "bore_radius": bore,
                     "bore_suggested": given is None,

@@ -60,8 +60,8 @@ from typing import Any
 
 import numpy as np
 
-from cams.dynamics.impacts import RigidImpact, rigid_impacts
-from cams.dynamics.jump import JumpSpeed, jump_dict, jump_speed, jump_text
+from cams.dynamics.impacts import rigid_impacts
+from cams.dynamics.jump import JumpSpeed, jump_dict, jump_speed
 from cams.dynamics.motion import _grid, _kinematics, _omega
 from cams.kinematics.inversion import contact_normal, invert, pressure_angle
 from cams.kinematics.vectors import cross
@@ -73,26 +73,17 @@ from laws.errors import check_number as _num
 from laws.units import omega_to_rpm
 
 __all__ = [
-    "RigidImpact",
-    "rigid_impacts",
     "impact_note",
     "json_safe",
-    "FollowerDynamics",
-    "Spring",
     "CamForces",
-    "JumpSpeed",
     "cam_forces",
     "spring_for_contact",
-    "jump_speed",
     "jamming_limit",
-    "DynamicsSpec",
     "chosen_spring",
     "DYNAMICS_KEYS",
     "LENGTH_UNITS",
     "DesignForces",
     "design_forces",
-    "jump_dict",
-    "jump_text",
 ]
 
 LENGTH_UNITS = {"mm": 1e-3}

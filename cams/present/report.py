@@ -171,7 +171,8 @@ def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
     number: it is said to be unbounded there, as ``cams solve`` does, with
     the finite values between the impacts on their own row.
     """
-    from cams.dynamics.forces import impact_note, jump_text
+    from cams.dynamics.forces import impact_note
+    from cams.dynamics.jump import jump_text
 
     fo = df.to_dict()
     up = [i for i in fo["impacts"] if i["effect"] == "impulse"]

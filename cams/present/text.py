@@ -71,7 +71,7 @@ def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translati
     spring's units follow the ``follower`` kind: N/m and N, or N m/rad and
     N m for a rocker's torsional spring (:func:`cams.words.spring_text`).
     """
-    from cams.dynamics.forces import jump_text
+    from cams.dynamics.jump import jump_text
     from cams.words import force, torque
 
     sp = fo["spring"]

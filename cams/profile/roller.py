@@ -16,9 +16,8 @@ frames and signs hold here:
   of curvature lies on the cam centre's side). A knife edge (roller radius 0)
   has working profile = pitch curve.
 
-``PitchGeometry``, ``pitch_phase``, ``pitch_curve``, ``offset_radius`` and
-``smallest_cam_radius`` are the kernel's, re-exported here (their former home)
-for one release.
+The pitch curve and its geometry are the kernel's (:mod:`cams.kinematics.inversion`);
+the options are the model's (:mod:`cams.model.options`).
 
 Angles are radians; lengths are the design's unit (mm).
 """
@@ -38,17 +37,12 @@ from cams.kinematics.inversion import (
     offset_curvature,
     offset_radius,
     outward_normal,
-    pitch_curve,
     pitch_phase,
-    smallest_cam_radius,
 )
 from cams.kinematics.vectors import cross, xy
 from cams.model.design import CamDesign
 from cams.model.options import (
-    ProfileOptions,
     check_tolerance,
-    profile_options,
-    resolve_tolerance,
 )
 from laws.errors import InputError
 from laws.program import Motion
@@ -56,17 +50,9 @@ from laws.units import TWO_PI
 
 __all__ = [
     "ProfileSizeError",
-    "PitchGeometry",
     "Profile",
-    "ProfileOptions",
-    "pitch_phase",
-    "pitch_curve",
-    "offset_radius",
     "build_profile",
-    "profile_options",
-    "resolve_tolerance",
     "default_bore_radius",
-    "smallest_cam_radius",
     "DEFAULT_TOLERANCE",
     "PROFILE_KEYS",
     "MAX_TOLERANCE_FRACTION",

@@ -19,8 +19,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from cams.dynamics.forces import FollowerDynamics, _kinematics
+from cams.dynamics.motion import _kinematics
 from cams.model.design import CamDesign
+from cams.model.dynamics import FollowerDynamics
 
 __all__ = ["Flight", "simulate"]
 

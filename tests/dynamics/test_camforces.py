@@ -9,16 +9,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cams.dynamics.forces import (
-    FollowerDynamics,
-    Spring,
-    cam_forces,
-    chosen_spring,
-    jamming_limit,
-    jump_speed,
-    spring_for_contact,
-)
+from cams.dynamics.forces import cam_forces, chosen_spring, jamming_limit, spring_for_contact
+from cams.dynamics.jump import jump_speed
 from cams.io.designfile import design_from_dict, load_design
+from cams.model.dynamics import FollowerDynamics, Spring
 from cams.solve import solve
 from laws.errors import InputError
 from tests.conftest import EXAMPLES, rocker_dict
@@ -125,7 +119,7 @@ def test_free_spring_is_the_linear_programmes_optimum(name, rpm):
     """The closed-form spring against scipy's LP solver (HiGHS) on the same sampled constraints."""
     from scipy.optimize import linprog
 
-    from cams.dynamics.forces import _grid, _kinematics, _omega
+    from cams.dynamics.motion import _grid, _kinematics, _omega
 
     design, dyn = CASES[name]
     sp = spring_for_contact(design, dyn, rpm=rpm, margin=1.25)

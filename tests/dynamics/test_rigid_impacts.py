@@ -9,8 +9,11 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.dynamics.forces import FollowerDynamics, Spring, cam_forces, jump_speed, rigid_impacts
+from cams.dynamics.forces import cam_forces
+from cams.dynamics.impacts import rigid_impacts
+from cams.dynamics.jump import jump_speed
 from cams.io.designfile import load_design
+from cams.model.dynamics import FollowerDynamics, Spring
 from cams.solve import solve
 from laws.units import rpm_to_omega
 

@@ -6,7 +6,8 @@ import pytest
 
 from cams.cam import Cam
 from cams.cli import main
-from cams.dynamics.forces import cam_forces, chosen_spring, jump_speed
+from cams.dynamics.forces import cam_forces, chosen_spring
+from cams.dynamics.jump import jump_speed
 from cams.present.report import report_sections
 from tests.conftest import EXAMPLES
 

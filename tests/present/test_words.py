@@ -142,7 +142,7 @@ def test_smallest_cam_radius_against_dense_swept_rollers_every_sense(key):
 
 def test_smallest_cam_radius_below_R0_less_roller_when_the_rocker_swings_in():
     """A rocker whose rise brings the roller nearer the cam centre: the cam is smallest inside the rise, not at R0 - r."""
-    from cams.profile.roller import smallest_cam_radius
+    from cams.kinematics.inversion import smallest_cam_radius
 
     d = design_from_dict(rocker_dict(follower={"swing": 30.0}, limits={"pressure_angle": 40},
                                      cam={"rotation": "cw"}))
@@ -172,7 +172,7 @@ def test_smallest_cam_radius_at_deg_is_where_it_is_reached(key):
 
 def test_smallest_cam_radius_and_its_angle_inside_the_rise_against_the_dense_argmin():
     """A centre the rise brings the roller nearest to (not the dwell): radius and angle are the dense argmin's."""
-    from cams.profile.roller import smallest_cam_radius
+    from cams.kinematics.inversion import smallest_cam_radius
 
     d = design_from_dict(rocker_dict(follower={"swing": 30.0}, limits={"pressure_angle": 40}))
     A = d.follower.position(d.program.evaluate(np.radians([30.0])).s)[0]  # the roller centre a third into the rise

@@ -14,7 +14,8 @@ from cams.checks.profile import (
     curvature_extremes,
     pressure_from_profile,
 )
-from cams.profile.roller import ProfileOptions, pitch_curve
+from cams.kinematics.inversion import pitch_curve
+from cams.model.options import ProfileOptions
 from cams.solve import check_design
 from cams.verify.pressure import check_pressure, pressure_angle
 from laws.errors import InputError

@@ -23,7 +23,7 @@ import cams.checks.profile as checks
 from cams.checks.profile import _phase_maxima, _phase_rates, check_profile
 from cams.io.designfile import design_from_dict
 from cams.kinematics.extremum import MAX_STEPS
-from cams.profile.roller import pitch_phase
+from cams.kinematics.inversion import pitch_phase
 
 DENSE = 1_000_000
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

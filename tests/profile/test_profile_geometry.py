@@ -7,17 +7,11 @@ import pytest
 import shapely
 from shapely.geometry import LineString
 
+from cams.kinematics.inversion import offset_radius, pitch_curve, pitch_phase
 from cams.model.design import CamDesign
 from cams.model.follower import Rocker
-from cams.profile.roller import (
-    ProfileOptions,
-    build_profile,
-    default_bore_radius,
-    offset_radius,
-    pitch_curve,
-    pitch_phase,
-    profile_options,
-)
+from cams.model.options import ProfileOptions, profile_options
+from cams.profile.roller import build_profile, default_bore_radius
 from laws.errors import InputError
 
 ALL = ("rocker_force", "rocker_form", "translating_force", "translating_form_centric")

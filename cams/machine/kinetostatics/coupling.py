@@ -20,9 +20,11 @@ from laws.errors import InputError
 from laws.units import TWO_PI
 
 if TYPE_CHECKING:
-    from cams.dynamics.forces import CamForces, JumpSpeed, Spring
+    from cams.dynamics.forces import CamForces
+    from cams.dynamics.jump import JumpSpeed
     from cams.machine.flywheel import FlywheelResult
     from cams.machine.timing import CamTiming
+    from cams.model.dynamics import Spring
 
 __all__ = ["MachineForces", "machine_forces", "CYCLE_ANGLE", "CAM_ANGLE"]
 
@@ -81,7 +83,7 @@ class MachineForces:
             fw.pop("curves")
             out["flywheel"] = fw
         if self.cam is not None:
-            from cams.dynamics.forces import jump_dict
+            from cams.dynamics.jump import jump_dict
 
             spring = self.spring
             assert spring is not None  # found with the cam's forces (cams.dynamics.forces.design_forces)
