@@ -24,7 +24,7 @@ from cams.model.options import profile_options
 from cams.verify.pressure import PressureReport, check_pressure
 from laws.errors import InputError, check_option
 from optimize.result import Binding
-from optimize.sizing import OBJECTIVES, offset_x, size, vanishing_error
+from optimize.sizing import OBJECTIVES, offset_x, roller_travel, size, vanishing_error
 
 if TYPE_CHECKING:
     from cams.checks.flat import FlatCheckReport
@@ -305,10 +305,8 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
     f = design.follower
     centre = sized.centre
     R0 = float(np.linalg.norm(centre - f.position(0.0)))
-    # the roller centre's travel: arc l*psi_max of a rocker, the stroke of a translating follower
-    travel = design.program.lift * (f.arm if isinstance(f, Rocker) else 1.0)
     pressure = check_pressure(design, centre)
-    if not pressure.ok and R0 < 1e-6 * travel and sized.method == "exact":
+    if not pressure.ok and R0 < 1e-6 * roller_travel(design) and sized.method == "exact":
         raise vanishing_error(design, R0)
     return _result(design, centre, pressure, sized.margin, list(sized.notes),
                    "set limits.min_base_radius or a smaller roller", method=sized.method, samples=sized.samples,

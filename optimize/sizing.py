@@ -29,7 +29,8 @@ from laws.errors import InfeasibleError, InputError, check_option
 from optimize.diagnose import admissible_L_range, diagnosed
 from optimize.result import Binding, CentreSolution
 
-__all__ = ["Sizing", "size", "nearest", "admissible_L_range", "offset_x", "vanishing_error", "OBJECTIVES"]
+__all__ = ["Sizing", "size", "nearest", "admissible_L_range", "offset_x", "vanishing_error", "roller_travel",
+           "OBJECTIVES"]
 
 OBJECTIVES = ("R0", "L")
 
@@ -292,18 +293,22 @@ def size(design: CamDesign, *, method: str | None = None, objective: str = "R0")
     else:
         binding, error_bound, certified = (), None, None
     R0 = float(np.linalg.norm(centre - A0))
-    # the roller centre's travel: arc l*psi_max of a rocker, the stroke of a translating follower
-    travel = design.program.lift * (f.arm if isinstance(f, Rocker) else 1.0)
-    if R0 < 1e-9 * travel:
+    if R0 < 1e-9 * roller_travel(design):
         raise vanishing_error(design, R0)
     return Sizing(centre=np.asarray(centre, float), method=method, samples=samples, mode=mode, binding=binding,
                   error_bound=error_bound, certified=certified, margin=float(-G(centre)), seconds=seconds,
                   notes=tuple(notes))
 
 
+def roller_travel(design: CamDesign) -> float:
+    """The roller centre's travel (length unit): the arc ``l psi_max`` of a rocker, the stroke of a translating one."""
+    f = design.follower
+    return design.program.lift * (f.arm if isinstance(f, Rocker) else 1.0)
+
+
 def vanishing_error(design: CamDesign, R0: float) -> InfeasibleError:
     """The error of a minimum base radius ``R0`` (length unit) too small against the roller's travel to verify."""
-    travel = design.program.lift * (design.follower.arm if isinstance(design.follower, Rocker) else 1.0)
+    travel = roller_travel(design)
     return InfeasibleError(
         "limits.pressure_angle",
         f"the minimum base radius vanishes (R0 = {R0:.3g}, {R0 / travel:.2g} of the roller's travel; the "

@@ -26,7 +26,7 @@ from cams.io.designfile import design_from_dict
 from cams.solve import solve
 from cams.verify.pressure import check_pressure
 from laws.errors import InfeasibleError
-from optimize.diagnose import _attained, diagnosed, explain_infeasible, relaxations
+from optimize.diagnose import _attained, diagnosed, explain_infeasible, relaxations, zone_margin
 from tests.conftest import EXAMPLES, rocker_dict
 from tests.validation.reference import ReferenceZone
 
@@ -232,6 +232,10 @@ def test_a_solver_that_fails_on_a_non_empty_zone_is_not_reported_as_infeasible_l
     assert info.value.field == "solve.method" and "the zone is not empty" in str(info.value)
     R0 = float(re.search(r"R0 = ([0-9.e+]+) mm", str(info.value)).group(1))
     assert R0 >= solve(d).R0 * (1 - 1e-9)  # no centre nearer than the least R0
+    # the centre the message names (the zone's own proof, upper <= 0) is admissible by the independent check
+    _, upper, O = zone_margin(d)
+    assert upper <= 0 and check_pressure(d, O).ok
+    assert R0 == pytest.approx(float(np.linalg.norm(O - d.follower.position(0.0))), rel=1e-5)
 
 
 def test_attained_when_the_least_R0_converges_slowly():
