@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 import subprocess
 import sys
 from pathlib import Path
@@ -38,13 +37,6 @@ print("ok")
 """
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr
-
-
-def test_no_pyplot_nor_backend_in_the_machine_side():
-    """No module of the machine side or of its pictures imports pyplot or chooses a backend."""
-    files = [*(ROOT / "cams" / "machine").rglob("*.py"), ROOT / "cams" / "present" / "machine_plots.py"]
-    bad = [str(p.relative_to(ROOT)) for p in files if re.search(r"matplotlib\.pyplot|pyplot import|matplotlib\.use\(", p.read_text(encoding="utf-8"))]
-    assert bad == []
 
 
 def test_pictures_are_all_or_nothing(tmp_path, monkeypatch, capsys):
