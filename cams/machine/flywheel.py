@@ -57,7 +57,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from laws.errors import InputError, check_number, check_option, show_value
 from laws.units import (  # rpm_to_omega re-exported (cams.machine.flywheel.rpm_to_omega)
@@ -232,6 +231,8 @@ def _cycle(cycle) -> float:
 
 def _resample(phi: np.ndarray, y: np.ndarray, x: np.ndarray, how: str, cycle: float):
     """Values and exact cumulative integral (from phi[0]) of the periodic samples on the grid x."""
+    from scipy.interpolate import CubicSpline
+
     p = np.append(phi, phi[0] + cycle)
     v = np.append(y, y[0])
     if how == "spline":

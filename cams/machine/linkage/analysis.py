@@ -20,7 +20,6 @@ from dataclasses import dataclass
 from typing import Protocol
 
 import numpy as np
-from scipy.optimize import brentq
 
 from cams.machine.linkage.primitives import Slide
 from laws.errors import InfeasibleError, check_option
@@ -72,6 +71,8 @@ def dead_positions(machine: Machine, *, samples: int = 720) -> np.ndarray:
     that two dead positions closer together than the grid's step (a quick
     return with a large time ratio) are not lost.
     """
+    from scipy.optimize import brentq
+
     grid = np.linspace(0.0, TWO_PI, samples + 1)
     hints = getattr(machine, "dead_position_hints", None)
     if hints is not None:

@@ -25,7 +25,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from laws.errors import InfeasibleError, InputError, check_number
 from laws.errors import show_value as _show
@@ -329,4 +328,6 @@ def crank_slider_crank(stroke: float, rod: float, offset: float = 0.0) -> float:
     if H >= Hmax:
         raise InfeasibleError("linkage.stroke",
                               f"rod {l:.6g} with offset {e:.6g} allows a stroke < {Hmax:.6g}, got {H:.6g}")
+    from scipy.optimize import brentq
+
     return float(brentq(f, 0.0, rmax, xtol=1e-14 * l, rtol=1e-15))

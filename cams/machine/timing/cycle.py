@@ -11,7 +11,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from cams.machine.linkage.analysis import WORKING, Machine, StrokeReport, analyse
 from cams.model.follower import rotation_word
@@ -138,6 +137,8 @@ def windows(linkage: Machine, cutting: CuttingZone, *, samples: int = 720) -> Wi
     -------
     Windows
     """
+    from scipy.optimize import brentq
+
     rep = analyse(linkage, working=cutting.working, samples=samples)
     sense = linkage.crank_sense
     origin = rep.end
