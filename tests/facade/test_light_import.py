@@ -39,3 +39,18 @@ def test_cli_and_minimum_r0_solve_do_not_load_scipy_solvers():
                 f"with contextlib.redirect_stdout(io.StringIO()):\n"
                 f"    assert main(['solve', {str(EXAMPLES / example)!r}]) in (0, None)")
         assert _loaded_after(code, slow) == [], example
+
+
+def test_importing_every_module_loads_no_heavy_library():
+    """Heavy libraries are imported where they are used: importing every module of the three packages loads none."""
+    code = """
+import importlib, pkgutil, sys
+for pkg in ("laws", "optimize", "cams"):
+    for info in pkgutil.walk_packages(importlib.import_module(pkg).__path__, pkg + "."):
+        importlib.import_module(info.name)
+heavy = ("matplotlib", "cvxpy", "ezdxf", "shapely", "scipy.optimize")
+print(sorted(h for h in heavy if h in sys.modules))
+"""
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "[]", r.stdout
