@@ -41,7 +41,7 @@ MOVED: dict[str, tuple[str, ...]] = {
     "cams.templates": ("cams.io.templates",),
     "cams.machinefile": ("cams.machine.machinefile",),
     "cams.linkage": ("cams.machine.linkage",),
-    "cams.kinetostatics": ("cams.machine.kinetostatics", "cams.present.machine_plots"),
+    "cams.kinetostatics": ("cams.machine.kinetostatics", "cams.machine.machinefile", "cams.present.machine_plots"),
     "cams.flywheel": ("cams.machine.flywheel",),
     "cams.plots": ("cams.present.plots",),
     "cams.report": ("cams.present.report",),

@@ -205,7 +205,7 @@ def _forces() -> str:
 
 
 def test_forces_keys_documented():
-    assert _missing(_forces(), kinetostatics.FORCES_KEYS) == []
+    assert _missing(_forces(), machinefile.FORCES_KEYS) == []
 
 
 def test_forces_inline_key_sets_documented():

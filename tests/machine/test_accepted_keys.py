@@ -17,9 +17,9 @@ import pytest
 from cams.cli import main
 from cams.dynamics.forces import LENGTH_UNITS
 from cams.io.designfile import dynamics_from_dict
-from cams.machine.kinetostatics import ForceSpec, LinkMass, Resistance, analyse_forces, force_spec_from_dict
+from cams.machine.kinetostatics import ForceSpec, LinkMass, Resistance, analyse_forces
 from cams.machine.linkage.machines import CrankSlider
-from cams.machine.machinefile import machine_from_dict
+from cams.machine.machinefile import force_spec_from_dict, machine_from_dict
 from cams.machine.timing import Drive, Timing, design_machine, place_cam, windows
 from laws.errors import InputError
 

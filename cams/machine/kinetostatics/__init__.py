@@ -117,9 +117,7 @@ __all__ = [
     "analyse_forces",
     "ForceOptions",
     "MachineForces",
-    "force_spec_from_dict",
     "machine_forces",
-    "FORCES_KEYS",
     "LINKS",
     "JOINTS",
     "WINDOWS",
@@ -130,17 +128,3 @@ __all__ = [
     "CYCLE_ANGLE",
     "CAM_ANGLE",
 ]
-
-_PARSER = ("force_spec_from_dict", "FORCES_KEYS", "_LOAD_KEYS")
-
-
-def __getattr__(name: str):
-    """The ``[forces]`` parser's names, now in :mod:`cams.machine.machinefile` (the machine's file schema).
-
-    Imported on first use: the machine file imports this package's stages.
-    """
-    if name in _PARSER:
-        from cams.machine import machinefile
-
-        return getattr(machinefile, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from cams.cli import main
-from cams.machine.kinetostatics import GasPressure, Resistance, force_spec_from_dict, machine_forces
-from cams.machine.machinefile import load_machine, machine_from_dict
+from cams.machine.kinetostatics import GasPressure, Resistance, machine_forces
+from cams.machine.machinefile import force_spec_from_dict, load_machine, machine_from_dict
 from laws.errors import InputError
 
 HERE = Path(__file__).resolve().parent
