@@ -29,7 +29,7 @@ from laws.errors import InfeasibleError, InputError, check_option
 from optimize.diagnose import admissible_L_range, diagnosed
 from optimize.result import Binding, CentreSolution
 
-__all__ = ["Sizing", "size", "nearest", "admissible_L_range", "offset_x", "vanishing_error", "roller_travel",
+__all__ = ["Sizing", "size", "nearest", "offset_x", "vanishing_error", "roller_travel",
            "OBJECTIVES"]
 
 OBJECTIVES = ("R0", "L")

@@ -6,7 +6,7 @@ import pytest
 from cams.io.designfile import design_from_dict
 from cams.solve import solve
 from laws.errors import InfeasibleError, InputError
-from optimize.sizing import admissible_L_range
+from optimize.diagnose import admissible_L_range
 from tests.conftest import rocker_dict
 
 SEED_FORCE = rocker_dict()

@@ -16,7 +16,8 @@ import pytest
 
 from cams.io.designfile import design_from_dict
 from laws.errors import CamsError, InfeasibleError
-from optimize.sizing import admissible_L_range, nearest
+from optimize.diagnose import admissible_L_range
+from optimize.sizing import nearest
 
 from .helpers import check_outcome, design_dict, guarded, segment_witness
 
