@@ -12,7 +12,7 @@ from typing import Literal, overload
 
 import numpy as np
 
-__all__ = ["CamsError", "InputError", "InfeasibleError", "check_option", "check_number", "show_value"]
+__all__ = ["CamsError", "InputError", "InfeasibleError", "check_option", "check_number", "check_positive", "show_value"]
 
 
 class CamsError(ValueError):
@@ -107,6 +107,27 @@ def check_number(field: str, value: object, *, lo: float | None = None, strict: 
     if lo is not None and (value <= lo if strict else value < lo):
         raise InputError(field, f"must be {'>' if strict else '>='} {lo:g}, got {show_value(value)}")
     return value
+
+
+def check_positive(field: str, value: object) -> float:
+    """``value`` as a float if it is a finite number > 0, else :class:`InputError` "must be a number > 0, got ...".
+
+    :func:`check_number` with ``lo=0, strict=True`` and one message for every way to miss.
+
+    Examples
+    --------
+    >>> check_positive("linkage.crank", 40)
+    40.0
+    >>> try:
+    ...     check_positive("linkage.crank", "4")
+    ... except InputError as e:
+    ...     print(e)
+    linkage.crank: must be a number > 0, got '4'
+    """
+    try:
+        return float(check_number(field, value, lo=0.0, strict=True))
+    except InputError:
+        raise InputError(field, f"must be a number > 0, got {show_value(value)}") from None
 
 
 def show_value(v) -> str:

@@ -58,7 +58,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from laws.errors import InputError, check_number, check_option, show_value
+from laws.errors import InputError, check_option, check_positive, show_value
 from laws.units import (  # rpm_to_omega re-exported (cams.machine.flywheel.rpm_to_omega)
     omega_to_rpm,
     rpm_to_omega,
@@ -82,14 +82,6 @@ def _array(field: str, v, n: int | None = None) -> np.ndarray:
         elif a.size != n:
             raise InputError(field, f"has {a.size} values, the crank angles {n}")
     return a
-
-
-def _positive(field: str, v: object) -> float:
-    """:func:`laws.errors.check_number` (> 0), with this module's message "must be a number > 0, got ..."."""
-    try:
-        return check_number(field, v, lo=0.0, strict=True)
-    except InputError:
-        raise InputError(field, f"must be a number > 0, got {show_value(v)}") from None
 
 
 def _check_cycle(phi: np.ndarray, cycle: float) -> None:
@@ -319,7 +311,7 @@ def flywheel(
     """
     how = check_option("flywheel.interpolation", interpolation, INTERPOLATIONS)
     cycle = _cycle(cycle)
-    rpm = _positive("flywheel.rpm", rpm)
+    rpm = check_positive("flywheel.rpm", rpm)
     if (isinstance(delta, bool) or not isinstance(delta, (int, float, np.floating)) or not np.isfinite(delta)
             or not 0 < delta < 1):
         raise InputError("flywheel.delta",

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from laws.errors import InfeasibleError, InputError, check_number
+from laws.errors import InfeasibleError, InputError, check_positive
 from laws.errors import show_value as _show
 
 __all__ = [
@@ -57,14 +57,6 @@ def _below(x: float) -> str:
     if float(t) > x:  # rounded up: step down by one unit of the 6th digit
         t = f"{x - 10 ** (np.floor(np.log10(abs(x))) - 5):.6g}"
     return t
-
-
-def _positive(field: str, v: object) -> float:
-    """:func:`laws.errors.check_number` (> 0), with this module's message "must be a number > 0, got ..."."""
-    try:
-        return check_number(field, v, lo=0.0, strict=True)
-    except InputError:
-        raise InputError(field, f"must be a number > 0, got {_show(v)}") from None
 
 
 def swing_from_time_ratio(K: float, *, field: str = "linkage.time_ratio") -> float:
@@ -125,7 +117,7 @@ def slotting_time_ratio_limit(rod_ratio: float) -> float:
     >>> round(slotting_time_ratio_limit(0.5), 9), round(slotting_time_ratio_limit(1.0), 6)
     (5.0, 8.244413)
     """
-    rho = _positive("linkage.rod_ratio", rod_ratio)
+    rho = check_positive("linkage.rod_ratio", rod_ratio)
     return time_ratio_from_swing(2 * float(np.arccos(1 / (1 + 2 * rho))))
 
 
@@ -234,9 +226,9 @@ def slotted_lever_synthesis(
     (60.0, 262.5, 250.0)
     """
     theta = swing_from_time_ratio(time_ratio)
-    H = _positive("linkage.stroke", stroke)
-    L = _positive("linkage.centre_distance", centre_distance)
-    rr = None if rod_ratio is None else _positive("linkage.rod_ratio", rod_ratio)
+    H = check_positive("linkage.stroke", stroke)
+    L = check_positive("linkage.centre_distance", centre_distance)
+    rr = None if rod_ratio is None else check_positive("linkage.rod_ratio", rod_ratio)
     K = float(time_ratio)
     if rr is not None:
         kmax = slotting_time_ratio_limit(rr)
@@ -304,8 +296,8 @@ def crank_slider_crank(stroke: float, rod: float, offset: float = 0.0) -> float:
     >>> crank_slider_crank(0.35, 1.4)
     0.175
     """
-    H = _positive("linkage.stroke", stroke)
-    l = _positive("linkage.rod", rod)
+    H = check_positive("linkage.stroke", stroke)
+    l = check_positive("linkage.rod", rod)
     e = abs(float(offset))
     if H < 1e-6 * l:
         raise InputError("linkage.stroke", f"{H:.6g} is too small against the rod {l:.6g} to be checked to 1e-9: "
