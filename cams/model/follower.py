@@ -38,7 +38,7 @@ from typing import Protocol
 
 import numpy as np
 
-from laws.errors import InputError
+from laws.errors import InputError, check_number, check_positive, show_value
 
 __all__ = ["Rocker", "Translating", "FlatTranslating", "FlatRocker", "Follower", "RollerFollower", "FlatFollower",
            "sense_of", "rotation_word", "check_length"]
@@ -189,11 +189,16 @@ class Translating:
 
 
 def check_length(field: str, value: object, *, positive: bool = True) -> float:
-    """``value`` as a finite float (``> 0`` when ``positive``), else :class:`InputError` naming ``field``."""
-    if (isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not np.isfinite(value)
-            or (positive and value <= 0)):
-        raise InputError(field, f"must be a number{' > 0' if positive else ''}, got {value!r}")
-    return float(value)
+    """``value`` as a finite float (``> 0`` when ``positive``), else :class:`InputError` naming ``field``.
+
+    :func:`laws.errors.check_positive`, or :func:`laws.errors.check_number` with the message "must be a number".
+    """
+    if positive:
+        return check_positive(field, value)
+    try:
+        return float(check_number(field, value))
+    except InputError:
+        raise InputError(field, f"must be a number, got {show_value(value)}") from None
 
 
 @dataclass(frozen=True)

@@ -150,3 +150,12 @@ def test_a_translating_follower_refuses_L_and_a_journal_in_the_api():
         dataclasses.replace(t, dynamics=DynamicsSpec(FollowerDynamics(0.5, journal_radius=5.0)))
     with pytest.raises(InputError, match="dynamics.margin: must be >= 1"):
         DynamicsSpec(FollowerDynamics(0.5), margin=0.5)
+
+
+@pytest.mark.parametrize("bad", [10**400, float("nan"), "3", True, -1.0])
+def test_a_flat_follower_built_in_python_refuses_a_bad_length_in_one_line(bad):
+    """The model's length check is laws.errors' number check: a 400-digit integer was a TypeError from numpy."""
+    from cams.model.follower import FlatRocker
+
+    with pytest.raises(InputError, match=r"^follower\.centre_distance: must be a number > 0, got "):
+        FlatRocker(centre_distance=bad)
