@@ -10,10 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["TWO_PI", "rpm_to_omega", "omega_to_rpm"]
+__all__ = ["TWO_PI", "LENGTH_UNITS", "rpm_to_omega", "omega_to_rpm"]
 
 #: One turn, radians: the one home of ``2 pi`` for every layer.
 TWO_PI = 2.0 * np.pi
+
+LENGTH_UNITS = {"mm": 1e-3}
+"""Metres per length unit of a design or machine file: mm, the only unit the files take."""
 
 
 def rpm_to_omega(rpm: float) -> float:

@@ -17,7 +17,6 @@ from pathlib import Path
 
 import pytest
 
-import cams.dynamics.forces as camforces
 import cams.io.designfile as designfile
 import cams.machine.kinetostatics as kinetostatics
 import cams.machine.kinetostatics.loads as kinetostatics_loads
@@ -114,7 +113,7 @@ def test_profile_keys_documented():
 
 
 def test_dynamics_keys_documented():
-    assert _missing(_section(_design(), "### `[dynamics]`"), camforces.DYNAMICS_KEYS) == []
+    assert _missing(_section(_design(), "### `[dynamics]`"), designfile.DYNAMICS_KEYS) == []
 
 
 def test_flat_face_refusals_documented():

@@ -80,15 +80,10 @@ __all__ = [
     "spring_for_contact",
     "jamming_limit",
     "chosen_spring",
-    "DYNAMICS_KEYS",
-    "LENGTH_UNITS",
     "DesignForces",
     "design_forces",
 ]
 
-LENGTH_UNITS = {"mm": 1e-3}
-"""Metres per length unit of a design or machine file: mm, the only unit the files take."""
-DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "journal_radius", "margin", "max_spring_force")
 """Keys of a design file's optional ``[dynamics]`` table."""
 
 

@@ -50,7 +50,6 @@ from pathlib import Path
 
 import numpy as np
 
-from cams.dynamics.forces import DYNAMICS_KEYS, LENGTH_UNITS
 from cams.io.document import check_document, check_keys, read_toml, toml_integer
 from cams.io.document import toml_number as _num
 from cams.io.document import toml_table as _table
@@ -67,6 +66,7 @@ from laws.base import Law
 from laws.errors import InputError, check_number, check_option, show_value
 from laws.program import Phase, Program
 from laws.registry import get_law
+from laws.units import LENGTH_UNITS
 
 __all__ = ["load_design", "design_from_dict", "dynamics_from_dict", "MAX_SAMPLES"]
 
@@ -111,6 +111,10 @@ _ONLY_FLAT = {
     "limits.min_radius": "applies to flat-faced followers (face = \"flat\"); for a roller cam use [profile] "
                          "min_curvature_radius",
 }
+
+#: The keys of a design file's [dynamics] table, in their documented order.
+DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "journal_radius", "margin",
+                 "max_spring_force")
 
 
 def _refuse(table: dict, where: str, reasons: dict) -> None:

@@ -346,7 +346,7 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
     kind : str
         The linkage's kind (``linkage.type``, a key of :data:`cams.machine.linkage.machines.MACHINES`).
     units : str
-        The file's length unit: ``"mm"`` only (:data:`cams.dynamics.forces.LENGTH_UNITS`).
+        The file's length unit: ``"mm"`` only (:data:`laws.units.LENGTH_UNITS`).
     cutting : cams.machine.timing.CuttingZone or None
         Defaults of a "resistance" load's window.
 
@@ -361,7 +361,7 @@ def force_spec_from_dict(table: dict, kind: str, *, units: str = "mm", cutting=N
     >>> spec.links["tool"].mass, spec.loads[0].window, opt.delta
     (80.0, 'cut', 0.05)
     """
-    from cams.dynamics.forces import LENGTH_UNITS
+    from laws.units import LENGTH_UNITS
 
     t = _keys(table, FORCES_KEYS, "forces")
     if units not in LENGTH_UNITS:
