@@ -1,0 +1,122 @@
+"""The motion design's request, typed: a design file's ``[optimize]`` table.
+
+The free phases' laws are designed together with the cam: each free rise or
+return becomes a spline of the given ``degree`` on ``spans`` equal knot spans,
+its derivatives continuous up to ``continuity`` at the knots and at the joints
+with the neighbouring phases, its normalized peaks (``Cv = max |S'|``,
+``Ca = max |S''|``, ``Cj = max |S'''|``, derivatives of the normalized rise
+``S(u)`` with respect to ``u`` in [0, 1]) under the caps. What is minimized:
+
+- ``"R0"`` the pitch curve's base radius (mm), ``"L"`` the centre distance
+  (mm, rocker);
+- ``"pressure_angle"`` the largest ratio of the pressure angle to its limit
+  (the cam's size held);
+- ``"Ca"``, ``"Cj"`` the largest normalized acceleration or jerk over the free
+  phases; ``"jerk_squared"``, ``"snap_squared"`` the sum over the free phases
+  of the integral of ``S'''(u)**2`` or ``S''''(u)**2`` over ``u`` in [0, 1]
+  (dimensionless; the cam's size held).
+
+Each field is checked once, here, with the message the file's key gets.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from laws.errors import InputError, check_option, show_value
+
+__all__ = ["MOTION_OBJECTIVES", "CAP_KEYS", "MotionDesignSpec", "DEFAULT_DEGREE", "DEFAULT_SPANS",
+           "DEFAULT_CONTINUITY", "MAX_DEGREE", "MAX_SPANS"]
+
+#: What ``[optimize] objective`` may ask for.
+MOTION_OBJECTIVES = ("R0", "L", "pressure_angle", "Ca", "Cj", "jerk_squared", "snap_squared")
+#: The caps on the free phases' normalized peaks, by the derivative they bound.
+CAP_KEYS = {"max_Cv": 1, "max_Ca": 2, "max_Cj": 3}
+#: The default spline space: degree 7, 20 spans, C3 (the 4-5-6-7 polynomial's smoothness).
+DEFAULT_DEGREE = 7
+DEFAULT_SPANS = 20
+DEFAULT_CONTINUITY = 3
+MAX_DEGREE = 11
+MAX_SPANS = 400
+
+#: A cap: a number (normalized, > 0) or a library law's name (that law's peak), or None (no cap).
+Cap = float | str | None
+
+
+@dataclass(frozen=True)
+class MotionDesignSpec:
+    """A request to design the free phases' laws together with the cam.
+
+    Parameters
+    ----------
+    free : tuple of (str or int)
+        ``"rise"`` (every rise), ``"return"`` (every return) or phase indices
+        (0-based ``[[motion]]`` rows, each a rise or a return).
+    objective : str
+        One of :data:`MOTION_OBJECTIVES`.
+    max_Cv, max_Ca, max_Cj : tuple of cap
+        One cap per free phase (in the order of the phases), or one for all
+        (a tuple of one): a number (dimensionless, > 0), a law's name of the
+        library (its peak), or None (no cap).
+    continuity : int
+        Derivatives continuous at the knots and the joints: 1, 2 or 3.
+    degree : int
+        Polynomial degree of each span, ``continuity < degree <= MAX_DEGREE``.
+    spans : int
+        Knot spans per free phase, 1 to :data:`MAX_SPANS`.
+    """
+
+    free: tuple[str | int, ...] = ("rise",)
+    objective: str = "R0"
+    max_Cv: tuple[Cap, ...] = (None,)
+    max_Ca: tuple[Cap, ...] = (None,)
+    max_Cj: tuple[Cap, ...] = (None,)
+    continuity: int = DEFAULT_CONTINUITY
+    degree: int = DEFAULT_DEGREE
+    spans: int = DEFAULT_SPANS
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.free, tuple) or not self.free:
+            raise InputError("optimize.free", f'must name the free phases: "rise", "return" or phase indices, got '
+                             f"{show_value(self.free)}")
+        for v in self.free:
+            if isinstance(v, bool) or not (isinstance(v, int) or v in ("rise", "return")):
+                raise InputError("optimize.free", f'each entry must be "rise", "return" or a phase index, got '
+                                 f"{show_value(v)}")
+        check_option("optimize.objective", self.objective, MOTION_OBJECTIVES)
+        for key in ("continuity", "degree", "spans"):
+            v = getattr(self, key)
+            if isinstance(v, bool) or not isinstance(v, int):
+                raise InputError(f"optimize.{key}", f"must be a whole number, got {show_value(v)}")
+        if self.continuity not in (1, 2, 3):
+            raise InputError("optimize.continuity", f"must be 1, 2 or 3 (derivatives continuous at the joints), got "
+                             f"{self.continuity}")
+        if not self.continuity < self.degree <= MAX_DEGREE:
+            raise InputError("optimize.degree", f"must be above the continuity ({self.continuity}) and at most "
+                             f"{MAX_DEGREE}: a degree-{self.degree} spline cannot carry {self.continuity} continuous "
+                             "derivatives across its knots" if self.degree <= self.continuity else
+                             f"must be at most {MAX_DEGREE}, got {self.degree}")
+        if not 1 <= self.spans <= MAX_SPANS:
+            raise InputError("optimize.spans", f"must be from 1 to {MAX_SPANS}, got {self.spans}")
+        from laws.registry import LAWS
+
+        for key in CAP_KEYS:
+            caps = getattr(self, key)
+            if not isinstance(caps, tuple) or not caps:
+                raise InputError(f"optimize.{key}", f"must be a number, a law's name or a list of them, got "
+                                 f"{show_value(caps)}")
+            for c in caps:
+                if c is None:
+                    continue
+                if isinstance(c, str):
+                    if c not in LAWS:
+                        raise InputError(f"optimize.{key}", f"unknown law {c!r}: a cap is a number > 0 or one of "
+                                         f"{', '.join(LAWS)}")
+                elif isinstance(c, bool) or not isinstance(c, (int, float)) or not (0 < c < 1e12):
+                    raise InputError(f"optimize.{key}", f"a cap must be a number > 0 (normalized) or a law's name, "
+                                     f"got {show_value(c)}")
+
+    def cap(self, key: str, k: int) -> Cap:
+        """The cap ``key`` (``"max_Ca"``...) of the ``k``-th free phase (one cap given: it holds for each)."""
+        caps = getattr(self, key)
+        return caps[0] if len(caps) == 1 else caps[k]

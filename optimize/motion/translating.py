@@ -1,0 +1,236 @@
+"""The translating followers' programs: the law's coefficients and the cam's centre in one convex program.
+
+Roller (or knife edge). In the follower's frame (origin at the roller centre
+at the near dwell, Y along the rise) the cam centre is ``(x, -d)``, the offset
+``e = -x`` and ``R0 = || (x, d) ||``. The pressure angle ``gamma`` at cam angle
+``phi`` obeys ``tan gamma = (s' + eps x) / (d + s)`` with ``eps`` the cam's
+sense (+1 counter-clockwise; the same as ``(s' - eps e) / (d + s)``; tested
+against the kernel's inversion). A limit ``[gamma]`` on a phase is therefore::
+
+    |s'(phi) + eps x| <= tan[gamma] (d + s(phi))
+
+two inequalities linear in the law's coefficients and in ``(x, d)``; the
+smallest ``R0`` is a second-order cone program.
+
+Flat face (perpendicular to the axis). The profile's radius of curvature is
+``R0 + s + s''`` (analogues per radian), so convexity with a least radius
+``rho`` is ``R0 + s + s'' >= rho``: linear, and the smallest ``R0`` a linear
+program.
+
+Both are built in two forms from the same rows (:class:`optimize.motion.space.Space`):
+``"conservative"``, every constraint on the Bernstein coefficients of every
+piece of every span (it holds at every cam angle), and ``"relaxed"``, every
+constraint at sample points only (its optimum is a lower bound of the space's).
+The variables: the free phases' coefficients, then the geometry (``x, d`` or
+``R0``), then an epigraph variable ``t``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from laws.program import Program
+from optimize.motion.conic import Cone, ConicProgram
+from optimize.motion.space import Space
+
+__all__ = ["Request", "build", "SAMPLES_PER_SPAN", "FIXED_SAMPLES", "TIGHTEN"]
+#: Sample points per span of the relaxation (ends included).
+SAMPLES_PER_SPAN = 17
+#: Sample points of a fixed (not free) constrained phase.
+FIXED_SAMPLES = 400
+#: Relative tightening of the caps in the conservative program, so that its solution meets them after the
+#: solver's tolerance (1e-10).
+TIGHTEN = 1e-8
+
+
+@dataclass(frozen=True)
+class Request:
+    """What one program asks.
+
+    Parameters
+    ----------
+    space : Space
+    follower : {"roller", "flat"}
+    cam_sense : int
+        +1 counter-clockwise.
+    limits : dict of int to float
+        Constrained phases (roller) and their pressure-angle limits, radians.
+    caps : dict of (int, int) to float
+        ``(k, r)`` -> cap on ``|S_k^(r)|`` (free phase ``k``, derivative ``r``).
+    objective : str
+        ``"R0"``, ``"Ca"``, ``"Cj"``, ``"jerk_squared"``, ``"snap_squared"`` or
+        ``"feasibility"`` (minimize the largest slack of the pressure rows,
+        length; for the pressure-angle bisection).
+    ratio : float
+        The pressure limits are ``ratio * limit`` (1 but in the bisection).
+    centre : (float, float) or None
+        A fixed cam centre ``(x, d)`` (roller) or ``(R0, 0)`` (flat).
+    x_fixed : float or None
+        A fixed ``x = -e`` (roller, ``follower.offset``).
+    hold : float or None
+        ``R0`` at most this (the cam's size held), length.
+    bound : float
+        The box on the geometry and ``t`` (length), generous.
+    min_radius : float
+        Flat face: the least radius of curvature, length.
+    """
+
+    space: Space
+    follower: str
+    cam_sense: int
+    limits: dict[int, float]
+    caps: dict[tuple[int, int], float]
+    objective: str
+    bound: float
+    ratio: float = 1.0
+    centre: tuple[float, float] | None = None
+    x_fixed: float | None = None
+    hold: float | None = None
+    min_radius: float = 0.0
+
+
+def _fixed_motion(program: Program, i: int, count: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    m = program.evaluate_phase(i, np.linspace(0.0, 1.0, count))
+    return m.s, m.ds, m.d2s
+
+
+def build(req: Request, form: str) -> ConicProgram:
+    """The program of ``req`` in ``form`` ``"conservative"`` or ``"relaxed"`` (see the module notes)."""
+    sp = req.space
+    nc = sp.size
+    flat = req.follower == "flat"
+    ng = 1 if flat else 2           # (R0) or (x, d)
+    n = nc + ng + 1
+    it = n - 1                      # the epigraph variable t
+    samples = None
+    if form == "relaxed":
+        samples = np.linspace(0.0, 1.0, (SAMPLES_PER_SPAN - 1) * sp.spans + 1)
+    elif form != "conservative":
+        raise ValueError(form)
+    tight = 1.0 - TIGHTEN if form == "conservative" else 1.0
+    G: list[np.ndarray] = []
+    h: list[np.ndarray] = []
+    cost = np.zeros(n)
+    cones: list[Cone] = []
+    index = {i: k for k, i in enumerate(sp.free)}
+    slack = req.objective == "feasibility"
+
+    def add(rows: np.ndarray, rhs: np.ndarray, *, pressure: bool = False) -> None:
+        if slack and pressure:
+            rows = rows.copy()
+            rows[:, it] -= 1.0
+        G.append(rows)
+        h.append(np.broadcast_to(rhs, rows.shape[:1]).astype(float))
+
+    # -- the follower's geometric constraint on every constrained phase --------------------------------------
+    phases = sp.program.phases
+    if flat:
+        for i in range(len(phases)):
+            # R0 + s + s'' >= rho  ->  -R0 - sh S - sh/beta^2 S'' <= lev - rho
+            if i in index:
+                k = index[i]
+                sh, beta, lev = sp.phase_scale(i)
+                r0 = sp.rows(k, 0, n, samples=samples)
+                r2 = sp.rows(k, 2, n, samples=samples, elevate=True)
+                rows = -sh * r0 - sh / beta**2 * r2
+                rows[:, nc] = -1.0
+                add(rows, np.full(rows.shape[0], lev - req.min_radius))
+            else:
+                s, _, s2 = _fixed_motion(sp.program, i, FIXED_SAMPLES)
+                rows = np.zeros((s.size, n))
+                rows[:, nc] = -1.0
+                add(rows, s + s2 - req.min_radius)
+    else:
+        eps = float(req.cam_sense)
+        for i, limit in req.limits.items():
+            T = float(np.tan(req.ratio * limit))
+            if i in index:
+                k = index[i]
+                sh, beta, lev = sp.phase_scale(i)
+                r0 = sp.rows(k, 0, n, samples=samples)
+                r1 = sp.rows(k, 1, n, samples=samples, elevate=True)
+                for sign in (1.0, -1.0):
+                    # sign (s' + eps x) - T (d + s) <= 0, s = lev + sh S, s' = sh S' / beta
+                    rows = sign * sh / beta * r1 - T * sh * r0
+                    rows[:, nc] = sign * eps
+                    rows[:, nc + 1] = -T
+                    add(rows, np.full(rows.shape[0], T * lev), pressure=True)
+            else:
+                s, ds, _ = _fixed_motion(sp.program, i, FIXED_SAMPLES)
+                for sign in (1.0, -1.0):
+                    rows = np.zeros((s.size, n))
+                    rows[:, nc] = sign * eps
+                    rows[:, nc + 1] = -T
+                    add(rows, T * s - sign * ds, pressure=True)
+
+    # -- caps on the free phases' normalized derivatives -----------------------------------------------------
+    for (k, r), cap in req.caps.items():
+        rows = sp.rows(k, r, n, samples=samples)
+        add(np.vstack([rows, -rows]), np.full(2 * rows.shape[0], cap * tight))
+
+    # -- the objective ---------------------------------------------------------------------------------------
+    obj = req.objective
+    if obj == "R0":
+        if flat:
+            cost[nc] = 1.0
+        else:
+            cost[it] = 1.0
+            F = np.zeros((2, n))
+            F[0, nc], F[1, nc + 1] = 1.0, 1.0
+            a = np.zeros(n)
+            a[it] = 1.0
+            cones.append(Cone(a, 0.0, F, np.zeros(2)))
+    elif obj in ("Ca", "Cj"):
+        r = 2 if obj == "Ca" else 3
+        cost[it] = 1.0
+        for k in range(len(sp.free)):
+            rows = sp.rows(k, r, n, samples=samples)
+            rows = np.vstack([rows, -rows])
+            rows[:, it] = -1.0
+            add(rows, np.zeros(rows.shape[0]))
+    elif obj in ("jerk_squared", "snap_squared"):
+        r = 3 if obj == "jerk_squared" else 4
+        cost[it] = 1.0
+        F = np.vstack([sp.integral_factor(k, r, n) for k in range(len(sp.free))])
+        a = np.zeros(n)
+        a[it] = 1.0
+        cones.append(Cone(a, 0.0, F, np.zeros(F.shape[0])))
+    elif obj == "feasibility":
+        cost[it] = 1.0
+    else:
+        raise ValueError(obj)
+
+    # -- the cam's size held ---------------------------------------------------------------------------------
+    if req.hold is not None and not flat:
+        F = np.zeros((2, n))
+        F[0, nc], F[1, nc + 1] = 1.0, 1.0
+        cones.append(Cone(np.zeros(n), float(req.hold), F, np.zeros(2)))
+
+    # -- the box -----------------------------------------------------------------------------------------------
+    B = req.bound
+    hi = np.concatenate([np.tile(sp.bounds(), len(sp.free)), np.zeros(ng + 1)])
+    lo = -hi
+    if flat:
+        lo[nc], hi[nc] = 0.0, B
+        if req.centre is not None:
+            lo[nc] = hi[nc] = req.centre[0]
+        elif req.hold is not None:
+            lo[nc] = hi[nc] = req.hold
+    else:
+        lo[nc], hi[nc] = -B, B
+        lo[nc + 1], hi[nc + 1] = 0.0, B
+        if req.centre is not None:
+            lo[nc] = hi[nc] = req.centre[0]
+            lo[nc + 1] = hi[nc + 1] = req.centre[1]
+        elif req.x_fixed is not None:
+            lo[nc] = hi[nc] = req.x_fixed
+    lo[it], hi[it] = (-B, B) if slack else (0.0, B if obj == "R0" else 1e6)
+    if obj not in ("Ca", "Cj", "jerk_squared", "snap_squared", "feasibility") and not (obj == "R0" and not flat):
+        lo[it] = hi[it] = 0.0     # t unused
+    A, b = sp.equalities(n)
+    enforce = np.zeros(n, bool)
+    enforce[nc:] = True             # the geometry and t; the coefficients' box is declared, not handed over
+    return ConicProgram(cost=cost, G=np.vstack(G) if G else np.zeros((0, n)), h=np.concatenate(h) if h else
+                        np.zeros(0), A=A, b=b, lo=lo, hi=hi, cones=tuple(cones), enforce=enforce)
