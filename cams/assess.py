@@ -128,6 +128,11 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
         eb = solution.error_bound
         failures.append(("not certified", "not certified: the exact method's bounds on the size "
                          + ("do not meet (no feasible centre near it)" if eb is None else f"differ by {eb:.3g} mm")))
+    opt = getattr(solution, "optimization", None)
+    if opt is not None and not opt["certified"]:
+        certified = False
+        failures.append(("not certified", "motion design not certified: " + ("; ".join(opt["notes"])
+                                                                            or "no lower bound was proven")))
     verified = bool(solution.verified)
     if not verified:
         which = ["the independent check finds a limit exceeded"]

@@ -39,7 +39,7 @@ class Cam:
 
     def __init__(self, design: CamDesign | FlatFaceDesign, *, objective: str | None = None, method: str | None = None,
                  tolerance: float | None = None, solution=None):
-        self.design = design
+        self.given = design
         self.objective = objective or getattr(design, "objective", "R0")
         self.method = method
         self.tolerance = tolerance
@@ -56,9 +56,17 @@ class Cam:
         return self.__dict__.get(name)
 
     @property
+    def design(self) -> CamDesign | FlatFaceDesign:
+        """The design whose cam this is: as given, or, with an ``[optimize]`` table, the design of the laws found
+        (:mod:`cams.motion_design`; solved on first use)."""
+        if getattr(self.given, "optimize", None) is None:
+            return self.given
+        return self.solution.design
+
+    @property
     def flat(self) -> bool:
         """True for a flat-faced follower (sized by convexity)."""
-        return isinstance(self.design, FlatFaceDesign)
+        return isinstance(self.given, FlatFaceDesign)
 
     @classmethod
     def from_file(cls, path) -> Cam:
@@ -70,13 +78,16 @@ class Cam:
     @cached_property
     def solution(self):
         """The sized cam (:class:`cams.solve.SolveResult`), solved on first use."""
-        if isinstance(self.design, FlatFaceDesign):  # as self.flat, narrowing the design's type
+        given = self.given
+        if isinstance(given, FlatFaceDesign) and given.optimize is None:  # narrowing the design's type
             from optimize.flat import size_flat_face
 
-            return size_flat_face(self.design)
+            return size_flat_face(given)
         from cams.solve import solve
 
-        return solve(self.design, method=self.method, objective=self.objective)
+        if given.optimize is not None:
+            return solve(given, method=self.method)
+        return solve(given, method=self.method, objective=self.objective)
 
     @cached_property
     def tradeoff(self):

@@ -80,6 +80,7 @@ class SolveResult:
     margin: float
     notes: tuple[str, ...] = field(default_factory=tuple)
     certified: bool | None = None
+    optimization: dict | None = None
 
     @property
     def verified(self) -> bool:
@@ -138,6 +139,7 @@ class SolveResult:
             "margin": float(self.margin),
             "seconds": float(self.seconds),
             "notes": list(self.notes),
+            **({} if self.optimization is None else {"optimize": self.optimization}),
         }
 
 
@@ -289,6 +291,14 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
         An unknown method or objective; ``objective="L"`` for a translating
         follower.
     """
+    if getattr(design, "optimize", None) is not None:
+        from cams.motion_design import design_motion
+
+        if method is not None and method != design.method:
+            design = design.with_(method=check_option("solve.method", method, METHODS))
+        if objective is not None and objective != design.optimize.objective:
+            raise InputError("objective", "the design's [optimize] objective decides what is minimized")
+        return design_motion(design, solve)
     if getattr(design, "face", "roller") == "flat":
         return _solve_flat(design, method, objective)
     if objective is None:

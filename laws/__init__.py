@@ -8,6 +8,7 @@ from laws.modified import ModifiedCycloid, ModifiedSine, ModifiedTrapezoid
 from laws.polynomial import PolynomialLaw
 from laws.program import Motion, Phase, Program
 from laws.registry import LAWS, get_law
+from laws.spline import SplineLaw
 from laws.table import TableLaw
 
 __all__ = [
@@ -25,6 +26,7 @@ __all__ = [
     "ModifiedCycloid",
     "PolynomialLaw",
     "TableLaw",
+    "SplineLaw",
     "Characteristics",
     "characteristics",
     "law_table",

@@ -259,6 +259,7 @@ class FlatFaceSolution:
     pressure_max_at: float
     seconds: float
     notes: tuple[str, ...] = ()
+    optimization: dict | None = None
 
     @property
     def centre(self) -> np.ndarray:
@@ -394,6 +395,7 @@ class FlatFaceSolution:
             "verified": self.verified,
             "seconds": float(self.seconds),
             "notes": list(self.notes),
+            **({} if self.optimization is None else {"optimize": self.optimization}),
         }
 
 

@@ -18,6 +18,7 @@ PACKAGES = ("cams", "laws", "optimize")
 #: Modules whose docstrings are run as doctests (some have no examples yet).
 DOCTEST_MODULES = [
     # laws
+    "laws.bernstein",
     "laws.characteristics",
     "laws.diagnostics",
     "laws.errors",
@@ -26,6 +27,7 @@ DOCTEST_MODULES = [
     "laws.program",
     "laws.registry",
     "laws.standard",
+    "laws.spline",
     "laws.table",
     "laws.units",
     # linkage and machines
@@ -69,6 +71,7 @@ DOCTEST_MODULES = [
     "cams.model.dynamics",
     "cams.model.options",
     "cams.io.designfile",
+    "cams.io.lawtable",
 ]
 
 #: Modules checked for a complete ``__all__``.

@@ -39,7 +39,9 @@ MAY_IMPORT: dict[str, tuple[str, ...]] = {
     "cams.io": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams.dynamics"),
     # the facade: a cam solved, verified, profiled, checked and assessed, one call each
     "cams.solve": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                   "cams.checks", "cams.dynamics"),
+                   "cams.checks", "cams.dynamics", "cams.motion_design"),
+    # the motion design: the laws designed (optimize.motion), the cam checked by the solve it is handed
+    "cams.motion_design": (*_BASE, "cams.model", "optimize"),
     "cams.assess": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
                     "cams.checks", "cams.dynamics", "cams.solve"),
     "cams.cam": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",

@@ -53,6 +53,7 @@ import numpy as np
 from cams.io.document import check_document, check_keys, read_toml, toml_integer
 from cams.io.document import toml_number as _num
 from cams.io.document import toml_table as _table
+from cams.io.lawtable import law_from_table
 from cams.model.design import MAX_SAMPLES, CamDesign, FlatFaceDesign, Limits, check_lift
 from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, journal_error
 from cams.model.follower import (
@@ -71,7 +72,7 @@ from laws.units import LENGTH_UNITS
 __all__ = ["load_design", "design_from_dict", "dynamics_from_dict", "MAX_SAMPLES"]
 
 _KEYS = {
-    "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics"},
+    "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics", "optimize"},
     "follower": {"kind", "face", "arm", "swing", "stroke", "offset", "roller_radius", "rise_direction"},
     "cam": {"rotation", "rpm", "bore_radius", "base_radius", "centre"},
     "motion": {"phase", "law", "angle", "height"},
@@ -263,8 +264,20 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         method=so.get("method", "exact"), samples=samples, base_radius=base_radius, centre=centre,
         objective=so.get("objective", "R0"), tolerance=_value(pt, "tolerance"),
         min_curvature_radius=_value(pt, "min_curvature_radius"), bore_radius=_value(cam, "bore_radius"),
-        dynamics=_dynamics(d, kind),
+        dynamics=_dynamics(d, kind), optimize=_optimize(d, so),
     )
+
+
+def _optimize(d: dict, solve_table: dict):
+    """The optional ``[optimize]`` table (None without one); ``[solve] objective`` beside it is refused."""
+    if "optimize" not in d:
+        return None
+    if "objective" in solve_table:
+        raise InputError("solve.objective", "[optimize] objective supersedes it: give the objective in [optimize] "
+                         "only")
+    from cams.io.optimizetable import optimize_from_table
+
+    return optimize_from_table(d["optimize"])
 
 
 def _value(table: dict, key: str):
@@ -325,7 +338,8 @@ def _program(d: dict, kind: str, lift: float) -> Program:
         if ph != "dwell":
             if "law" not in m:
                 raise InputError(f"{f}.law", f"a {ph} needs a law")
-            law = get_law(m["law"], f"{f}.law")
+            law = (law_from_table(m["law"], f"{f}.law") if isinstance(m["law"], dict)
+                   else get_law(m["law"], f"{f}.law"))
         elif "law" in m:
             raise InputError(f"{f}.law", "a dwell takes no law")
         h = _num(m, "height", f"{f}.height", required=False)
@@ -429,6 +443,7 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         base_radius=_num(cam, "base_radius", "cam.base_radius", required=False),
         bore_radius=_num(cam, "bore_radius", "cam.bore_radius", required=False),
         tolerance=_num(pt, "tolerance", "profile.tolerance", required=False),
+        optimize=_optimize(d, {}),
     )
 
 

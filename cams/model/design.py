@@ -20,11 +20,13 @@ from cams.model.follower import (
     Translating,
     check_length,
 )
+from cams.model.motiondesign import MotionDesignSpec
 from cams.model.options import ProfileOptions, check_objective, check_tolerance
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
-__all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES", "check_lift"]
+__all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES", "check_lift",
+           "check_optimize"]
 
 METHODS = ("exact", "convex", "exhaustive")
 CLOSURES = ("force", "form")
@@ -53,6 +55,28 @@ def check_lift(lift: float, rocker: bool) -> None:
             raise InputError("follower.swing", f"must be in (0, 180) degrees, got {_degrees_shown(lift)}")
     elif not (np.isfinite(lift) and lift > 0):
         raise InputError("follower.stroke", f"must be > 0, got {show_value(lift)}")
+
+
+def check_optimize(spec: MotionDesignSpec | None, objective: str, chosen: bool) -> None:
+    """Refuse an ``[optimize]`` request that contradicts the rest of the design (one line each).
+
+    Raises
+    ------
+    InputError
+        Not a :class:`MotionDesignSpec`; ``[solve] objective`` given besides it
+        (``[optimize] objective`` supersedes it); ``objective = "R0"`` or
+        ``"L"`` for a cam the designer chose (nothing to size).
+    """
+    if spec is None:
+        return
+    if not isinstance(spec, MotionDesignSpec):
+        raise InputError("optimize", f"must be a MotionDesignSpec, got {type(spec).__name__}")
+    if objective != "R0":
+        raise InputError("solve.objective", "[optimize] objective supersedes it: give the objective in [optimize] "
+                         "only")
+    if chosen and spec.objective in ("R0", "L"):
+        raise InputError("optimize.objective", f"{spec.objective!r} sizes the cam, but the cam is chosen "
+                         "([cam] base_radius or centre): choose another objective or remove the chosen cam")
 
 
 @dataclass(frozen=True)
@@ -147,6 +171,9 @@ class CamDesign:
     dynamics : DynamicsSpec or None
         The follower's dynamics (a file's ``[dynamics]``): forces, spring and
         jump speed of a force-closed cam; None: no forces.
+    optimize : MotionDesignSpec or None
+        Design the free phases' laws with the cam (a file's ``[optimize]``,
+        :mod:`cams.motion_design`); None: the laws are as given.
     """
 
     follower: RollerFollower
@@ -164,6 +191,7 @@ class CamDesign:
     min_curvature_radius: float | None = None
     bore_radius: float | None = None
     dynamics: DynamicsSpec | None = None
+    optimize: MotionDesignSpec | None = None
 
     def __post_init__(self) -> None:
         # in the order a design file's tables are read, so that a file with two faults names the same one
@@ -195,6 +223,7 @@ class CamDesign:
         elif not isinstance(self.follower, Rocker):  # pragma: no cover - guarded by the type
             raise InputError("follower.kind", "must be 'rocker' or 'translating'")
         ProfileOptions(self.tolerance, self.min_curvature_radius, self.bore_radius)  # checks the three
+        check_optimize(self.optimize, self.objective, self.chosen)
 
     @property
     def scale(self) -> float:
@@ -345,6 +374,8 @@ class FlatFaceDesign:
     tolerance : float or None
         Chord tolerance of the sampled profile (length); None: the default
         for the cam's size (:func:`cams.profile.roller.cap_tolerance`).
+    optimize : MotionDesignSpec or None
+        Design the free phases' laws with the cam (a file's ``[optimize]``).
     """
 
     follower: FlatFollower
@@ -357,6 +388,7 @@ class FlatFaceDesign:
     base_radius: float | None = None
     bore_radius: float | None = None
     tolerance: float | None = None
+    optimize: MotionDesignSpec | None = None
 
     face = "flat"
 
@@ -377,6 +409,7 @@ class FlatFaceDesign:
         if self.base_radius is not None and self.min_base_radius is not None:  # as for a roller follower
             raise InputError("cam.base_radius", "fixes the cam: a floor on R0 (limits.min_base_radius) has nothing "
                              "to size; remove one of them")
+        check_optimize(self.optimize, "R0", self.base_radius is not None)
 
     @property
     def scale(self) -> float:

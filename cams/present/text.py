@@ -52,6 +52,8 @@ def print_summary(rep: dict) -> None:
     bound = "" if rep["mode"] == "chosen" else \
         f"error bound: {'not stated by this method' if eb is None else f'{eb:.3g} {unit}'}; "
     print(f"  {bound}verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    if rep.get("optimize"):
+        print_optimization(rep["optimize"], rep.get("R0"))
     fo = rep.get("forces")
     if fo:
         print_cam_forces(fo, follower=rep["follower"])
@@ -61,6 +63,32 @@ def print_summary(rep: dict) -> None:
             n.startswith("not buildable: R0") and any(f.startswith("no working profile") for f in failures))
         if not said:
             print(f"  note: {n}")
+
+
+_OBJECTIVE_UNITS = {"R0": "mm", "L": "mm", "pressure_angle": "(ratio to the limit)", "Ca": "(normalized)",
+                    "Cj": "(normalized)", "jerk_squared": "(normalized)", "snap_squared": "(normalized)"}
+
+
+def _peak(v: float | None) -> str:
+    return "inf" if v is None else f"{v:.4f}"
+
+
+def print_optimization(o: dict, R0: float | None = None) -> None:
+    """The ``optimize`` part of a report (:mod:`cams.motion_design`): the certificate and the laws' peaks."""
+    unit = _OBJECTIVE_UNITS.get(o["objective"], "")
+    gap = "-" if o["gap"] is None else f"{o['gap']:.3g}"
+    print(f"  motion design: minimize {o['objective']}: {o['value']:.6g} {unit}, proven lower bound "
+          f"{o['lower_bound']:.6g}, gap {gap} (relative); certified: {'yes' if o['certified'] else 'NO'}")
+    print(f"    space: degree {o['degree']}, {o['spans']} spans per free phase, C{o['continuity']} joints "
+          f"(every cam angle: Bernstein coefficients on {o['pieces']} pieces a span)")
+    ref = o.get("reference")
+    if ref and R0 is not None:
+        print(f"    the original laws' cam: R0 = {ref['R0']:.6f} mm; this one: R0 = {R0:.6f} mm")
+    for p in o["phases"]:
+        orig = p["original"]
+        print(f"    [[motion]] {p['phase'] + 1} ({p['kind']}): Cv {_peak(p['Cv'])}, Ca {_peak(p['Ca'])}, "
+              f"Cj {_peak(p['Cj'])}; was {orig['law']}: Cv {_peak(orig['Cv'])}, Ca {_peak(orig['Ca'])}, "
+              f"Cj {_peak(orig['Cj'])}")
 
 
 def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translating") -> None:

@@ -110,12 +110,12 @@ def solve(prog: ConicProgram) -> Solution:
     import scipy.sparse as sp
 
     v = cp.Variable(prog.n)
-    cons = []
+    cons: list[cp.constraints.constraint.Constraint] = []
     # rows scaled to unit norm: the derivatives' rows carry powers of the spans' count
     gs = _row_norms(prog.G)
     As = _row_norms(prog.A)
-    lin = cp.NonPos(sp.csr_matrix(prog.G / gs[:, None]) @ v - prog.h / gs) if prog.G.shape[0] else None
-    eq = cp.Zero(sp.csr_matrix(prog.A / As[:, None]) @ v - prog.b / As) if prog.A.shape[0] else None
+    lin = (sp.csr_matrix(prog.G / gs[:, None]) @ v <= prog.h / gs) if prog.G.shape[0] else None
+    eq = (sp.csr_matrix(prog.A / As[:, None]) @ v == prog.b / As) if prog.A.shape[0] else None
     cons += [c for c in (lin, eq) if c is not None]
     socs = [cp.SOC(prog.cones[k].a @ v + prog.cones[k].a0, sp.csr_matrix(prog.cones[k].F) @ v + prog.cones[k].f)
             for k in range(len(prog.cones))]

@@ -1,0 +1,177 @@
+"""Motion design: the free phases' laws and the cam, designed together and certified.
+
+:func:`design_motion` runs the request of a design's ``[optimize]`` table:
+
+1. the reference: the design as given (the free phases' own laws), sized or
+   checked as usual; its R0 is the size held by objectives other than R0;
+2. the laws: :func:`optimize.motion.design.design_laws` solves the
+   conservative program (every constraint on the Bernstein coefficients of
+   every piece of every span: it holds at every cam angle) and proves a lower
+   bound on the space's optimum with the relaxed one (constraints at samples);
+3. the upper bound: the cam of the laws found, sized by the exact method (or
+   held) and checked like any cam (the independent pressure check, the
+   profile's checks); the caps are re-evaluated on the laws themselves
+   (``laws.characteristics``: dense samples refined), and the squared
+   objectives by Gauss-Legendre quadrature of the laws' own derivatives.
+
+The value is the checked design's; ``gap = (value - lower_bound) / |value|``
+is the certificate: no law of the space does better than ``lower_bound``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import replace
+from itertools import pairwise
+from typing import Any
+
+import numpy as np
+
+from cams.model.design import CamDesign, FlatFaceDesign
+from cams.model.follower import Translating
+from laws.base import Law
+from laws.errors import InfeasibleError
+
+__all__ = ["design_motion", "law_peaks", "integral_of_square"]
+
+
+def law_peaks(law: Law) -> dict[str, float | None]:
+    """``Cv``, ``Ca``, ``Cj`` of a normalized law (None where infinite: a jump where it meets a dwell)."""
+    from laws.characteristics import characteristics
+
+    ch = characteristics(law)
+    return {k: (float(v) if np.isfinite(v) else None) for k, v in (("Cv", ch.cv), ("Ca", ch.ca), ("Cj", ch.cj))}
+
+
+def integral_of_square(law: Law, r: int, breaks: np.ndarray, degree: int) -> float:
+    """``integral_0^1 S^(r)(u)**2 du`` by Gauss-Legendre quadrature on each span (exact for the polynomial pieces).
+
+    ``r`` up to 3 uses the law's own derivatives; ``r = 4`` differentiates
+    ``S'''`` by the quadrature's exact rule for polynomials: the pieces'
+    ``S''''`` as the derivative of their ``S'''`` fitted at ``degree - 2``
+    Chebyshev points (exact for a polynomial of degree ``degree - 3``).
+    """
+    x, w = np.polynomial.legendre.leggauss(degree + 2)
+    total = 0.0
+    for a, b in pairwise(breaks):
+        u = a + (b - a) * (x + 1) / 2
+        if r <= 3:
+            vals = law.evaluate(u)[r]
+        else:
+            q = max(degree - 3, 0)
+            t = a + (b - a) * (1 - np.cos(np.pi * (np.arange(q + 1) + 0.5) / (q + 1))) / 2
+            j3 = law.evaluate(t)[3]
+            coef = np.polynomial.polynomial.polyfit(t - a, j3, q)
+            vals = np.polynomial.polynomial.polyval(u - a, np.polynomial.polynomial.polyder(coef))
+        total += float((b - a) / 2 * np.sum(w * vals**2))
+    return total
+
+
+def _ratio(pressure) -> float:
+    """The largest ratio of pressure angle to its limit over the limited phases (the independent check's)."""
+    out = []
+    if pressure.rise is not None and pressure.rise_limit:
+        out.append(pressure.rise / pressure.rise_limit)
+    if pressure.ret is not None and pressure.return_limit:
+        out.append(pressure.ret / pressure.return_limit)
+    return float(max(out))
+
+
+def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any], Any]):
+    """Design the free phases' laws of ``design`` with its cam (see the module notes).
+
+    Parameters
+    ----------
+    design : CamDesign or FlatFaceDesign
+        With ``optimize`` set.
+    solve_fixed : callable
+        The verified solve of a design whose laws are fixed
+        (:func:`cams.solve.solve`; passed in, so that the solve may call this
+        module without an import cycle).
+
+    Returns
+    -------
+    cams.solve.SolveResult or optimize.flat.FlatFaceSolution
+        The cam of the designed laws, its ``optimization`` holding the
+        certificate (:meth:`to_dict`'s ``"optimize"``).
+    """
+    from optimize.motion.design import design_laws
+
+    spec = design.optimize
+    assert spec is not None
+    base = replace(design, optimize=None)
+    try:
+        reference = solve_fixed(base)
+    except InfeasibleError:
+        reference = None
+    hold = None
+    if spec.objective != "R0":
+        if reference is None:
+            raise InfeasibleError("optimize.objective",
+                              "the cam's size is held at the original law's, but the original law admits no cam: "
+                                  "choose the cam ([cam] base_radius or centre) or minimize R0")
+        hold = float(reference.R0)
+    ld = design_laws(base, spec, hold=hold)
+    new = replace(base, program=ld.program)
+    notes: list[str] = []
+    if spec.objective != "R0" and hold is not None:
+        if isinstance(new, FlatFaceDesign):
+            new = replace(new, base_radius=hold)
+        else:
+            x, d = ld.centre
+            f = new.follower
+            if isinstance(f, Translating) and f.offset is not None:
+                f = replace(f, offset=None)
+            new = replace(new, follower=f, centre=(x, -d), base_radius=None)
+    sol = solve_fixed(new)
+
+    # -- the value of the checked design, computed on the laws themselves ----------------------------------------
+    obj = spec.objective
+    laws_new = {i: ld.program.law_of(i) for i in ld.free}
+    peaks = {i: law_peaks(law) for i, law in laws_new.items()}
+    if obj == "R0":
+        value = float(sol.R0)
+    elif obj == "pressure_angle":
+        value = _ratio(sol.pressure)
+    elif obj in ("Ca", "Cj"):
+        value = max(np.inf if (pk := p[obj]) is None else float(pk) for p in peaks.values())
+    else:
+        r = 3 if obj == "jerk_squared" else 4
+        value = sum(integral_of_square(law, r, ld.space.breaks, spec.degree) for law in laws_new.values())
+    caps_ok = True
+    names = {1: "Cv", 2: "Ca", 3: "Cj"}
+    for (k, r), cap in ld.caps.items():
+        got = peaks[ld.free[k]][names[r]]
+        if got is None or got > cap:
+            caps_ok = False
+            notes.append(f"free phase {ld.free[k]}: {names[r]} = {got} exceeds its cap {cap:.6g}")
+    gap = (value - ld.lower_bound) / abs(value) if value else None
+    if ld.box_binds:
+        notes.append("the laws touch the space's bound on their coefficients: the lower bound holds within it")
+    certified = bool(caps_ok and (getattr(sol, "certified", None) is not False) and gap is not None)
+    original = {i: base.program.law_of(i) for i in ld.free}
+    phases = []
+    for i in ld.free:
+        phases.append({
+            "phase": i, "kind": base.program.phases[i].kind, **peaks[i],
+            "original": {"law": original[i].name, **law_peaks(original[i])},
+        })
+    info = {
+        "objective": obj,
+        "value": value,
+        "lower_bound": float(ld.lower_bound),
+        "gap": None if gap is None else float(gap),
+        "certified": certified,
+        "degree": spec.degree,
+        "spans": spec.spans,
+        "continuity": spec.continuity,
+        "pieces": ld.space.pieces,
+        "free": list(ld.free),
+        "caps": [{"phase": ld.free[k], "derivative": names[r], "max": cap} for (k, r), cap in ld.caps.items()],
+        "phases": phases,
+        "reference": None if reference is None else {"R0": float(reference.R0)},
+        "held_R0": hold,
+        "seconds": float(ld.seconds),
+        "notes": notes,
+    }
+    return replace(sol, optimization=info, notes=(*sol.notes, *notes))

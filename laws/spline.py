@@ -1,0 +1,205 @@
+"""A piecewise polynomial rise law in Bernstein form (a spline given by its coefficients).
+
+The law ``S(u)``, ``u`` in [0, 1], is a polynomial of one degree ``p`` on each
+knot span ``[b_j, b_{j+1}]`` of the breaks ``0 = b_0 < b_1 < ... < b_n = 1``,
+written in the span's local variable ``t = (u - b_j) / (b_{j+1} - b_j)`` as
+``sum_i c_{j,i} B_{i,p}(t)`` (:mod:`laws.bernstein`). The spans meet with ``S``
+continuous (the last coefficient of a span is the first of the next); higher
+derivatives may jump at a break, and :attr:`SplineLaw.breakpoints` lists the
+interior breaks so that the diagnostics take one-sided limits there.
+
+``S', S'', S'''`` are the polynomials' own derivatives (exact, no numerical
+differentiation): each span's coefficients are turned once into the power form
+of ``t``, evaluated by Horner's rule, and the ``k``-th derivative divided by the
+span's width to the power ``k``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from laws.base import Law
+from laws.bernstein import power_values, to_power
+from laws.errors import InputError
+
+__all__ = ["SplineLaw", "MAX_DEGREE"]
+
+#: The largest degree of a span (the power form of a higher degree loses too many digits).
+MAX_DEGREE = 15
+#: Tolerance on the first and last break (0 and 1).
+BREAK_TOL = 1e-12
+#: Tolerance on ``S(0) = 0``, ``S(1) = 1`` and on the continuity of ``S``, times max(1, largest |coefficient|).
+VALUE_TOL = 1e-9
+
+_BREAKS = "spline.breaks"
+_COEFFS = "spline.coefficients"
+
+
+def _row(fld: str, values, what: str) -> tuple[float, ...]:
+    """``values`` as a tuple of finite floats, else :class:`InputError` on ``fld``."""
+    if isinstance(values, (str, bytes)) or not isinstance(values, (Sequence, np.ndarray)):
+        raise InputError(fld, f"{what} must be a sequence of numbers, got {values!r}")
+    try:
+        a = np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(fld, f"{what} must be a sequence of numbers, got {values!r}") from None
+    if a.ndim != 1:
+        raise InputError(fld, f"{what} must be a flat sequence of numbers, got shape {a.shape}")
+    if not np.all(np.isfinite(a)):
+        raise InputError(fld, f"{what} must hold finite numbers only, got {values!r}")
+    return tuple(a.tolist())
+
+
+@dataclass(frozen=True)
+class SplineLaw(Law):
+    """A piecewise polynomial rise ``S(u)`` given by Bernstein coefficients per knot span.
+
+    Parameters
+    ----------
+    breaks : tuple of float
+        ``0 = b_0 < b_1 < ... < b_n = 1``: the knot spans' ends, normalized
+        position ``u`` (dimensionless); strictly increasing.
+    coefficients : tuple of tuple of float
+        ``n`` rows, one per span, each the ``p + 1`` Bernstein coefficients of
+        ``S`` on that span in its local variable ``t = (u - b_j) / (b_{j+1} -
+        b_j)`` (dimensionless normalized rise); the same degree ``p``, 1 to
+        :data:`MAX_DEGREE`, on every span.
+    name : str, keyword-only
+        Name shown in tables.
+
+    Attributes
+    ----------
+    breakpoints : tuple of float
+        The interior breaks ``b_1 .. b_{n-1}``, where derivatives may jump.
+
+    Raises
+    ------
+    InputError
+        Field ``"spline.coefficients"``: not finite numbers, spans of
+        different lengths, fewer than 2 or more than ``MAX_DEGREE + 1``
+        coefficients a span, ``S(0) != 0`` or ``S(1) != 1`` (the first
+        coefficient of the first span, the last of the last), ``S`` jumping at
+        a break (to ``1e-9`` times the largest coefficient, at least 1).
+        Field ``"spline.breaks"``: not finite numbers, not one more than the
+        spans, not strictly increasing, not from 0 to 1 (to ``1e-12``).
+
+    Examples
+    --------
+    The 3-4-5 polynomial ``10 u^3 - 15 u^4 + 6 u^5`` as one span of degree 5:
+
+    >>> law = SplineLaw((0.0, 1.0), ((0, 0, 0, 1, 1, 1),), name="345")
+    >>> law.degree, law.spans
+    (5, 1)
+    >>> float(law.evaluate(0.5)[1])
+    1.875
+
+    The constant-acceleration law as two spans of degree 2; ``S''`` jumps at
+    the break:
+
+    >>> law = SplineLaw.uniform([[0, 0, 0.5], [0.5, 1, 1]])
+    >>> law.breaks, law.breakpoints
+    ((0.0, 0.5, 1.0), (0.5,))
+    >>> law.evaluate([0.25, 0.75])[2].tolist()
+    [4.0, -4.0]
+    """
+
+    breaks: tuple[float, ...]
+    coefficients: tuple[tuple[float, ...], ...]
+    name: str = field(default="spline", kw_only=True)
+    #: Power coefficients of each span in its local variable, shape (spans, degree + 1).
+    _power: np.ndarray = field(init=False, repr=False, compare=False, hash=False)
+
+    def __post_init__(self):
+        c = self.coefficients
+        if isinstance(c, (str, bytes)) or not isinstance(c, (Sequence, np.ndarray)) or len(c) == 0:
+            raise InputError(_COEFFS, f"must be a non-empty sequence of spans (sequences of numbers), got {c!r}")
+        rows = tuple(_row(_COEFFS, r, f"span {j}") for j, r in enumerate(c))
+        size = len(rows[0])
+        for j, r in enumerate(rows):
+            if len(r) != size:
+                raise InputError(_COEFFS, f"every span must have the same number of coefficients (degree + 1): "
+                                 f"span 0 has {size}, span {j} has {len(r)}")
+        if not 2 <= size <= MAX_DEGREE + 1:
+            raise InputError(_COEFFS, f"a span takes 2 to {MAX_DEGREE + 1} coefficients (degree 1 to {MAX_DEGREE}), "
+                             f"got {size}")
+        b = _row(_BREAKS, self.breaks, "breaks")
+        if len(b) != len(rows) + 1:
+            raise InputError(_BREAKS, f"needs one more break than spans: {len(rows)} span(s) need {len(rows) + 1} "
+                             f"breaks, got {len(b)}")
+        for j in range(len(rows)):
+            if not b[j + 1] > b[j]:
+                raise InputError(_BREAKS, f"must be strictly increasing, but breaks[{j + 1}] = {b[j + 1]!r} <= "
+                                 f"breaks[{j}] = {b[j]!r}")
+        if abs(b[0]) > BREAK_TOL or abs(b[-1] - 1.0) > BREAK_TOL:
+            raise InputError(_BREAKS, f"must start at 0 and end at 1, got {b[0]!r} .. {b[-1]!r}")
+        b = (0.0, *b[1:-1], 1.0)
+        tol = VALUE_TOL * max(1.0, max(abs(x) for r in rows for x in r))
+        s0, s1 = rows[0][0], rows[-1][-1]
+        if abs(s0) > tol or abs(s1 - 1.0) > tol:
+            raise InputError(_COEFFS, f"must give S(0) = 0 and S(1) = 1 (a normalized rise: the first coefficient "
+                             f"of the first span and the last of the last), got S(0) = {s0!r}, S(1) = {s1!r}")
+        for j in range(len(rows) - 1):
+            before, after = rows[j][-1], rows[j + 1][0]
+            if abs(after - before) > tol:
+                raise InputError(_COEFFS, f"S must be continuous, but it jumps at the break u = {b[j + 1]!r}: "
+                                 f"{before!r} at the end of span {j}, {after!r} at the start of span {j + 1}")
+        m = to_power(size - 1)
+        power = np.array([m @ np.asarray(r) for r in rows])
+        power.setflags(write=False)
+        object.__setattr__(self, "breaks", b)
+        object.__setattr__(self, "coefficients", rows)
+        object.__setattr__(self, "_power", power)
+        # the instance's own interior breaks, where laws.diagnostics and laws.characteristics look for jumps
+        object.__setattr__(self, "breakpoints", b[1:-1])
+
+    @classmethod
+    def uniform(cls, coefficients, *, name: str = "spline") -> SplineLaw:
+        """A spline law on equal knot spans.
+
+        Parameters
+        ----------
+        coefficients : sequence of sequence of float
+            One row of Bernstein coefficients per span (see the class).
+        name : str, keyword-only
+            Name shown in tables.
+
+        Returns
+        -------
+        SplineLaw
+            With breaks ``j / n``, ``j = 0 .. n`` for ``n`` spans.
+
+        Raises
+        ------
+        InputError
+            As the class (field ``"spline.coefficients"``).
+        """
+        if isinstance(coefficients, (str, bytes)) or not isinstance(coefficients, (Sequence, np.ndarray)) \
+                or len(coefficients) == 0:
+            raise InputError(_COEFFS, f"must be a non-empty sequence of spans (sequences of numbers), "
+                             f"got {coefficients!r}")
+        n = len(coefficients)
+        return cls(tuple(j / n for j in range(n + 1)), tuple(coefficients), name=name)
+
+    @property
+    def degree(self) -> int:
+        """Degree ``p`` of the polynomial on each span."""
+        return len(self.coefficients[0]) - 1
+
+    @property
+    def spans(self) -> int:
+        """Number of knot spans."""
+        return len(self.coefficients)
+
+    def _evaluate(self, u):
+        b = np.asarray(self.breaks)
+        flat = np.ravel(u)
+        # a u on an interior break belongs to the later span, u = 1 to the last
+        j = np.clip(np.searchsorted(b, flat, side="right") - 1, 0, self.spans - 1)
+        h = b[j + 1] - b[j]
+        out = power_values(self._power[j], (flat - b[j]) / h, 3)
+        for k in range(1, 4):
+            out[k] /= h**k
+        return tuple(row.reshape(np.shape(u)) for row in out)

@@ -1,0 +1,312 @@
+"""The driver: a design's free phases' laws, designed with the cam (translating followers).
+
+:func:`design_laws` resolves the request (free phases, caps, what is held),
+solves the conservative program (every constraint at every cam angle, by the
+Bernstein coefficients of every piece of every span) for the laws and the
+relaxed program (the constraints at samples only) for a proven lower bound on
+the space's optimum. The caller (:mod:`cams.motion_design`) then sizes and
+checks the cam of the laws found, which gives the upper bound.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from cams.model.design import CamDesign, FlatFaceDesign
+from cams.model.follower import Rocker, Translating
+from cams.model.motiondesign import CAP_KEYS, MotionDesignSpec
+from laws.errors import InfeasibleError, InputError
+from laws.program import Program
+from laws.spline import SplineLaw
+from optimize.motion.conic import ConicProgram, lower_bound, solve
+from optimize.motion.space import Space
+from optimize.motion.translating import Request, build
+
+__all__ = ["LawDesign", "design_laws", "free_phases", "resolve_caps", "BISECTION_STEPS"]
+
+#: Steps of the pressure-angle bisection (each halves the bracket of the ratio).
+BISECTION_STEPS = 18
+
+
+@dataclass(frozen=True)
+class LawDesign:
+    """The laws found and what the programs proved.
+
+    Attributes
+    ----------
+    program : Program
+        The cycle with the free phases' laws replaced by :class:`laws.spline.SplineLaw`.
+    free : tuple of int
+        The free phases.
+    objective : str
+    solver_value : float
+        The conservative program's value as the solver reports it (not a bound).
+    lower_bound : float
+        A proven lower bound of the objective over the space (the relaxed program's multipliers).
+    centre : (float, float)
+        Roller: the cam centre ``(x, d)`` the conservative program found (``x = -e``, the centre at ``(x, -d)``);
+        flat: ``(R0, 0)``.
+    caps : dict of (int, int) to float
+        The caps imposed, ``(k, r) -> cap`` (free phase ``k``, derivative ``r``).
+    space : Space
+    box_binds : bool
+        True when the returned laws touch the space's declared box (the bound then holds in the box only).
+    seconds : float
+    """
+
+    program: Program
+    free: tuple[int, ...]
+    objective: str
+    solver_value: float
+    lower_bound: float
+    centre: tuple[float, float]
+    caps: dict[tuple[int, int], float]
+    space: Space
+    box_binds: bool
+    seconds: float
+
+
+def free_phases(spec: MotionDesignSpec, program: Program) -> tuple[int, ...]:
+    """The indices of the free phases ``spec.free`` names, increasing.
+
+    Raises
+    ------
+    InputError
+        ``optimize.free`` naming a phase that does not exist or is a dwell, or
+        a kind the program does not have.
+    """
+    out: set[int] = set()
+    kinds = [p.kind for p in program.phases]
+    for v in spec.free:
+        if isinstance(v, str):
+            found = [i for i, k in enumerate(kinds) if k == v]
+            if not found:
+                raise InputError("optimize.free", f"the program has no {v} phase")
+            out.update(found)
+        else:
+            if not 0 <= v < len(kinds):
+                raise InputError("optimize.free", f"phase index {v} does not exist: the [[motion]] rows are 0 to "
+                                 f"{len(kinds) - 1}")
+            if kinds[v] == "dwell":
+                raise InputError("optimize.free", f"phase {v} is a dwell: only a rise or a return has a law to design")
+            out.add(v)
+    return tuple(sorted(out))
+
+
+def resolve_caps(spec: MotionDesignSpec, free: tuple[int, ...]) -> dict[tuple[int, int], float]:
+    """``(k, r) -> cap``: the numbers of the caps (a law's name gives that law's peak, ``laws.characteristics``)."""
+    from laws.characteristics import characteristics
+    from laws.registry import get_law
+
+    out = {}
+    for key, r in CAP_KEYS.items():
+        caps = getattr(spec, key)
+        if len(caps) not in (1, len(free)):
+            raise InputError(f"optimize.{key}", f"gives {len(caps)} caps for {len(free)} free phases: give one, or "
+                             "one per free phase")
+        for k in range(len(free)):
+            c = spec.cap(key, k)
+            if c is None:
+                continue
+            if isinstance(c, str):
+                ch = characteristics(get_law(c, f"optimize.{key}"))
+                value = (ch.cv, ch.ca, ch.cj)[r - 1]
+                if not np.isfinite(value):
+                    raise InputError(f"optimize.{key}", f"the law {c!r} has no finite peak of that derivative "
+                                     "(it jumps): give a number")
+                c = float(value)
+            out[(k, r)] = float(c)
+    return out
+
+
+def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -> None:
+    flat = isinstance(design, FlatFaceDesign)
+    f = design.follower
+    if isinstance(f, Rocker) or getattr(f, "kind", "") == "rocker":
+        raise InputError("optimize", "the motion design takes translating followers (roller, knife edge or flat "
+                         "face); a rocker's is not available in this release")
+    if spec.objective == "L":
+        raise InputError("optimize.objective", "'L' (the centre distance) applies to rocker followers; a "
+                         "translating follower's cam is sized by 'R0'")
+    if flat and spec.objective == "pressure_angle":
+        raise InputError("optimize.objective", "a flat face's pressure angle is fixed by its geometry: "
+                         "'pressure_angle' does not apply")
+    r = {"jerk_squared": 3, "snap_squared": 4}.get(spec.objective)
+    if r is not None and spec.degree < r:
+        raise InputError("optimize.degree", f"{spec.objective!r} integrates derivative {r}: the degree must be at "
+                         f"least {r}")
+    if flat and spec.continuity < 2:
+        raise InputError("optimize.continuity", "a flat face's profile curvature follows s'': it must be "
+                         "continuous, continuity at least 2")
+
+
+def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, hold: float | None = None,
+                pieces: int | None = None) -> LawDesign:
+    """Design the free phases' laws of ``design`` as ``spec`` asks.
+
+    Parameters
+    ----------
+    design : CamDesign or FlatFaceDesign
+        A translating follower's design; its free phases' laws are the
+        starting point only (not used by the programs).
+    spec : MotionDesignSpec
+    hold : float or None
+        For objectives other than ``"R0"``: the base radius held (length; the
+        cam centre may move on or inside that circle, the offset if it is
+        free). A chosen cam (``[cam] base_radius`` or ``centre``) is held as
+        it is. Ignored for ``"R0"``.
+    pieces : int or None
+        Subdivisions per span of the conservative constraints (default
+        :data:`optimize.motion.space.PIECES`).
+
+    Returns
+    -------
+    LawDesign
+
+    Raises
+    ------
+    InputError
+        A request the follower cannot take, or a cap no law of the space can
+        meet with the joints' conditions (named, proven by solving the space
+        with that cap alone).
+    InfeasibleError
+        The request is infeasible as a whole (the families whose union is
+        infeasible are named).
+    """
+    t0 = time.perf_counter()
+    _check_request(design, spec)
+    program = design.program
+    free = free_phases(spec, program)
+    caps = resolve_caps(spec, free)
+    kw = {} if pieces is None else {"pieces": pieces}
+    space = Space(program, free, spec.degree, spec.spans, spec.continuity, **kw)
+    flat = isinstance(design, FlatFaceDesign)
+    f = design.follower
+    scale = design.scale
+    limits: dict[int, float] = {}
+    min_radius = 0.0
+    if isinstance(design, FlatFaceDesign):
+        min_radius = float(design.min_radius)
+    else:
+        limits = dict(design.constrained_phases())
+    centre = None
+    x_fixed = None
+    held = None
+    if spec.objective != "R0":
+        if isinstance(design, CamDesign) and design.chosen:
+            c = design.chosen_centres()[0]
+            centre = (float(c[0]), float(-c[1]))
+        elif flat and design.base_radius is not None:
+            centre = (float(design.base_radius), 0.0)
+        else:
+            if hold is None:
+                raise ValueError("an objective other than R0 needs the size held")
+            held = float(hold)
+    if isinstance(f, Translating) and f.offset is not None and centre is None:
+        x_fixed = -float(f.offset)
+    bound = 100.0 * (scale + float(program.lift) + (held or 0.0)
+                     + (abs(centre[0]) + abs(centre[1]) if centre else 0.0))
+    base = Request(space=space, follower="flat" if flat else "roller", cam_sense=design.cam_sense, limits=limits,
+                   caps=caps, objective=spec.objective, bound=bound, centre=centre, x_fixed=x_fixed, hold=held,
+                   min_radius=min_radius)
+    if spec.objective == "pressure_angle":
+        result, lb = _bisect_pressure(base, limits)
+    else:
+        result = _solve_or_explain(build(base, "conservative"), base)
+        relaxed = build(base, "relaxed")
+        lb = lower_bound(relaxed, solve(relaxed))
+        value = result.value
+        if spec.objective in ("jerk_squared", "snap_squared"):
+            lb = max(lb, 0.0) ** 2
+            value = value**2
+        result = replace(result, value=value)
+    # the joints and ends exactly (to rounding), not to the solver's tolerance: the least change of v that
+    # satisfies the space's equalities (the caps were tightened by TIGHTEN to leave room for it)
+    A, b = space.equalities(result.v.size)
+    v = result.v - np.linalg.lstsq(A, A @ result.v - b, rcond=None)[0]
+    nc = space.size
+    laws = {}
+    for k, i in enumerate(free):
+        coeffs = space.coefficients(v, k)
+        coeffs[0, 0] = 0.0
+        coeffs[-1, -1] = 1.0
+        laws[i] = SplineLaw(tuple(space.breaks.tolist()), tuple(tuple(map(float, row)) for row in coeffs),
+                            name=f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})")
+    new_program = Program(tuple(replace(p, law=laws.get(i, p.law)) for i, p in enumerate(program.phases)),
+                          program.lift)
+    box = np.tile(space.bounds(), len(free))
+    binds = bool(np.any(np.abs(v[:nc]) >= 0.999 * box))
+    geo = (float(v[nc]), 0.0) if flat else (float(v[nc]), float(v[nc + 1]))
+    return LawDesign(program=new_program, free=free, objective=spec.objective, solver_value=float(result.value),
+                     lower_bound=float(lb), centre=geo, caps=caps, space=space, box_binds=binds,
+                     seconds=time.perf_counter() - t0)
+
+
+def _solve_or_explain(prog: ConicProgram, req: Request):
+    """Solve ``prog``; when it is infeasible, find a family of constraints infeasible on its own and say so."""
+    sol = solve(prog)
+    if sol.feasible:
+        return sol
+    # each cap alone with the space's joints
+    from cams.model.motiondesign import CAP_KEYS
+
+    names = {r: k for k, r in CAP_KEYS.items()}
+    for (k, r), cap in req.caps.items():
+        alone = replace(req, caps={(k, r): cap}, limits={}, objective="Ca",
+                        centre=None, hold=None, x_fixed=None, follower="roller", min_radius=0.0)
+        if not solve(build(alone, "relaxed")).feasible:
+            raise InputError(f"optimize.{names[r]}", f"{cap:g} is below what any law of the space can meet with the "
+                             f"joints' conditions (free phase {req.space.free[k]}: the space with this cap alone is "
+                             "infeasible); raise it, lower the continuity or free the neighbouring phase")
+    if req.hold is not None or req.centre is not None:
+        raise InfeasibleError("optimize",
+                              "the caps and the pressure-angle limits cannot both hold at the cam size held "
+                              "(each cap alone is feasible); raise a cap, or let the cam grow (objective 'R0')")
+    raise InfeasibleError("optimize",
+                              "the caps together admit no law of the space (each alone is feasible): raise one of "
+                          "them or lower the continuity")
+
+
+def _bisect_pressure(base: Request, limits: dict[int, float]):
+    """The least ratio of pressure angle to limit: bisection on feasibility.
+
+    Upper end: the conservative program feasible (slack <= 0) at the ratio.
+    Lower end: the relaxed program proven infeasible at the ratio (its proven
+    lower bound of the least slack is > 0).
+    """
+    top = (np.pi / 2) / max(limits.values()) * (1 - 1e-9)
+    lo, hi = 0.0, min(1.0, top)
+    feas = None
+    while True:
+        req = replace(base, objective="feasibility", ratio=hi)
+        sol = solve(build(req, "conservative"))
+        if sol.feasible and sol.value <= 0:
+            feas = sol
+            break
+        if hi >= top:
+            raise InfeasibleError("optimize",
+                              "no law of the space meets the caps at the cam size held with any pressure angle "
+                                  "below 90 degrees")
+        lo, hi = hi, min(2 * hi, top)
+    up_lo = lo
+    for _ in range(BISECTION_STEPS):
+        mid = 0.5 * (up_lo + hi)
+        sol = solve(build(replace(base, objective="feasibility", ratio=mid), "conservative"))
+        if sol.feasible and sol.value <= 0:
+            hi, feas = mid, sol
+        else:
+            up_lo = mid
+    # the proven lower end: largest ratio at which the relaxation is proven infeasible
+    a, b = 0.0, hi
+    for _ in range(BISECTION_STEPS):
+        mid = 0.5 * (a + b)
+        rel = build(replace(base, objective="feasibility", ratio=mid), "relaxed")
+        if lower_bound(rel, solve(rel)) > 0:
+            a = mid
+        else:
+            b = mid
+    assert feas is not None
+    return replace(feas, value=hi), a

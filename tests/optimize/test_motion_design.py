@@ -1,0 +1,154 @@
+"""Motion design ([optimize]): the analytic anchors, a brute-force check of the certified answer, bad input.
+
+References: the 3-4-5 polynomial minimizes the integral of the squared jerk with zero end velocity and
+acceleration, the 4-5-6-7 the squared snap with zero end jerk as well (Euler-Lagrange: S^(6) = 0, S^(8) = 0);
+the least peak acceleration with zero end velocities is the constant-acceleration law's, Ca = 4 (Norton, Cam
+Design and Manufacturing Handbook, ch. 3).
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from cams.io.designfile import design_from_dict, load_design
+from cams.io.document import read_toml
+from cams.io.lawtable import law_to_table
+from cams.model.motiondesign import MotionDesignSpec
+from cams.solve import solve
+from laws.errors import InputError
+from laws.standard import Parabolic, Poly345, Poly4567
+from optimize.motion.design import design_laws
+
+EXAMPLE = "examples/translating_force.toml"
+
+
+def _doc(**optimize):
+    d = read_toml(EXAMPLE)
+    d["optimize"] = optimize
+    return d
+
+
+def _slack_design():
+    """The example with a far cam centre: the pressure limit never binds, the law problem stands alone."""
+    d = read_toml(EXAMPLE)
+    d["cam"]["centre"] = [0.0, -5000.0]
+    return design_from_dict(d)
+
+
+@pytest.mark.parametrize(("objective", "continuity", "degree", "law"), [
+    ("jerk_squared", 2, 5, Poly345()),
+    ("snap_squared", 3, 7, Poly4567()),
+])
+def test_smoothest_laws_are_the_polynomials(objective, continuity, degree, law):
+    spec = MotionDesignSpec(objective=objective, continuity=continuity, degree=degree, spans=4)
+    ld = design_laws(_slack_design(), spec)
+    got = ld.program.law_of(0)
+    u = np.linspace(0, 1, 401)
+    for k in range(4):
+        ref = law.evaluate(u)[k]
+        assert np.max(np.abs(got.evaluate(u)[k] - ref)) <= 1e-6 * np.max(np.abs(ref)) + 1e-8
+    assert ld.lower_bound <= ld.solver_value * (1 + 1e-9)
+
+
+def test_least_peak_acceleration_is_constant_acceleration():
+    spec = MotionDesignSpec(objective="Ca", continuity=1, degree=3, spans=8)
+    ld = design_laws(_slack_design(), spec)
+    u = np.linspace(0, 1, 2001)
+    S = ld.program.law_of(0).evaluate(u)
+    assert np.max(np.abs(S[2])) == pytest.approx(4.0, rel=1e-7)
+    assert np.max(np.abs(S[0] - Parabolic().evaluate(u)[0])) < 1e-7
+    assert 4.0 * (1 - 1e-7) <= ld.solver_value and ld.lower_bound <= 4.0 * (1 + 1e-9)
+
+
+@pytest.fixture(scope="module")
+def designed():
+    return solve(design_from_dict(_doc(max_Ca="poly4567", max_Cj="poly4567", spans=10)))
+
+
+def test_designed_cam_is_smaller_and_certified(designed):
+    o = designed.optimize if hasattr(designed, "optimize") else designed.optimization
+    reference = solve(load_design(EXAMPLE))
+    assert designed.verified and designed.certified is not False and o["certified"]
+    assert designed.R0 < 0.8 * reference.R0
+    assert o["reference"]["R0"] == pytest.approx(reference.R0, rel=1e-12)
+    assert o["lower_bound"] <= designed.R0 and 0 <= o["gap"] < 0.05
+
+
+def test_brute_force_pressure_and_caps(designed):
+    """Dense evaluation, independent of the programs: tan(gamma) = (s' + eps x) / (d + s) at 200,001 angles."""
+    design = designed.design
+    x, d = designed.centre[0], -designed.centre[1]
+    phi = np.linspace(0, design.program.phases[0].angle, 200_001)
+    m = design.program.evaluate(phi)
+    gamma = np.arctan2(np.abs(m.ds + design.cam_sense * x), d + m.s)
+    assert gamma.max() <= design.limits.pressure_angle * (1 + 1e-9)
+    u = np.linspace(0, 1, 200_001)
+    S = design.program.law_of(0).evaluate(u)
+    assert np.max(np.abs(S[2])) <= Poly4567().evaluate(np.linspace(0, 1, 200_001))[2].__abs__().max() * (1 + 1e-6)
+    assert np.max(np.abs(S[3])) <= 52.5 * (1 + 1e-9)
+    # minimality within rounding of the law: no admissible centre at R0 (1 - 1e-6) (the exact sizing's claim)
+    R0 = np.hypot(x, d)
+    ang = np.linspace(-np.pi / 2, np.pi / 2, 721)
+    xs, ds = R0 * (1 - 1e-6) * np.sin(ang), R0 * (1 - 1e-6) * np.cos(ang)
+    sub = slice(None, None, 200)
+    g = np.arctan2(np.abs(m.ds[sub][None, :] + design.cam_sense * xs[:, None]), ds[:, None] + m.s[sub][None, :])
+    assert np.all(g.max(axis=1) > design.limits.pressure_angle)
+
+
+def test_library_law_in_the_space_is_no_better():
+    """poly345 lies in the degree-5, C2 space: with caps just above its peaks the joint optimum is no larger."""
+    ref = solve(design_from_dict({**read_toml(EXAMPLE), "motion": [
+        {"phase": "rise", "law": "poly345", "angle": 150}, {"phase": "dwell", "angle": 30},
+        {"phase": "return", "law": "cycloidal", "angle": 120}, {"phase": "dwell"}]}))
+    doc = read_toml(EXAMPLE)
+    doc["motion"][0]["law"] = "poly345"
+    doc["optimize"] = {"max_Ca": 5.7735 * 1.01, "max_Cj": 60 * 1.01, "continuity": 2, "degree": 5, "spans": 8}
+    got = solve(design_from_dict(doc))
+    assert got.R0 <= ref.R0 * (1 + 1e-9)
+    assert got.optimization["lower_bound"] <= got.R0
+
+
+def test_round_trip_through_a_spline_table(designed, tmp_path):
+    doc = read_toml(EXAMPLE)
+    doc["motion"][0]["law"] = law_to_table(designed.design.program.law_of(0))
+    again = solve(design_from_dict(doc))
+    assert again.R0 == pytest.approx(designed.R0, rel=1e-12)
+
+
+@pytest.mark.parametrize(("optimize", "field"), [
+    ({"max_Ca": 3.5, "continuity": 1, "degree": 3, "spans": 8}, "optimize.max_Ca"),
+    ({"continuity": 3, "degree": 3}, "optimize.degree"),
+    ({"objective": "L"}, "optimize.objective"),
+    ({"objective": "speed"}, "optimize.objective"),
+    ({"free": ["dwell"]}, "optimize.free"),
+    ({"free": [1]}, "optimize.free"),
+    ({"spans": 0}, "optimize.spans"),
+    ({"colour": 1}, "optimize"),
+])
+def test_bad_requests_name_the_field(optimize, field):
+    with pytest.raises(InputError) as e:
+        solve(design_from_dict(_doc(**optimize)))
+    assert e.value.field == field
+
+
+def test_both_objectives_refused():
+    d = _doc()
+    d["solve"] = {"objective": "R0"}
+    with pytest.raises(InputError) as e:
+        design_from_dict(d)
+    assert e.value.field == "solve.objective"
+
+
+def test_command_line_bad_cap_exits_2(tmp_path):
+    import tomllib  # noqa: F401  (the file is written by hand below)
+
+    text = open(EXAMPLE, encoding="utf-8").read() + '\n[optimize]\nmax_Ca = 3.5\ncontinuity = 1\ndegree = 3\n'
+    p = tmp_path / "bad.toml"
+    p.write_text(text, encoding="utf-8")
+    r = subprocess.run([sys.executable, "-m", "cams.cli", "solve", str(p)], capture_output=True, text=True)
+    assert r.returncode == 2
+    assert r.stderr.count("\n") == 1 and "optimize.max_Ca" in r.stderr
