@@ -12,7 +12,8 @@ from typing import Literal, overload
 
 import numpy as np
 
-__all__ = ["CamsError", "InputError", "InfeasibleError", "check_option", "check_number", "check_positive", "show_value"]
+__all__ = ["CamsError", "InputError", "InfeasibleError", "check_option", "check_number", "check_positive",
+           "check_numbers", "show_value"]
 
 
 class CamsError(ValueError):
@@ -128,6 +129,42 @@ def check_positive(field: str, value: object) -> float:
         return float(check_number(field, value, lo=0.0, strict=True))
     except InputError:
         raise InputError(field, f"must be a number > 0, got {show_value(value)}") from None
+
+
+def check_numbers(field: str, values: object, what: str = "") -> np.ndarray:
+    """``values`` as a one-dimensional float array of finite numbers, else :class:`InputError` on ``field``.
+
+    Parameters
+    ----------
+    field : str
+        Dotted name of the field for the message.
+    values : object
+        A sequence (or array) of numbers; a string is refused.
+    what : str
+        What the values are, starting the message (``"span 2"``); empty: the message starts with "must".
+
+    Examples
+    --------
+    >>> check_numbers("table.u", [0, 0.5, 1]).tolist()
+    [0.0, 0.5, 1.0]
+    >>> try:
+    ...     check_numbers("table.u", [[0, 1]])
+    ... except InputError as e:
+    ...     print(e)
+    table.u: must be a flat (one-dimensional) sequence of numbers, got shape (1, 2)
+    """
+    lead = f"{what} must" if what else "must"
+    if isinstance(values, (str, bytes)):
+        raise InputError(field, f"{lead} be a sequence of numbers, got {values!r}")
+    try:
+        a = np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(field, f"{lead} be a sequence of numbers, got {values!r}") from None
+    if a.ndim != 1:
+        raise InputError(field, f"{lead} be a flat (one-dimensional) sequence of numbers, got shape {a.shape}")
+    if not np.all(np.isfinite(a)):
+        raise InputError(field, f"{lead} hold finite numbers only, got {values!r}")
+    return a
 
 
 def show_value(v) -> str:

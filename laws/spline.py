@@ -23,7 +23,7 @@ import numpy as np
 
 from laws.base import Law
 from laws.bernstein import power_values, to_power
-from laws.errors import InputError
+from laws.errors import InputError, check_numbers
 
 __all__ = ["SplineLaw", "MAX_DEGREE"]
 
@@ -36,21 +36,6 @@ VALUE_TOL = 1e-9
 
 _BREAKS = "spline.breaks"
 _COEFFS = "spline.coefficients"
-
-
-def _row(fld: str, values, what: str) -> tuple[float, ...]:
-    """``values`` as a tuple of finite floats, else :class:`InputError` on ``fld``."""
-    if isinstance(values, (str, bytes)) or not isinstance(values, (Sequence, np.ndarray)):
-        raise InputError(fld, f"{what} must be a sequence of numbers, got {values!r}")
-    try:
-        a = np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        raise InputError(fld, f"{what} must be a sequence of numbers, got {values!r}") from None
-    if a.ndim != 1:
-        raise InputError(fld, f"{what} must be a flat sequence of numbers, got shape {a.shape}")
-    if not np.all(np.isfinite(a)):
-        raise InputError(fld, f"{what} must hold finite numbers only, got {values!r}")
-    return tuple(a.tolist())
 
 
 @dataclass(frozen=True)
@@ -116,7 +101,7 @@ class SplineLaw(Law):
         c = self.coefficients
         if isinstance(c, (str, bytes)) or not isinstance(c, (Sequence, np.ndarray)) or len(c) == 0:
             raise InputError(_COEFFS, f"must be a non-empty sequence of spans (sequences of numbers), got {c!r}")
-        rows = tuple(_row(_COEFFS, r, f"span {j}") for j, r in enumerate(c))
+        rows = tuple(tuple(check_numbers(_COEFFS, r, f"span {j}").tolist()) for j, r in enumerate(c))
         size = len(rows[0])
         for j, r in enumerate(rows):
             if len(r) != size:
@@ -125,7 +110,7 @@ class SplineLaw(Law):
         if not 2 <= size <= MAX_DEGREE + 1:
             raise InputError(_COEFFS, f"a span takes 2 to {MAX_DEGREE + 1} coefficients (degree 1 to {MAX_DEGREE}), "
                              f"got {size}")
-        b = _row(_BREAKS, self.breaks, "breaks")
+        b = tuple(check_numbers(_BREAKS, self.breaks, "breaks").tolist())
         if len(b) != len(rows) + 1:
             raise InputError(_BREAKS, f"needs one more break than spans: {len(rows)} span(s) need {len(rows) + 1} "
                              f"breaks, got {len(b)}")

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from laws.base import Law
-from laws.errors import InputError
+from laws.errors import InputError, check_numbers
 
 if TYPE_CHECKING:
     from scipy.interpolate import BSpline
@@ -31,18 +31,6 @@ __all__ = ["TableLaw"]
 DEGREE = 5
 #: Tolerance on the end points ``(0, 0)`` and ``(1, 1)``.
 END_TOL = 1e-12
-
-
-def _column(name: str, values) -> np.ndarray:
-    try:
-        a = np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        raise InputError(name, f"must be a sequence of numbers, got {values!r}") from None
-    if a.ndim != 1:
-        raise InputError(name, f"must be a one-dimensional sequence of numbers, got shape {a.shape}")
-    if not np.all(np.isfinite(a)):
-        raise InputError(name, "must hold finite numbers only")
-    return a
 
 
 @dataclass(frozen=True)
@@ -82,8 +70,8 @@ class TableLaw(Law):
     _spline: BSpline = field(init=False, repr=False, compare=False, hash=False)
 
     def __post_init__(self):
-        u = _column("table.u", self.u)
-        s = _column("table.s", self.s)
+        u = check_numbers("table.u", self.u)
+        s = check_numbers("table.s", self.s)
         if s.size != u.size:
             raise InputError("table.s", f"has {s.size} values, table.u has {u.size}; they must match")
         need = 2 if self.clamped else DEGREE + 1
