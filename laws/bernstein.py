@@ -29,6 +29,8 @@ __all__ = [
     "to_power",
     "from_power",
     "derivative",
+    "derivative_chain",
+    "basis",
     "elevation",
     "subdivision",
     "gram",
@@ -77,6 +79,23 @@ def derivative(p: int) -> np.ndarray:
     for j in range(p):
         m[j, j], m[j, j + 1] = -p, p
     return _frozen(m)
+
+
+@lru_cache(maxsize=64)
+def derivative_chain(p: int, r: int) -> np.ndarray:
+    """``(p-r+1, p+1)`` matrix: the ``r``-th derivative's Bernstein coefficients (:func:`derivative`, ``r`` times)."""
+    m = np.eye(p + 1)
+    for k in range(r):
+        m = derivative(p - k) @ m
+    return _frozen(m)
+
+
+def basis(p: int, t: np.ndarray) -> np.ndarray:
+    """``(len(t), p+1)``: the degree-``p`` Bernstein basis ``B_{j,p}(t)`` at local positions ``t``."""
+    t = np.asarray(t, float)[:, None]
+    j = np.arange(p + 1)[None, :]
+    c = np.array([comb(p, i) for i in range(p + 1)], float)[None, :]
+    return c * t**j * (1 - t) ** (p - j)
 
 
 @lru_cache(maxsize=64)

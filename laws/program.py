@@ -172,6 +172,14 @@ class Program:
             return 0.0
         return self.lift if p.height is None else float(p.height)
 
+    def signed_height(self, i: int) -> float:
+        """Displacement change of phase ``i`` with its sign: ``+h`` on a rise, ``-h`` on a return, 0 on a dwell.
+
+        A rise or return's displacement is ``levels[i] + signed_height(i) * S(u)`` with ``S`` its normalized law.
+        """
+        sign = {"rise": 1.0, "return": -1.0, "dwell": 0.0}[self.phases[i].kind]
+        return sign * self.height_of(i)
+
     def law_of(self, i: int) -> Law:
         """Normalized law of rise or return phase ``i`` (a law's name was replaced by the law at construction).
 
@@ -196,9 +204,8 @@ class Program:
     def levels(self) -> np.ndarray:
         """Displacement at the start of each phase (read-only)."""
         lv = [0.0]
-        for i, p in enumerate(self.phases[:-1]):
-            sign = {"rise": 1.0, "return": -1.0, "dwell": 0.0}[p.kind]
-            lv.append(lv[-1] + sign * self.height_of(i))
+        for i in range(len(self.phases) - 1):
+            lv.append(lv[-1] + self.signed_height(i))
         out = np.asarray(lv)
         out.setflags(write=False)
         return out
@@ -222,12 +229,10 @@ class Program:
         if p.kind == "dwell":
             z = np.zeros_like(u)
             return Motion(base + z, z, z.copy(), z.copy())
-        h = self.height_of(i)
+        sh = self.signed_height(i)
         S = self.law_of(i).evaluate(u)
         b = p.angle
-        sign = 1.0 if p.kind == "rise" else -1.0
-        s = base + sign * h * S[0]
-        return Motion(s, sign * h * S[1] / b, sign * h * S[2] / b**2, sign * h * S[3] / b**3)
+        return Motion(base + sh * S[0], sh * S[1] / b, sh * S[2] / b**2, sh * S[3] / b**3)
 
     def evaluate(self, phi: np.ndarray | float) -> Motion:
         """Motion at cam angles ``phi`` (radians, any real values, periodic).

@@ -23,33 +23,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
-from math import comb
 
 import numpy as np
 
 from laws import bernstein
 from laws.program import Program
 
-__all__ = ["Space", "PIECES", "bernstein_basis"]
+__all__ = ["Space", "PIECES"]
 
 #: Subdivisions of each span for the conservative (every-angle) constraints.
 PIECES = 4
-
-
-def bernstein_basis(q: int, t: np.ndarray) -> np.ndarray:
-    """``(len(t), q+1)``: the degree-``q`` Bernstein basis at local positions ``t``."""
-    t = np.asarray(t, float)[:, None]
-    j = np.arange(q + 1)[None, :]
-    c = np.array([comb(q, i) for i in range(q + 1)], float)[None, :]
-    return c * t**j * (1 - t) ** (q - j)
-
-
-def _derivative_chain(p: int, r: int) -> np.ndarray:
-    """``(p-r+1, p+1)``: the ``r``-th derivative's Bernstein coefficients in the local variable."""
-    m = np.eye(p + 1)
-    for k in range(r):
-        m = bernstein.derivative(p - k) @ m
-    return m
 
 
 @dataclass(frozen=True)
@@ -120,9 +103,8 @@ class Space:
 
     def phase_scale(self, i: int) -> tuple[float, float, float]:
         """``(sigma h, beta, level)`` of program phase ``i``: ``s = level + sigma h S``, ``s' = sigma h S'/beta``."""
-        p = self.program.phases[i]
-        sign = 1.0 if p.kind == "rise" else -1.0
-        return sign * self.program.height_of(i), float(p.angle), float(self.program.levels[i])
+        return (self.program.signed_height(i), float(self.program.phases[i].angle),
+                float(self.program.levels[i]))
 
     def bounds(self) -> np.ndarray:
         """Half-widths of the box on one phase's variables (part of the space; a program checks it never binds):
@@ -154,7 +136,7 @@ class Space:
         c = self.continuity
         if r <= c:
             return self._levels[r]
-        return _derivative_chain(self.top, r - c) / self.h ** (r - c) @ self._levels[c]
+        return bernstein.derivative_chain(self.top, r - c) / self.h ** (r - c) @ self._levels[c]
 
     def _place(self, k: int, j: int, local: np.ndarray, n: int) -> np.ndarray:
         """Rows over ``n`` variables with ``local`` (acting on span ``j`` of free phase ``k``) in place."""
@@ -205,7 +187,7 @@ class Space:
         u = np.asarray(samples, float)
         j = np.minimum((u * self.spans).astype(int), self.spans - 1)
         t = u * self.spans - j
-        vals = bernstein_basis(q, t) @ loc               # (len(u), block)
+        vals = bernstein.basis(q, t) @ loc               # (len(u), block)
         out = np.zeros((u.size, n))
         cols = self.offset(k) + j[:, None] * self.block + np.arange(self.block)[None, :]
         np.put_along_axis(out, cols, vals, axis=1)
