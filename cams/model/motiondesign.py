@@ -91,11 +91,12 @@ class MotionDesignSpec:
         if self.continuity not in (1, 2, 3):
             raise InputError("optimize.continuity", f"must be 1, 2 or 3 (derivatives continuous at the joints), got "
                              f"{self.continuity}")
-        if not self.continuity < self.degree <= MAX_DEGREE:
-            raise InputError("optimize.degree", f"must be above the continuity ({self.continuity}) and at most "
-                             f"{MAX_DEGREE}: a degree-{self.degree} spline cannot carry {self.continuity} continuous "
-                             "derivatives across its knots" if self.degree <= self.continuity else
-                             f"must be at most {MAX_DEGREE}, got {self.degree}")
+        if self.degree <= self.continuity:
+            raise InputError("optimize.degree", f"must be above the continuity ({self.continuity}): a degree-"
+                             f"{self.degree} spline cannot carry {self.continuity} continuous derivatives across "
+                             "its knots")
+        if self.degree > MAX_DEGREE:
+            raise InputError("optimize.degree", f"must be at most {MAX_DEGREE}, got {self.degree}")
         if not 1 <= self.spans <= MAX_SPANS:
             raise InputError("optimize.spans", f"must be from 1 to {MAX_SPANS}, got {self.spans}")
         from laws.registry import LAWS

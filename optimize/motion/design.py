@@ -16,7 +16,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from cams.model.design import CamDesign, FlatFaceDesign
-from cams.model.follower import Rocker, Translating
+from cams.model.follower import Translating
 from cams.model.motiondesign import CAP_KEYS, MotionDesignSpec
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
@@ -125,7 +125,7 @@ def resolve_caps(spec: MotionDesignSpec, free: tuple[int, ...]) -> dict[tuple[in
 def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -> None:
     flat = isinstance(design, FlatFaceDesign)
     f = design.follower
-    if isinstance(f, Rocker) or getattr(f, "kind", "") == "rocker":
+    if f.kind == "rocker":
         raise InputError("optimize", "the motion design takes translating followers (roller, knife edge or flat "
                          "face); a rocker's is not available in this release")
     if spec.objective == "L":
@@ -185,7 +185,6 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
     space = Space(program, free, spec.degree, spec.spans, spec.continuity, **kw)
     flat = isinstance(design, FlatFaceDesign)
     f = design.follower
-    scale = design.scale
     limits: dict[int, float] = {}
     min_radius = 0.0
     if isinstance(design, FlatFaceDesign):
@@ -207,8 +206,8 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
             held = float(hold)
     if isinstance(f, Translating) and f.offset is not None and centre is None:
         x_fixed = -float(f.offset)
-    bound = 100.0 * (scale + float(program.lift) + (held or 0.0)
-                     + (abs(centre[0]) + abs(centre[1]) if centre else 0.0))
+    # the declared box on the geometry: far beyond any cam this design could want
+    bound = 100.0 * (design.scale + float(program.lift) + (held or 0.0) + (float(np.hypot(*centre)) if centre else 0.0))
     base = Request(space=space, follower="flat" if flat else "roller", cam_sense=design.cam_sense, limits=limits,
                    caps=caps, objective=spec.objective, bound=bound, centre=centre, x_fixed=x_fixed, hold=held,
                    min_radius=min_radius)
@@ -233,8 +232,8 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
         coeffs = space.coefficients(v, k)
         coeffs[0, 0] = 0.0
         coeffs[-1, -1] = 1.0
-        laws[i] = SplineLaw(tuple(space.breaks.tolist()), tuple(tuple(map(float, row)) for row in coeffs),
-                            name=f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})")
+        laws[i] = SplineLaw.uniform([[float(x) for x in row] for row in coeffs],
+                                    name=f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})")
     new_program = Program(tuple(replace(p, law=laws.get(i, p.law)) for i, p in enumerate(program.phases)),
                           program.lift)
     box = np.tile(space.bounds(), len(free))
@@ -251,8 +250,6 @@ def _solve_or_explain(prog: ConicProgram, req: Request):
     if sol.feasible:
         return sol
     # each cap alone with the space's joints
-    from cams.model.motiondesign import CAP_KEYS
-
     names = {r: k for k, r in CAP_KEYS.items()}
     for (k, r), cap in req.caps.items():
         alone = replace(req, caps={(k, r): cap}, limits={}, objective="Ca",

@@ -90,7 +90,7 @@ class Space:
     @cached_property
     def breaks(self) -> np.ndarray:
         """The knots in ``u``, ``spans + 1`` of them from 0 to 1."""
-        return np.linspace(0.0, 1.0, self.spans + 1)
+        return np.arange(self.spans + 1) / self.spans     # as laws.spline.SplineLaw.uniform
 
     @property
     def h(self) -> float:

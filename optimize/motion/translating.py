@@ -40,9 +40,10 @@ __all__ = ["Request", "build", "SAMPLES_PER_SPAN", "FIXED_SAMPLES", "TIGHTEN"]
 SAMPLES_PER_SPAN = 17
 #: Sample points of a fixed (not free) constrained phase.
 FIXED_SAMPLES = 400
-#: Relative tightening of the caps in the conservative program, so that its solution meets them after the
-#: solver's tolerance (1e-10).
-TIGHTEN = 1e-8
+#: Relative tightening of the caps in the conservative program: room for the solver's feasibility tolerance
+#: (Clarabel's default, 1e-8 on the scaled rows) and for the projection onto the joints' equalities; the caps
+#: are then checked on the laws themselves.
+TIGHTEN = 1e-7
 
 
 @dataclass(frozen=True)
@@ -226,9 +227,12 @@ def build(req: Request, form: str) -> ConicProgram:
             lo[nc + 1] = hi[nc + 1] = req.centre[1]
         elif req.x_fixed is not None:
             lo[nc] = hi[nc] = req.x_fixed
-    lo[it], hi[it] = (-B, B) if slack else (0.0, B if obj == "R0" else 1e6)
-    if obj not in ("Ca", "Cj", "jerk_squared", "snap_squared", "feasibility") and not (obj == "R0" and not flat):
-        lo[it] = hi[it] = 0.0     # t unused
+    if slack:
+        lo[it], hi[it] = -B, B                  # the pressure rows' slack (length)
+    elif obj == "R0":
+        lo[it], hi[it] = (0.0, 0.0) if flat else (0.0, B)   # a flat face's R0 is a variable itself: t unused
+    else:
+        lo[it], hi[it] = 0.0, 1e6               # a normalized peak or the root of an integral
     A, b = sp.equalities(n)
     enforce = np.zeros(n, bool)
     enforce[nc:] = True             # the geometry and t; the coefficients' box is declared, not handed over
