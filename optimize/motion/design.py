@@ -232,8 +232,8 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
         coeffs = space.coefficients(v, k)
         coeffs[0, 0] = 0.0
         coeffs[-1, -1] = 1.0
-        laws[i] = SplineLaw.uniform([[float(x) for x in row] for row in coeffs],
-                                    name=f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})")
+        name = f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})"
+        laws[i] = SplineLaw.uniform([[float(x) for x in row] for row in coeffs], name=name)
     new_program = Program(tuple(replace(p, law=laws.get(i, p.law)) for i, p in enumerate(program.phases)),
                           program.lift)
     box = np.tile(space.bounds(), len(free))
