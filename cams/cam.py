@@ -85,8 +85,6 @@ class Cam:
             return size_flat_face(given)
         from cams.solve import solve
 
-        if given.optimize is not None:
-            return solve(given, method=self.method)
         return solve(given, method=self.method, objective=self.objective)
 
     @cached_property

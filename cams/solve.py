@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from cams.checks.profile import CheckReport, check_profile
-from cams.model.design import METHODS, CamDesign, FlatFaceDesign
+from cams.model.design import METHODS, OBJECTIVE_SUPERSEDED, CamDesign, FlatFaceDesign
 from cams.model.follower import Rocker, Translating
 from cams.model.options import profile_options
 from cams.verify.pressure import PressureReport, check_pressure
@@ -292,13 +292,14 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
         follower.
     """
     if getattr(design, "optimize", None) is not None:
+        # the laws are designed first; the method applies to the solves of the cams of fixed laws
+        if objective not in (None, getattr(design, "objective", "R0")):
+            raise InputError("solve.objective", OBJECTIVE_SUPERSEDED)
+        from functools import partial
+
         from cams.motion_design import design_motion
 
-        if method is not None and method != design.method:
-            design = design.with_(method=check_option("solve.method", method, METHODS))
-        if objective is not None and objective != design.optimize.objective:
-            raise InputError("objective", "the design's [optimize] objective decides what is minimized")
-        return design_motion(design, solve)
+        return design_motion(design, partial(solve, method=method))
     if getattr(design, "face", "roller") == "flat":
         return _solve_flat(design, method, objective)
     if objective is None:

@@ -54,7 +54,7 @@ from cams.io.document import check_document, check_keys, read_toml, toml_integer
 from cams.io.document import toml_number as _num
 from cams.io.document import toml_table as _table
 from cams.io.lawtable import law_from_table
-from cams.model.design import MAX_SAMPLES, CamDesign, FlatFaceDesign, Limits, check_lift
+from cams.model.design import MAX_SAMPLES, OBJECTIVE_SUPERSEDED, CamDesign, FlatFaceDesign, Limits, check_lift
 from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, journal_error
 from cams.model.follower import (
     FlatRocker,
@@ -273,8 +273,7 @@ def _optimize(d: dict, solve_table: dict):
     if "optimize" not in d:
         return None
     if "objective" in solve_table:
-        raise InputError("solve.objective", "[optimize] objective supersedes it: give the objective in [optimize] "
-                         "only")
+        raise InputError("solve.objective", OBJECTIVE_SUPERSEDED)
     from cams.io.optimizetable import optimize_from_table
 
     return optimize_from_table(d["optimize"])

@@ -26,7 +26,7 @@ from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
 __all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES", "check_lift",
-           "check_optimize"]
+           "check_optimize", "OBJECTIVE_SUPERSEDED"]
 
 METHODS = ("exact", "convex", "exhaustive")
 CLOSURES = ("force", "form")
@@ -57,6 +57,10 @@ def check_lift(lift: float, rocker: bool) -> None:
         raise InputError("follower.stroke", f"must be > 0, got {show_value(lift)}")
 
 
+#: Why ``[solve] objective`` (or ``solve(objective=...)``) is refused beside ``[optimize]``.
+OBJECTIVE_SUPERSEDED = "[optimize] objective supersedes it: give the objective in [optimize] only"
+
+
 def check_optimize(spec: MotionDesignSpec | None, objective: str, chosen: bool) -> None:
     """Refuse an ``[optimize]`` request that contradicts the rest of the design (one line each).
 
@@ -72,8 +76,7 @@ def check_optimize(spec: MotionDesignSpec | None, objective: str, chosen: bool) 
     if not isinstance(spec, MotionDesignSpec):
         raise InputError("optimize", f"must be a MotionDesignSpec, got {type(spec).__name__}")
     if objective != "R0":
-        raise InputError("solve.objective", "[optimize] objective supersedes it: give the objective in [optimize] "
-                         "only")
+        raise InputError("solve.objective", OBJECTIVE_SUPERSEDED)
     if chosen and spec.objective in ("R0", "L"):
         raise InputError("optimize.objective", f"{spec.objective!r} sizes the cam, but the cam is chosen "
                          "([cam] base_radius or centre): choose another objective or remove the chosen cam")
