@@ -152,3 +152,85 @@ def test_command_line_bad_cap_exits_2(tmp_path):
     r = subprocess.run([sys.executable, "-m", "cams.cli", "solve", str(p)], capture_output=True, text=True)
     assert r.returncode == 2
     assert r.stderr.count("\n") == 1 and "optimize.max_Ca" in r.stderr
+
+
+# -- the numbers the product prints, each against something independent -------------------------------------------
+
+
+def test_linear_pressure_form_is_the_kernels_pressure_angle():
+    """The programs' rows rest on |tan(gamma)| = |s' + eps x| / (d + s): the kernel's inversion gives the same
+    (its sign follows the follower's velocity, which turns on the return; the limits bound the magnitude)."""
+    from cams.kinematics.inversion import invert_at, pressure_angle
+
+    base = load_design(EXAMPLE)
+    for sense in (1, -1):
+        design = base.with_(cam_sense=sense)
+        x, d = 3.0, 40.0
+        phi = np.linspace(0, 2 * np.pi, 721)
+        m = design.program.evaluate(phi)
+        kernel = pressure_angle(invert_at(design, np.array([x, -d]), phi))
+        assert np.allclose(np.abs(np.tan(kernel)), np.abs(m.ds + sense * x) / (d + m.s), rtol=0, atol=1e-12)
+
+
+def _slack_doc(**optimize):
+    d = read_toml(EXAMPLE)
+    d["cam"]["centre"] = [0.0, -5000.0]
+    d["optimize"] = optimize
+    return d
+
+
+@pytest.mark.parametrize(("objective", "continuity", "degree", "exact"), [
+    # integral of (60 - 360 u + 360 u^2)^2 over [0, 1]: the 3-4-5 polynomial's squared jerk
+    ("jerk_squared", 2, 5, 720.0),
+    # the 4-5-6-7 polynomial's squared snap, by numpy's polynomial algebra on its coefficients
+    ("snap_squared", 3, 7, None),
+])
+def test_squared_objectives_value_and_bound(objective, continuity, degree, exact):
+    P = np.polynomial.Polynomial
+    if exact is None:
+        snap = P([0, 0, 0, 0, 35, -84, 70, -20]).deriv(4)
+        exact = float((snap**2).integ()(1.0))
+    o = solve(design_from_dict(_slack_doc(objective=objective, continuity=continuity, degree=degree,
+                                          spans=4))).optimization
+    assert o["value"] == pytest.approx(exact, rel=1e-7)
+    assert o["lower_bound"] <= exact and o["gap"] < 1e-6
+
+
+def test_printed_peaks_are_the_laws_dense_peaks(designed):
+    """Cv, Ca, Cj beside the original law's: the designed law's dense maxima (200,001 points)."""
+    law = designed.design.program.law_of(0)
+    S = law.evaluate(np.linspace(0, 1, 200_001))
+    p = designed.optimization["phases"][0]
+    for k, key in ((1, "Cv"), (2, "Ca"), (3, "Cj")):
+        assert p[key] == pytest.approx(np.max(np.abs(S[k])), rel=1e-6)
+    assert p["original"] == {"law": "poly4567", "Cv": pytest.approx(2.1875, rel=1e-6),
+                             "Ca": pytest.approx(7.5132, rel=1e-4), "Cj": pytest.approx(52.5, rel=1e-6)}
+
+
+def test_least_pressure_angle_at_todays_size():
+    """objective = "pressure_angle": the value is the largest ratio of pressure angle to limit, by the kernel's
+    inversion at 100,001 angles; the original law at its own least R0 has ratio 1, so the design must beat it."""
+    from cams.kinematics.inversion import invert_at, pressure_angle
+
+    res = solve(design_from_dict(_doc(objective="pressure_angle", max_Ca="poly4567", max_Cj="poly4567", spans=8)))
+    o = res.optimization
+    design = res.design
+    beta = design.program.phases[0].angle
+    phi = np.linspace(0, beta, 100_001)
+    g = np.abs(pressure_angle(invert_at(design, res.centre, phi)))
+    assert o["value"] == pytest.approx(g.max() / design.limits.pressure_angle, rel=1e-7)
+    assert o["lower_bound"] <= o["value"] < 1.0
+    assert res.R0 <= o["held_R0"] * (1 + 1e-12)
+
+
+def test_flat_face_from_a_file():
+    """A flat face: R0 + s + s'' >= min_radius at 200,001 angles of the designed rise, and a smaller cam."""
+    flat = read_toml("examples/translating_flat.toml")
+    reference = solve(design_from_dict(flat))
+    flat["optimize"] = {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "continuity": 2, "degree": 6, "spans": 8}
+    res = solve(design_from_dict(flat))
+    o = res.optimization
+    assert o["certified"] and o["lower_bound"] <= res.R0 < reference.R0
+    assert o["reference"]["R0"] == pytest.approx(reference.R0, rel=1e-12)
+    m = res.design.program.evaluate(np.linspace(0, 2 * np.pi, 200_001))
+    assert np.min(res.R0 + m.s + m.d2s) >= res.design.min_radius * (1 - 1e-9)
