@@ -1,0 +1,82 @@
+"""Motion design: the certified joint optimum against the space's refinement, timed after imports.
+
+Usage (from the project folder, after ``pip install -e .``)::
+
+    python benchmarks/bench_motion.py [--spans 5 10 20 40 80] [--repeats 3] [--out benchmarks/results]
+
+Writes ``motion.json`` into ``--out``: for ``examples/translating_force.toml`` with its rise freed under the
+4-5-6-7 law's peak acceleration and jerk (degree 7, C3), at each number of spans per phase, the certified R0
+(the cam of the designed law, sized by the exact method), the proven lower bound, the relative gap, whether
+the design is verified and certified, and the median time of :func:`cams.solve.solve` after the imports (one
+process, one core); with the R0 of the original law beside them.
+"""
+
+from __future__ import annotations
+
+import os
+
+for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_v, "1")  # one core per process: must precede the first numpy import
+
+import argparse  # noqa: E402
+import json  # noqa: E402
+import statistics  # noqa: E402
+import sys  # noqa: E402
+import time  # noqa: E402
+from pathlib import Path  # noqa: E402
+from typing import Any  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from bench_solvers import machine  # noqa: E402
+
+EXAMPLE = ROOT / "examples" / "translating_force.toml"
+
+
+def run(spans: list[int], repeats: int) -> dict[str, Any]:
+    import cvxpy  # noqa: F401  (imports outside the timings)
+    import scipy.optimize  # noqa: F401
+
+    from cams.io.designfile import design_from_dict
+    from cams.io.document import read_toml
+    from cams.solve import solve
+
+    base = read_toml(EXAMPLE)
+    original = solve(design_from_dict(base))
+    rows = []
+    for n in spans:
+        doc = dict(base)
+        doc["optimize"] = {"free": ["rise"], "max_Ca": "poly4567", "max_Cj": "poly4567", "continuity": 3,
+                           "degree": 7, "spans": n}
+        design = design_from_dict(doc)
+        times = []
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            res = solve(design)
+            times.append(time.perf_counter() - t0)
+        o = res.optimization
+        rows.append({"spans": n, "R0_mm": res.R0, "lower_bound_mm": o["lower_bound"], "gap": o["gap"],
+                     "verified": bool(res.verified), "certified": bool(o["certified"]),
+                     "seconds_median": statistics.median(times)})
+        print(f"{n:4d} spans: R0 {res.R0:.6f} mm, lower bound {o['lower_bound']:.6f} mm, gap {o['gap']:.2e}, "
+              f"{statistics.median(times):.3f} s", flush=True)
+    return {"machine": machine(), "example": EXAMPLE.name, "original_R0_mm": original.R0, "rows": rows}
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--spans", type=int, nargs="+", default=[5, 10, 20, 40, 80])
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--out", default=str(ROOT / "benchmarks" / "results"))
+    args = ap.parse_args()
+    res = run(args.spans, args.repeats)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "motion.json").write_text(json.dumps(res, indent=2) + "\n", encoding="utf-8")
+    print(f"wrote {out / 'motion.json'}")
+
+
+if __name__ == "__main__":
+    main()
