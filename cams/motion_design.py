@@ -169,7 +169,10 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         "free": list(ld.free),
         "caps": [{"phase": ld.free[k], "derivative": names[r], "max": cap} for (k, r), cap in ld.caps.items()],
         "phases": phases,
-        "reference": None if reference is None else {"R0": float(reference.R0)},
+        "reference": None if reference is None else {
+            "R0": float(reference.R0),
+            "centre": {"x": float(reference.centre[0]), "y": float(reference.centre[1])},
+        },
         "held_R0": hold,
         "seconds": float(ld.seconds),
         "notes": notes,

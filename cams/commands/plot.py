@@ -15,8 +15,8 @@ __all__ = ["register", "run", "PICTURES", "FLAT_PICTURES"]
 PICTURES = ("motion", "zone", "pressure", "profile")
 #: A flat-faced follower's pictures: no zone; the radius of curvature with the contact's travel instead.
 FLAT_PICTURES = ("motion", "pressure", "curvature", "profile")
-#: Every picture name ``--only`` takes.
-NAMES = ("motion", "zone", "pressure", "curvature", "profile")
+#: Every picture name ``--only`` takes ("optimized": a design with an [optimize] table, drawn for it by default).
+NAMES = ("motion", "zone", "pressure", "curvature", "profile", "optimized")
 
 #: Why a picture is skipped, by follower face.
 _SKIP = {
@@ -37,10 +37,14 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Pat
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
     flat = getattr(cam, "flat", False)
-    for name in FLAT_PICTURES if flat else PICTURES:
+    for name in (*(FLAT_PICTURES if flat else PICTURES), "optimized"):
         if name not in which:
             continue
-        if name == "motion":
+        if name == "optimized":
+            from cams.present.motion_plots import plot_motion_design
+
+            fig = plot_motion_design(cam)
+        elif name == "motion":
             fig = plots.plot_motion(cam.design)
         elif name == "zone":
             fig = plots.plot_zone(cam.solution, tradeoff=cam.tradeoff)
@@ -81,8 +85,13 @@ def run(args) -> int:
     which = _only(args.only)
     cam = Cam.from_file(args.file)
     face = "flat" if cam.flat else "roller"
+    designed = getattr(cam.given, "optimize", None) is not None
     if which is None:  # everything that applies: no note for what the user did not ask for
-        which = FLAT_PICTURES if cam.flat else PICTURES
+        which = (*(FLAT_PICTURES if cam.flat else PICTURES), *(("optimized",) if designed else ()))
+    elif "optimized" in which and not designed:
+        which = tuple(w for w in which if w != "optimized")
+        print("cams plot: note: optimized: the design has no [optimize] table, no motion was designed; skipped",
+              file=sys.stderr)
     from cams.assess import knife_in_groove
 
     if not cam.flat and knife_in_groove(cam.design) and "profile" in which:
@@ -135,6 +144,7 @@ def register(sub) -> None:
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--out", default=".", help="output folder (default: current)")
     q.add_argument("--only", help=f"comma-separated subset of {','.join(PICTURES)} (flat face: "
-                   f"{','.join(FLAT_PICTURES)})")
+                   f"{','.join(FLAT_PICTURES)}); a design with [optimize] adds optimized (the designed laws, pressure "
+                   "angles and cam beside the original ones)")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
     q.set_defaults(func=run)

@@ -1,0 +1,138 @@
+"""Pictures of a motion design (``[optimize]``): the designed laws and cam beside the original ones.
+
+:func:`plot_motion_design` draws, for a :class:`cams.cam.Cam` whose design has
+an ``[optimize]`` table:
+
+- the normalized laws ``S, S', S'', S'''`` of each free phase against ``u``,
+  the designed one beside the original;
+- the pressure angle over the cycle of both cams, each at its own centre,
+  against the limits (roller followers; the kernel's inversion);
+- the two cams overlaid to scale in the cam frame (pitch curves and working
+  profiles; a flat face's profiles).
+
+matplotlib is imported inside the function; it returns a ``Figure``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from cams.kinematics.inversion import invert_phase, pitch_curve, pressure_angle
+from laws.units import TWO_PI
+
+__all__ = ["plot_motion_design"]
+
+_NEW, _OLD = "#2b6cb0", "#a0aec0"
+
+
+def _laws_panel(fig, grid, given, designed, free) -> None:
+    u = np.linspace(0.0, 1.0, 401)
+    names = ("S", "dS/du", "d²S/du²", "d³S/du³")
+    for k in range(4):
+        ax = fig.add_subplot(grid[k // 2, k % 2])
+        for i in free:
+            ax.plot(u, given.program.law_of(i).evaluate(u)[k], color=_OLD, lw=1.6,
+                    label=f"original ({given.program.law_of(i).name})" if i == free[0] else None)
+            ax.plot(u, designed.program.law_of(i).evaluate(u)[k], color=_NEW, lw=1.1,
+                    label="designed" if i == free[0] else None)
+        ax.set_ylabel(names[k], fontsize=8)
+        ax.grid(True, lw=0.3)
+        ax.tick_params(labelsize=7)
+        if k >= 2:
+            ax.set_xlabel("u (normalized phase)", fontsize=8)
+        if k == 0:
+            ax.legend(fontsize=7, loc="upper left")
+
+
+def _pressure_panel(ax, given, designed, centres, n: int = 721) -> None:
+    for design, centre, colour, label in ((given, centres[0], _OLD, "original"),
+                                          (designed, centres[1], _NEW, "designed")):
+        first = True
+        for i, p in enumerate(design.program.phases):
+            if p.kind == "dwell":
+                continue
+            u = np.linspace(0.0, 1.0, max(int(n * p.angle / TWO_PI), 8))
+            g = pressure_angle(invert_phase(design, centre, i, u))
+            ax.plot(np.degrees(design.program.starts[i] + u * p.angle), np.degrees(np.abs(g)), color=colour,
+                    lw=1.6 if colour == _OLD else 1.1, label=label if first else None)
+            first = False
+    lim = designed.limits
+    ax.axhline(np.degrees(lim.pressure_angle), color="#c53030", ls="--", lw=1, label="limit, rise")
+    if lim.closure == "form":
+        ax.axhline(np.degrees(lim.return_limit), color="#c05621", ls="-.", lw=1, label="limit, return")
+    ax.set_xlim(0, 360)
+    ax.set_xlabel("cam angle φ, deg", fontsize=8)
+    ax.set_ylabel("|pressure angle|, deg", fontsize=8)
+    ax.grid(True, lw=0.3)
+    ax.tick_params(labelsize=7)
+    ax.legend(fontsize=7, loc="upper right")
+
+
+def _cams_panel(ax, given, designed, sizes) -> None:
+    phi = np.linspace(0.0, TWO_PI, 1441)
+    for design, size, colour, label in ((given, sizes[0], _OLD, "original"), (designed, sizes[1], _NEW,
+                                                                                "designed")):
+        if getattr(design, "face", "roller") == "flat":
+            from cams.profile.flat import flat_face_profile
+
+            pts = flat_face_profile(design, float(size)).point
+            ax.plot(pts[:, 0], pts[:, 1], color=colour, lw=1.6 if colour == _OLD else 1.1,
+                    label=f"{label}: R0 = {float(size):.3f} mm")
+            continue
+        pg = pitch_curve(design, size, phi)
+        R0 = float(np.linalg.norm(size - design.follower.position(0.0)))
+        r = design.follower.roller_radius
+        ax.plot(pg.point[:, 0], pg.point[:, 1], color=colour, lw=0.8, ls="--")
+        work = pg.offset(-r) if r > 0 else pg.point
+        ax.plot(work[:, 0], work[:, 1], color=colour, lw=1.6 if colour == _OLD else 1.1,
+                label=f"{label}: R0 = {R0:.3f} mm")
+    ax.plot(0, 0, "k+", ms=10)
+    ax.set_aspect("equal")
+    ax.grid(True, lw=0.3)
+    ax.tick_params(labelsize=7)
+    ax.set_xlabel("x, mm (cam frame)", fontsize=8)
+    ax.set_ylabel("y, mm", fontsize=8)
+    ax.legend(fontsize=7, loc="upper right")
+
+
+def plot_motion_design(cam):
+    """The designed laws and cam beside the original ones (see the module notes).
+
+    Parameters
+    ----------
+    cam : cams.cam.Cam
+        Of a design with an ``[optimize]`` table; its solution holds the
+        motion design's report (``optimization``) with the original cam's
+        centre (roller) or R0 (flat face).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from matplotlib.figure import Figure
+
+    sol = cam.solution
+    info = sol.optimization
+    if info is None:
+        raise ValueError("the cam's design has no [optimize] table")
+    given = replace(cam.given, optimize=None)
+    designed = sol.design
+    free = tuple(info["free"])
+    flat = getattr(designed, "face", "roller") == "flat"
+    ref = info["reference"]
+    fig = Figure(figsize=(7.5, 10.0), layout="constrained")
+    grid = fig.add_gridspec(4, 2, height_ratios=(1, 1, 1.1, 2.2))
+    _laws_panel(fig, grid, given, designed, free)
+    if not flat and ref is not None:
+        _pressure_panel(fig.add_subplot(grid[2, :]), given, designed,
+                        (np.array([ref["centre"]["x"], ref["centre"]["y"]]), sol.centre))
+    if ref is not None:
+        sizes = (ref["R0"], sol.R0) if flat else (np.array([ref["centre"]["x"], ref["centre"]["y"]]), sol.centre)
+        _cams_panel(fig.add_subplot(grid[3, :]), given, designed, sizes)
+    gap = "-" if info["gap"] is None else f"{info['gap']:.2g}"
+    fig.suptitle(f"{designed.name}: motion designed\n{info['objective']} {info['value']:.6g}, proven lower bound "
+                 f"{info['lower_bound']:.6g}, gap {gap}; degree {info['degree']}, {info['spans']} spans, "
+                 f"C{info['continuity']}", fontsize=9)
+    return fig

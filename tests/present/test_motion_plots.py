@@ -1,0 +1,59 @@
+"""The motion design's picture: the laws, pressure angles and cams it draws are the designs' own."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from cams.cam import Cam
+from cams.io.designfile import design_from_dict, load_design
+from cams.io.document import read_toml
+from cams.present.motion_plots import plot_motion_design
+from tests.conftest import ROOT
+
+EXAMPLE = str(ROOT / "examples" / "translating_force.toml")
+
+
+@pytest.fixture(scope="module")
+def cam():
+    doc = read_toml(EXAMPLE)
+    doc["optimize"] = {"max_Ca": "poly4567", "max_Cj": "poly4567", "spans": 5}
+    return Cam(design_from_dict(doc))
+
+
+def test_picture_draws_both_laws_pressures_and_cams(cam):
+    fig = plot_motion_design(cam)
+    assert len(fig.axes) == 6
+    s_axis, pressure, cams = fig.axes[0], fig.axes[4], fig.axes[5]
+    original = next(ln for ln in s_axis.lines if ln.get_label().startswith("original"))
+    u = original.get_xdata()
+    assert np.allclose(original.get_ydata(), cam.given.program.law_of(0).evaluate(u)[0])
+    designed = next(ln for ln in pressure.lines if ln.get_label() == "designed")
+    # the designed cam's pressure angle on the rise, drawn: its peak is the independent check's (the limit)
+    assert np.max(designed.get_ydata()) == pytest.approx(np.degrees(cam.solution.pressure.rise), abs=0.05)
+    labels = [ln.get_label() for ln in cams.lines]
+    reference = cam.solution.optimization["reference"]["R0"]
+    assert f"original: R0 = {reference:.3f} mm" in labels
+    assert f"designed: R0 = {cam.solution.R0:.3f} mm" in labels
+
+
+def test_plot_command_writes_the_picture_of_a_designed_file(tmp_path):
+    text = open(EXAMPLE, encoding="utf-8").read() + "\n[optimize]\nmax_Ca = \"poly4567\"\nmax_Cj = \"poly4567\"\n" \
+        "spans = 5\n"
+    f = tmp_path / "designed.toml"
+    f.write_text(text, encoding="utf-8")
+    r = subprocess.run([sys.executable, "-m", "cams.cli", "plot", str(f), "--out", str(tmp_path / "p"), "--only",
+                        "optimized"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert sorted(p.suffix for p in (tmp_path / "p").iterdir()) == [".png", ".svg"]
+
+
+def test_optimized_picture_of_a_plain_file_is_skipped(tmp_path):
+    r = subprocess.run([sys.executable, "-m", "cams.cli", "plot", EXAMPLE, "--out", str(tmp_path / "p"), "--only",
+                        "motion,optimized"], capture_output=True, text=True)
+    assert r.returncode == 0 and "no [optimize] table" in r.stderr
+    assert not any("optimized" in p.name for p in (tmp_path / "p").iterdir())
+    assert load_design(EXAMPLE).optimize is None
