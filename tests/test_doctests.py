@@ -72,6 +72,7 @@ DOCTEST_MODULES = [
     "cams.model.options",
     "cams.io.designfile",
     "cams.io.lawtable",
+    "cams.io.tomlwrite",
 ]
 
 #: Modules checked for a complete ``__all__``.

@@ -12,16 +12,55 @@ from cams.present.text import print_assessment, print_flat_summary, print_summar
 __all__ = ["register"]
 
 
+def _check_save(args, design) -> None:
+    """Refuse ``--save-design`` before any work: no ``[optimize]`` table, or a path that cannot be written."""
+    from cams.io.files import check_output_path, writes_stdout
+    from laws.errors import InputError
+
+    if getattr(design, "optimize", None) is None:
+        raise InputError("--save-design", "the design has no [optimize] table: no law was designed, nothing to save")
+    if writes_stdout(args.save_design):
+        raise InputError("--save-design", "standard output carries the report: name a file")
+    check_output_path(args.save_design, "--save-design")
+
+
+def _save(args, cam, rep: dict, usable: bool) -> None:
+    """Write the designed design file (``--save-design``) of a usable cam; say so in ``rep``'s notes either way."""
+    if args.save_design is None:
+        return
+    if not usable:
+        rep["notes"].append(f"--save-design: {args.save_design} not written: the designed cam fails a check")
+        return
+    from pathlib import Path
+
+    from cams.io.designfile import designed_document
+    from cams.io.document import read_toml
+    from cams.io.files import atomic_write
+    from cams.io.tomlwrite import dumps
+
+    doc = designed_document(read_toml(args.file), cam.design.program, tuple(cam.solution.optimization["free"]))
+    text = f"# {cam.design.name}: the laws designed by cams solve from {Path(args.file).name}\n" + dumps(doc)
+    path = atomic_write(args.save_design, "--save-design", lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+    rep["saved_design"] = str(path)
+
+
+def _said_saved(rep: dict) -> None:
+    if rep.get("saved_design"):
+        print(f"wrote {rep['saved_design']}")
+
+
 def _run_flat(args, cam) -> int:
     refuse_method(args.method)
     rep = cam.solution.to_dict()
     a = cam.assessment
     rep.update(a.to_dict())
+    _save(args, cam, rep, a.usable)
     if args.json:
         print(json.dumps(rep, indent=2))
     else:
         print_flat_summary(rep)
         print_assessment(rep)
+        _said_saved(rep)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
 
@@ -31,6 +70,8 @@ def run(args) -> int:
     from cams.model.design import FlatFaceDesign
 
     design = load_design(args.file)
+    if args.save_design is not None:
+        _check_save(args, design)
     cam = Cam(design, method=None if is_flat(design) else args.method)
     if isinstance(design, FlatFaceDesign):  # is_flat, narrowing the design's type for what follows
         return _run_flat(args, cam)
@@ -54,6 +95,7 @@ def run(args) -> int:
     # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
     a = cam.assessment
     rep.update(a.to_dict())
+    _save(args, cam, rep, a.usable)
     if args.json:
         if forces is not None:
             from cams.dynamics.forces import json_safe
@@ -63,6 +105,7 @@ def run(args) -> int:
     else:
         print_summary(rep)
         print_assessment(rep)
+        _said_saved(rep)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
 
@@ -96,4 +139,7 @@ def register(sub) -> None:
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
                    help="override [solve] method (roller followers)")
     q.add_argument("--json", action="store_true", help="print the report as JSON")
+    q.add_argument("--save-design", metavar="FILE",
+                   help="with [optimize]: write the design with the designed laws as spline law tables (no "
+                        "[optimize]; it solves to the same cam); only for a cam that passes every check")
     q.set_defaults(func=run)

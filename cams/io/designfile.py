@@ -69,7 +69,7 @@ from laws.program import Phase, Program
 from laws.registry import get_law
 from laws.units import LENGTH_UNITS
 
-__all__ = ["load_design", "design_from_dict", "dynamics_from_dict", "MAX_SAMPLES"]
+__all__ = ["load_design", "design_from_dict", "dynamics_from_dict", "designed_document", "MAX_SAMPLES"]
 
 _KEYS = {
     "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics", "optimize"},
@@ -538,3 +538,33 @@ def load_design(path: str | Path) -> CamDesign | FlatFaceDesign:
         As :func:`design_from_dict`.
     """
     return design_from_dict(read_toml(path))
+
+
+def designed_document(doc: dict, program: Program, free: tuple[int, ...]) -> dict:
+    """A design file's document with the free phases' laws replaced by ``program``'s, and no ``[optimize]``.
+
+    Parameters
+    ----------
+    doc : dict
+        The document read (:func:`cams.io.document.read_toml`); not changed.
+    program : Program
+        The designed program: the same phases, its free phases' laws
+        :class:`laws.spline.SplineLaw` (written as law tables, exactly).
+    free : tuple of int
+        The phases whose law is replaced.
+
+    Returns
+    -------
+    dict
+        For :func:`cams.io.tomlwrite.dumps`: read back, it is the designed
+        design without the request (so it solves to the same cam).
+    """
+    import copy
+
+    from cams.io.lawtable import law_to_table
+
+    out = copy.deepcopy(doc)
+    out.pop("optimize", None)
+    for i in free:
+        out["motion"][i]["law"] = law_to_table(program.law_of(i))
+    return out

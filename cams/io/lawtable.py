@@ -32,6 +32,7 @@ from __future__ import annotations
 import numpy as np
 
 from cams.io.document import check_keys, toml_integer
+from cams.io.tomlwrite import value
 from laws.base import Law
 from laws.bernstein import from_power
 from laws.errors import InputError, check_number, check_option, show_value
@@ -212,26 +213,5 @@ def toml_law_lines(table: dict | str, key: str = "motion.law") -> list[str]:
     ['law = "poly345"']
     """
     if isinstance(table, str):
-        return [f"law = {_toml(table)}"]
-    return [f"[{key}]", *(f"{k} = {_toml(v)}" for k, v in table.items())]
-
-
-def _toml(v: object) -> str:
-    """A TOML value: a string, a boolean, an integer, a finite float (its ``repr``) or an array of them."""
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, (int, np.integer)):
-        return str(int(v))
-    if isinstance(v, (float, np.floating)):
-        x = float(v)
-        if not np.isfinite(x):
-            raise ValueError(f"a law table holds finite numbers only, got {x!r}")
-        return repr(x)
-    if isinstance(v, str):
-        # a basic string: quote, backslash and control characters escaped
-        return '"' + "".join(
-            "\\" + ch if ch in '"\\' else f"\\u{ord(ch):04X}" if ord(ch) < 0x20 or ord(ch) == 0x7F else ch
-            for ch in v) + '"'
-    if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(_toml(x) for x in v) + "]"
-    raise TypeError(f"cannot write {type(v).__name__} in a law table")
+        return [f"law = {value(table)}"]
+    return [f"[{key}]", *(f"{k} = {value(v)}" for k, v in table.items())]

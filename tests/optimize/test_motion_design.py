@@ -234,3 +234,52 @@ def test_flat_face_from_a_file():
     assert o["reference"]["R0"] == pytest.approx(reference.R0, rel=1e-12)
     m = res.design.program.evaluate(np.linspace(0, 2 * np.pi, 200_001))
     assert np.min(res.R0 + m.s + m.d2s) >= res.design.min_radius * (1 - 1e-9)
+
+
+# -- cams solve --save-design: the designed laws as a design file ----------------------------------------------------
+
+
+def _designed_file(tmp_path, extra: str = "", roller: float | None = None):
+    text = open(EXAMPLE, encoding="utf-8").read()
+    if roller is not None:
+        text = text.replace("roller_radius = 8.0", f"roller_radius = {roller}")
+    f = tmp_path / "designed.toml"
+    f.write_text(text + '\n[optimize]\nmax_Ca = "poly4567"\nmax_Cj = "poly4567"\nspans = 6\n' + extra,
+                 encoding="utf-8")
+    return f
+
+
+def _cli(*args):
+    return subprocess.run([sys.executable, "-m", "cams.cli", *map(str, args)], capture_output=True, text=True)
+
+
+def test_saved_design_solves_to_the_same_cam(tmp_path):
+    import json
+
+    f = _designed_file(tmp_path)
+    out = tmp_path / "saved.toml"
+    r = _cli("solve", f, "--json", "--save-design", out)
+    assert r.returncode == 0, r.stderr
+    rep = json.loads(r.stdout)
+    assert rep["saved_design"] == str(out)
+    saved = load_design(out)
+    assert saved.optimize is None
+    again = solve(saved)
+    assert again.R0 == rep["R0"] and again.verified
+    assert saved.program.law_of(0).coefficients == solve(load_design(f)).design.program.law_of(0).coefficients
+
+
+def test_save_design_refused_without_optimize_or_to_stdout(tmp_path):
+    r = _cli("solve", EXAMPLE, "--save-design", tmp_path / "x.toml")
+    assert r.returncode == 2 and "--save-design" in r.stderr and r.stderr.count("\n") == 1
+    assert not (tmp_path / "x.toml").exists()
+    r = _cli("solve", _designed_file(tmp_path), "--save-design", "-")
+    assert r.returncode == 2 and "name a file" in r.stderr
+
+
+def test_failing_design_is_not_saved(tmp_path):
+    """A roller larger than the designed cam's R0: no working profile, exit 1, no file."""
+    out = tmp_path / "saved.toml"
+    r = _cli("solve", _designed_file(tmp_path, roller=14.0), "--save-design", out)
+    assert r.returncode == 1
+    assert not out.exists() and "not written" in r.stdout
