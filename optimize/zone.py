@@ -68,8 +68,8 @@ import numpy as np
 from cams.model.design import CamDesign
 from cams.model.follower import Rocker
 
-__all__ = ["Wedges", "wedges", "phase_wedges", "sample_wedges", "max_violation", "ViolationPeak", "ZoneTable",
-           "zone_table", "clear_cache", "Peaks", "scan_peaks", "GRID"]
+__all__ = ["Wedges", "wedges", "phase_wedges", "side_terms", "sample_wedges", "max_violation", "ViolationPeak",
+           "ZoneTable", "zone_table", "clear_cache", "Peaks", "scan_peaks", "GRID"]
 
 #: Even steps per phase of the violation scan (:class:`ZoneTable`).
 GRID = 384
@@ -182,6 +182,46 @@ def phase_wedges(design: CamDesign, i: int, limit: float, u: np.ndarray) -> Wedg
     phi = p.starts[i] + u * p.phases[i].angle
     return Wedges(phase=np.full(n, i), phi=phi, normals=normals, offsets=offsets, apex=apex,
                   limit=np.full(n, float(limit)))
+
+
+def side_terms(design: CamDesign, limit: float, s: np.ndarray, ds: np.ndarray,
+               centre: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """A centre's signed distances outside both sides at positions ``(s, s')``, with their rates in ``s, s'``.
+
+    For the motion design, which moves the law: ``h = n(s) . O - (b0 + b1 s' + bt s)`` (module notes) and
+    ``dh/ds = turn m - bt`` (``m = (k x n) . O``), ``dh/ds' = -b1``.
+
+    Parameters
+    ----------
+    design : CamDesign
+    limit : float
+        The phase's allowable pressure angle, radians.
+    s, ds : ndarray, shape (n,)
+        Displacement and its analogue velocity at the positions.
+    centre : ndarray, shape (2,)
+        Cam centre O, fixed frame.
+
+    Returns
+    -------
+    h, dh_ds, dh_dds : ndarray, shape (n, 2)
+        Per position and side (t, t1).
+    normals : ndarray, shape (n, 2, 2)
+        The sides' unit outward normals ``n(s)``: ``h`` is ``normals . O`` less a term free of ``O``.
+    """
+    s = np.asarray(s, dtype=float)
+    ds = np.asarray(ds, dtype=float)
+    turn, tau = _rigid_motion(design)
+    n0, P0, Q0 = _side_constants(design, limit)
+    c, sn = np.cos(turn * s)[:, None], np.sin(turn * s)[:, None]
+    normals = np.empty((s.size, 2, 2))
+    normals[..., 0], normals[..., 1] = _turn(c, sn, n0[:, 0], n0[:, 1])
+    b0 = np.einsum("ki,ki->k", n0, P0)
+    b1, bt = n0 @ Q0, n0 @ tau
+    O = np.asarray(centre, dtype=float)
+    p = normals @ O
+    h = p - _offset(b0, b1, bt, s[:, None], ds[:, None])
+    m = normals[..., 0] * O[1] - normals[..., 1] * O[0]
+    return h, turn * m - bt, np.broadcast_to(-b1, h.shape).copy(), normals
 
 
 def _offset(b0, b1, bt, s, ds):

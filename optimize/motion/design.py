@@ -20,7 +20,6 @@ from cams.model.follower import Translating
 from cams.model.motiondesign import CAP_KEYS, MotionDesignSpec
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
-from laws.spline import SplineLaw
 from optimize.motion.conic import ConicProgram, lower_bound, solve
 from optimize.motion.space import Space
 from optimize.motion.translating import Request, build
@@ -222,20 +221,10 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
             lb = max(lb, 0.0) ** 2
             value = value**2
         result = replace(result, value=value)
-    # the joints and ends exactly (to rounding), not to the solver's tolerance: the least change of v that
-    # satisfies the space's equalities (the caps were tightened by TIGHTEN to leave room for it)
-    A, b = space.equalities(result.v.size)
-    v = result.v - np.linalg.lstsq(A, A @ result.v - b, rcond=None)[0]
+    v = space.project(result.v)
     nc = space.size
-    laws = {}
-    for k, i in enumerate(free):
-        coeffs = space.coefficients(v, k)
-        coeffs[0, 0] = 0.0
-        coeffs[-1, -1] = 1.0
-        name = f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})"
-        laws[i] = SplineLaw.uniform([[float(x) for x in row] for row in coeffs], name=name)
-    new_program = Program(tuple(replace(p, law=laws.get(i, p.law)) for i, p in enumerate(program.phases)),
-                          program.lift)
+    new_program = space.programme(v, f"designed spline (degree {spec.degree}, {spec.spans} spans, "
+                                     f"C{spec.continuity})")
     box = np.tile(space.bounds(), len(free))
     binds = bool(np.any(np.abs(v[:nc]) >= 0.999 * box))
     geo = (float(v[nc]), 0.0) if flat else (float(v[nc]), float(v[nc + 1]))

@@ -244,3 +244,23 @@ class Space:
         R = np.linalg.cholesky(g).T       # the Gram matrix is positive definite: the basis is independent
         one = R @ self._local(r) * np.sqrt(self.h)    # the span's width in u is the measure
         return np.vstack([self._place(k, j, one, n) for j in range(self.spans)])
+
+    def project(self, v: np.ndarray) -> np.ndarray:
+        """The least change of ``v`` that satisfies the space's equalities to rounding (the joints and ends
+        exactly, not to a solver's tolerance); the variables after the coefficients are left as they are."""
+        A, b = self.equalities(v.size)
+        return v - np.linalg.lstsq(A, A @ v - b, rcond=None)[0]
+
+    def programme(self, v: np.ndarray, name: str) -> Program:
+        """The program with each free phase's law the spline of ``v`` (:class:`laws.spline.SplineLaw`)."""
+        from dataclasses import replace
+
+        from laws.spline import SplineLaw
+
+        laws = {}
+        for k, i in enumerate(self.free):
+            coeffs = self.coefficients(v, k)
+            coeffs[0, 0], coeffs[-1, -1] = 0.0, 1.0
+            laws[i] = SplineLaw.uniform([[float(x) for x in row] for row in coeffs], name=name)
+        phases = tuple(replace(p, law=laws.get(i, p.law)) for i, p in enumerate(self.program.phases))
+        return Program(phases, self.program.lift)
