@@ -15,7 +15,10 @@
    objectives by Gauss-Legendre quadrature of the laws' own derivatives.
 
 The value is the checked design's; ``gap = (value - lower_bound) / |value|``
-is the certificate: no law of the space does better than ``lower_bound``.
+is the certificate: no law of the space does better than ``lower_bound``. A
+rocker's problem is not convex (:mod:`optimize.motion.rocker`): its design is
+checked the same way, and reported with its local-optimality measure, no bound.
+``certified`` says every check passed and, where a bound is proven, that it was.
 """
 
 from __future__ import annotations
@@ -28,7 +31,7 @@ from typing import Any
 import numpy as np
 
 from cams.model.design import CamDesign, FlatFaceDesign
-from cams.model.follower import Translating
+from cams.model.follower import Rocker, Translating
 from laws.base import Law
 from laws.errors import InfeasibleError
 
@@ -100,12 +103,16 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     spec = design.optimize
     assert spec is not None
     base = replace(design, optimize=None)
+    if spec.objective == "L" and isinstance(base, CamDesign) and isinstance(base.follower, Rocker):
+        # a rocker's least L: the cams of fixed laws are sized so too (a translating follower is refused below)
+        base = replace(base, objective="L")
     try:
         reference = solve_fixed(base)
     except InfeasibleError:
         reference = None
     hold = None
-    if spec.objective != "R0":
+    sizes = spec.objective in ("R0", "L")   # the cam is sized; the other objectives hold its size
+    if not sizes:
         if reference is None:
             raise InfeasibleError("optimize.objective",
                               "the cam's size is held at the original law's, but the original law admits no cam: "
@@ -114,7 +121,7 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     ld = design_laws(base, spec, hold=hold)
     new = replace(base, program=ld.program)
     notes: list[str] = []
-    if spec.objective != "R0" and hold is not None:
+    if not sizes and hold is not None:
         if isinstance(new, FlatFaceDesign):
             new = replace(new, base_radius=hold)
         else:
@@ -131,6 +138,8 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     peaks = {i: law_peaks(law) for i, law in laws_new.items()}
     if obj == "R0":
         value = float(sol.R0)
+    elif obj == "L":
+        value = float(sol.L)
     elif obj == "pressure_angle":
         value = _ratio(sol.pressure)
     elif obj in ("Ca", "Cj"):
@@ -145,10 +154,12 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         if got is None or got > cap:
             caps_ok = False
             notes.append(f"free phase {ld.free[k]}: {names[r]} = {got} exceeds its cap {cap:.6g}")
-    gap = (value - ld.lower_bound) / abs(value) if value else None
+    proven = ld.lower_bound is not None     # a convex program's bound; a rocker's is a local optimum
+    gap = (value - ld.lower_bound) / abs(value) if ld.lower_bound is not None and value else None
     if ld.box_binds:
         notes.append("the laws touch the space's bound on their coefficients: the lower bound holds within it")
-    certified = bool(caps_ok and (getattr(sol, "certified", None) is not False) and gap is not None)
+    certified = bool(caps_ok and (getattr(sol, "certified", None) is not False) and (gap is not None or
+                                                                                   not proven))
     original = {i: base.program.law_of(i) for i in ld.free}
     phases = []
     for i in ld.free:
@@ -159,7 +170,7 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     info = {
         "objective": obj,
         "value": value,
-        "lower_bound": float(ld.lower_bound),
+        "lower_bound": None if ld.lower_bound is None else float(ld.lower_bound),
         "gap": None if gap is None else float(gap),
         "certified": certified,
         "degree": spec.degree,
@@ -171,9 +182,14 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         "phases": phases,
         "reference": None if reference is None else {
             "R0": float(reference.R0),
+            "L": None if getattr(reference, "L", None) is None else float(reference.L),
             "centre": {"x": float(reference.centre[0]), "y": float(reference.centre[1])},
         },
         "held_R0": hold,
+        "method": "conic" if proven else "sequential convex programming",
+        "local_measure": ld.local_measure,
+        "iterations": ld.iterations,
+        "history": list(ld.history),
         "seconds": float(ld.seconds),
         "notes": notes,
     }

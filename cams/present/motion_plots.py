@@ -131,8 +131,11 @@ def plot_motion_design(cam):
     if ref is not None:
         sizes = (ref["R0"], sol.R0) if flat else (np.array([ref["centre"]["x"], ref["centre"]["y"]]), sol.centre)
         _cams_panel(fig.add_subplot(grid[3, :]), given, designed, sizes)
-    gap = "-" if info["gap"] is None else f"{info['gap']:.2g}"
-    fig.suptitle(f"{designed.name}: motion designed\n{info['objective']} {info['value']:.6g}, proven lower bound "
-                 f"{info['lower_bound']:.6g}, gap {gap}; degree {info['degree']}, {info['spans']} spans, "
-                 f"C{info['continuity']}", fontsize=9)
+    if info["lower_bound"] is None:
+        how = f"a local optimum ({info['iterations']} iterations)"
+    else:
+        gap = "-" if info["gap"] is None else f"{info['gap']:.2g}"
+        how = f"proven lower bound {info['lower_bound']:.6g}, gap {gap}"
+    fig.suptitle(f"{designed.name}: motion designed\n{info['objective']} {info['value']:.6g}, {how}; degree "
+                 f"{info['degree']}, {info['spans']} spans, C{info['continuity']}", fontsize=9)
     return fig

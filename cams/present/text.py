@@ -76,13 +76,21 @@ def _peak(v: float | None) -> str:
 def print_optimization(o: dict, R0: float | None = None) -> None:
     """The ``optimize`` part of a report (:mod:`cams.motion_design`): the certificate and the laws' peaks."""
     unit = _OBJECTIVE_UNITS.get(o["objective"], "")
-    gap = "-" if o["gap"] is None else f"{o['gap']:.3g}"
-    print(f"  motion design: minimize {o['objective']}: {o['value']:.6g} {unit}, proven lower bound "
-          f"{o['lower_bound']:.6g}, gap {gap} (relative); certified: {'yes' if o['certified'] else 'NO'}")
+    ok = "yes" if o["certified"] else "NO"
+    if o["lower_bound"] is None:
+        print(f"  motion design: minimize {o['objective']}: {o['value']:.6g} {unit}, a local optimum (sequential "
+              f"convex programming, {o['iterations']} iterations; the linearized problem still predicts "
+              f"{o['local_measure']:.2g} relative); checked: {ok}")
+    else:
+        gap = "-" if o["gap"] is None else f"{o['gap']:.3g}"
+        print(f"  motion design: minimize {o['objective']}: {o['value']:.6g} {unit}, proven lower bound "
+              f"{o['lower_bound']:.6g}, gap {gap} (relative); certified: {ok}")
     print(f"    space: degree {o['degree']}, {o['spans']} spans per free phase, C{o['continuity']} joints "
           f"(every cam angle: Bernstein coefficients on {o['pieces']} pieces a span)")
     ref = o.get("reference")
-    if ref and R0 is not None:
+    if ref and o["objective"] == "L" and ref.get("L") is not None:
+        print(f"    the original laws' cam: L = {ref['L']:.6f} mm; this one: L = {o['value']:.6f} mm")
+    elif ref and R0 is not None:
         print(f"    the original laws' cam: R0 = {ref['R0']:.6f} mm; this one: R0 = {R0:.6f} mm")
     for p in o["phases"]:
         orig = p["original"]

@@ -43,29 +43,40 @@ class LawDesign:
     objective : str
     solver_value : float
         The conservative program's value as the solver reports it (not a bound).
-    lower_bound : float
-        A proven lower bound of the objective over the space (the relaxed program's multipliers).
+    lower_bound : float or None
+        A proven lower bound of the objective over the space (the relaxed program's multipliers); None for a
+        rocker (not convex: a local optimum, see ``local_measure``).
     centre : (float, float)
-        Roller: the cam centre ``(x, d)`` the conservative program found (``x = -e``, the centre at ``(x, -d)``);
-        flat: ``(R0, 0)``.
+        Translating roller: the cam centre ``(x, d)`` the conservative program found (``x = -e``, the centre at
+        ``(x, -d)``); flat: ``(R0, 0)``; rocker: the centre ``(x, y)`` of the last iterate's exact sizing.
     caps : dict of (int, int) to float
         The caps imposed, ``(k, r) -> cap`` (free phase ``k``, derivative ``r``).
     space : Space
     box_binds : bool
         True when the returned laws touch the space's declared box (the bound then holds in the box only).
     seconds : float
+    local_measure : float or None
+        Rocker: the relative decrease the linearized program still predicts in the last trust region
+        (:mod:`optimize.motion.rocker`); None otherwise.
+    iterations : int or None
+        Rocker: the sequential convex programming's iterations.
+    history : tuple of float
+        Rocker: the exact value after each accepted step, the start first.
     """
 
     program: Program
     free: tuple[int, ...]
     objective: str
     solver_value: float
-    lower_bound: float
+    lower_bound: float | None
     centre: tuple[float, float]
     caps: dict[tuple[int, int], float]
     space: Space
     box_binds: bool
     seconds: float
+    local_measure: float | None = None
+    iterations: int | None = None
+    history: tuple[float, ...] = ()
 
 
 def free_phases(spec: MotionDesignSpec, program: Program) -> tuple[int, ...]:
@@ -125,9 +136,13 @@ def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -
     flat = isinstance(design, FlatFaceDesign)
     f = design.follower
     if f.kind == "rocker":
-        raise InputError("optimize", "the motion design takes translating followers (roller, knife edge or flat "
-                         "face); a rocker's is not available in this release")
-    if spec.objective == "L":
+        if flat:
+            raise InputError("optimize", "a flat-faced rocker's motion design is not available in this release: "
+                             "rocker rollers and translating followers")
+        if spec.objective not in ("R0", "L"):
+            raise InputError("optimize.objective", f"{spec.objective!r} is not available for a rocker in this "
+                             "release: its motion design minimizes 'R0' or 'L'")
+    elif spec.objective == "L":
         raise InputError("optimize.objective", "'L' (the centre distance) applies to rocker followers; a "
                          "translating follower's cam is sized by 'R0'")
     if flat and spec.objective == "pressure_angle":
@@ -182,6 +197,17 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
     caps = resolve_caps(spec, free)
     kw = {} if pieces is None else {"pieces": pieces}
     space = Space(program, free, spec.degree, spec.spans, spec.continuity, **kw)
+    name = f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})"
+    if isinstance(design, CamDesign) and design.follower.kind == "rocker":
+        from optimize.motion.rocker import design_rocker
+
+        steps = design_rocker(design, space, caps, spec.objective, name)
+        box = np.tile(space.bounds(), len(free))
+        return LawDesign(program=steps.program, free=free, objective=spec.objective, solver_value=steps.value,
+                         lower_bound=None, centre=(float(steps.centre[0]), float(steps.centre[1])), caps=caps,
+                         space=space, box_binds=bool(np.any(np.abs(steps.v) >= 0.999 * box)),
+                         seconds=time.perf_counter() - t0, local_measure=steps.local_measure,
+                         iterations=steps.iterations, history=steps.history)
     flat = isinstance(design, FlatFaceDesign)
     f = design.follower
     limits: dict[int, float] = {}
@@ -223,8 +249,7 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
         result = replace(result, value=value)
     v = space.project(result.v)
     nc = space.size
-    new_program = space.programme(v, f"designed spline (degree {spec.degree}, {spec.spans} spans, "
-                                     f"C{spec.continuity})")
+    new_program = space.programme(v, name)
     box = np.tile(space.bounds(), len(free))
     binds = bool(np.any(np.abs(v[:nc]) >= 0.999 * box))
     geo = (float(v[nc]), 0.0) if flat else (float(v[nc]), float(v[nc + 1]))

@@ -16,3 +16,5 @@ def test_bench_motion_quick_writes_json(tmp_path):
     assert row["spans"] == 5 and row["verified"] and row["certified"]
     assert row["lower_bound_mm"] <= row["R0_mm"] < res["original_R0_mm"]
     assert {"cpu", "cores", "python", "numpy"} <= set(res["machine"])
+    rk = res["rocker"]
+    assert rk["verified"] and rk["R0_mm"] < rk["original_R0_mm"] and rk["iterations"] >= 1

@@ -1,0 +1,257 @@
+"""The rocker roller's motion design: sequential convex programming around the exact zone.
+
+A rocker's constraint is not jointly convex in the law and the centre: the
+sides of a position's wedge turn with the swing ``psi`` (``optimize.zone``,
+``h = n(psi) . O - (b0 + b1 psi')``). Each iteration therefore
+
+1. takes the current laws and sizes their cam by the exact method
+   (:func:`optimize.sizing.size`: the least R0 or L over every cam angle,
+   certified), which gives the centre ``O_k`` and the value ``f_k``;
+2. linearizes every sampled side in the laws' variables and the centre at
+   ``(v_k, O_k)`` (``dh = n . dO + dh/dpsi dpsi + dh/dpsi' dpsi'``,
+   :func:`optimize.zone.side_terms`), keeps the fixed phases' sides exact
+   (linear in ``O``), the caps on every span's Bernstein coefficients, the
+   space's joints, and a trust region on ``S`` and ``S'`` at the samples;
+3. solves that second-order cone program for a step, sizes the stepped laws'
+   cam exactly, and accepts the step only when that exact value is smaller
+   (the trust region grows after a good step and shrinks after a refused one).
+
+Every accepted iterate is a cam sized exactly for its laws (feasible at every
+cam angle); the last one is returned with its local-optimality measure: the
+decrease the linear model still predicts inside the final trust region,
+relative to the value (0 at a first-order stationary point). There is no gap:
+the problem is not convex.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from cams.model.design import CamDesign
+from laws.errors import InfeasibleError
+from laws.program import Program
+from optimize.motion.conic import Cone, ConicProgram, solve
+from optimize.motion.space import Space
+from optimize.motion.translating import SAMPLES_PER_SPAN, TIGHTEN
+from optimize.zone import side_terms, wedges
+
+__all__ = ["RockerSteps", "design_rocker", "MAX_ITERATIONS", "TRUST0"]
+
+#: Iterations at most.
+MAX_ITERATIONS = 40
+#: Initial trust radius on the normalized law S at the samples (S' gets four times as much).
+TRUST0 = 0.05
+#: The trust radius below which the iteration stops.
+TRUST_MIN = 1e-5
+
+
+@dataclass(frozen=True)
+class RockerSteps:
+    """The SCP's result.
+
+    Attributes
+    ----------
+    v : ndarray
+        The laws' variables of the last accepted iterate (projected on the space's equalities).
+    program : Program
+        Its programme.
+    value : float
+        The exact value (R0 or L, length) of its cam.
+    centre : ndarray, shape (2,)
+        Its cam centre (fixed frame).
+    iterations : int
+    accepted : int
+    trust : float
+        The last trust radius.
+    local_measure : float
+        The relative decrease the linear model still predicts within the last trust radius.
+    history : tuple of float
+        The exact value after each accepted step, the start first.
+    """
+
+    v: np.ndarray
+    program: Program
+    value: float
+    centre: np.ndarray
+    iterations: int
+    accepted: int
+    trust: float
+    local_measure: float
+    history: tuple[float, ...]
+
+
+def _sized(design: CamDesign, program: Program, objective: str) -> tuple[float, np.ndarray]:
+    """The exact value and centre of the cam of ``program`` (InfeasibleError when it has no cam)."""
+    from optimize.sizing import size
+
+    d = design.with_(program=program)
+    sol = size(d, method="exact", objective=objective if design.limits.centre_distance is None else "R0")
+    c = np.asarray(sol.centre, float)
+    if objective == "L" and design.limits.centre_distance is None:
+        return float(np.linalg.norm(c)), c
+    return float(np.linalg.norm(c - design.follower.position(0.0))), c
+
+
+def _samples(space: Space) -> np.ndarray:
+    return np.linspace(0.0, 1.0, (SAMPLES_PER_SPAN - 1) * space.spans + 1)
+
+
+def _fit(space: Space, caps: dict[tuple[int, int], float]) -> np.ndarray:
+    """The space's law nearest the original laws (least squares at the samples), under the caps and joints.
+
+    The least-squares law under the joints alone (a linear system) when it meets the caps; else the
+    second-order cone program with the caps.
+    """
+    u = _samples(space)
+    n = space.size + 1
+    F = np.vstack([space.rows(k, 0, n, samples=u) for k in range(len(space.free))])
+    f = np.concatenate([-space.program.law_of(i).evaluate(u)[0] for i in space.free])
+    A, b = space.equalities(n)
+    G, h = _cap_rows(space, caps, n)
+    # min |F v + f|^2 subject to A v = b: the KKT system (t, the last variable, unused)
+    m = space.size
+    K = np.block([[F[:, :m].T @ F[:, :m], A[:, :m].T], [A[:, :m], np.zeros((A.shape[0], A.shape[0]))]])
+    rhs = np.concatenate([-F[:, :m].T @ f, b])
+    v = np.linalg.lstsq(K, rhs, rcond=None)[0][:m]
+    if not G.shape[0] or np.all(G[:, :m] @ v <= h):
+        return space.project(v)
+    cost = np.zeros(n)
+    cost[-1] = 1.0
+    a = np.zeros(n)
+    a[-1] = 1.0
+    hi = np.concatenate([np.tile(space.bounds(), len(space.free)), [1e6]])
+    lo = -hi
+    lo[-1] = 0.0
+    enforce = np.zeros(n, bool)
+    enforce[-1] = True
+    sol = solve(ConicProgram(cost, G, h, A, b, lo, hi, (Cone(a, 0.0, F, f),), enforce))
+    if not sol.feasible:
+        raise InfeasibleError("optimize", "the caps admit no law of the space with the joints' conditions: raise "
+                              "a cap or lower the continuity")
+    return space.project(sol.v[:-1])
+
+
+def _cap_rows(space: Space, caps: dict[tuple[int, int], float], n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The caps on every piece's Bernstein coefficients (tightened by TIGHTEN), over ``n`` variables."""
+    G, h = [np.zeros((0, n))], [np.zeros(0)]
+    for (k, r), cap in caps.items():
+        rows = space.rows(k, r, n)
+        G.append(np.vstack([rows, -rows]))
+        h.append(np.full(2 * rows.shape[0], cap * (1 - TIGHTEN)))
+    return np.vstack(G), np.concatenate(h)
+
+
+def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: np.ndarray, trust: float,
+                  objective: str) -> ConicProgram:
+    """The linearized program at ``(v, centre)`` with trust radius ``trust`` (module notes, step 2)."""
+    nc = space.size
+    n = nc + 3
+    io, it = nc, nc + 2
+    u = _samples(space)
+    index = {i: k for k, i in enumerate(space.free)}
+    vv = np.concatenate([v, np.zeros(3)])
+    G, h = [], []
+    limits = dict(design.constrained_phases())
+    for i, limit in limits.items():
+        if i in index:
+            k = index[i]
+            sh, beta, lev = space.phase_scale(i)
+            r0 = space.rows(k, 0, n, samples=u)
+            r1 = space.rows(k, 1, n, samples=u)
+            s = lev + sh * (r0 @ vv)
+            ds = sh / beta * (r1 @ vv)
+            hk, hs, hd, normals = side_terms(design, limit, s, ds, centre)
+            for side in (0, 1):
+                nrm = normals[:, side]
+                # h ~ h_k + n . (O - O_k) + dh/ds (s - s_k) + dh/ds' (s' - s'_k) <= 0
+                rows = (hs[:, side, None] * sh) * r0 + (hd[:, side, None] * sh / beta) * r1
+                rows[:, io:io + 2] = nrm
+                rhs = -hk[:, side] + nrm @ centre + hs[:, side] * (s - lev) + hd[:, side] * ds
+                G.append(rows)
+                h.append(rhs)
+        else:
+            w = wedges(design, {i: np.linspace(0.0, 1.0, 400)})
+            N, c = w.lines()
+            rows = np.zeros((N.shape[0], n))
+            rows[:, io:io + 2] = N
+            G.append(rows)
+            h.append(c)
+    Gc, hc = _cap_rows(space, caps, n)
+    G.append(Gc)
+    h.append(hc)
+    # the trust region on S and S' at the samples
+    for k in range(len(space.free)):
+        for r, width in ((0, trust), (1, 4 * trust)):
+            rows = space.rows(k, r, n, samples=u)
+            now = rows @ vv
+            G += [rows, -rows]
+            h += [now + width, width - now]
+    A, b = space.equalities(n)
+    L = design.limits.centre_distance
+    if L is not None:    # O on the circle |O| = L, linearized: its tangent at O_k
+        row = np.zeros((1, n))
+        row[0, io:io + 2] = centre / np.linalg.norm(centre)
+        A, b = np.vstack([A, row]), np.concatenate([b, [L]])
+    cost = np.zeros(n)
+    cost[it] = 1.0
+    a = np.zeros(n)
+    a[it] = 1.0
+    F = np.zeros((2, n))
+    F[0, io], F[1, io + 1] = 1.0, 1.0
+    target = np.zeros(2) if (objective == "L" and L is None) else design.follower.position(0.0)
+    scale = design.scale + float(np.linalg.norm(centre))
+    hi = np.concatenate([np.tile(space.bounds(), len(space.free)), [100 * scale] * 3])
+    lo = -hi
+    lo[it] = 0.0
+    enforce = np.zeros(n, bool)
+    enforce[nc:] = True
+    return ConicProgram(cost, np.vstack(G), np.concatenate(h), A, b, lo, hi,
+                        (Cone(a, 0.0, F, -target),), enforce)
+
+
+def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
+                  name: str) -> RockerSteps:
+    """The SCP of the module notes for ``design`` (a rocker roller), minimizing ``objective`` (``"R0"``/``"L"``).
+
+    Raises
+    ------
+    InfeasibleError
+        The caps admit no law of the space, or the starting law has no cam.
+    """
+    v = _fit(space, caps)
+    program = space.programme(v, name)
+    value, centre = _sized(design, program, objective)
+    history = [value]
+    trust = TRUST0
+    iterations = accepted = 0
+    measure = np.inf
+    while iterations < MAX_ITERATIONS and trust >= TRUST_MIN:
+        iterations += 1
+        sol = solve(_step_program(design, space, caps, v, centre, trust, objective))
+        if not sol.feasible:
+            trust /= 4
+            continue
+        predicted = value - sol.value
+        measure = max(predicted, 0.0) / value
+        if measure < 1e-9:
+            break
+        v_new = space.project(sol.v[:space.size])
+        program_new = space.programme(v_new, name)
+        try:
+            value_new, centre_new = _sized(design, program_new, objective)
+        except InfeasibleError:
+            trust /= 4
+            continue
+        if value_new < value:
+            ratio = (value - value_new) / predicted
+            v, program, value, centre = v_new, program_new, value_new, centre_new
+            history.append(value)
+            accepted += 1
+            if ratio > 0.75:
+                trust *= 2
+        else:
+            trust /= 4
+    return RockerSteps(v=v, program=program, value=value, centre=centre, iterations=iterations,
+                       accepted=accepted, trust=trust, local_measure=float(measure), history=tuple(history))

@@ -1,0 +1,99 @@
+"""The rocker roller's motion design (sequential convex programming around the exact zone).
+
+Independent references: the kernel's inversion for the pressure angle at dense cam angles, the laws' own
+derivatives for the caps, the exact sizing of a law written to a file for the value, finite differences for the
+linearization's rates.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from cams.io.designfile import design_from_dict, load_design
+from cams.io.document import read_toml
+from cams.io.lawtable import law_to_table
+from cams.kinematics.inversion import invert_at, pressure_angle
+from cams.solve import solve
+from laws.errors import InputError
+from optimize.zone import phase_wedges, side_terms
+
+FORCE = "examples/rocker_force.toml"
+FORM = "examples/rocker_form.toml"
+
+
+def test_side_terms_are_the_wedges_and_their_rates():
+    d = load_design(FORCE)
+    u = np.linspace(0, 1, 9)
+    lim = d.limits.pressure_angle
+    m = d.program.evaluate_phase(0, u)
+    O = np.array([130.0, 10.0])
+    h, hs, hd, _ = side_terms(d, lim, m.s, m.ds, O)
+    assert np.allclose(h, phase_wedges(d, 0, lim, u).violation(O), atol=1e-12)
+    e = 1e-6
+    assert np.allclose((side_terms(d, lim, m.s + e, m.ds, O)[0] - side_terms(d, lim, m.s - e, m.ds, O)[0]) / (2 * e),
+                       hs, atol=1e-6)
+    assert np.allclose((side_terms(d, lim, m.s, m.ds + e, O)[0] - side_terms(d, lim, m.s, m.ds - e, O)[0]) / (2 * e),
+                       hd, atol=1e-6)
+
+
+@pytest.fixture(scope="module")
+def designed():
+    doc = read_toml(FORCE)
+    doc["optimize"] = {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "continuity": 2, "spans": 8}
+    return solve(design_from_dict(doc))
+
+
+def test_rocker_design_is_smaller_checked_and_local(designed):
+    o = designed.optimization
+    reference = solve(load_design(FORCE))
+    assert designed.verified and o["certified"] and o["method"] == "sequential convex programming"
+    assert o["lower_bound"] is None and o["gap"] is None
+    assert designed.R0 < 0.9 * reference.R0 and o["reference"]["R0"] == pytest.approx(reference.R0, rel=1e-12)
+    assert o["value"] == designed.R0 and o["history"][-1] == pytest.approx(designed.R0, rel=1e-12)
+    assert all(b < a for a, b in zip(o["history"], o["history"][1:], strict=False))
+    assert 0 <= o["local_measure"] < 1e-3
+
+
+def test_rocker_design_brute_force(designed):
+    """The kernel's pressure angle at 100,001 angles of the rise within the limit; the caps at 200,001 points."""
+    design = designed.design
+    beta = design.program.phases[0].angle
+    phi = np.linspace(0, beta, 100_001)
+    g = np.abs(pressure_angle(invert_at(design, designed.centre, phi)))
+    assert g.max() <= design.limits.pressure_angle * (1 + 1e-9)
+    S = design.program.law_of(0).evaluate(np.linspace(0, 1, 200_001))
+    assert np.max(np.abs(S[2])) <= 2 * np.pi * (1 + 1e-9)
+    assert np.max(np.abs(S[3])) <= 4 * np.pi**2 * (1 + 1e-9)
+
+
+def test_rocker_law_written_out_solves_to_the_same_cam(designed):
+    doc = read_toml(FORCE)
+    doc["motion"][0]["law"] = law_to_table(designed.design.program.law_of(0))
+    again = solve(design_from_dict(doc))
+    assert again.R0 == designed.R0
+
+
+def test_rocker_least_centre_distance_form_closure():
+    """Form closure with K_C = 1.1 and its own return limit, both phases free, L minimized."""
+    doc = read_toml(FORM)
+    doc["optimize"] = {"free": ["rise", "return"], "objective": "L", "max_Ca": "cycloidal", "max_Cj": "cycloidal",
+                       "continuity": 2, "spans": 6}
+    doc.pop("solve", None)
+    res = solve(design_from_dict(doc))
+    o = res.optimization
+    assert res.verified and o["certified"] and o["value"] == res.L
+    assert res.L < o["reference"]["L"]
+    assert [p["phase"] for p in o["phases"]] == [0, 2]
+
+
+@pytest.mark.parametrize(("optimize", "field"), [
+    ({"objective": "Ca"}, "optimize.objective"),
+    ({"objective": "pressure_angle"}, "optimize.objective"),
+])
+def test_rocker_refuses_what_it_does_not_design(optimize, field):
+    doc = read_toml(FORCE)
+    doc["optimize"] = optimize
+    with pytest.raises(InputError) as e:
+        solve(design_from_dict(doc))
+    assert e.value.field == field
