@@ -27,11 +27,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Assessment", "assess", "assess_cam", "knife_in_groove", "PRESSURE_CHECKS"]
+from cams.checks.base import PRESSURE_CHECKS
 
-#: The checks of a profile that repeat the verified side (the pressure angle; a flat face's radius of
-#: curvature against limits.min_radius), not buildability.
-PRESSURE_CHECKS = ("jamming_rise", "jamming_return", "convexity")
+__all__ = ["Assessment", "assess", "assess_cam", "knife_in_groove"]
 
 
 @dataclass(frozen=True)

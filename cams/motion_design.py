@@ -80,7 +80,43 @@ def _ratio(pressure) -> float:
     return float(max(out))
 
 
-def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any], Any]):
+#: Relative accuracy of the smallest passing R0 when the optimum fails the profile's checks.
+FALLBACK_RTOL = 1e-4
+
+
+def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[[Any], bool]):
+    """The designed laws' smallest cam that passes the profile's checks: R0 raised by a floor, bisected.
+
+    Returns the passing solution, or None when no cam up to 2**10 times the optimum's R0 passes.
+    """
+    def at(floor: float):
+        try:
+            cand = solve_fixed(replace(new, limits=replace(new.limits, min_base_radius=floor)))
+        except InfeasibleError:
+            return None
+        return cand if passes(cand) else None
+
+    lo, hi, best = float(sol.R0), float(sol.R0), None
+    for _ in range(40):
+        hi *= 1.2
+        best = at(hi)
+        if best is not None:
+            break
+        lo = hi
+        if hi > 1024 * sol.R0:
+            return None
+    while hi - lo > FALLBACK_RTOL * hi:
+        mid = 0.5 * (lo + hi)
+        cand = at(mid)
+        if cand is None:
+            lo = mid
+        else:
+            hi, best = mid, cand
+    return best
+
+
+def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any], Any],
+                  passes: Callable[[Any], bool] | None = None):
     """Design the free phases' laws of ``design`` with its cam (see the module notes).
 
     Parameters
@@ -91,6 +127,12 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         The verified solve of a design whose laws are fixed
         (:func:`cams.solve.solve`; passed in, so that the solve may call this
         module without an import cycle).
+    passes : callable, optional
+        Whether a fixed-law solution's profile passes its checks
+        (:func:`cams.solve.profile_passes`). When the optimum of ``"R0"``
+        fails them, the designed laws' smallest cam that passes is returned
+        (R0 raised by a floor, to :data:`FALLBACK_RTOL`), and a note gives the
+        optimum that failed; the lower bound stays the optimum's.
 
     Returns
     -------
@@ -120,7 +162,6 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         hold = float(reference.R0)
     ld = design_laws(base, spec, hold=hold)
     new = replace(base, program=ld.program)
-    notes: list[str] = []
     if not sizes and hold is not None:
         if isinstance(new, FlatFaceDesign):
             new = replace(new, base_radius=hold)
@@ -131,6 +172,14 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
                 f = replace(f, offset=None)
             new = replace(new, follower=f, centre=(x, -d), base_radius=None)
     sol = solve_fixed(new)
+    notes_first: list[str] = []
+    if passes is not None and spec.objective == "R0" and not isinstance(new, FlatFaceDesign) and not passes(sol):
+        better = _passing(new, sol, solve_fixed, passes)
+        if better is not None:
+            notes_first.append(f"the optimum, R0 = {sol.R0:.6g} mm, fails the profile's checks (undercut, sharp "
+                               f"points, the bore...): the designed laws' smallest cam that passes, R0 = "
+                               f"{better.R0:.6g} mm, is returned (a floor on R0)")
+            sol = better
 
     # -- the value of the checked design, computed on the laws themselves ----------------------------------------
     obj = spec.objective
@@ -147,6 +196,7 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     else:
         r = 3 if obj == "jerk_squared" else 4
         value = sum(integral_of_square(law, r, ld.space.breaks, spec.degree) for law in laws_new.values())
+    notes = notes_first
     caps_ok = True
     names = {1: "Cv", 2: "Ca", 3: "Cj"}
     for (k, r), cap in ld.caps.items():

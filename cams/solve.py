@@ -29,7 +29,7 @@ from optimize.sizing import OBJECTIVES, offset_x, roller_travel, size, vanishing
 if TYPE_CHECKING:
     from cams.checks.flat import FlatCheckReport
 
-__all__ = ["SolveResult", "solve", "check_design", "excess", "pressure_failures"]
+__all__ = ["SolveResult", "solve", "check_design", "excess", "pressure_failures", "profile_passes"]
 
 
 @dataclass(frozen=True)
@@ -299,7 +299,7 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
 
         from cams.motion_design import design_motion
 
-        return design_motion(design, partial(solve, method=method))
+        return design_motion(design, partial(solve, method=method), profile_passes)
     if getattr(design, "face", "roller") == "flat":
         return _solve_flat(design, method, objective)
     if objective is None:
@@ -323,6 +323,34 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
                    "set limits.min_base_radius or a smaller roller", method=sized.method, samples=sized.samples,
                    mode=sized.mode, binding=sized.binding, error_bound=sized.error_bound, seconds=sized.seconds,
                    certified=sized.certified)
+
+
+def profile_passes(result) -> bool:
+    """True when the cam of ``result`` (a roller's :class:`SolveResult`) has a working profile whose checks pass.
+
+    The base circle larger than the roller, no knife edge in a groove, and every check of
+    :func:`cams.checks.profile.check_profile` but the pressure angle's (undercut, sharp points, a closed
+    profile, the bore, the least radius of curvature) at the design's chord tolerance: the buildability of
+    :mod:`cams.assess` without the ``[dynamics]`` checks. A flat face's result: its checks
+    (:func:`cams.checks.flat.check_flat_face`).
+    """
+    from cams.checks.base import PRESSURE_CHECKS
+
+    d = result.design
+    try:
+        if isinstance(d, FlatFaceDesign):
+            from cams.checks.flat import check_flat_face
+            from cams.profile.flat import flat_face_profile
+
+            checks = check_flat_face(d, result, flat_face_profile(d, result.R0, tolerance=d.tolerance)).checks
+        else:
+            r = d.follower.roller_radius
+            if not result.R0 > r or (d.limits.closure == "form" and not r > 0):
+                return False
+            checks = check_profile(d, result.centre, options=profile_options(d)).checks
+    except InputError:          # a profile the chord tolerance cannot carry
+        return False
+    return all(c.passed or c.name in PRESSURE_CHECKS for c in checks)
 
 
 def check_design(design: CamDesign | FlatFaceDesign, *, tolerance: float | None = None,

@@ -11,7 +11,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Check", "ChecksMixin", "polygon_check", "bore_check"]
+__all__ = ["Check", "ChecksMixin", "polygon_check", "bore_check", "PRESSURE_CHECKS"]
+
+#: The checks of a profile that repeat the verified side (the pressure angle; a flat face's radius of
+#: curvature against limits.min_radius), not buildability.
+PRESSURE_CHECKS = ("jamming_rise", "jamming_return", "convexity")
 
 
 @dataclass(frozen=True)

@@ -278,8 +278,33 @@ def test_save_design_refused_without_optimize_or_to_stdout(tmp_path):
 
 
 def test_failing_design_is_not_saved(tmp_path):
-    """A roller larger than the designed cam's R0: no working profile, exit 1, no file."""
+    """A chosen cam whose bore does not fit (the least Ca designed at that size): it fails, exit 1, no file."""
     out = tmp_path / "saved.toml"
-    r = _cli("solve", _designed_file(tmp_path, roller=14.0), "--save-design", out)
+    f = _designed_file(tmp_path, extra='objective = "Ca"\n')
+    text = f.read_text(encoding="utf-8").replace('rotation = "ccw"', 'rotation = "ccw"\nbase_radius = 30.0\n'
+                                                 'bore_radius = 29.0').replace("roller_radius = 8.0",
+                                                                               "roller_radius = 8.0\noffset = 0.0")
+    f.write_text(text, encoding="utf-8")
+    r = _cli("solve", f, "--save-design", out)
     assert r.returncode == 1
     assert not out.exists() and "not written" in r.stdout
+
+
+def test_optimum_failing_the_profile_checks_gives_the_smallest_passing_cam():
+    """A 12 mm roller: the optimum (R0 10.97 mm) has no working profile; the designed law's smallest cam that
+    passes is returned, judged by the commands' one rule (cams.assess), and slightly below it none passes."""
+    from dataclasses import replace
+
+    from cams.cam import Cam
+    from cams.solve import profile_passes
+
+    doc = _doc(max_Ca="poly4567", max_Cj="poly4567", spans=10)
+    doc["follower"]["roller_radius"] = 12.0
+    res = solve(design_from_dict(doc))
+    o = res.optimization
+    assert res.R0 > 12.0 and any("fails the profile's checks" in n for n in o["notes"])
+    assert o["lower_bound"] <= res.R0 and o["certified"]
+    cam = Cam(res.design.with_(limits=replace(res.design.limits, min_base_radius=res.R0)))
+    assert cam.assessment.usable
+    below = solve(res.design.with_(limits=replace(res.design.limits, min_base_radius=res.R0 * (1 - 1e-3))))
+    assert not profile_passes(below)
