@@ -33,7 +33,7 @@ def _listed(table: dict, key: str, default: tuple) -> tuple:
     if v is None:
         return default
     if isinstance(v, list):
-        if not v:
+        if not v and key != "free":
             raise InputError(f"optimize.{key}", "is an empty list: give at least one value")
         return tuple(v)
     return (v,)

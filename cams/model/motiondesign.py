@@ -51,7 +51,8 @@ class MotionDesignSpec:
     ----------
     free : tuple of (str or int)
         ``"rise"`` (every rise), ``"return"`` (every return) or phase indices
-        (0-based ``[[motion]]`` rows, each a rise or a return).
+        (0-based ``[[motion]]`` rows, each a rise or a return); empty: no
+        free phase (the laws as given, the cam sized with the same certificate).
     objective : str
         One of :data:`MOTION_OBJECTIVES`.
     max_Cv, max_Ca, max_Cj : tuple of cap
@@ -76,7 +77,7 @@ class MotionDesignSpec:
     spans: int = DEFAULT_SPANS
 
     def __post_init__(self) -> None:
-        if not isinstance(self.free, tuple) or not self.free:
+        if not isinstance(self.free, tuple):
             raise InputError("optimize.free", f'must name the free phases: "rise", "return" or phase indices, got '
                              f"{show_value(self.free)}")
         for v in self.free:

@@ -220,6 +220,10 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
     InfeasibleError
         The caps admit no law of the space, or the starting law has no cam.
     """
+    if not space.free:           # nothing to design: the laws' own cam, sized exactly
+        value, centre = _sized(design, space.program, objective)
+        return RockerSteps(v=np.zeros(0), program=space.program, value=value, centre=centre, iterations=0,
+                           accepted=0, trust=0.0, local_measure=0.0, history=(value,))
     v = _fit(space, caps)
     program = space.programme(v, name)
     value, centre = _sized(design, program, objective)

@@ -235,6 +235,8 @@ class Space:
                         val -= factor * float(self.program.law_of(ph).evaluate(float(end))[r])
                 rows.append(row)
                 rhs.append(val)
+        if not rows:                                    # no free phase
+            return np.zeros((0, n)), np.zeros(0)
         return np.vstack(rows), np.asarray(rhs)
 
     # -- the space's integrals ----------------------------------------------------

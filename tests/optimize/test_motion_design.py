@@ -308,3 +308,14 @@ def test_optimum_failing_the_profile_checks_gives_the_smallest_passing_cam():
     assert cam.assessment.usable
     below = solve(res.design.with_(limits=replace(res.design.limits, min_base_radius=res.R0 * (1 - 1e-3))))
     assert not profile_passes(below)
+
+
+@pytest.mark.parametrize("example", [EXAMPLE, "examples/rocker_force.toml"])
+def test_no_free_phase_gives_todays_exact_answer(example):
+    d = read_toml(example)
+    today = solve(design_from_dict(d))
+    d["optimize"] = {"free": []}
+    res = solve(design_from_dict(d))
+    assert res.R0 == today.R0 and res.optimization["value"] == today.R0
+    lb = res.optimization["lower_bound"]
+    assert lb is None or lb <= today.R0
