@@ -72,7 +72,7 @@ def _flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
                 ("verified (radius of curvature >= limit)", "yes" if r["verified"] else "NO")]
     results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"]]
-    return [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
+    return [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam)), *_motion_section(cam)]
 
 
 def _assessment_rows(cam) -> list[tuple[str, str]]:
@@ -158,6 +158,7 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"] if not any(n in f for f in cam.assessment.failures)]  # said once
     sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
+    sections += _motion_section(cam)
     df = cam.forces if d.dynamics is not None else None
     if df is not None:
         sections.append(("Forces at the cam", _force_rows(df, f.kind)))
@@ -211,6 +212,14 @@ def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
     return rows
 
 
+def _motion_section(cam) -> list[tuple[str, list[tuple[str, str]]]]:
+    """The motion design's table (a design with ``[optimize]``), else nothing."""
+    from cams.present.text import optimization_rows
+
+    o = getattr(cam.solution, "optimization", None)
+    return [] if o is None else [("Motion design", optimization_rows(o, cam.solution.R0))]
+
+
 def _figures(cam):
     """The pictures, each titled as failing when the cam is not usable (:mod:`cams.assess`)."""
     from cams.assess import knife_in_groove
@@ -227,6 +236,10 @@ def _figures(cam):
                 ("Pressure angle", plots.plot_pressure(cam.solution))]
         if not knife_in_groove(cam.design):  # a knife edge in a groove has no profile to draw
             figs.append(("Cam profile", plots.plot_profile(cam)))
+    if getattr(cam.solution, "optimization", None) is not None:
+        from cams.present.motion_plots import plot_motion_design
+
+        figs.append(("Motion design: the designed laws and cam beside the original", plot_motion_design(cam)))
     title = cam.assessment.title()
     return [(name, plots.mark_failing(fig, title)) for name, fig in figs]
 

@@ -19,7 +19,7 @@ from cams.words import (
 from cams.words import check_value as _fmt
 
 __all__ = ["print_summary", "print_flat_summary", "print_cam_forces", "print_assessment", "print_checks",
-           "pressure_text"]
+           "pressure_text", "optimization_rows", "print_optimization"]
 
 
 def print_summary(rep: dict) -> None:
@@ -73,30 +73,38 @@ def _peak(v: float | None) -> str:
     return "inf" if v is None else f"{v:.4f}"
 
 
-def print_optimization(o: dict, R0: float | None = None) -> None:
-    """The ``optimize`` part of a report (:mod:`cams.motion_design`): the certificate and the laws' peaks."""
+def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]:
+    """The ``optimize`` part of a report (:mod:`cams.motion_design`) as ``(label, value)`` rows, units beside."""
     unit = _OBJECTIVE_UNITS.get(o["objective"], "")
-    ok = "yes" if o["certified"] else "NO"
+    rows = [("minimized", f"{o['objective']}: {o['value']:.6g} {unit}")]
     if o["lower_bound"] is None:
-        print(f"  motion design: minimize {o['objective']}: {o['value']:.6g} {unit}, a local optimum (sequential "
-              f"convex programming, {o['iterations']} iterations; the linearized problem still predicts "
-              f"{o['local_measure']:.2g} relative); checked: {ok}")
+        rows += [("optimality", f"a local optimum (sequential convex programming, {o['iterations']} iterations); "
+                                f"the linearized problem still predicts {o['local_measure']:.2g} (relative)"),
+                 ("checked", "yes" if o["certified"] else "NO")]
     else:
         gap = "-" if o["gap"] is None else f"{o['gap']:.3g}"
-        print(f"  motion design: minimize {o['objective']}: {o['value']:.6g} {unit}, proven lower bound "
-              f"{o['lower_bound']:.6g}, gap {gap} (relative); certified: {ok}")
-    print(f"    space: degree {o['degree']}, {o['spans']} spans per free phase, C{o['continuity']} joints "
-          f"(every cam angle: Bernstein coefficients on {o['pieces']} pieces a span)")
+        rows += [("proven lower bound", f"{o['lower_bound']:.6g} {unit}, gap {gap} (relative)"),
+                 ("certified", "yes" if o["certified"] else "NO")]
+    rows.append(("space", f"degree {o['degree']}, {o['spans']} spans per free phase, C{o['continuity']} joints "
+                          f"(the caps on Bernstein coefficients of {o['pieces']} pieces a span)"))
     ref = o.get("reference")
     if ref and o["objective"] == "L" and ref.get("L") is not None:
-        print(f"    the original laws' cam: L = {ref['L']:.6f} mm; this one: L = {o['value']:.6f} mm")
+        rows.append(("the original laws' cam", f"L = {ref['L']:.6f} mm; this one: L = {o['value']:.6f} mm"))
     elif ref and R0 is not None:
-        print(f"    the original laws' cam: R0 = {ref['R0']:.6f} mm; this one: R0 = {R0:.6f} mm")
+        rows.append(("the original laws' cam", f"R0 = {ref['R0']:.6f} mm; this one: R0 = {R0:.6f} mm"))
     for p in o["phases"]:
         orig = p["original"]
-        print(f"    [[motion]] {p['phase'] + 1} ({p['kind']}): Cv {_peak(p['Cv'])}, Ca {_peak(p['Ca'])}, "
-              f"Cj {_peak(p['Cj'])}; was {orig['law']}: Cv {_peak(orig['Cv'])}, Ca {_peak(orig['Ca'])}, "
-              f"Cj {_peak(orig['Cj'])}")
+        rows.append((f"[[motion]] {p['phase'] + 1} ({p['kind']})",
+                     f"Cv {_peak(p['Cv'])}, Ca {_peak(p['Ca'])}, Cj {_peak(p['Cj'])}; was {orig['law']}: "
+                     f"Cv {_peak(orig['Cv'])}, Ca {_peak(orig['Ca'])}, Cj {_peak(orig['Cj'])}"))
+    return rows
+
+
+def print_optimization(o: dict, R0: float | None = None) -> None:
+    """The ``optimize`` part of a report, in words (:func:`optimization_rows`)."""
+    print("  motion design:")
+    for label, value in optimization_rows(o, R0):
+        print(f"    {label}: {value}")
 
 
 def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translating") -> None:
@@ -168,6 +176,8 @@ def print_flat_summary(rep: dict) -> None:
         print(f"        a face centred on the axis needs {rep['face_width_centred']:{f}} {unit} (no margins)")
     print(f"  pressure angle: {pressure_text(rep)}")
     print(f"  verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    if rep.get("optimize"):
+        print_optimization(rep["optimize"], rep.get("R0"))
     for n in rep["notes"]:
         print(f"  note: {n}")
 

@@ -57,3 +57,15 @@ def test_optimized_picture_of_a_plain_file_is_skipped(tmp_path):
     assert r.returncode == 0 and "no [optimize] table" in r.stderr
     assert not any("optimized" in p.name for p in (tmp_path / "p").iterdir())
     assert load_design(EXAMPLE).optimize is None
+
+
+def test_report_has_the_motion_design_table_and_picture(cam):
+    from cams.present.report import _figures, report_sections
+
+    sections = dict(report_sections(cam))
+    rows = dict(sections["Motion design"])
+    o = cam.solution.optimization
+    assert rows["minimized"] == f"R0: {o['value']:.6g} mm"
+    assert rows["proven lower bound"].startswith(f"{o['lower_bound']:.6g} mm")
+    assert rows["certified"] == "yes"
+    assert any(name.startswith("Motion design") for name, _ in _figures(cam))
