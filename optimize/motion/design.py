@@ -235,7 +235,7 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
     bound = 100.0 * (design.scale + float(program.lift) + (held or 0.0) + (float(np.hypot(*centre)) if centre else 0.0))
     base = Request(space=space, follower="flat" if flat else "roller", cam_sense=design.cam_sense, limits=limits,
                    caps=caps, objective=spec.objective, bound=bound, centre=centre, x_fixed=x_fixed, hold=held,
-                   min_radius=min_radius)
+                   min_radius=min_radius, length=design.scale)
     if spec.objective == "pressure_angle":
         result, lb = _bisect_pressure(base, limits)
     else:
@@ -243,6 +243,8 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
         relaxed = build(base, "relaxed")
         lb = lower_bound(relaxed, solve(relaxed))
         value = result.value
+        if spec.objective == "R0":                # the programs' lengths are in units of the design's scale
+            lb, value = lb * design.scale, value * design.scale
         if spec.objective in ("jerk_squared", "snap_squared"):
             lb = max(lb, 0.0) ** 2
             value = value**2
@@ -252,7 +254,8 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
     new_program = space.programme(v, name)
     box = np.tile(space.bounds(), len(free))
     binds = bool(np.any(np.abs(v[:nc]) >= 0.999 * box))
-    geo = (float(v[nc]), 0.0) if flat else (float(v[nc]), float(v[nc + 1]))
+    ell = design.scale
+    geo = (float(v[nc]) * ell, 0.0) if flat else (float(v[nc]) * ell, float(v[nc + 1]) * ell)
     return LawDesign(program=new_program, free=free, objective=spec.objective, solver_value=float(result.value),
                      lower_bound=float(lb), centre=geo, caps=caps, space=space, box_binds=binds,
                      seconds=time.perf_counter() - t0)

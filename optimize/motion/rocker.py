@@ -145,7 +145,12 @@ def _cap_rows(space: Space, caps: dict[tuple[int, int], float], n: int) -> tuple
 
 def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: np.ndarray, trust: float,
                   objective: str) -> ConicProgram:
-    """The linearized program at ``(v, centre)`` with trust radius ``trust`` (module notes, step 2)."""
+    """The linearized program at ``(v, centre)`` with trust radius ``trust`` (module notes, step 2).
+
+    Lengths in units of the design's scale (the arm): the centre's variables are ``O / scale`` and the value
+    ``R0 / scale`` or ``L / scale``, so the program does not depend on the design's unit.
+    """
+    ell = design.scale
     nc = space.size
     n = nc + 3
     io, it = nc, nc + 2
@@ -166,9 +171,9 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
             for side in (0, 1):
                 nrm = normals[:, side]
                 # h ~ h_k + n . (O - O_k) + dh/ds (s - s_k) + dh/ds' (s' - s'_k) <= 0
-                rows = (hs[:, side, None] * sh) * r0 + (hd[:, side, None] * sh / beta) * r1
+                rows = (hs[:, side, None] * sh / ell) * r0 + (hd[:, side, None] * sh / (beta * ell)) * r1
                 rows[:, io:io + 2] = nrm
-                rhs = -hk[:, side] + nrm @ centre + hs[:, side] * (s - lev) + hd[:, side] * ds
+                rhs = (-hk[:, side] + nrm @ centre + hs[:, side] * (s - lev) + hd[:, side] * ds) / ell
                 G.append(rows)
                 h.append(rhs)
         else:
@@ -177,7 +182,7 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
             rows = np.zeros((N.shape[0], n))
             rows[:, io:io + 2] = N
             G.append(rows)
-            h.append(c)
+            h.append(c / ell)
     Gc, hc = _cap_rows(space, caps, n)
     G.append(Gc)
     h.append(hc)
@@ -193,7 +198,7 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
     if L is not None:    # O on the circle |O| = L, linearized: its tangent at O_k
         row = np.zeros((1, n))
         row[0, io:io + 2] = centre / np.linalg.norm(centre)
-        A, b = np.vstack([A, row]), np.concatenate([b, [L]])
+        A, b = np.vstack([A, row]), np.concatenate([b, [L / ell]])
     cost = np.zeros(n)
     cost[it] = 1.0
     a = np.zeros(n)
@@ -201,14 +206,14 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
     F = np.zeros((2, n))
     F[0, io], F[1, io + 1] = 1.0, 1.0
     target = np.zeros(2) if (objective == "L" and L is None) else design.follower.position(0.0)
-    scale = design.scale + float(np.linalg.norm(centre))
+    scale = 1.0 + float(np.linalg.norm(centre)) / ell
     hi = np.concatenate([np.tile(space.bounds(), len(space.free)), [100 * scale] * 3])
     lo = -hi
     lo[it] = 0.0
     enforce = np.zeros(n, bool)
     enforce[nc:] = True
     return ConicProgram(cost, np.vstack(G), np.concatenate(h), A, b, lo, hi,
-                        (Cone(a, 0.0, F, -target),), enforce)
+                        (Cone(a, 0.0, F, -target / ell),), enforce)
 
 
 def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
@@ -225,6 +230,7 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
         return RockerSteps(v=np.zeros(0), program=space.program, value=value, centre=centre, iterations=0,
                            accepted=0, trust=0.0, local_measure=0.0, history=(value,))
     v = _fit(space, caps)
+    caps_rows = _cap_rows(space, caps, space.size)
     program = space.programme(v, name)
     value, centre = _sized(design, program, objective)
     history = [value]
@@ -237,11 +243,14 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
         if not sol.feasible:
             trust /= 4
             continue
-        predicted = value - sol.value
+        predicted = value - sol.value * design.scale
         measure = max(predicted, 0.0) / value
         if measure < 1e-9:
             break
         v_new = space.project(sol.v[:space.size])
+        if caps_rows[0].shape[0] and np.any(caps_rows[0][:, :space.size] @ v_new > caps_rows[1] / (1 - TIGHTEN)):
+            trust /= 4              # the solver left a cap exceeded: not a step to take
+            continue
         program_new = space.programme(v_new, name)
         try:
             value_new, centre_new = _sized(design, program_new, objective)

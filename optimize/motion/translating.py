@@ -76,6 +76,10 @@ class Request:
         The box on the geometry and ``t`` (length), generous.
     min_radius : float
         Flat face: the least radius of curvature, length.
+    length : float
+        The program's unit of length (the design's scale): every length above is divided by it, so that the
+        program, its tolerances and its bound do not depend on the design's unit; the caller multiplies the
+        geometry and a length objective back.
     """
 
     space: Space
@@ -90,6 +94,7 @@ class Request:
     x_fixed: float | None = None
     hold: float | None = None
     min_radius: float = 0.0
+    length: float = 1.0
 
 
 def _fixed_motion(program: Program, i: int, count: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -117,6 +122,17 @@ def build(req: Request, form: str) -> ConicProgram:
     cones: list[Cone] = []
     index = {i: k for k, i in enumerate(sp.free)}
     slack = req.objective == "feasibility"
+    ell = float(req.length)
+
+    def scaled(i: int) -> tuple[float, float, float]:
+        sh, beta, lev = sp.phase_scale(i)
+        return sh / ell, beta, lev / ell
+
+    def fixed(i: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        s, ds, d2s = _fixed_motion(sp.program, i, FIXED_SAMPLES)
+        return s / ell, ds / ell, d2s / ell
+
+    rho = req.min_radius / ell
 
     def add(rows: np.ndarray, rhs: np.ndarray, *, pressure: bool = False) -> None:
         if slack and pressure:
@@ -132,24 +148,24 @@ def build(req: Request, form: str) -> ConicProgram:
             # R0 + s + s'' >= rho  ->  -R0 - sh S - sh/beta^2 S'' <= lev - rho
             if i in index:
                 k = index[i]
-                sh, beta, lev = sp.phase_scale(i)
+                sh, beta, lev = scaled(i)
                 r0 = sp.rows(k, 0, n, samples=samples)
                 r2 = sp.rows(k, 2, n, samples=samples, elevate=True)
                 rows = -sh * r0 - sh / beta**2 * r2
                 rows[:, nc] = -1.0
-                add(rows, np.full(rows.shape[0], lev - req.min_radius))
+                add(rows, np.full(rows.shape[0], lev - rho))
             else:
-                s, _, s2 = _fixed_motion(sp.program, i, FIXED_SAMPLES)
+                s, _, s2 = fixed(i)
                 rows = np.zeros((s.size, n))
                 rows[:, nc] = -1.0
-                add(rows, s + s2 - req.min_radius)
+                add(rows, s + s2 - rho)
     else:
         eps = float(req.cam_sense)
         for i, limit in req.limits.items():
             T = float(np.tan(req.ratio * limit))
             if i in index:
                 k = index[i]
-                sh, beta, lev = sp.phase_scale(i)
+                sh, beta, lev = scaled(i)
                 r0 = sp.rows(k, 0, n, samples=samples)
                 r1 = sp.rows(k, 1, n, samples=samples, elevate=True)
                 for sign in (1.0, -1.0):
@@ -159,7 +175,7 @@ def build(req: Request, form: str) -> ConicProgram:
                     rows[:, nc + 1] = -T
                     add(rows, np.full(rows.shape[0], T * lev), pressure=True)
             else:
-                s, ds, _ = _fixed_motion(sp.program, i, FIXED_SAMPLES)
+                s, ds, _ = fixed(i)
                 for sign in (1.0, -1.0):
                     rows = np.zeros((s.size, n))
                     rows[:, nc] = sign * eps
@@ -207,26 +223,26 @@ def build(req: Request, form: str) -> ConicProgram:
     if req.hold is not None and not flat:
         F = np.zeros((2, n))
         F[0, nc], F[1, nc + 1] = 1.0, 1.0
-        cones.append(Cone(np.zeros(n), float(req.hold), F, np.zeros(2)))
+        cones.append(Cone(np.zeros(n), float(req.hold) / ell, F, np.zeros(2)))
 
     # -- the box -----------------------------------------------------------------------------------------------
-    B = req.bound
+    B = req.bound / ell
     hi = np.concatenate([np.tile(sp.bounds(), len(sp.free)), np.zeros(ng + 1)])
     lo = -hi
     if flat:
         lo[nc], hi[nc] = 0.0, B
         if req.centre is not None:
-            lo[nc] = hi[nc] = req.centre[0]
+            lo[nc] = hi[nc] = req.centre[0] / ell
         elif req.hold is not None:
-            lo[nc] = hi[nc] = req.hold
+            lo[nc] = hi[nc] = req.hold / ell
     else:
         lo[nc], hi[nc] = -B, B
         lo[nc + 1], hi[nc + 1] = 0.0, B
         if req.centre is not None:
-            lo[nc] = hi[nc] = req.centre[0]
-            lo[nc + 1] = hi[nc + 1] = req.centre[1]
+            lo[nc] = hi[nc] = req.centre[0] / ell
+            lo[nc + 1] = hi[nc + 1] = req.centre[1] / ell
         elif req.x_fixed is not None:
-            lo[nc] = hi[nc] = req.x_fixed
+            lo[nc] = hi[nc] = req.x_fixed / ell
     if slack:
         lo[it], hi[it] = -B, B                  # the pressure rows' slack (length)
     elif obj == "R0":

@@ -319,3 +319,29 @@ def test_no_free_phase_gives_todays_exact_answer(example):
     assert res.R0 == today.R0 and res.optimization["value"] == today.R0
     lb = res.optimization["lower_bound"]
     assert lb is None or lb <= today.R0
+
+
+@pytest.mark.parametrize(("example", "lengths", "optimize"), [
+    (EXAMPLE, (("follower", "stroke"), ("follower", "roller_radius")),
+     {"max_Ca": "poly4567", "max_Cj": "poly4567", "spans": 10}),
+    ("examples/translating_flat.toml", (("follower", "stroke"), ("limits", "min_radius")),
+     {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "spans": 8, "continuity": 2, "degree": 6}),
+    ("examples/rocker_force.toml", (("follower", "arm"), ("follower", "roller_radius")),
+     {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "spans": 8, "continuity": 2}),
+])
+def test_every_unit_scale_gives_the_same_design(example, lengths, optimize):
+    """The same design in units 1000 times smaller and larger: R0 and its bound in proportion."""
+    got = {}
+    for k in (1e-3, 1.0, 1e3):
+        d = read_toml(example)
+        for table, key in lengths:
+            d[table][key] *= k
+        d["optimize"] = optimize
+        res = solve(design_from_dict(d))
+        o = res.optimization
+        assert res.verified and o["certified"]
+        got[k] = (res.R0 / k, None if o["lower_bound"] is None else o["lower_bound"] / k)
+    for k in (1e-3, 1e3):
+        assert got[k][0] == pytest.approx(got[1.0][0], rel=1e-5)
+        if got[k][1] is not None:
+            assert got[k][1] == pytest.approx(got[1.0][1], rel=1e-4) and got[k][1] <= got[k][0]
