@@ -202,7 +202,7 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
         from optimize.motion.rocker import design_rocker
 
         steps = design_rocker(design, space, caps, spec.objective, name)
-        box = np.tile(space.bounds(), len(free))
+        box = space.bounds(caps)
         return LawDesign(program=steps.program, free=free, objective=spec.objective, solver_value=steps.value,
                          lower_bound=None, centre=(float(steps.centre[0]), float(steps.centre[1])), caps=caps,
                          space=space, box_binds=bool(np.any(np.abs(steps.v) >= 0.999 * box)),
@@ -252,7 +252,7 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
     v = space.project(result.v)
     nc = space.size
     new_program = space.programme(v, name)
-    box = np.tile(space.bounds(), len(free))
+    box = space.bounds(caps)
     binds = bool(np.any(np.abs(v[:nc]) >= 0.999 * box))
     ell = design.scale
     geo = (float(v[nc]) * ell, 0.0) if flat else (float(v[nc]) * ell, float(v[nc + 1]) * ell)

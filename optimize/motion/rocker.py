@@ -121,7 +121,7 @@ def _fit(space: Space, caps: dict[tuple[int, int], float]) -> np.ndarray:
     cost[-1] = 1.0
     a = np.zeros(n)
     a[-1] = 1.0
-    hi = np.concatenate([np.tile(space.bounds(), len(space.free)), [1e6]])
+    hi = np.concatenate([space.bounds(caps), [1e6]])
     lo = -hi
     lo[-1] = 0.0
     enforce = np.zeros(n, bool)
@@ -207,7 +207,7 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
     F[0, io], F[1, io + 1] = 1.0, 1.0
     target = np.zeros(2) if (objective == "L" and L is None) else design.follower.position(0.0)
     scale = 1.0 + float(np.linalg.norm(centre)) / ell
-    hi = np.concatenate([np.tile(space.bounds(), len(space.free)), [100 * scale] * 3])
+    hi = np.concatenate([space.bounds(caps), [100 * scale] * 3])
     lo = -hi
     lo[it] = 0.0
     enforce = np.zeros(n, bool)

@@ -29,10 +29,12 @@ import numpy as np
 from laws import bernstein
 from laws.program import Program
 
-__all__ = ["Space", "PIECES"]
+__all__ = ["Space", "PIECES", "BOX_FACTOR"]
 
 #: Subdivisions of each span for the conservative (every-angle) constraints.
 PIECES = 4
+#: The declared box on a capped derivative's variables, in multiples of its cap (:meth:`Space.bounds`).
+BOX_FACTOR = 4.0
 
 
 @dataclass(frozen=True)
@@ -106,12 +108,31 @@ class Space:
         return (self.program.signed_height(i), float(self.program.phases[i].angle),
                 float(self.program.levels[i]))
 
-    def bounds(self) -> np.ndarray:
-        """Half-widths of the box on one phase's variables (part of the space; a program checks it never binds):
-        ``10**(c + 2)`` on the coefficients of ``S^(c)``, ``10**(r + 2)`` on the values ``S^(r)`` at the knots."""
-        one = np.full(self.block, 10.0 ** (self.continuity + 2))
-        one[self.top + 1:] = 10.0 ** (np.arange(self.continuity) + 2)
-        return np.tile(one, self.spans)
+    def bounds(self, caps: dict[tuple[int, int], float] | None = None) -> np.ndarray:
+        """Half-widths of the box on all the free phases' variables: part of the space, declared (a program
+        checks that its answer is well inside).
+
+        The coefficients of ``S^(c)`` within ``BOX_FACTOR`` times its cap (the conservative program keeps
+        them within the cap itself), else ``10**(c + 2)``; the values ``S^(r)`` at the knots within
+        ``BOX_FACTOR`` times the cap on ``S^(r)``, else ``10**(r + 1)``. The proven lower bound pays for the
+        solver's residual at this box's corners: the tighter the box, the tighter the bound.
+
+        Parameters
+        ----------
+        caps : dict of (int, int) to float, optional
+            ``(k, r) -> cap`` on ``|S_k^(r)|`` (free phase ``k``).
+        """
+        caps = caps or {}
+        c = self.continuity
+        out = []
+        for k in range(len(self.free)):
+            top = caps.get((k, c))
+            one = np.full(self.block, BOX_FACTOR * top if top is not None else 10.0 ** (c + 2))
+            for r in range(c):
+                cap = caps.get((k, r))
+                one[self.top + 1 + r] = BOX_FACTOR * cap if cap is not None else 10.0 ** (r + 1)
+            out.append(np.tile(one, self.spans))
+        return np.concatenate(out) if out else np.zeros(0)
 
     @cached_property
     def _levels(self) -> tuple[np.ndarray, ...]:

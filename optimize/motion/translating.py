@@ -227,7 +227,7 @@ def build(req: Request, form: str) -> ConicProgram:
 
     # -- the box -----------------------------------------------------------------------------------------------
     B = req.bound / ell
-    hi = np.concatenate([np.tile(sp.bounds(), len(sp.free)), np.zeros(ng + 1)])
+    hi = np.concatenate([sp.bounds(req.caps), np.zeros(ng + 1)])
     lo = -hi
     if flat:
         lo[nc], hi[nc] = 0.0, B
