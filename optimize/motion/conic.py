@@ -38,6 +38,9 @@ import numpy as np
 
 __all__ = ["Cone", "ConicProgram", "Solution", "solve", "lower_bound", "SolverFailure"]
 
+#: Clarabel's settings tried in turn when it stops on numerical trouble: its defaults, then without
+#: equilibration, then with more static regularization (each rescued a program the others did not).
+RETRIES: tuple[dict, ...] = ({}, {"equilibrate_enable": False}, {"static_regularization_constant": 1e-7})
 #: Unit roundoff of float64.
 _U = np.finfo(float).eps / 2
 
@@ -130,14 +133,18 @@ def solve(prog: ConicProgram) -> Solution:
         idx = np.flatnonzero(ranged)
         cons += [v[idx] >= prog.lo[ranged], v[idx] <= prog.hi[ranged]]
     problem = cp.Problem(cp.Minimize(prog.cost @ v), cons)
-    try:
-        with warnings.catch_warnings():
-            # "optimal_inaccurate" is kept in the status; no answer rests on the solver's accuracy (the bound is
-            # proven from its multipliers, the laws are checked on themselves), so its warning is not the user's
-            warnings.simplefilter("ignore", UserWarning)
-            problem.solve(solver="CLARABEL")
-    except cp.error.SolverError as exc:
-        raise SolverFailure("solver error") from exc
+    for settings in RETRIES:
+        try:
+            with warnings.catch_warnings():
+                # "optimal_inaccurate" is kept in the status; no answer rests on the solver's accuracy (the bound
+                # is proven from its multipliers, the laws are checked on themselves): its warning is not the user's
+                warnings.simplefilter("ignore", UserWarning)
+                problem.solve(solver="CLARABEL", **settings)
+            break
+        except cp.error.SolverError:
+            continue
+    else:
+        raise SolverFailure("solver error")
     status = problem.status
     if status in ("infeasible", "infeasible_inaccurate"):
         return Solution("infeasible", np.full(prog.n, np.nan), np.inf, np.zeros(0), np.zeros(0))

@@ -20,7 +20,7 @@ from cams.model.follower import Translating
 from cams.model.motiondesign import CAP_KEYS, MotionDesignSpec
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
-from optimize.motion.conic import ConicProgram, lower_bound, solve
+from optimize.motion.conic import ConicProgram, SolverFailure, lower_bound, solve
 from optimize.motion.space import Space
 from optimize.motion.translating import Request, build
 
@@ -190,6 +190,16 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
         The request is infeasible as a whole (the families whose union is
         infeasible are named).
     """
+    try:
+        return _design_laws(design, spec, hold, pieces)
+    except SolverFailure:
+        raise InfeasibleError("optimize", f"the conic solver failed on this space ({spec.spans} spans of degree "
+                              f"{spec.degree}: numerical trouble); try fewer spans or a lower degree") from None
+
+
+def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hold: float | None,
+                 pieces: int | None) -> LawDesign:
+    """:func:`design_laws`, its solver's failures not yet said in words."""
     t0 = time.perf_counter()
     _check_request(design, spec)
     program = design.program
