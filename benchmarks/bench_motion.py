@@ -38,6 +38,16 @@ EXAMPLE = ROOT / "examples" / "translating_force.toml"
 ROCKER = ROOT / "examples" / "rocker_force.toml"
 
 
+def _timed(solve, design, repeats: int) -> tuple[Any, float]:
+    """The solution of ``design`` and the median time of ``repeats`` solves (s)."""
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        res = solve(design)
+        times.append(time.perf_counter() - t0)
+    return res, statistics.median(times)
+
+
 def run(spans: list[int], repeats: int) -> dict[str, Any]:
     import cvxpy  # noqa: F401  (imports outside the timings)
     import scipy.optimize  # noqa: F401
@@ -53,32 +63,22 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
         doc = dict(base)
         doc["optimize"] = {"free": ["rise"], "max_Ca": "poly4567", "max_Cj": "poly4567", "continuity": 3,
                            "degree": 7, "spans": n}
-        design = design_from_dict(doc)
-        times = []
-        for _ in range(repeats):
-            t0 = time.perf_counter()
-            res = solve(design)
-            times.append(time.perf_counter() - t0)
+        res, seconds = _timed(solve, design_from_dict(doc), repeats)
         o = res.optimization
         rows.append({"spans": n, "R0_mm": res.R0, "lower_bound_mm": o["lower_bound"], "gap": o["gap"],
                      "verified": bool(res.verified), "certified": bool(o["certified"]),
-                     "seconds_median": statistics.median(times)})
+                     "seconds_median": seconds})
         print(f"{n:4d} spans: R0 {res.R0:.6f} mm, lower bound {o['lower_bound']:.6f} mm, gap {o['gap']:.2e}, "
-              f"{statistics.median(times):.3f} s", flush=True)
+              f"{seconds:.3f} s", flush=True)
     doc = read_toml(ROCKER)
     doc["optimize"] = {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "continuity": 2, "spans": 10}
-    design = design_from_dict(doc)
-    times = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        res = solve(design)
-        times.append(time.perf_counter() - t0)
+    res, seconds = _timed(solve, design_from_dict(doc), repeats)
     o = res.optimization
     rocker = {"example": ROCKER.name, "original_R0_mm": o["reference"]["R0"], "R0_mm": res.R0,
               "iterations": o["iterations"], "local_measure": o["local_measure"], "verified": bool(res.verified),
-              "seconds_median": statistics.median(times)}
+              "seconds_median": seconds}
     print(f"rocker: R0 {res.R0:.6f} mm (was {o['reference']['R0']:.6f}), {o['iterations']} iterations, local "
-          f"measure {o['local_measure']:.1e}, {statistics.median(times):.3f} s", flush=True)
+          f"measure {o['local_measure']:.1e}, {seconds:.3f} s", flush=True)
     return {"machine": machine(), "example": EXAMPLE.name, "original_R0_mm": original.R0, "rows": rows,
             "rocker": rocker}
 
