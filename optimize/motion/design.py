@@ -271,12 +271,9 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
                      seconds=time.perf_counter() - t0)
 
 
-def _solve_or_explain(prog: ConicProgram, req: Request):
-    """Solve ``prog``; when it is infeasible, find a family of constraints infeasible on its own and say so."""
-    sol = solve(prog)
-    if sol.feasible:
-        return sol
-    # each cap alone with the space's joints
+def _explain_caps(req: Request) -> None:
+    """Raise naming a cap that no law of the space meets on its own (with the joints), proven by solving the
+    space with that cap alone; return when each alone is feasible."""
     names = {r: k for k, r in CAP_KEYS.items()}
     for (k, r), cap in req.caps.items():
         alone = replace(req, caps={(k, r): cap}, limits={}, objective="Ca",
@@ -285,13 +282,19 @@ def _solve_or_explain(prog: ConicProgram, req: Request):
             raise InputError(f"optimize.{names[r]}", f"{cap:g} is below what any law of the space can meet with the "
                              f"joints' conditions (free phase {req.space.free[k]}: the space with this cap alone is "
                              "infeasible); raise it, lower the continuity or free the neighbouring phase")
+
+
+def _solve_or_explain(prog: ConicProgram, req: Request):
+    """Solve ``prog``; when it is infeasible, find a family of constraints infeasible on its own and say so."""
+    sol = solve(prog)
+    if sol.feasible:
+        return sol
+    _explain_caps(req)
     if req.hold is not None or req.centre is not None:
-        raise InfeasibleError("optimize",
-                              "the caps and the pressure-angle limits cannot both hold at the cam size held "
-                              "(each cap alone is feasible); raise a cap, or let the cam grow (objective 'R0')")
-    raise InfeasibleError("optimize",
-                              "the caps together admit no law of the space (each alone is feasible): raise one of "
-                          "them or lower the continuity")
+        raise InfeasibleError("optimize", "the caps and the pressure-angle limits cannot both hold at the cam size "
+                              "held (each cap alone is feasible); raise a cap, or let the cam grow (objective 'R0')")
+    raise InfeasibleError("optimize", "the caps together admit no law of the space (each alone is feasible): raise "
+                          "one of them or lower the continuity")
 
 
 def _bisect_pressure(base: Request, limits: dict[int, float]):
@@ -311,9 +314,9 @@ def _bisect_pressure(base: Request, limits: dict[int, float]):
             feas = sol
             break
         if hi >= top:
-            raise InfeasibleError("optimize",
-                              "no law of the space meets the caps at the cam size held with any pressure angle "
-                                  "below 90 degrees")
+            _explain_caps(base)
+            raise InfeasibleError("optimize", "no law of the space meets the caps at the cam size held with any "
+                                  "pressure angle below 90 degrees (each cap alone is feasible)")
         lo, hi = hi, min(2 * hi, top)
     up_lo = lo
     for _ in range(BISECTION_STEPS):

@@ -128,6 +128,8 @@ def test_round_trip_through_a_spline_table(designed, tmp_path):
     ({"free": [1]}, "optimize.free"),
     ({"spans": 0}, "optimize.spans"),
     ({"colour": 1}, "optimize"),
+    ({"objective": "pressure_angle", "max_Ca": 0.5}, "optimize.max_Ca"),
+    ({"max_Cj": "harmonic"}, "optimize.max_Cj"),
 ])
 def test_bad_requests_name_the_field(optimize, field):
     with pytest.raises(InputError) as e:
