@@ -14,14 +14,14 @@ __all__ = ["register"]
 
 def _check_save(args, design) -> None:
     """Refuse ``--save-design`` before any work: no ``[optimize]`` table, or a path that cannot be written."""
-    from cams.io.files import check_output_path, writes_stdout
+    from cams.io.files import check_output_paths, writes_stdout
     from laws.errors import InputError
 
     if getattr(design, "optimize", None) is None:
         raise InputError("--save-design", "the design has no [optimize] table: no law was designed, nothing to save")
     if writes_stdout(args.save_design):
         raise InputError("--save-design", "standard output carries the report: name a file")
-    check_output_path(args.save_design, "--save-design")
+    check_output_paths([("--save-design", args.save_design)], inputs=[("FILE", args.file)])
 
 
 def _save(args, cam, rep: dict, usable: bool) -> None:

@@ -277,6 +277,11 @@ def test_save_design_refused_without_optimize_or_to_stdout(tmp_path):
     assert not (tmp_path / "x.toml").exists()
     r = _cli("solve", _designed_file(tmp_path), "--save-design", "-")
     assert r.returncode == 2 and "name a file" in r.stderr
+    f = _designed_file(tmp_path)
+    before = f.read_text(encoding="utf-8")
+    r = _cli("solve", f, "--save-design", f)        # the request itself would be lost
+    assert r.returncode == 2 and "--save-design" in r.stderr and r.stderr.count("\n") == 1
+    assert f.read_text(encoding="utf-8") == before
 
 
 def test_failing_design_is_not_saved(tmp_path):
