@@ -31,6 +31,7 @@ __all__ = [
     "derivative",
     "derivative_chain",
     "basis",
+    "coefficient_bound",
     "elevation",
     "subdivision",
     "gram",
@@ -96,6 +97,28 @@ def basis(p: int, t: np.ndarray) -> np.ndarray:
     j = np.arange(p + 1)[None, :]
     c = np.array([comb(p, i) for i in range(p + 1)], float)[None, :]
     return c * t**j * (1 - t) ** (p - j)
+
+
+@lru_cache(maxsize=64)
+def coefficient_bound(p: int) -> float:
+    """A bound ``K`` with ``max_j |b_j| <= K max_{t in [0,1]} |sum_j b_j B_{j,p}(t)|`` for every degree-``p``
+    polynomial.
+
+    The coefficients are ``b = V^-1 y`` for the values ``y`` at any ``p + 1`` distinct points (``V`` the
+    basis there), so ``max |b| <= ||V^-1||_inf max |y|`` and ``max |y|`` is at most the polynomial's largest
+    absolute value on [0, 1]. The points are the Chebyshev extrema mapped to [0, 1] (ends included: ``K = 1``
+    for a line, 3 for a parabola); a little is added for the rounding of the inverse.
+
+    Examples
+    --------
+    >>> round(coefficient_bound(1), 9), round(coefficient_bound(2), 9)
+    (1.0, 3.0)
+    """
+    if p == 0:
+        return 1.0
+    t = (1 - np.cos(np.pi * np.arange(p + 1) / p)) / 2
+    k = float(np.abs(np.linalg.inv(basis(p, t))).sum(axis=1).max())
+    return k * (1 + 1e-12 * (p + 1) ** 2)
 
 
 @lru_cache(maxsize=64)

@@ -215,7 +215,8 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
         box = space.bounds(caps)
         return LawDesign(program=steps.program, free=free, objective=spec.objective, solver_value=steps.value,
                          lower_bound=None, centre=(float(steps.centre[0]), float(steps.centre[1])), caps=caps,
-                         space=space, box_binds=bool(np.any(np.abs(steps.v) >= 0.999 * box)),
+                         space=space, box_binds=bool(np.any((np.abs(steps.v) >= 0.999 * box) &
+                                                            space.declared(caps))),
                          seconds=time.perf_counter() - t0, local_measure=steps.local_measure,
                          iterations=steps.iterations, history=steps.history)
     flat = isinstance(design, FlatFaceDesign)
@@ -263,7 +264,7 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     nc = space.size
     new_program = space.programme(v, name)
     box = space.bounds(caps)
-    binds = bool(np.any(np.abs(v[:nc]) >= 0.999 * box))
+    binds = bool(np.any((np.abs(v[:nc]) >= 0.999 * box) & space.declared(caps)))
     ell = design.scale
     geo = (float(v[nc]) * ell, 0.0) if flat else (float(v[nc]) * ell, float(v[nc + 1]) * ell)
     return LawDesign(program=new_program, free=free, objective=spec.objective, solver_value=float(result.value),

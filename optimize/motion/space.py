@@ -29,12 +29,10 @@ import numpy as np
 from laws import bernstein
 from laws.program import Program
 
-__all__ = ["Space", "PIECES", "BOX_FACTOR"]
+__all__ = ["Space", "PIECES"]
 
 #: Subdivisions of each span for the conservative (every-angle) constraints.
 PIECES = 4
-#: The declared box on a capped derivative's variables, in multiples of its cap (:meth:`Space.bounds`).
-BOX_FACTOR = 4.0
 
 
 @dataclass(frozen=True)
@@ -109,13 +107,15 @@ class Space:
                 float(self.program.levels[i]))
 
     def bounds(self, caps: dict[tuple[int, int], float] | None = None) -> np.ndarray:
-        """Half-widths of the box on all the free phases' variables: part of the space, declared (a program
-        checks that its answer is well inside).
+        """Half-widths of the box on all the free phases' variables.
 
-        The coefficients of ``S^(c)`` within ``BOX_FACTOR`` times its cap (the conservative program keeps
-        them within the cap itself), else ``10**(c + 2)``; the values ``S^(r)`` at the knots within
-        ``BOX_FACTOR`` times the cap on ``S^(r)``, else ``10**(r + 1)``. The proven lower bound pays for the
-        solver's residual at this box's corners: the tighter the box, the tighter the bound.
+        A capped derivative's variables need no box of their own: every law that meets the cap on the whole
+        span has them within it (the coefficients of ``S^(c)`` within :func:`laws.bernstein.coefficient_bound`
+        times its cap; the values ``S^(r)`` at the knots within the cap itself), so the box restricts nothing
+        and the proven lower bound holds for the whole space. An uncapped one's box is declared, part of the
+        space: ``10**(c + 2)`` on ``S^(c)``'s coefficients, ``10**(r + 1)`` on ``S^(r)`` at the knots (a
+        program notes it if its answer ever touches it). The lower bound pays for the solver's residual at the
+        box's corners: the tighter the box, the tighter the bound.
 
         Parameters
         ----------
@@ -124,15 +124,29 @@ class Space:
         """
         caps = caps or {}
         c = self.continuity
+        rounding = 1 + 1e-12
         out = []
         for k in range(len(self.free)):
             top = caps.get((k, c))
-            one = np.full(self.block, BOX_FACTOR * top if top is not None else 10.0 ** (c + 2))
+            one = np.full(self.block, bernstein.coefficient_bound(self.top) * top * rounding if top is not None
+                          else 10.0 ** (c + 2))
             for r in range(c):
                 cap = caps.get((k, r))
-                one[self.top + 1 + r] = BOX_FACTOR * cap if cap is not None else 10.0 ** (r + 1)
+                one[self.top + 1 + r] = cap * rounding if cap is not None else 10.0 ** (r + 1)
             out.append(np.tile(one, self.spans))
         return np.concatenate(out) if out else np.zeros(0)
+
+    def declared(self, caps: dict[tuple[int, int], float] | None = None) -> np.ndarray:
+        """Which variables' box is declared (uncapped), not implied by the caps (:meth:`bounds`)."""
+        caps = caps or {}
+        c = self.continuity
+        out = []
+        for k in range(len(self.free)):
+            one = np.full(self.block, (k, c) not in caps)
+            for r in range(c):
+                one[self.top + 1 + r] = (k, r) not in caps
+            out.append(np.tile(one, self.spans))
+        return np.concatenate(out) if out else np.zeros(0, bool)
 
     @cached_property
     def _levels(self) -> tuple[np.ndarray, ...]:

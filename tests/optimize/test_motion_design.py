@@ -352,3 +352,17 @@ def test_every_unit_scale_gives_the_same_design(example, lengths, optimize):
         assert got[k][0] == pytest.approx(got[1.0][0], rel=1e-5)
         if got[k][1] is not None:
             assert got[k][1] == pytest.approx(got[1.0][1], rel=1e-4) and got[k][1] <= got[k][0]
+
+
+def test_the_declared_box_is_not_touched(designed):
+    """Ca and Cj capped, continuity 3: the jerk's and acceleration's variables need no box of their own (the
+    caps imply one); S and S' at the knots have a declared one, which the answer stays well inside."""
+    from optimize.motion.space import Space
+
+    o = designed.optimization
+    assert not any("bound on their coefficients" in n for n in o["notes"])
+    law = designed.design.program.law_of(0)
+    S = law.evaluate(np.array(law.breaks))
+    sp = Space(designed.design.program, (0,), o["degree"], o["spans"], o["continuity"])
+    box = sp.bounds({(0, 2): 7.513188404399298, (0, 3): 52.5})
+    assert np.max(np.abs(S[0])) < 0.2 * box[sp.top + 1] and np.max(np.abs(S[1])) < 0.1 * box[sp.top + 2]
