@@ -162,7 +162,9 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         hold = float(reference.R0)
     ld = design_laws(base, spec, hold=hold)
     new = replace(base, program=ld.program)
-    if not sizes and hold is not None:
+    # the size held: a flat face at that R0, a translating roller at the program's centre; a rocker's designed
+    # laws are sized by the exact method (their least R0, within the size held by construction)
+    if not sizes and hold is not None and not isinstance(new.follower, Rocker):
         if isinstance(new, FlatFaceDesign):
             new = replace(new, base_radius=hold)
         else:

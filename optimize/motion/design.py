@@ -139,9 +139,13 @@ def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -
         if flat:
             raise InputError("optimize", "a flat-faced rocker's motion design is not available in this release: "
                              "rocker rollers and translating followers")
-        if spec.objective not in ("R0", "L"):
-            raise InputError("optimize.objective", f"{spec.objective!r} is not available for a rocker in this "
-                             "release: its motion design minimizes 'R0' or 'L'")
+        if spec.objective == "pressure_angle":
+            raise InputError("optimize.objective", "'pressure_angle' is not available for a rocker in this "
+                             "release: its motion design minimizes 'R0', 'L', 'Ca', 'Cj', 'jerk_squared' or "
+                             "'snap_squared'")
+        if spec.objective not in ("R0", "L") and isinstance(design, CamDesign) and design.chosen:
+            raise InputError("optimize.objective", f"{spec.objective!r} holds the cam's size: for a rocker, the "
+                             "original laws' least R0, not a chosen cam (remove [cam] base_radius or centre)")
     elif spec.objective == "L":
         raise InputError("optimize.objective", "'L' (the centre distance) applies to rocker followers; a "
                          "translating follower's cam is sized by 'R0'")
@@ -211,7 +215,14 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     if isinstance(design, CamDesign) and design.follower.kind == "rocker":
         from optimize.motion.rocker import design_rocker
 
-        steps = design_rocker(design, space, caps, spec.objective, name)
+        if spec.objective in ("R0", "L"):
+            steps = design_rocker(design, space, caps, spec.objective, name)
+        else:
+            from optimize.motion.rocker import design_rocker_held
+
+            if hold is None:
+                raise ValueError("an objective other than R0 or L needs the size held")
+            steps = design_rocker_held(design, space, caps, spec.objective, float(hold), name)
         box = space.bounds(caps)
         return LawDesign(program=steps.program, free=free, objective=spec.objective, solver_value=steps.value,
                          lower_bound=None, centre=(float(steps.centre[0]), float(steps.centre[1])), caps=caps,

@@ -37,7 +37,7 @@ from optimize.motion.space import Space
 from optimize.motion.translating import SAMPLES_PER_SPAN, TIGHTEN
 from optimize.zone import side_terms, wedges
 
-__all__ = ["RockerSteps", "design_rocker", "MAX_ITERATIONS", "TRUST0"]
+__all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "MAX_ITERATIONS", "TRUST0"]
 
 #: Iterations at most.
 MAX_ITERATIONS = 40
@@ -144,11 +144,13 @@ def _cap_rows(space: Space, caps: dict[tuple[int, int], float], n: int) -> tuple
 
 
 def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: np.ndarray, trust: float,
-                  objective: str) -> ConicProgram:
+                  objective: str, hold: float | None = None) -> ConicProgram:
     """The linearized program at ``(v, centre)`` with trust radius ``trust`` (module notes, step 2).
 
     Lengths in units of the design's scale (the arm): the centre's variables are ``O / scale`` and the value
-    ``R0 / scale`` or ``L / scale``, so the program does not depend on the design's unit.
+    ``R0 / scale`` or ``L / scale``, so the program does not depend on the design's unit. For the objectives
+    that hold the cam's size (``"Ca"``, ``"Cj"``, ``"jerk_squared"``, ``"snap_squared"``), ``hold`` is the R0
+    the centre must stay within and the value is :func:`_held_value`'s.
     """
     ell = design.scale
     nc = space.size
@@ -205,15 +207,53 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
     a[it] = 1.0
     F = np.zeros((2, n))
     F[0, io], F[1, io + 1] = 1.0, 1.0
-    target = np.zeros(2) if (objective == "L" and L is None) else design.follower.position(0.0)
+    A0 = design.follower.position(0.0)
+    if objective in ("R0", "L"):
+        target = np.zeros(2) if (objective == "L" and L is None) else A0
+        cones: tuple[Cone, ...] = (Cone(a, 0.0, F, -target / ell),)
+    else:
+        if hold is None:
+            raise ValueError(f"objective {objective!r} needs the size held")
+        cones = (Cone(np.zeros(n), hold / ell, F, -A0 / ell), *_held_objective(space, n, it, objective, G, h))
     scale = 1.0 + float(np.linalg.norm(centre)) / ell
-    hi = np.concatenate([space.bounds(caps), [100 * scale] * 3])
+    top = 100 * scale if objective in ("R0", "L") else 1e6
+    hi = np.concatenate([space.bounds(caps), [100 * scale] * 2, [top]])
     lo = -hi
     lo[it] = 0.0
     enforce = np.zeros(n, bool)
     enforce[nc:] = True
-    return ConicProgram(cost, np.vstack(G), np.concatenate(h), A, b, lo, hi,
-                        (Cone(a, 0.0, F, -target / ell),), enforce)
+    return ConicProgram(cost, np.vstack(G), np.concatenate(h), A, b, lo, hi, cones, enforce)
+
+
+def _held_objective(space: Space, n: int, it: int, objective: str, G: list, h: list) -> tuple[Cone, ...]:
+    """The objective's epigraph on ``t`` (variable ``it``): rows appended to ``G, h`` (a peak), or a cone (an
+    integral's square root)."""
+    if objective in ("Ca", "Cj"):
+        r = 2 if objective == "Ca" else 3
+        for k in range(len(space.free)):
+            rows = space.rows(k, r, n)
+            rows = np.vstack([rows, -rows])
+            rows[:, it] = -1.0
+            G.append(rows)
+            h.append(np.zeros(rows.shape[0]))
+        return ()
+    r = 3 if objective == "jerk_squared" else 4
+    F = np.vstack([space.integral_factor(k, r, n) for k in range(len(space.free))])
+    a = np.zeros(n)
+    a[it] = 1.0
+    return (Cone(a, 0.0, F, np.zeros(F.shape[0])),)
+
+
+def _held_value(space: Space, v: np.ndarray, objective: str) -> float:
+    """The value the held programs minimize at the laws ``v``: the largest Bernstein coefficient of the second
+    or third derivative's magnitude on the pieces (a bound of its peak at every u), or the root of the integral
+    of the third or fourth derivative's square."""
+    n = space.size
+    if objective in ("Ca", "Cj"):
+        r = 2 if objective == "Ca" else 3
+        return max(float(np.max(np.abs(space.rows(k, r, n) @ v))) for k in range(len(space.free)))
+    r = 3 if objective == "jerk_squared" else 4
+    return float(np.linalg.norm(np.vstack([space.integral_factor(k, r, n) for k in range(len(space.free))]) @ v))
 
 
 def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
@@ -268,3 +308,63 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
             trust /= 4
     return RockerSteps(v=v, program=program, value=value, centre=centre, iterations=iterations,
                        accepted=accepted, trust=trust, local_measure=float(measure), history=tuple(history))
+
+
+def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
+                       hold: float, name: str) -> RockerSteps:
+    """The laws of least ``objective`` (``"Ca"``, ``"Cj"``, ``"jerk_squared"``, ``"snap_squared"``) whose cam
+    has an R0 at most ``hold`` (length): the cam's size held, its centre free to move within it.
+
+    First the least R0 (:func:`design_rocker`), which must come within ``hold``; then the same sequential
+    convex programming on the objective, each step's laws sized by the exact method and kept only when that R0
+    is within ``hold`` and the objective is smaller. ``value`` is the objective's (:func:`_held_value`).
+
+    Raises
+    ------
+    InfeasibleError
+        No law of the space found keeps the cam within ``hold`` under the caps.
+    """
+    first = design_rocker(design, space, caps, "R0", name)
+    if first.value > hold * (1 + 1e-12):
+        raise InfeasibleError("optimize", f"no law of the space found keeps the cam within the size held (R0 <= "
+                              f"{hold:.6g} mm; the least found is {first.value:.6g} mm): raise a cap or minimize R0")
+    if not space.free:
+        return first
+    v, centre, program = first.v, first.centre, first.program
+    value = _held_value(space, v, objective)
+    caps_rows = _cap_rows(space, caps, space.size)
+    history = [value]
+    trust, iterations, accepted, measure = TRUST0, 0, 0, np.inf
+    while iterations < MAX_ITERATIONS and trust >= TRUST_MIN:
+        iterations += 1
+        sol = solve(_step_program(design, space, caps, v, centre, trust, objective, hold))
+        if not sol.feasible:
+            trust /= 4
+            continue
+        predicted = value - sol.value
+        measure = max(predicted, 0.0) / max(value, 1e-300)
+        if measure < 1e-9:
+            break
+        v_new = space.project(sol.v[:space.size])
+        if caps_rows[0].shape[0] and np.any(caps_rows[0] @ v_new > caps_rows[1] / (1 - TIGHTEN)):
+            trust /= 4
+            continue
+        program_new = space.programme(v_new, name)
+        try:
+            R0_new, centre_new = _sized(design, program_new, "R0")
+        except InfeasibleError:
+            trust /= 4
+            continue
+        value_new = _held_value(space, v_new, objective)
+        if R0_new <= hold and value_new < value:
+            ratio = (value - value_new) / predicted
+            v, program, value, centre = v_new, program_new, value_new, centre_new
+            history.append(value)
+            accepted += 1
+            if ratio > 0.75:
+                trust *= 2
+        else:
+            trust /= 4
+    return RockerSteps(v=v, program=program, value=value, centre=centre, iterations=first.iterations + iterations,
+                       accepted=first.accepted + accepted, trust=trust, local_measure=float(measure),
+                       history=tuple(history))

@@ -87,13 +87,33 @@ def test_rocker_least_centre_distance_form_closure():
     assert [p["phase"] for p in o["phases"]] == [0, 2]
 
 
-@pytest.mark.parametrize(("optimize", "field"), [
-    ({"objective": "Ca"}, "optimize.objective"),
-    ({"objective": "pressure_angle"}, "optimize.objective"),
+@pytest.mark.parametrize(("optimize", "cam", "field"), [
+    ({"objective": "Ca"}, {"centre": [134.0, 9.0]}, "optimize.objective"),
+    ({"objective": "pressure_angle"}, {}, "optimize.objective"),
 ])
-def test_rocker_refuses_what_it_does_not_design(optimize, field):
+def test_rocker_refuses_what_it_does_not_design(optimize, cam, field):
     doc = read_toml(FORCE)
     doc["optimize"] = optimize
+    doc["cam"].update(cam)
     with pytest.raises(InputError) as e:
         solve(design_from_dict(doc))
     assert e.value.field == field
+
+
+@pytest.mark.parametrize("objective", ["Cj", "jerk_squared"])
+def test_rocker_smoothest_law_at_the_original_size(objective):
+    """The size held: the designed law's cam is no larger than the cycloidal law's least R0 (the independent
+    check verifies it), and its jerk peak (dense, 200,001 points) or squared jerk (Gauss-Legendre on the
+    original law: 16 pi^4 / 2 for the cycloid) is below the original's."""
+    doc = read_toml(FORCE)
+    doc["optimize"] = {"objective": objective, "max_Ca": "cycloidal", "continuity": 2, "spans": 6}
+    res = solve(design_from_dict(doc))
+    o = res.optimization
+    assert res.verified and o["certified"] and res.R0 <= o["held_R0"] * (1 + 1e-12)
+    S = res.design.program.law_of(0).evaluate(np.linspace(0, 1, 200_001))
+    if objective == "Cj":
+        assert o["value"] == pytest.approx(np.max(np.abs(S[3])), rel=1e-6) and o["value"] < 4 * np.pi**2
+    else:
+        assert o["value"] == pytest.approx(np.trapezoid(S[3] ** 2, dx=1 / 200_000), rel=1e-4)
+        assert o["value"] < 8 * np.pi**4          # the cycloid's: integral of (4 pi^2 cos 2 pi u)^2
+    assert np.max(np.abs(S[2])) <= 2 * np.pi * (1 + 1e-9)
