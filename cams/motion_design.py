@@ -162,26 +162,34 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         hold = float(reference.R0)
     ld = design_laws(base, spec, hold=hold)
     new = replace(base, program=ld.program)
-    # the size held: a flat face at that R0, a translating roller at the program's centre; a rocker's designed
-    # laws are sized by the exact method (their least R0, within the size held by construction)
-    if not sizes and hold is not None and not isinstance(new.follower, Rocker):
-        if isinstance(new, FlatFaceDesign):
-            new = replace(new, base_radius=hold)
-        else:
-            x, d = ld.centre
-            f = new.follower
-            if isinstance(f, Translating) and f.offset is not None:
-                f = replace(f, offset=None)
-            new = replace(new, follower=f, centre=(x, -d), base_radius=None)
+    # the size held: the least pressure angle's cam sits at the program's centre (its margin keeps the fixed
+    # phases' limits between the samples); the other objectives' laws are sized by the exact method, their least
+    # R0 (within the size held up to the programs' sampling of the fixed phases: said if not)
+    if spec.objective == "pressure_angle" and hold is not None and isinstance(new, CamDesign):
+        x, d = ld.centre
+        f = new.follower
+        if isinstance(f, Translating) and f.offset is not None:
+            f = replace(f, offset=None)
+        new = replace(new, follower=f, centre=(x, -d), base_radius=None)
     sol = solve_fixed(new)
     notes_first: list[str] = []
+    if not sizes and hold is not None and spec.objective != "pressure_angle" and sol.R0 > hold * (1 + 1e-9):
+        notes_first.append(f"the designed laws' least R0, {sol.R0:.6g} mm, exceeds the size held, {hold:.6g} mm "
+                           "(the program saw the fixed phases at samples)")
+    floor = None
     if passes is not None and spec.objective == "R0" and not isinstance(new, FlatFaceDesign) and not passes(sol):
         better = _passing(new, sol, solve_fixed, passes)
-        if better is not None:
+        if reference is not None and passes(reference) and (better is None or reference.R0 < better.R0):
+            notes_first.append(f"the optimum, R0 = {sol.R0:.6g} mm, fails the profile's checks and the designed "
+                               f"laws pass only at a larger cam: the original laws' cam (R0 = {reference.R0:.6g} "
+                               "mm) is smaller and passes, and is returned")
+            sol = reference
+            ld = replace(ld, program=base.program)
+        elif better is not None:
             notes_first.append(f"the optimum, R0 = {sol.R0:.6g} mm, fails the profile's checks (undercut, sharp "
                                f"points, the bore...): the designed laws' smallest cam that passes, R0 = "
                                f"{better.R0:.6g} mm, is returned (a floor on R0)")
-            sol = better
+            sol, floor = better, float(better.R0)
 
     # -- the value of the checked design, computed on the laws themselves ----------------------------------------
     obj = spec.objective
@@ -210,8 +218,8 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     gap = (value - ld.lower_bound) / abs(value) if ld.lower_bound is not None and value else None
     if ld.box_binds:
         notes.append("the laws touch the space's bound on their coefficients: the lower bound holds within it")
-    certified = bool(caps_ok and (getattr(sol, "certified", None) is not False) and (gap is not None or
-                                                                                   not proven))
+    certified = bool(caps_ok and sol.verified and (getattr(sol, "certified", None) is not False)
+                     and (gap is not None or not proven))
     original = {i: base.program.law_of(i) for i in ld.free}
     phases = []
     for i in ld.free:
@@ -238,6 +246,7 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
             "centre": {"x": float(reference.centre[0]), "y": float(reference.centre[1])},
         },
         "held_R0": hold,
+        "floor": floor,
         "method": "conic" if proven else "sequential convex programming",
         "local_measure": ld.local_measure,
         "iterations": ld.iterations,

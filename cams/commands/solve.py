@@ -19,9 +19,9 @@ def _check_save(args, design) -> None:
 
     if getattr(design, "optimize", None) is None:
         raise InputError("--save-design", "the design has no [optimize] table: no law was designed, nothing to save")
+    check_output_paths([("--save-design", args.save_design)], inputs=[("FILE", args.file)])
     if writes_stdout(args.save_design):
         raise InputError("--save-design", "standard output carries the report: name a file")
-    check_output_paths([("--save-design", args.save_design)], inputs=[("FILE", args.file)])
 
 
 def _save(args, cam, rep: dict, usable: bool) -> None:
@@ -38,8 +38,10 @@ def _save(args, cam, rep: dict, usable: bool) -> None:
     from cams.io.files import atomic_write
     from cams.io.tomlwrite import dumps
 
-    doc = designed_document(read_toml(args.file), cam.design.program, tuple(cam.solution.optimization["free"]))
-    text = f"# {cam.design.name}: the laws designed by cams solve from {Path(args.file).name}\n" + dumps(doc)
+    o = cam.solution.optimization
+    doc = designed_document(read_toml(args.file), cam.design.program, tuple(o["free"]), floor=o.get("floor"))
+    source = Path(args.file).name.replace("\n", " ").replace("\r", " ")
+    text = f"# The laws designed by cams solve from {source}\n" + dumps(doc)
     path = atomic_write(args.save_design, "--save-design", lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
     rep["saved_design"] = str(path)
 

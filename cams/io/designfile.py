@@ -540,7 +540,7 @@ def load_design(path: str | Path) -> CamDesign | FlatFaceDesign:
     return design_from_dict(read_toml(path))
 
 
-def designed_document(doc: dict, program: Program, free: tuple[int, ...]) -> dict:
+def designed_document(doc: dict, program: Program, free: tuple[int, ...], *, floor: float | None = None) -> dict:
     """A design file's document with the free phases' laws replaced by ``program``'s, and no ``[optimize]``.
 
     Parameters
@@ -552,6 +552,8 @@ def designed_document(doc: dict, program: Program, free: tuple[int, ...]) -> dic
         :class:`laws.spline.SplineLaw` (written as law tables, exactly).
     free : tuple of int
         The phases whose law is replaced.
+    floor : float or None
+        ``limits.min_base_radius`` to write (length): the floor that made the designed cam pass its checks.
 
     Returns
     -------
@@ -567,4 +569,6 @@ def designed_document(doc: dict, program: Program, free: tuple[int, ...]) -> dic
     out.pop("optimize", None)
     for i in free:
         out["motion"][i]["law"] = law_to_table(program.law_of(i))
+    if floor is not None:
+        out.setdefault("limits", {})["min_base_radius"] = float(floor)
     return out

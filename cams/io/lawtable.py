@@ -88,14 +88,33 @@ def law_from_table(table: dict, field: str) -> Law:
         raise InputError(f"{field}.name", f"must be a non-empty string, got {show_value(name)}")
     try:
         if kind == "spline":
-            return _spline(table, field, name)
-        start = _numbers(table.get("start", []), f"{field}.start", _BOUNDARY, most=3)
-        end = _numbers(table.get("end", []), f"{field}.end", _BOUNDARY, most=3)
-        return PolynomialLaw.from_boundary(start=start, end=end, name=name)
+            law: Law = _spline(table, field, name)
+        else:
+            start = _numbers(table.get("start", []), f"{field}.start", _BOUNDARY, most=3)
+            end = _numbers(table.get("end", []), f"{field}.end", _BOUNDARY, most=3)
+            law = PolynomialLaw.from_boundary(start=start, end=end, name=name)
     except InputError as e:
         if e.field.startswith(field):
             raise
         raise _renamed(e, field) from None
+    _check_range(law, field)
+    return law
+
+
+#: Points at which a law table's S is checked to stay within [0, 1], and what it may leave by (normalized: 30 nm
+#: on a 30 mm stroke; the motion design keeps its laws within half of it).
+RANGE_POINTS = 4001
+RANGE_TOL = 1e-6
+
+
+def _check_range(law: Law, field: str) -> None:
+    """Refuse a law whose S leaves [0, 1] (the follower would leave its stroke or swing): at RANGE_POINTS."""
+    u = np.linspace(0.0, 1.0, RANGE_POINTS)
+    S = law.evaluate(u)[0]
+    j = int(np.argmax(np.maximum(S - 1.0, -S)))
+    if S[j] > 1 + RANGE_TOL or S[j] < -RANGE_TOL:
+        raise InputError(field, f"S leaves [0, 1]: S = {S[j]:.6g} at u = {u[j]:.4g}; a normalized rise keeps the "
+                         "follower within its stroke (or swing)")
 
 
 def _spline(table: dict, field: str, name: str) -> SplineLaw:

@@ -38,6 +38,9 @@ DEFAULT_SPANS = 20
 DEFAULT_CONTINUITY = 3
 MAX_DEGREE = 11
 MAX_SPANS = 400
+#: The largest cap: a normalized peak beyond it is no cap a cam could meet with a roller (the library's laws
+#: have peaks below 100), and would only spoil the programs' scaling.
+MAX_CAP = 1e6
 
 #: A cap: a number (normalized, > 0) or a library law's name (that law's peak), or None (no cap).
 Cap = float | str | None
@@ -114,9 +117,9 @@ class MotionDesignSpec:
                     if c not in LAWS:
                         raise InputError(f"optimize.{key}", f"unknown law {c!r}: a cap is a number > 0 or one of "
                                          f"{', '.join(LAWS)}")
-                elif isinstance(c, bool) or not isinstance(c, (int, float)) or not (0 < c < 1e12):
-                    raise InputError(f"optimize.{key}", f"a cap must be a number > 0 (normalized) or a law's name, "
-                                     f"got {show_value(c)}")
+                elif isinstance(c, bool) or not isinstance(c, (int, float)) or not (0 < c <= MAX_CAP):
+                    raise InputError(f"optimize.{key}", f"a cap must be a number in (0, {MAX_CAP:g}] (normalized) or "
+                                     f"a law's name, got {show_value(c)}")
 
     def cap(self, key: str, k: int) -> Cap:
         """The cap ``key`` (``"max_Ca"``...) of the ``k``-th free phase (one cap given: it holds for each)."""

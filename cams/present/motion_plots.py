@@ -42,8 +42,11 @@ def _laws_panel(fig, grid, given, designed, free) -> None:
         ax.tick_params(labelsize=7)
         if k >= 2:
             ax.set_xlabel("u (normalized phase)", fontsize=8)
-        if k == 0:
+        if k == 0 and free:
             ax.legend(fontsize=7, loc="upper left")
+        elif k == 0:
+            ax.text(0.5, 0.5, "no free phase: the laws as given", ha="center", va="center", fontsize=8,
+                    transform=ax.transAxes)
 
 
 def _pressure_panel(ax, given, designed, centres, n: int = 721) -> None:

@@ -102,6 +102,8 @@ def free_phases(spec: MotionDesignSpec, program: Program) -> tuple[int, ...]:
                                  f"{len(kinds) - 1}")
             if kinds[v] == "dwell":
                 raise InputError("optimize.free", f"phase {v} is a dwell: only a rise or a return has a law to design")
+            if v in out:
+                raise InputError("optimize.free", f"names phase {v} twice: give each free phase once")
             out.add(v)
     return tuple(sorted(out))
 
@@ -156,6 +158,17 @@ def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -
     if r is not None and spec.degree < r:
         raise InputError("optimize.degree", f"{spec.objective!r} integrates derivative {r}: the degree must be at "
                          f"least {r}")
+    need = {"Cj": 2, "jerk_squared": 2, "snap_squared": 3}.get(spec.objective, 0)
+    if any(c is not None for c in spec.max_Cj):
+        need = max(need, 2)
+    if spec.continuity < need:
+        what = "a cap on Cj" if spec.objective not in ("Cj", "jerk_squared", "snap_squared") else repr(spec.objective)
+        raise InputError("optimize.continuity", f"{what} needs continuity at least {need}: with {spec.continuity} "
+                         f"the derivative {need} jumps at the knots and its peak is infinite")
+    if spec.objective not in ("R0", "L") and getattr(design.limits if isinstance(design, CamDesign) else design,
+                                                     "min_base_radius", None) is not None:
+        raise InputError("limits.min_base_radius", f"[optimize] objective {spec.objective!r} holds the cam's size: "
+                         "a floor on R0 has nothing to size; remove one of them")
     if flat and spec.continuity < 2:
         raise InputError("optimize.continuity", "a flat face's profile curvature follows s'': it must be "
                          "continuous, continuity at least 2")
@@ -208,6 +221,9 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     _check_request(design, spec)
     program = design.program
     free = free_phases(spec, program)
+    if not free and spec.objective in ("Ca", "Cj", "jerk_squared", "snap_squared"):
+        raise InputError("optimize.free", f"objective {spec.objective!r} is a property of the designed laws: name "
+                         "the free phases (free = [] designs none)")
     caps = resolve_caps(spec, free)
     kw = {} if pieces is None else {"pieces": pieces}
     space = Space(program, free, spec.degree, spec.spans, spec.continuity, **kw)
@@ -302,11 +318,17 @@ def _solve_or_explain(prog: ConicProgram, req: Request):
     if sol.feasible:
         return sol
     _explain_caps(req)
+    limit = "the convexity limit (limits.min_radius)" if req.follower == "flat" else "the pressure-angle limits"
+    field = "limits.min_radius" if req.follower == "flat" else "optimize"
+    with_caps = " with the caps (each cap alone is feasible)" if req.caps else ""
     if req.hold is not None or req.centre is not None:
-        raise InfeasibleError("optimize", "the caps and the pressure-angle limits cannot both hold at the cam size "
-                              "held (each cap alone is feasible); raise a cap, or let the cam grow (objective 'R0')")
-    raise InfeasibleError("optimize", "the caps together admit no law of the space (each alone is feasible): raise "
-                          "one of them or lower the continuity")
+        raise InfeasibleError(field, f"{limit} admit no law of the space at the cam size held{with_caps}; "
+                              "let the cam grow (objective 'R0') or choose a larger cam")
+    if req.caps and not req.limits and req.follower != "flat":
+        raise InfeasibleError("optimize", "the caps together admit no law of the space (each alone is feasible): "
+                              "raise one of them or lower the continuity")
+    raise InfeasibleError(field, f"{limit} admit no law of the space with the joints' conditions{with_caps}: "
+                          "lengthen the free phases, lower the continuity, or raise a cap")
 
 
 def _bisect_pressure(base: Request, limits: dict[int, float]):

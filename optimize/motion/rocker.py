@@ -34,7 +34,7 @@ from laws.errors import InfeasibleError
 from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram, solve
 from optimize.motion.space import Space
-from optimize.motion.translating import SAMPLES_PER_SPAN, TIGHTEN
+from optimize.motion.translating import S_MARGIN, SAMPLES_PER_SPAN, TIGHTEN
 from optimize.zone import side_terms, wedges
 
 __all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "MAX_ITERATIONS", "TRUST0"]
@@ -134,12 +134,17 @@ def _fit(space: Space, caps: dict[tuple[int, int], float]) -> np.ndarray:
 
 
 def _cap_rows(space: Space, caps: dict[tuple[int, int], float], n: int) -> tuple[np.ndarray, np.ndarray]:
-    """The caps on every piece's Bernstein coefficients (tightened by TIGHTEN), over ``n`` variables."""
+    """The caps on every piece's Bernstein coefficients (tightened by TIGHTEN), and S within [0, 1] (the follower
+    within its swing), over ``n`` variables."""
     G, h = [np.zeros((0, n))], [np.zeros(0)]
     for (k, r), cap in caps.items():
         rows = space.rows(k, r, n)
         G.append(np.vstack([rows, -rows]))
         h.append(np.full(2 * rows.shape[0], cap * (1 - TIGHTEN)))
+    for k in range(len(space.free)):
+        rows = space.rows(k, 0, n)
+        G.append(np.vstack([rows, -rows]))
+        h.append(np.concatenate([np.full(rows.shape[0], 1 + S_MARGIN), np.full(rows.shape[0], S_MARGIN)]))
     return np.vstack(G), np.concatenate(h)
 
 
@@ -288,7 +293,8 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
         if measure < 1e-9:
             break
         v_new = space.project(sol.v[:space.size])
-        if caps_rows[0].shape[0] and np.any(caps_rows[0][:, :space.size] @ v_new > caps_rows[1] / (1 - TIGHTEN)):
+        if caps_rows[0].shape[0] and np.any(caps_rows[0][:, :space.size] @ v_new > caps_rows[1] / (1 - TIGHTEN)
+                                            + 1e-12):
             trust /= 4              # the solver left a cap exceeded: not a step to take
             continue
         program_new = space.programme(v_new, name)
@@ -346,7 +352,7 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
         if measure < 1e-9:
             break
         v_new = space.project(sol.v[:space.size])
-        if caps_rows[0].shape[0] and np.any(caps_rows[0] @ v_new > caps_rows[1] / (1 - TIGHTEN)):
+        if caps_rows[0].shape[0] and np.any(caps_rows[0] @ v_new > caps_rows[1] / (1 - TIGHTEN) + 1e-12):
             trust /= 4
             continue
         program_new = space.programme(v_new, name)

@@ -35,7 +35,7 @@ from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram
 from optimize.motion.space import Space
 
-__all__ = ["Request", "build", "SAMPLES_PER_SPAN", "FIXED_SAMPLES", "TIGHTEN"]
+__all__ = ["Request", "build", "SAMPLES_PER_SPAN", "FIXED_SAMPLES", "TIGHTEN", "S_MARGIN"]
 #: Sample points per span of the relaxation (ends included).
 SAMPLES_PER_SPAN = 17
 #: Sample points of a fixed (not free) constrained phase.
@@ -44,6 +44,9 @@ FIXED_SAMPLES = 400
 #: (Clarabel's default, 1e-8 on the scaled rows) and for the projection onto the joints' equalities; the caps
 #: are then checked on the laws themselves.
 TIGHTEN = 1e-7
+#: How far the normalized S may leave [0, 1] (the follower its stroke): a margin that keeps the bounds of a law
+#: that touches 0 or 1 over a whole span (every library law does at its ends) from binding degenerately.
+S_MARGIN = 5e-7
 
 
 @dataclass(frozen=True)
@@ -182,10 +185,14 @@ def build(req: Request, form: str) -> ConicProgram:
                     rows[:, nc + 1] = -T
                     add(rows, T * s - sign * ds, pressure=True)
 
-    # -- caps on the free phases' normalized derivatives -----------------------------------------------------
+    # -- caps on the free phases' normalized derivatives; S within [0, 1] (the follower within its stroke) -------
     for (k, r), cap in req.caps.items():
         rows = sp.rows(k, r, n, samples=samples)
         add(np.vstack([rows, -rows]), np.full(2 * rows.shape[0], cap * tight))
+    for k in range(len(sp.free)):
+        rows = sp.rows(k, 0, n, samples=samples)
+        m = rows.shape[0]
+        add(np.vstack([rows, -rows]), np.concatenate([np.full(m, 1 + S_MARGIN), np.full(m, S_MARGIN)]))
 
     # -- the objective ---------------------------------------------------------------------------------------
     obj = req.objective
@@ -223,7 +230,7 @@ def build(req: Request, form: str) -> ConicProgram:
     if req.hold is not None and not flat:
         F = np.zeros((2, n))
         F[0, nc], F[1, nc + 1] = 1.0, 1.0
-        cones.append(Cone(np.zeros(n), float(req.hold) / ell, F, np.zeros(2)))
+        cones.append(Cone(np.zeros(n), float(req.hold) / ell * tight, F, np.zeros(2)))  # within it after rounding
 
     # -- the box -----------------------------------------------------------------------------------------------
     B = req.bound / ell

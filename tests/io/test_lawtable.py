@@ -104,7 +104,7 @@ def test_a_law_table_on_the_return_and_the_name_in_the_program():
 # --------------------------------------------------------------------------- written and read back
 def test_spline_round_trips_bit_for_bit(tmp_path):
     rng = np.random.default_rng(3)
-    rows = rng.uniform(-0.3, 1.3, size=(3, 8))
+    rows = rng.uniform(0.0, 1.0, size=(3, 8))  # within [0, 1]: S stays there (a law table must; convex hull)
     rows[0, 0], rows[-1, -1] = 0.0, 1.0
     rows[1, 0], rows[2, 0] = rows[0, -1], rows[1, -1]
     law = SplineLaw((0.0, 0.1 + 0.2, 2 / 3, 1.0), rows.tolist(), name='odd "name" \\ é')
