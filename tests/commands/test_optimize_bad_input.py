@@ -5,7 +5,8 @@ traceback, a NaN or inf printed as an answer, a hang or a silently wrong answer)
 exits 1; "wrote X" means X holds the data. Each test runs the command line as a user does
 (``python -m cams.cli``) on a copy of an example with a snippet added.
 
-Some tests here describe bugs found while attacking the feature: they fail until the bug is fixed.
+The ``test_bug_...`` tests keep the bugs a bad-input sweep of the feature found (each docstring says what
+happened); all are fixed, and these tests hold them so.
 """
 
 from __future__ import annotations
