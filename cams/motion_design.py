@@ -18,7 +18,9 @@ The value is the checked design's; ``gap = (value - lower_bound) / |value|``
 is the certificate: no law of the space does better than ``lower_bound``. A
 rocker's problem is not convex (:mod:`optimize.motion.rocker`): its design is
 checked the same way, and reported with its local-optimality measure, no bound.
-``certified`` says every check passed and, where a bound is proven, that it was.
+``certified`` is the optimum's certificate: the cam verified (its pressure angle at every cam angle, by
+the independent check), the caps met by the laws themselves, and, where a bound is proven, the bound. Whether
+the cam can be built and used (profile, bore, ``[dynamics]``) is the commands' one rule, ``usable``.
 """
 
 from __future__ import annotations
