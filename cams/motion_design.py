@@ -179,7 +179,8 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         notes_first.append(f"the designed laws' least R0, {sol.R0:.6g} mm, exceeds the size held, {hold:.6g} mm "
                            "(the program saw the fixed phases at samples)")
     floor = None
-    if passes is not None and spec.objective == "R0" and not isinstance(new, FlatFaceDesign) and not passes(sol):
+    if passes is not None and spec.objective == "R0" and ld.free and not isinstance(new, FlatFaceDesign) \
+            and not passes(sol):
         better = _passing(new, sol, solve_fixed, passes)
         if reference is not None and passes(reference) and (better is None or reference.R0 < better.R0):
             notes_first.append(f"the optimum, R0 = {sol.R0:.6g} mm, fails the profile's checks and the designed "

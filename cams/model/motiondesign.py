@@ -37,7 +37,9 @@ DEFAULT_DEGREE = 7
 DEFAULT_SPANS = 20
 DEFAULT_CONTINUITY = 3
 MAX_DEGREE = 11
-MAX_SPANS = 400
+#: The most knot spans a phase: the programs' matrices grow with their square (80 spans take about 1.5 s, 100
+#: about 3 s after the imports on this project's machine; 400 took minutes).
+MAX_SPANS = 100
 #: The largest cap: a normalized peak beyond it is no cap a cam could meet with a roller (the library's laws
 #: have peaks below 100), and would only spoil the programs' scaling.
 MAX_CAP = 1e6
