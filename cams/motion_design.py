@@ -168,11 +168,15 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     # phases' limits between the samples); the other objectives' laws are sized by the exact method, their least
     # R0 (within the size held up to the programs' sampling of the fixed phases: said if not)
     if spec.objective == "pressure_angle" and hold is not None and isinstance(new, CamDesign):
-        x, d = ld.centre
-        f = new.follower
-        if isinstance(f, Translating) and f.offset is not None:
-            f = replace(f, offset=None)
-        new = replace(new, follower=f, centre=(x, -d), base_radius=None)
+        if isinstance(new.follower, Rocker):     # the centre of the cam sized at the least ratio's limits
+            new = replace(new, centre=ld.centre, base_radius=None,
+                          limits=replace(new.limits, centre_distance=None))
+        else:
+            x, d = ld.centre
+            f = new.follower
+            if isinstance(f, Translating) and f.offset is not None:
+                f = replace(f, offset=None)
+            new = replace(new, follower=f, centre=(x, -d), base_radius=None)
     sol = solve_fixed(new)
     notes_first: list[str] = []
     if not sizes and hold is not None and spec.objective != "pressure_angle" and sol.R0 > hold * (1 + 1e-9):

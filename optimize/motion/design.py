@@ -141,10 +141,6 @@ def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -
         if flat:
             raise InputError("optimize", "a flat-faced rocker's motion design is not available in this release: "
                              "rocker rollers and translating followers")
-        if spec.objective == "pressure_angle":
-            raise InputError("optimize.objective", "'pressure_angle' is not available for a rocker in this "
-                             "release: its motion design minimizes 'R0', 'L', 'Ca', 'Cj', 'jerk_squared' or "
-                             "'snap_squared'")
         if spec.objective not in ("R0", "L") and isinstance(design, CamDesign) and design.chosen:
             raise InputError("optimize.objective", f"{spec.objective!r} holds the cam's size: for a rocker, the "
                              "original laws' least R0, not a chosen cam (remove [cam] base_radius or centre)")
@@ -233,6 +229,12 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
 
         if spec.objective in ("R0", "L"):
             steps = design_rocker(design, space, caps, spec.objective, name)
+        elif spec.objective == "pressure_angle":
+            from optimize.motion.rocker import design_rocker_pressure
+
+            if hold is None:
+                raise ValueError("the least pressure angle needs the size held")
+            steps = design_rocker_pressure(design, space, caps, float(hold), name)
         else:
             from optimize.motion.rocker import design_rocker_held
 

@@ -21,11 +21,19 @@ cam angle); the last one is returned with its local-optimality measure: the
 decrease the linear model still predicts inside the final trust region,
 relative to the value (0 at a first-order stationary point). There is no gap:
 the problem is not convex.
+
+The least pressure angle at the size held (:func:`design_rocker_pressure`)
+is the same iteration on ``(laws, centre, t)``: every limit times ``t``, the
+sides' rate in ``t`` by central differences, the centre within the held R0
+(a cone), and the step's exact value the largest ratio of pressure angle to
+limit at its centre (:func:`ratio_at`). The ratio is the pressure angle's own
+(the wedges with K_C = 1); a K_C above 1 keeps its stricter zone at the
+limits themselves as a further constraint.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -37,7 +45,8 @@ from optimize.motion.space import Space
 from optimize.motion.translating import S_MARGIN, SAMPLES_PER_SPAN, TIGHTEN
 from optimize.zone import side_terms, wedges
 
-__all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "MAX_ITERATIONS", "TRUST0"]
+__all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "design_rocker_pressure", "ratio_at",
+           "MAX_ITERATIONS", "TRUST0"]
 
 #: Iterations at most.
 MAX_ITERATIONS = 40
@@ -149,47 +158,32 @@ def _cap_rows(space: Space, caps: dict[tuple[int, int], float], n: int) -> tuple
 
 
 def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: np.ndarray, trust: float,
-                  objective: str, hold: float | None = None) -> ConicProgram:
+                  objective: str, hold: float | None = None, ratio: float | None = None) -> ConicProgram:
     """The linearized program at ``(v, centre)`` with trust radius ``trust`` (module notes, step 2).
 
     Lengths in units of the design's scale (the arm): the centre's variables are ``O / scale`` and the value
     ``R0 / scale`` or ``L / scale``, so the program does not depend on the design's unit. For the objectives
     that hold the cam's size (``"Ca"``, ``"Cj"``, ``"jerk_squared"``, ``"snap_squared"``), ``hold`` is the R0
-    the centre must stay within and the value is :func:`_held_value`'s.
+    the centre must stay within and the value is :func:`_held_value`'s. For ``"pressure_angle"``, ``ratio``
+    is the current ratio ``t_k``: the limits are the design's times the variable ``t`` (the value), linearized
+    in ``t`` too (central differences of the sides in the limit), and the centre stays within ``hold``.
     """
     ell = design.scale
     nc = space.size
     n = nc + 3
     io, it = nc, nc + 2
     u = _samples(space)
-    index = {i: k for k, i in enumerate(space.free)}
     vv = np.concatenate([v, np.zeros(3)])
-    G, h = [], []
-    limits = dict(design.constrained_phases())
-    for i, limit in limits.items():
-        if i in index:
-            k = index[i]
-            sh, beta, lev = space.phase_scale(i)
-            r0 = space.rows(k, 0, n, samples=u)
-            r1 = space.rows(k, 1, n, samples=u)
-            s = lev + sh * (r0 @ vv)
-            ds = sh / beta * (r1 @ vv)
-            hk, hs, hd, normals = side_terms(design, limit, s, ds, centre)
-            for side in (0, 1):
-                nrm = normals[:, side]
-                # h ~ h_k + n . (O - O_k) + dh/ds (s - s_k) + dh/ds' (s' - s'_k) <= 0
-                rows = (hs[:, side, None] * sh / ell) * r0 + (hd[:, side, None] * sh / (beta * ell)) * r1
-                rows[:, io:io + 2] = nrm
-                rhs = (-hk[:, side] + nrm @ centre + hs[:, side] * (s - lev) + hd[:, side] * ds) / ell
-                G.append(rows)
-                h.append(rhs)
-        else:
-            w = wedges(design, {i: np.linspace(0.0, 1.0, 400)})
-            N, c = w.lines()
-            rows = np.zeros((N.shape[0], n))
-            rows[:, io:io + 2] = N
-            G.append(rows)
-            h.append(c / ell)
+    G: list[np.ndarray] = []
+    h: list[np.ndarray] = []
+    if ratio is None:
+        _side_rows(design, space, vv, centre, u, None, G, h)
+    else:
+        # the pressure angle's own wedges (K_C = 1) at the limits times t; K_C's zone at the limits themselves
+        pure = design.with_(limits=replace(design.limits, safety_factor=1.0))
+        _side_rows(pure, space, vv, centre, u, ratio, G, h)
+        if design.limits.safety_factor != 1.0:
+            _side_rows(design, space, vv, centre, u, None, G, h)
     Gc, hc = _cap_rows(space, caps, n)
     G.append(Gc)
     h.append(hc)
@@ -216,18 +210,143 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
     if objective in ("R0", "L"):
         target = np.zeros(2) if (objective == "L" and L is None) else A0
         cones: tuple[Cone, ...] = (Cone(a, 0.0, F, -target / ell),)
+    elif objective == "pressure_angle":
+        if hold is None or ratio is None:
+            raise ValueError("the least pressure angle needs the size held and the current ratio")
+        cones = (Cone(np.zeros(n), hold / ell, F, -A0 / ell),)
+        row = np.zeros((1, n))      # the trust region on the ratio
+        row[0, it] = 1.0
+        G += [row, -row]
+        h += [np.array([ratio + trust]), np.array([trust - ratio])]
     else:
         if hold is None:
             raise ValueError(f"objective {objective!r} needs the size held")
         cones = (Cone(np.zeros(n), hold / ell, F, -A0 / ell), *_held_objective(space, n, it, objective, G, h))
     scale = 1.0 + float(np.linalg.norm(centre)) / ell
     top = 100 * scale if objective in ("R0", "L") else 1e6
+    if objective == "pressure_angle":
+        top = _top_ratio(design)
     hi = np.concatenate([space.bounds(caps), [100 * scale] * 2, [top]])
     lo = -hi
     lo[it] = 0.0
     enforce = np.zeros(n, bool)
     enforce[nc:] = True
     return ConicProgram(cost, np.vstack(G), np.concatenate(h), A, b, lo, hi, cones, enforce)
+
+
+#: The step in the ratio of the central differences of the sides.
+RATE_STEP = 1e-6
+
+
+def _times(design: CamDesign, ratio: float):
+    """``design``'s limits with every pressure-angle limit multiplied by ``ratio`` (K_C, L, floors unchanged)."""
+    lim = design.limits
+    ret = None if lim.return_pressure_angle is None else lim.return_pressure_angle * ratio
+    return replace(lim, pressure_angle=lim.pressure_angle * ratio, return_pressure_angle=ret)
+
+
+def _top_ratio(design: CamDesign) -> float:
+    """The largest ratio that keeps every limit below 90 degrees."""
+    return (np.pi / 2) / max(lim for _, lim in design.constrained_phases()) * (1 - 1e-9)
+
+
+#: Positions a phase at which :func:`ratio_at` evaluates the wedges.
+RATIO_SAMPLES = 2001
+
+
+def ratio_at(design: CamDesign, program: Program, centre: np.ndarray) -> float:
+    """The largest ratio of pressure angle to its limit of the cam of ``program`` centred at ``centre``: the
+    least ``t`` for which ``centre`` lies in every wedge of the limited phases with the limits times ``t``
+    (K_C = 1: the pressure angle's own wedges). Bisection to 1e-12 on :data:`RATIO_SAMPLES` positions a phase;
+    ``inf`` when no limit below 90 degrees admits the centre.
+    """
+    d = design.with_(program=program, limits=replace(design.limits, safety_factor=1.0))
+    limited = d.constrained_phases()
+    u = np.linspace(0.0, 1.0, RATIO_SAMPLES)
+    motion = {i: program.evaluate_phase(i, u) for i, _ in limited}
+    O = np.asarray(centre, float)
+
+    def admits(t: float) -> bool:
+        return all(float(np.max(side_terms(d, lim * t, motion[i].s, motion[i].ds, O)[0])) <= 0.0
+                   for i, lim in limited)
+
+    lo, hi = 0.0, _top_ratio(design)
+    if not admits(hi):
+        return np.inf
+    while hi - lo > 1e-12 * hi:
+        mid = 0.5 * (lo + hi)
+        if admits(mid):
+            hi = mid
+        else:
+            lo = mid
+    return float(hi)
+
+
+def _side_rows(design: CamDesign, space: Space, vv: np.ndarray, centre: np.ndarray, u: np.ndarray,
+               ratio: float | None, G: list, h: list) -> None:
+    """Append to ``G, h`` the rows of every limited phase's wedge sides at the samples ``u`` (a free phase's
+    linearized at the laws ``vv`` and ``centre``, a fixed phase's exact in the centre, at 400 positions).
+
+    Variables as :func:`_step_program`'s (``vv`` padded with its three: the centre over the scale, then the
+    value). With ``ratio`` (the current ``t_k``), the limits are the design's times the value ``t``,
+    linearized in it by central differences of the sides.
+    """
+    ell = design.scale
+    n = vv.size
+    io, it = n - 3, n - 1
+    index = {i: k for k, i in enumerate(space.free)}
+    tk = 1.0 if ratio is None else ratio
+    limits = {i: lim * tk for i, lim in design.constrained_phases()}
+    fixed = {i: np.linspace(0.0, 1.0, 400) for i in limits if i not in index}
+    if fixed:
+        N, c = wedges(design.with_(limits=_times(design, tk)), fixed).lines()
+        rows = np.zeros((N.shape[0], n))
+        rows[:, io:io + 2] = N
+        rhs = c / ell
+        if ratio is not None:   # h = N(t) . O - c(t), its rate in t by central differences
+            up, down = (wedges(design.with_(limits=_times(design, tk + e)), fixed).lines()
+                        for e in (RATE_STEP, -RATE_STEP))
+            ht = ((up[0] - down[0]) @ centre - (up[1] - down[1])) / (2 * RATE_STEP)
+            rows[:, it] = ht / ell
+            rhs = rhs + ht * tk / ell
+        G.append(rows)
+        h.append(rhs)
+    for i, k in index.items():
+        if i not in limits:
+            continue
+        sh, beta, lev = space.phase_scale(i)
+        r0 = space.rows(k, 0, n, samples=u)
+        r1 = space.rows(k, 1, n, samples=u)
+        s = lev + sh * (r0 @ vv)
+        ds = sh / beta * (r1 @ vv)
+        hk, hs, hd, normals = side_terms(design, limits[i], s, ds, centre)
+        if ratio is not None:
+            lim = limits[i] / tk
+            ht = (side_terms(design, lim * (tk + RATE_STEP), s, ds, centre)[0]
+                  - side_terms(design, lim * (tk - RATE_STEP), s, ds, centre)[0]) / (2 * RATE_STEP)
+        for side in (0, 1):
+            nrm = normals[:, side]
+            # h ~ h_k + n . (O - O_k) + dh/ds (s - s_k) + dh/ds' (s' - s'_k) [+ dh/dt (t - t_k)] <= 0
+            rows = (hs[:, side, None] * sh / ell) * r0 + (hd[:, side, None] * sh / (beta * ell)) * r1
+            rows[:, io:io + 2] = nrm
+            rhs = (-hk[:, side] + nrm @ centre + hs[:, side] * (s - lev) + hd[:, side] * ds) / ell
+            if ratio is not None:
+                rows[:, it] = ht[:, side] / ell
+                rhs = rhs + ht[:, side] * tk / ell
+            G.append(rows)
+            h.append(rhs)
+
+
+def _zone_admits(design: CamDesign, program: Program, centre: np.ndarray) -> bool:
+    """Whether ``centre`` lies in every wedge of ``program``'s limited phases at the design's limits with its
+    K_C (:data:`RATIO_SAMPLES` positions a phase, to 1e-9 of the scale); True when K_C = 1 (nothing more than
+    the pressure angle)."""
+    if design.limits.safety_factor == 1.0:
+        return True
+    d = design.with_(program=program)
+    u = np.linspace(0.0, 1.0, RATIO_SAMPLES)
+    worst = max(float(np.max(wedges(d, {i: u}).violation(centre))) for i, _ in d.constrained_phases())
+    return worst <= 1e-9 * design.scale
 
 
 def _held_objective(space: Space, n: int, it: int, objective: str, G: list, h: list) -> tuple[Cone, ...]:
@@ -262,8 +381,11 @@ def _held_value(space: Space, v: np.ndarray, objective: str) -> float:
 
 
 def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
-                  name: str) -> RockerSteps:
+                  name: str, start: np.ndarray | None = None) -> RockerSteps:
     """The SCP of the module notes for ``design`` (a rocker roller), minimizing ``objective`` (``"R0"``/``"L"``).
+
+    ``start``: the laws' variables to start from (default: the space's law nearest the original laws,
+    :func:`_fit`); they must meet the caps and the joints.
 
     Raises
     ------
@@ -274,7 +396,7 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
         value, centre = _sized(design, space.program, objective)
         return RockerSteps(v=np.zeros(0), program=space.program, value=value, centre=centre, iterations=0,
                            accepted=0, trust=0.0, local_measure=0.0, history=(value,))
-    v = _fit(space, caps)
+    v = _fit(space, caps) if start is None else space.project(np.asarray(start, float))
     caps_rows = _cap_rows(space, caps, space.size)
     program = space.programme(v, name)
     value, centre = _sized(design, program, objective)
@@ -363,6 +485,68 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
             continue
         value_new = _held_value(space, v_new, objective)
         if R0_new <= hold and value_new < value:
+            ratio = (value - value_new) / predicted
+            v, program, value, centre = v_new, program_new, value_new, centre_new
+            history.append(value)
+            accepted += 1
+            if ratio > 0.75:
+                trust *= 2
+        else:
+            trust /= 4
+    return RockerSteps(v=v, program=program, value=value, centre=centre, iterations=first.iterations + iterations,
+                       accepted=first.accepted + accepted, trust=trust, local_measure=float(measure),
+                       history=tuple(history))
+
+
+
+def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], hold: float,
+                           name: str) -> RockerSteps:
+    """The laws and cam centre of least pressure-angle ratio whose cam fits within ``hold`` (R0, length).
+
+    First the least R0 (:func:`design_rocker`), which must come within ``hold``; from its laws and centre, the
+    same sequential convex programming on ``(laws, centre, t)``: the limits times ``t``, the sides linearized
+    in the laws, the centre and ``t`` (:func:`_step_program`), the centre within ``hold`` of the roller's
+    start (exact: a cone). A step is kept when its centre fits within ``hold`` (a fixed L: the centre put back
+    on its circle first) and its ratio, :func:`ratio_at` at that centre, is smaller. ``value`` is that ratio;
+    the centre is the last accepted step's.
+
+    Raises
+    ------
+    InfeasibleError
+        No law of the space found keeps the cam within ``hold`` at the pressure-angle limits.
+    """
+    first = design_rocker(design, space, caps, "R0", name)
+    if first.value > hold * (1 + 1e-12):
+        raise InfeasibleError("optimize", f"no law of the space found keeps the cam within the size held (R0 <= "
+                              f"{hold:.6g} mm) at the pressure-angle limits: raise a cap or minimize R0")
+    v, centre, program = first.v, first.centre, first.program
+    value = ratio_at(design, program, centre)
+    A0 = design.follower.position(0.0)
+    L = design.limits.centre_distance
+    caps_rows = _cap_rows(space, caps, space.size)
+    history = [value]
+    trust, iterations, accepted, measure = TRUST0, 0, 0, np.inf
+    while iterations < MAX_ITERATIONS and trust >= TRUST_MIN:
+        iterations += 1
+        sol = solve(_step_program(design, space, caps, v, centre, trust, "pressure_angle", hold, value))
+        if not sol.feasible:
+            trust /= 4
+            continue
+        predicted = value - sol.value
+        measure = max(predicted, 0.0) / value
+        if measure < 1e-9:
+            break
+        v_new = space.project(sol.v[:space.size])
+        centre_new = sol.v[space.size:space.size + 2] * design.scale
+        if L is not None:
+            centre_new = centre_new * (L / np.linalg.norm(centre_new))
+        if (caps_rows[0].shape[0] and np.any(caps_rows[0] @ v_new > caps_rows[1] / (1 - TIGHTEN) + 1e-12)) \
+                or np.linalg.norm(centre_new - A0) > hold:
+            trust /= 4
+            continue
+        program_new = space.programme(v_new, name)
+        value_new = ratio_at(design, program_new, centre_new)
+        if value_new < value and _zone_admits(design, program_new, centre_new):
             ratio = (value - value_new) / predicted
             v, program, value, centre = v_new, program_new, value_new, centre_new
             history.append(value)

@@ -7,6 +7,8 @@ linearization's rates.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -89,7 +91,7 @@ def test_rocker_least_centre_distance_form_closure():
 
 @pytest.mark.parametrize(("optimize", "cam", "field"), [
     ({"objective": "Ca"}, {"centre": [134.0, 9.0]}, "optimize.objective"),
-    ({"objective": "pressure_angle"}, {}, "optimize.objective"),
+    ({"objective": "pressure_angle"}, {"centre": [134.0, 9.0]}, "optimize.objective"),
 ])
 def test_rocker_refuses_what_it_does_not_design(optimize, cam, field):
     doc = read_toml(FORCE)
@@ -117,3 +119,70 @@ def test_rocker_smoothest_law_at_the_original_size(objective):
         assert o["value"] == pytest.approx(np.trapezoid(S[3] ** 2, dx=1 / 200_000), rel=1e-4)
         assert o["value"] < 8 * np.pi**4          # the cycloid's: integral of (4 pi^2 cos 2 pi u)^2
     assert np.max(np.abs(S[2])) <= 2 * np.pi * (1 + 1e-9)
+
+
+def _least_ratio_of(law: str, hold: float) -> float:
+    """A library law's least ratio of pressure angle to limit with its cam within ``hold`` (the rise of
+    FORCE): bisection on the limit, each cam sized by the exact method (shares nothing with the SCP)."""
+    lo, hi = 0.2, 1.0
+    for _ in range(30):
+        mid = 0.5 * (lo + hi)
+        doc = read_toml(FORCE)
+        doc["motion"][0]["law"] = law
+        doc["limits"]["pressure_angle"] = 45.0 * mid
+        if solve(design_from_dict(doc)).R0 <= hold:
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+def test_rocker_least_pressure_angle_at_the_original_size():
+    """The size held (the cycloid's least R0): the pressure angle at 100,001 angles of the rise (the kernel's
+    inversion) is the value reported, below the limit, and no larger than the least ratio of the library
+    laws within the cap (3-4-5 and modified sine: Ca below the cycloid's 2 pi) at that size."""
+    doc = read_toml(FORCE)
+    doc["optimize"] = {"objective": "pressure_angle", "max_Ca": "cycloidal", "continuity": 2, "spans": 8}
+    res = solve(design_from_dict(doc))
+    o = res.optimization
+    assert res.verified and o["certified"] and o["method"] == "sequential convex programming"
+    assert res.R0 <= o["held_R0"] * (1 + 1e-12) and o["lower_bound"] is None
+    design = res.design
+    phi = np.linspace(0, design.program.phases[0].angle, 100_001)
+    g = np.abs(pressure_angle(invert_at(design, res.centre, phi)))
+    assert o["value"] == pytest.approx(g.max() / design.limits.pressure_angle, rel=1e-6)
+    assert o["value"] == pytest.approx(o["history"][-1], rel=1e-6)
+    hold = o["held_R0"]
+    library = {law: _least_ratio_of(law, hold) for law in ("poly345", "modified_sine")}
+    assert all(r < 1 for r in library.values())
+    assert o["value"] <= min(library.values())
+    S = design.program.law_of(0).evaluate(np.linspace(0, 1, 200_001))
+    assert np.max(np.abs(S[2])) <= 2 * np.pi * (1 + 1e-9)
+
+
+@pytest.mark.parametrize("centre_distance", [None, 140.0])
+def test_rocker_least_pressure_angle_keeps_k_c_and_l(centre_distance):
+    """Form closure, K_C = 1.1, both phases free: the ratio is the pressure angle's own (the independent check,
+    both phases), below 1, with the centre inside K_C's stricter zone at the limits (wedges at 20,001
+    positions a phase) and a fixed L kept."""
+    from optimize.zone import wedges
+
+    doc = read_toml(FORM)
+    doc.pop("solve", None)
+    if centre_distance is not None:
+        doc["limits"]["centre_distance"] = centre_distance
+    doc["optimize"] = {"free": ["rise", "return"], "objective": "pressure_angle", "max_Ca": "cycloidal",
+                       "max_Cj": "cycloidal", "continuity": 2, "spans": 6}
+    res = solve(design_from_dict(doc))
+    o = res.optimization
+    p = res.pressure
+    assert res.verified and o["certified"] and res.R0 <= o["held_R0"] * (1 + 1e-12)
+    assert o["value"] == max(p.rise / p.rise_limit, p.ret / p.return_limit) and o["value"] < 0.9
+    if centre_distance is not None:
+        assert res.L == pytest.approx(centre_distance, rel=1e-12)
+    kc = replace(res.design, centre=None, limits=replace(load_design(FORM).limits,
+                                                         centre_distance=centre_distance))
+    assert kc.limits.safety_factor == 1.1
+    u = np.linspace(0, 1, 20_001)
+    worst = max(float(np.max(wedges(kc, {i: u}).violation(res.centre))) for i in (0, 2))
+    assert worst <= 1e-8 * kc.scale
