@@ -41,6 +41,7 @@ from cams.model.design import CamDesign
 from laws.errors import InfeasibleError
 from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram, solve
+from optimize.motion.scp import MAX_ITERATIONS, TRUST0, Iterate, Outcome, minimize
 from optimize.motion.space import Space
 from optimize.motion.translating import S_MARGIN, SAMPLES_PER_SPAN, TIGHTEN
 from optimize.zone import side_terms, wedges
@@ -48,12 +49,6 @@ from optimize.zone import side_terms, wedges
 __all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "design_rocker_pressure", "ratio_at",
            "MAX_ITERATIONS", "TRUST0"]
 
-#: Iterations at most.
-MAX_ITERATIONS = 40
-#: Initial trust radius on the normalized law S at the samples (S' gets four times as much).
-TRUST0 = 0.05
-#: The trust radius below which the iteration stops.
-TRUST_MIN = 1e-5
 
 
 @dataclass(frozen=True)
@@ -380,6 +375,28 @@ def _held_value(space: Space, v: np.ndarray, objective: str) -> float:
     return float(np.linalg.norm(np.vstack([space.integral_factor(k, r, n) for k in range(len(space.free))]) @ v))
 
 
+def _within_caps(caps_rows: tuple[np.ndarray, np.ndarray], v: np.ndarray) -> bool:
+    """Whether the laws ``v`` meet the caps' rows (the solver may leave one exceeded by its tolerance)."""
+    G, h = caps_rows
+    return not G.shape[0] or bool(np.all(G[:, :v.size] @ v <= h / (1 - TIGHTEN) + 1e-12))
+
+
+def _steps(out: Outcome, before: RockerSteps | None = None) -> RockerSteps:
+    """The :class:`RockerSteps` of a loop's outcome (its iterations added to ``before``'s)."""
+    b = out.best
+    program, centre = b.state
+    return RockerSteps(v=b.v, program=program, value=b.value, centre=centre,
+                       iterations=out.iterations + (before.iterations if before else 0),
+                       accepted=out.accepted + (before.accepted if before else 0), trust=out.trust,
+                       local_measure=out.local_measure, history=out.history)
+
+
+def _solved(program: ConicProgram, n: int) -> tuple[float, np.ndarray] | None:
+    """The model's value and variables, or None when it is infeasible."""
+    sol = solve(program)
+    return (float(sol.value), sol.v[:n]) if sol.feasible else None
+
+
 def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
                   name: str, start: np.ndarray | None = None) -> RockerSteps:
     """The SCP of the module notes for ``design`` (a rocker roller), minimizing ``objective`` (``"R0"``/``"L"``).
@@ -400,42 +417,23 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
     caps_rows = _cap_rows(space, caps, space.size)
     program = space.programme(v, name)
     value, centre = _sized(design, program, objective)
-    history = [value]
-    trust = TRUST0
-    iterations = accepted = 0
-    measure = np.inf
-    while iterations < MAX_ITERATIONS and trust >= TRUST_MIN:
-        iterations += 1
-        sol = solve(_step_program(design, space, caps, v, centre, trust, objective))
-        if not sol.feasible:
-            trust /= 4
-            continue
-        predicted = value - sol.value * design.scale
-        measure = max(predicted, 0.0) / value
-        if measure < 1e-9:
-            break
-        v_new = space.project(sol.v[:space.size])
-        if caps_rows[0].shape[0] and np.any(caps_rows[0][:, :space.size] @ v_new > caps_rows[1] / (1 - TIGHTEN)
-                                            + 1e-12):
-            trust /= 4              # the solver left a cap exceeded: not a step to take
-            continue
+
+    def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
+        step = _solved(_step_program(design, space, caps, it.v, it.state[1], trust, objective), space.size + 3)
+        return None if step is None else (step[0] * design.scale, step[1])
+
+    def exact(raw: np.ndarray) -> Iterate | None:
+        v_new = space.project(raw[:space.size])
+        if not _within_caps(caps_rows, v_new):
+            return None
         program_new = space.programme(v_new, name)
         try:
             value_new, centre_new = _sized(design, program_new, objective)
         except InfeasibleError:
-            trust /= 4
-            continue
-        if value_new < value:
-            ratio = (value - value_new) / predicted
-            v, program, value, centre = v_new, program_new, value_new, centre_new
-            history.append(value)
-            accepted += 1
-            if ratio > 0.75:
-                trust *= 2
-        else:
-            trust /= 4
-    return RockerSteps(v=v, program=program, value=value, centre=centre, iterations=iterations,
-                       accepted=accepted, trust=trust, local_measure=float(measure), history=tuple(history))
+            return None
+        return Iterate(v_new, value_new, (program_new, centre_new))
+
+    return _steps(minimize(Iterate(v, value, (program, centre)), model, exact))
 
 
 def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
@@ -458,45 +456,27 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
                               f"{hold:.6g} mm; the least found is {first.value:.6g} mm): raise a cap or minimize R0")
     if not space.free:
         return first
-    v, centre, program = first.v, first.centre, first.program
-    value = _held_value(space, v, objective)
     caps_rows = _cap_rows(space, caps, space.size)
-    history = [value]
-    trust, iterations, accepted, measure = TRUST0, 0, 0, np.inf
-    while iterations < MAX_ITERATIONS and trust >= TRUST_MIN:
-        iterations += 1
-        sol = solve(_step_program(design, space, caps, v, centre, trust, objective, hold))
-        if not sol.feasible:
-            trust /= 4
-            continue
-        predicted = value - sol.value
-        measure = max(predicted, 0.0) / max(value, 1e-300)
-        if measure < 1e-9:
-            break
-        v_new = space.project(sol.v[:space.size])
-        if caps_rows[0].shape[0] and np.any(caps_rows[0] @ v_new > caps_rows[1] / (1 - TIGHTEN) + 1e-12):
-            trust /= 4
-            continue
+
+    def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
+        return _solved(_step_program(design, space, caps, it.v, it.state[1], trust, objective, hold),
+                       space.size + 3)
+
+    def exact(raw: np.ndarray) -> Iterate | None:
+        v_new = space.project(raw[:space.size])
+        if not _within_caps(caps_rows, v_new):
+            return None
         program_new = space.programme(v_new, name)
         try:
             R0_new, centre_new = _sized(design, program_new, "R0")
         except InfeasibleError:
-            trust /= 4
-            continue
-        value_new = _held_value(space, v_new, objective)
-        if R0_new <= hold and value_new < value:
-            ratio = (value - value_new) / predicted
-            v, program, value, centre = v_new, program_new, value_new, centre_new
-            history.append(value)
-            accepted += 1
-            if ratio > 0.75:
-                trust *= 2
-        else:
-            trust /= 4
-    return RockerSteps(v=v, program=program, value=value, centre=centre, iterations=first.iterations + iterations,
-                       accepted=first.accepted + accepted, trust=trust, local_measure=float(measure),
-                       history=tuple(history))
+            return None
+        if R0_new > hold:
+            return None
+        return Iterate(v_new, _held_value(space, v_new, objective), (program_new, centre_new))
 
+    start = Iterate(first.v, _held_value(space, first.v, objective), (first.program, first.centre))
+    return _steps(minimize(start, model, exact), first)
 
 
 def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], hold: float,
@@ -507,8 +487,8 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
     same sequential convex programming on ``(laws, centre, t)``: the limits times ``t``, the sides linearized
     in the laws, the centre and ``t`` (:func:`_step_program`), the centre within ``hold`` of the roller's
     start (exact: a cone). A step is kept when its centre fits within ``hold`` (a fixed L: the centre put back
-    on its circle first) and its ratio, :func:`ratio_at` at that centre, is smaller. ``value`` is that ratio;
-    the centre is the last accepted step's.
+    on its circle first), K_C's zone admits it (:func:`_zone_admits`) and its ratio, :func:`ratio_at` at that
+    centre, is smaller. ``value`` is that ratio; the centre is the last accepted step's.
 
     Raises
     ------
@@ -519,42 +499,25 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
     if first.value > hold * (1 + 1e-12):
         raise InfeasibleError("optimize", f"no law of the space found keeps the cam within the size held (R0 <= "
                               f"{hold:.6g} mm) at the pressure-angle limits: raise a cap or minimize R0")
-    v, centre, program = first.v, first.centre, first.program
-    value = ratio_at(design, program, centre)
     A0 = design.follower.position(0.0)
     L = design.limits.centre_distance
     caps_rows = _cap_rows(space, caps, space.size)
-    history = [value]
-    trust, iterations, accepted, measure = TRUST0, 0, 0, np.inf
-    while iterations < MAX_ITERATIONS and trust >= TRUST_MIN:
-        iterations += 1
-        sol = solve(_step_program(design, space, caps, v, centre, trust, "pressure_angle", hold, value))
-        if not sol.feasible:
-            trust /= 4
-            continue
-        predicted = value - sol.value
-        measure = max(predicted, 0.0) / value
-        if measure < 1e-9:
-            break
-        v_new = space.project(sol.v[:space.size])
-        centre_new = sol.v[space.size:space.size + 2] * design.scale
+
+    def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
+        return _solved(_step_program(design, space, caps, it.v, it.state[1], trust, "pressure_angle", hold,
+                                     it.value), space.size + 3)
+
+    def exact(raw: np.ndarray) -> Iterate | None:
+        v_new = space.project(raw[:space.size])
+        centre_new = raw[space.size:space.size + 2] * design.scale
         if L is not None:
             centre_new = centre_new * (L / np.linalg.norm(centre_new))
-        if (caps_rows[0].shape[0] and np.any(caps_rows[0] @ v_new > caps_rows[1] / (1 - TIGHTEN) + 1e-12)) \
-                or np.linalg.norm(centre_new - A0) > hold:
-            trust /= 4
-            continue
+        if not _within_caps(caps_rows, v_new) or np.linalg.norm(centre_new - A0) > hold:
+            return None
         program_new = space.programme(v_new, name)
-        value_new = ratio_at(design, program_new, centre_new)
-        if value_new < value and _zone_admits(design, program_new, centre_new):
-            ratio = (value - value_new) / predicted
-            v, program, value, centre = v_new, program_new, value_new, centre_new
-            history.append(value)
-            accepted += 1
-            if ratio > 0.75:
-                trust *= 2
-        else:
-            trust /= 4
-    return RockerSteps(v=v, program=program, value=value, centre=centre, iterations=first.iterations + iterations,
-                       accepted=first.accepted + accepted, trust=trust, local_measure=float(measure),
-                       history=tuple(history))
+        if not _zone_admits(design, program_new, centre_new):
+            return None
+        return Iterate(v_new, ratio_at(design, program_new, centre_new), (program_new, centre_new))
+
+    start = Iterate(first.v, ratio_at(design, first.program, first.centre), (first.program, first.centre))
+    return _steps(minimize(start, model, exact), first)
