@@ -41,13 +41,12 @@ from cams.model.design import CamDesign
 from laws.errors import InfeasibleError
 from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram, solve
-from optimize.motion.scp import MAX_ITERATIONS, TRUST0, Iterate, Outcome, minimize
+from optimize.motion.lawrows import cap_rows, fit, held_objective, held_value, samples, trust_rows, within_caps
+from optimize.motion.scp import Iterate, Outcome, minimize
 from optimize.motion.space import Space
-from optimize.motion.translating import S_MARGIN, SAMPLES_PER_SPAN, TIGHTEN
 from optimize.zone import side_terms, wedges
 
-__all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "design_rocker_pressure", "ratio_at",
-           "MAX_ITERATIONS", "TRUST0"]
+__all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "design_rocker_pressure", "ratio_at"]
 
 
 
@@ -98,60 +97,6 @@ def _sized(design: CamDesign, program: Program, objective: str) -> tuple[float, 
     return float(np.linalg.norm(c - design.follower.position(0.0))), c
 
 
-def _samples(space: Space) -> np.ndarray:
-    return np.linspace(0.0, 1.0, (SAMPLES_PER_SPAN - 1) * space.spans + 1)
-
-
-def _fit(space: Space, caps: dict[tuple[int, int], float]) -> np.ndarray:
-    """The space's law nearest the original laws (least squares at the samples), under the caps and joints.
-
-    The least-squares law under the joints alone (a linear system) when it meets the caps; else the
-    second-order cone program with the caps.
-    """
-    u = _samples(space)
-    n = space.size + 1
-    F = np.vstack([space.rows(k, 0, n, samples=u) for k in range(len(space.free))])
-    f = np.concatenate([-space.program.law_of(i).evaluate(u)[0] for i in space.free])
-    A, b = space.equalities(n)
-    G, h = _cap_rows(space, caps, n)
-    # min |F v + f|^2 subject to A v = b: the KKT system (t, the last variable, unused)
-    m = space.size
-    K = np.block([[F[:, :m].T @ F[:, :m], A[:, :m].T], [A[:, :m], np.zeros((A.shape[0], A.shape[0]))]])
-    rhs = np.concatenate([-F[:, :m].T @ f, b])
-    v = np.linalg.lstsq(K, rhs, rcond=None)[0][:m]
-    if not G.shape[0] or np.all(G[:, :m] @ v <= h):
-        return space.project(v)
-    cost = np.zeros(n)
-    cost[-1] = 1.0
-    a = np.zeros(n)
-    a[-1] = 1.0
-    hi = np.concatenate([space.bounds(caps), [1e6]])
-    lo = -hi
-    lo[-1] = 0.0
-    enforce = np.zeros(n, bool)
-    enforce[-1] = True
-    sol = solve(ConicProgram(cost, G, h, A, b, lo, hi, (Cone(a, 0.0, F, f),), enforce))
-    if not sol.feasible:
-        raise InfeasibleError("optimize", "the caps admit no law of the space with the joints' conditions: raise "
-                              "a cap or lower the continuity")
-    return space.project(sol.v[:-1])
-
-
-def _cap_rows(space: Space, caps: dict[tuple[int, int], float], n: int) -> tuple[np.ndarray, np.ndarray]:
-    """The caps on every piece's Bernstein coefficients (tightened by TIGHTEN), and S within [0, 1] (the follower
-    within its swing), over ``n`` variables."""
-    G, h = [np.zeros((0, n))], [np.zeros(0)]
-    for (k, r), cap in caps.items():
-        rows = space.rows(k, r, n)
-        G.append(np.vstack([rows, -rows]))
-        h.append(np.full(2 * rows.shape[0], cap * (1 - TIGHTEN)))
-    for k in range(len(space.free)):
-        rows = space.rows(k, 0, n)
-        G.append(np.vstack([rows, -rows]))
-        h.append(np.concatenate([np.full(rows.shape[0], 1 + S_MARGIN), np.full(rows.shape[0], S_MARGIN)]))
-    return np.vstack(G), np.concatenate(h)
-
-
 def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: np.ndarray, trust: float,
                   objective: str, hold: float | None = None, ratio: float | None = None) -> ConicProgram:
     """The linearized program at ``(v, centre)`` with trust radius ``trust`` (module notes, step 2).
@@ -159,7 +104,7 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
     Lengths in units of the design's scale (the arm): the centre's variables are ``O / scale`` and the value
     ``R0 / scale`` or ``L / scale``, so the program does not depend on the design's unit. For the objectives
     that hold the cam's size (``"Ca"``, ``"Cj"``, ``"jerk_squared"``, ``"snap_squared"``), ``hold`` is the R0
-    the centre must stay within and the value is :func:`_held_value`'s. For ``"pressure_angle"``, ``ratio``
+    the centre must stay within and the value is :func:`held_value`'s. For ``"pressure_angle"``, ``ratio``
     is the current ratio ``t_k``: the limits are the design's times the variable ``t`` (the value), linearized
     in ``t`` too (central differences of the sides in the limit), and the centre stays within ``hold``.
     """
@@ -167,7 +112,7 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
     nc = space.size
     n = nc + 3
     io, it = nc, nc + 2
-    u = _samples(space)
+    u = samples(space)
     vv = np.concatenate([v, np.zeros(3)])
     G: list[np.ndarray] = []
     h: list[np.ndarray] = []
@@ -179,16 +124,10 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
         _side_rows(pure, space, vv, centre, u, ratio, G, h)
         if design.limits.safety_factor != 1.0:
             _side_rows(design, space, vv, centre, u, None, G, h)
-    Gc, hc = _cap_rows(space, caps, n)
+    Gc, hc = cap_rows(space, caps, n)
     G.append(Gc)
     h.append(hc)
-    # the trust region on S and S' at the samples
-    for k in range(len(space.free)):
-        for r, width in ((0, trust), (1, 4 * trust)):
-            rows = space.rows(k, r, n, samples=u)
-            now = rows @ vv
-            G += [rows, -rows]
-            h += [now + width, width - now]
+    trust_rows(space, vv, u, trust, 1, G, h)
     A, b = space.equalities(n)
     L = design.limits.centre_distance
     if L is not None:    # O on the circle |O| = L, linearized: its tangent at O_k
@@ -216,7 +155,7 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
     else:
         if hold is None:
             raise ValueError(f"objective {objective!r} needs the size held")
-        cones = (Cone(np.zeros(n), hold / ell, F, -A0 / ell), *_held_objective(space, n, it, objective, G, h))
+        cones = (Cone(np.zeros(n), hold / ell, F, -A0 / ell), *held_objective(space, n, it, objective, G, h))
     scale = 1.0 + float(np.linalg.norm(centre)) / ell
     top = 100 * scale if objective in ("R0", "L") else 1e6
     if objective == "pressure_angle":
@@ -344,43 +283,6 @@ def _zone_admits(design: CamDesign, program: Program, centre: np.ndarray) -> boo
     return worst <= 1e-9 * design.scale
 
 
-def _held_objective(space: Space, n: int, it: int, objective: str, G: list, h: list) -> tuple[Cone, ...]:
-    """The objective's epigraph on ``t`` (variable ``it``): rows appended to ``G, h`` (a peak), or a cone (an
-    integral's square root)."""
-    if objective in ("Ca", "Cj"):
-        r = 2 if objective == "Ca" else 3
-        for k in range(len(space.free)):
-            rows = space.rows(k, r, n)
-            rows = np.vstack([rows, -rows])
-            rows[:, it] = -1.0
-            G.append(rows)
-            h.append(np.zeros(rows.shape[0]))
-        return ()
-    r = 3 if objective == "jerk_squared" else 4
-    F = np.vstack([space.integral_factor(k, r, n) for k in range(len(space.free))])
-    a = np.zeros(n)
-    a[it] = 1.0
-    return (Cone(a, 0.0, F, np.zeros(F.shape[0])),)
-
-
-def _held_value(space: Space, v: np.ndarray, objective: str) -> float:
-    """The value the held programs minimize at the laws ``v``: the largest Bernstein coefficient of the second
-    or third derivative's magnitude on the pieces (a bound of its peak at every u), or the root of the integral
-    of the third or fourth derivative's square."""
-    n = space.size
-    if objective in ("Ca", "Cj"):
-        r = 2 if objective == "Ca" else 3
-        return max(float(np.max(np.abs(space.rows(k, r, n) @ v))) for k in range(len(space.free)))
-    r = 3 if objective == "jerk_squared" else 4
-    return float(np.linalg.norm(np.vstack([space.integral_factor(k, r, n) for k in range(len(space.free))]) @ v))
-
-
-def _within_caps(caps_rows: tuple[np.ndarray, np.ndarray], v: np.ndarray) -> bool:
-    """Whether the laws ``v`` meet the caps' rows (the solver may leave one exceeded by its tolerance)."""
-    G, h = caps_rows
-    return not G.shape[0] or bool(np.all(G[:, :v.size] @ v <= h / (1 - TIGHTEN) + 1e-12))
-
-
 def _steps(out: Outcome, before: RockerSteps | None = None) -> RockerSteps:
     """The :class:`RockerSteps` of a loop's outcome (its iterations added to ``before``'s)."""
     b = out.best
@@ -402,7 +304,7 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
     """The SCP of the module notes for ``design`` (a rocker roller), minimizing ``objective`` (``"R0"``/``"L"``).
 
     ``start``: the laws' variables to start from (default: the space's law nearest the original laws,
-    :func:`_fit`); they must meet the caps and the joints.
+    :func:`optimize.motion.lawrows.fit`); they must meet the caps and the joints.
 
     Raises
     ------
@@ -413,8 +315,8 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
         value, centre = _sized(design, space.program, objective)
         return RockerSteps(v=np.zeros(0), program=space.program, value=value, centre=centre, iterations=0,
                            accepted=0, trust=0.0, local_measure=0.0, history=(value,))
-    v = _fit(space, caps) if start is None else space.project(np.asarray(start, float))
-    caps_rows = _cap_rows(space, caps, space.size)
+    v = fit(space, caps) if start is None else space.project(np.asarray(start, float))
+    caps_rows = cap_rows(space, caps, space.size)
     program = space.programme(v, name)
     value, centre = _sized(design, program, objective)
 
@@ -424,7 +326,7 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
 
     def exact(raw: np.ndarray) -> Iterate | None:
         v_new = space.project(raw[:space.size])
-        if not _within_caps(caps_rows, v_new):
+        if not within_caps(caps_rows, v_new):
             return None
         program_new = space.programme(v_new, name)
         try:
@@ -443,7 +345,7 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
 
     First the least R0 (:func:`design_rocker`), which must come within ``hold``; then the same sequential
     convex programming on the objective, each step's laws sized by the exact method and kept only when that R0
-    is within ``hold`` and the objective is smaller. ``value`` is the objective's (:func:`_held_value`).
+    is within ``hold`` and the objective is smaller. ``value`` is the objective's (:func:`held_value`).
 
     Raises
     ------
@@ -456,7 +358,7 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
                               f"{hold:.6g} mm; the least found is {first.value:.6g} mm): raise a cap or minimize R0")
     if not space.free:
         return first
-    caps_rows = _cap_rows(space, caps, space.size)
+    caps_rows = cap_rows(space, caps, space.size)
 
     def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
         return _solved(_step_program(design, space, caps, it.v, it.state[1], trust, objective, hold),
@@ -464,7 +366,7 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
 
     def exact(raw: np.ndarray) -> Iterate | None:
         v_new = space.project(raw[:space.size])
-        if not _within_caps(caps_rows, v_new):
+        if not within_caps(caps_rows, v_new):
             return None
         program_new = space.programme(v_new, name)
         try:
@@ -473,9 +375,9 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
             return None
         if R0_new > hold:
             return None
-        return Iterate(v_new, _held_value(space, v_new, objective), (program_new, centre_new))
+        return Iterate(v_new, held_value(space, v_new, objective), (program_new, centre_new))
 
-    start = Iterate(first.v, _held_value(space, first.v, objective), (first.program, first.centre))
+    start = Iterate(first.v, held_value(space, first.v, objective), (first.program, first.centre))
     return _steps(minimize(start, model, exact), first)
 
 
@@ -501,7 +403,7 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
                               f"{hold:.6g} mm) at the pressure-angle limits: raise a cap or minimize R0")
     A0 = design.follower.position(0.0)
     L = design.limits.centre_distance
-    caps_rows = _cap_rows(space, caps, space.size)
+    caps_rows = cap_rows(space, caps, space.size)
 
     def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
         return _solved(_step_program(design, space, caps, it.v, it.state[1], trust, "pressure_angle", hold,
@@ -512,7 +414,7 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
         centre_new = raw[space.size:space.size + 2] * design.scale
         if L is not None:
             centre_new = centre_new * (L / np.linalg.norm(centre_new))
-        if not _within_caps(caps_rows, v_new) or np.linalg.norm(centre_new - A0) > hold:
+        if not within_caps(caps_rows, v_new) or np.linalg.norm(centre_new - A0) > hold:
             return None
         program_new = space.programme(v_new, name)
         if not _zone_admits(design, program_new, centre_new):
