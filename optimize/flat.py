@@ -26,6 +26,7 @@ from cams.kinematics.flat import (
     oscillating_cusps,
     oscillating_parts,
     oscillating_setup,
+    oscillating_support,
     phase_minimum,
     rocker_frame_turn,
     translating_cusps,
@@ -108,13 +109,11 @@ def _oscillating_scan(program: Program, L: float, f: float, sigma: int, eps: int
     levels = np.unique(program.levels)
     s, ds, d2s = (np.concatenate([getattr(m, k) for m in parts] + [z])[None, :]
                   for k, z in (("s", levels), ("ds", 0 * levels), ("d2s", 0 * levels)))
-    dth = sigma * ds - eps
     for k0 in range(0, len(R0), block):
-        a = sigma * np.arccos((f - R0[k0:k0 + block]) / L)[:, None] + sigma * s
-        sa, ca = np.sin(a), np.cos(a)
+        a0 = sigma * np.arccos((f - R0[k0:k0 + block]) / L)[:, None]
+        _, dth, d2th, p, dp, d2p = oscillating_support(L, f, sigma, eps, a0, s, ds, d2s)
         with np.errstate(divide="ignore", invalid="ignore"):
-            rho = curvature_radius(dth, sigma * d2s, f - L * ca, L * sa * sigma * ds,
-                                   L * ca * ds**2 + L * sa * sigma * d2s)
+            rho = curvature_radius(dth, d2th, p, dp, d2p)
         rho = np.where(np.isfinite(rho), rho, -np.inf).min(axis=1)
         yield from zip(range(k0, k0 + len(rho)), rho, strict=True)
 

@@ -70,6 +70,7 @@ __all__ = [
     "translating_cusps",
     "oscillating_setup",
     "oscillating_terms",
+    "oscillating_support",
     "oscillating_parts",
     "oscillating_cusps",
     "oscillating_contact",
@@ -260,15 +261,24 @@ def oscillating_terms(program: Program, L: float, f: float, sigma: int, eps: int
     m = program.evaluate(phi) if phase is None else program.evaluate_phase(phase, u)
     if phase is not None:
         phi = program.starts[phase] + np.asarray(u, float) * program.phases[phase].angle
-    a = a0 + sigma * m.s
+    a, dth, d2th, p, dp, d2p = oscillating_support(L, f, sigma, eps, a0, m.s, m.ds, m.d2s)
+    return phi, a, a - eps * phi, dth, d2th, p, dp, d2p
+
+
+def oscillating_support(L: float, f: float, sigma: int, eps: int, a0, s, ds, d2s):
+    """The oscillating face's normal angle and support function at swing ``s`` and its rates ``s', s''``.
+
+    Returns ``a, theta', theta'', p, p', p''`` (radians, lengths; primes for
+    d/dphi): ``a = a0 + sigma s``, ``theta' = sigma s' - eps``,
+    ``theta'' = sigma s''``, ``p = f - L cos a`` and its two rates. Arrays
+    broadcast; the module notes give the frame.
+    """
+    a = a0 + sigma * s
     sa, ca = np.sin(a), np.cos(a)
     p = f - L * ca
-    dp = L * sa * sigma * m.ds
-    d2p = L * ca * m.ds**2 + L * sa * sigma * m.d2s
-    theta = a - eps * phi
-    dth = sigma * m.ds - eps
-    d2th = sigma * m.d2s
-    return phi, a, theta, dth, d2th, p, dp, d2p
+    dp = L * sa * sigma * ds
+    d2p = L * ca * ds**2 + L * sa * sigma * d2s
+    return a, sigma * ds - eps, sigma * d2s, p, dp, d2p
 
 
 def oscillating_contact(L: float, sigma: int, a, p_theta):
