@@ -138,9 +138,9 @@ def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -
     flat = isinstance(design, FlatFaceDesign)
     f = design.follower
     if f.kind == "rocker":
-        if flat:
-            raise InputError("optimize", "a flat-faced rocker's motion design is not available in this release: "
-                             "rocker rollers and translating followers")
+        if flat and spec.objective == "L":
+            raise InputError("optimize.objective", "a flat-faced rocker's centre distance is given "
+                             "(follower.centre_distance): its cam is sized by 'R0'")
         if spec.objective not in ("R0", "L") and isinstance(design, CamDesign) and design.chosen:
             raise InputError("optimize.objective", f"{spec.objective!r} holds the cam's size: for a rocker, the "
                              "original laws' least R0, not a chosen cam (remove [cam] base_radius or centre)")
@@ -224,6 +224,17 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     kw = {} if pieces is None else {"pieces": pieces}
     space = Space(program, free, spec.degree, spec.spans, spec.continuity, **kw)
     name = f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})"
+    if isinstance(design, FlatFaceDesign) and design.follower.kind == "rocker":
+        from optimize.motion.flat_rocker import design_flat_rocker, design_flat_rocker_held
+
+        if spec.objective == "R0":
+            steps = design_flat_rocker(design, space, caps, name)
+        else:
+            held = design.base_radius if design.base_radius is not None else hold
+            if held is None:
+                raise ValueError("an objective other than R0 needs the size held")
+            steps = design_flat_rocker_held(design, space, caps, spec.objective, float(held), name)
+        return _rocker_result(steps, spec, free, caps, space, t0)
     if isinstance(design, CamDesign) and design.follower.kind == "rocker":
         from optimize.motion.rocker import design_rocker
 
@@ -241,13 +252,7 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
             if hold is None:
                 raise ValueError("an objective other than R0 or L needs the size held")
             steps = design_rocker_held(design, space, caps, spec.objective, float(hold), name)
-        box = space.bounds(caps)
-        return LawDesign(program=steps.program, free=free, objective=spec.objective, solver_value=steps.value,
-                         lower_bound=None, centre=(float(steps.centre[0]), float(steps.centre[1])), caps=caps,
-                         space=space, box_binds=bool(np.any((np.abs(steps.v) >= 0.999 * box) &
-                                                            space.declared(caps))),
-                         seconds=time.perf_counter() - t0, local_measure=steps.local_measure,
-                         iterations=steps.iterations, history=steps.history)
+        return _rocker_result(steps, spec, free, caps, space, t0)
     flat = isinstance(design, FlatFaceDesign)
     f = design.follower
     limits: dict[int, float] = {}
@@ -299,6 +304,17 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     return LawDesign(program=new_program, free=free, objective=spec.objective, solver_value=float(result.value),
                      lower_bound=float(lb), centre=geo, caps=caps, space=space, box_binds=binds,
                      seconds=time.perf_counter() - t0)
+
+
+def _rocker_result(steps, spec: MotionDesignSpec, free: tuple[int, ...], caps: dict[tuple[int, int], float],
+                   space: Space, t0: float) -> LawDesign:
+    """The :class:`LawDesign` of a rocker's sequential convex programming (no bound: a local optimum)."""
+    box = space.bounds(caps)
+    return LawDesign(program=steps.program, free=free, objective=spec.objective, solver_value=steps.value,
+                     lower_bound=None, centre=(float(steps.centre[0]), float(steps.centre[1])), caps=caps,
+                     space=space, box_binds=bool(np.any((np.abs(steps.v) >= 0.999 * box) & space.declared(caps))),
+                     seconds=time.perf_counter() - t0, local_measure=steps.local_measure,
+                     iterations=steps.iterations, history=steps.history)
 
 
 def _explain_caps(req: Request) -> None:

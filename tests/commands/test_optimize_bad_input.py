@@ -116,7 +116,8 @@ def test_solve_objective_beside_optimize(tmp_path):
 @pytest.mark.parametrize("example, snippet, field", [
     ("translating_flat", 'objective = "pressure_angle"', "optimize.objective"),
     ("translating_flat", "continuity = 1\ndegree = 5", "optimize.continuity"),
-    ("rocker_flat", "", "optimize"),
+    ("rocker_flat", 'objective = "L"', "optimize.objective"),
+    ("rocker_flat", "continuity = 1\ndegree = 5", "optimize.continuity"),
 ])
 def test_objective_or_space_that_does_not_apply(tmp_path, example, snippet, field):
     p = design(tmp_path, example, f"[optimize]\n{snippet}\n")

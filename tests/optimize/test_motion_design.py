@@ -317,7 +317,7 @@ def test_optimum_failing_the_profile_checks_gives_the_smallest_passing_cam():
     assert not profile_passes(below)
 
 
-@pytest.mark.parametrize("example", [EXAMPLE, "examples/rocker_force.toml"])
+@pytest.mark.parametrize("example", [EXAMPLE, "examples/rocker_force.toml", "examples/rocker_flat.toml"])
 def test_no_free_phase_gives_todays_exact_answer(example):
     d = read_toml(example)
     today = solve(design_from_dict(d))
@@ -335,6 +335,8 @@ def test_no_free_phase_gives_todays_exact_answer(example):
      {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "spans": 8, "continuity": 2, "degree": 6}),
     ("examples/rocker_force.toml", (("follower", "arm"), ("follower", "roller_radius")),
      {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "spans": 8, "continuity": 2}),
+    ("examples/rocker_flat.toml", (("follower", "centre_distance"), ("limits", "min_radius")),
+     {"free": ["rise", "return"], "max_Ca": "cycloidal", "max_Cj": "cycloidal", "spans": 6, "continuity": 2}),
 ])
 def test_every_unit_scale_gives_the_same_design(example, lengths, optimize):
     """The same design in units 1000 times smaller and larger: R0 and its bound in proportion."""
