@@ -10,7 +10,9 @@ Writes ``motion.json`` into ``--out``: for ``examples/translating_force.toml`` w
 the design is verified and certified, and the median time of :func:`cams.solve.solve` after the imports (one
 process, one core); with the R0 of the original law beside them. ``rocker``: ``examples/rocker_force.toml``
 with its rise freed under the cycloidal law's peaks (degree 7, C2, 10 spans): the sequential convex
-programming's R0, iterations, local-optimality measure and time.
+programming's R0, iterations, local-optimality measure and time; ``rocker_pressure_angle``: the same, its least
+peak pressure angle at the cycloid's R0; ``flat_rocker``: ``examples/rocker_flat.toml`` with its rise and return
+freed under the cycloidal law's peaks (C2, 10 spans).
 """
 
 from __future__ import annotations
@@ -36,6 +38,7 @@ from bench_solvers import machine  # noqa: E402
 
 EXAMPLE = ROOT / "examples" / "translating_force.toml"
 ROCKER = ROOT / "examples" / "rocker_force.toml"
+FLAT_ROCKER = ROOT / "examples" / "rocker_flat.toml"
 
 
 def _timed(solve, design, repeats: int) -> tuple[Any, float]:
@@ -79,8 +82,27 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
               "seconds_median": seconds}
     print(f"rocker: R0 {res.R0:.6f} mm (was {o['reference']['R0']:.6f}), {o['iterations']} iterations, local "
           f"measure {o['local_measure']:.1e}, {seconds:.3f} s", flush=True)
+    doc["optimize"] = {"objective": "pressure_angle", "max_Ca": "cycloidal", "max_Cj": "cycloidal",
+                       "continuity": 2, "spans": 10}
+    res, seconds = _timed(solve, design_from_dict(doc), repeats)
+    o = res.optimization
+    rocker_pressure = {"example": ROCKER.name, "held_R0_mm": o["held_R0"], "R0_mm": res.R0,
+                       "ratio": o["value"], "iterations": o["iterations"], "local_measure": o["local_measure"],
+                       "verified": bool(res.verified), "seconds_median": seconds}
+    print(f"rocker, least pressure angle at R0 {o['held_R0']:.6f} mm: ratio {o['value']:.6f}, "
+          f"{o['iterations']} iterations, local measure {o['local_measure']:.1e}, {seconds:.3f} s", flush=True)
+    doc = read_toml(FLAT_ROCKER)
+    doc["optimize"] = {"free": ["rise", "return"], "max_Ca": "cycloidal", "max_Cj": "cycloidal",
+                       "continuity": 2, "spans": 10}
+    res, seconds = _timed(solve, design_from_dict(doc), repeats)
+    o = res.optimization
+    flat_rocker = {"example": FLAT_ROCKER.name, "original_R0_mm": o["reference"]["R0"], "R0_mm": res.R0,
+                   "iterations": o["iterations"], "local_measure": o["local_measure"],
+                   "verified": bool(res.verified), "seconds_median": seconds}
+    print(f"flat rocker: R0 {res.R0:.6f} mm (was {o['reference']['R0']:.6f}), {o['iterations']} iterations, "
+          f"local measure {o['local_measure']:.1e}, {seconds:.3f} s", flush=True)
     return {"machine": machine(), "example": EXAMPLE.name, "original_R0_mm": original.R0, "rows": rows,
-            "rocker": rocker}
+            "rocker": rocker, "rocker_pressure_angle": rocker_pressure, "flat_rocker": flat_rocker}
 
 
 def main() -> None:
