@@ -86,14 +86,28 @@ def _ratio(pressure) -> float:
 FALLBACK_RTOL = 1e-4
 
 
+#: The bisection's profiles are sampled at a chord of at most this fraction of R0 (when the design gives no
+#: tolerance); the cam returned is checked at the design's own.
+SEARCH_CHORD = 1e-7
+
+
 def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[[Any], bool]):
     """The designed laws' smallest cam that passes the profile's checks: R0 raised by a floor, bisected.
 
-    Returns the passing solution, or None when no cam up to 2**10 times the optimum's R0 passes.
+    The bisection samples each candidate's profile at a chord of ``SEARCH_CHORD`` times R0 when that is
+    coarser than the design's default (a cam of kilometres is not sampled at a micrometre for every floor
+    tried); the cam returned passes at the design's own tolerance (raised by ``FALLBACK_RTOL`` steps until it
+    does). Returns the passing solution, or None when no cam up to 2**10 times the optimum's R0 passes.
     """
-    def at(floor: float):
+    from cams.profile.roller import DEFAULT_TOLERANCE
+
+    search = new
+    if new.tolerance is None and SEARCH_CHORD * sol.R0 > DEFAULT_TOLERANCE:
+        search = replace(new, tolerance=SEARCH_CHORD * float(sol.R0))
+
+    def at(design, floor: float):
         try:
-            cand = solve_fixed(replace(new, limits=replace(new.limits, min_base_radius=floor)))
+            cand = solve_fixed(replace(design, limits=replace(design.limits, min_base_radius=floor)))
         except InfeasibleError:
             return None
         return cand if passes(cand) else None
@@ -101,7 +115,7 @@ def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[[Any]
     lo, hi, best = float(sol.R0), float(sol.R0), None
     for _ in range(40):
         hi *= 1.2
-        best = at(hi)
+        best = at(search, hi)
         if best is not None:
             break
         lo = hi
@@ -109,12 +123,16 @@ def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[[Any]
             return None
     while hi - lo > FALLBACK_RTOL * hi:
         mid = 0.5 * (lo + hi)
-        cand = at(mid)
-        if cand is None:
+        if at(search, mid) is None:
             lo = mid
         else:
-            hi, best = mid, cand
-    return best
+            hi = mid
+    for _ in range(100):        # the design's own tolerance
+        best = at(new, hi)
+        if best is not None:
+            return best
+        hi *= 1 + FALLBACK_RTOL
+    return None
 
 
 def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any], Any],

@@ -317,6 +317,20 @@ def test_optimum_failing_the_profile_checks_gives_the_smallest_passing_cam():
     assert not profile_passes(below)
 
 
+def test_the_smallest_passing_cam_is_the_same_at_a_large_scale():
+    """The same fallback a million times larger (its floors searched with profiles at a chord of 1e-7 of R0,
+    the cam returned checked at the design's own): R0 in proportion, to the bisection's 1e-4."""
+    got = {}
+    for k in (1.0, 1e6):
+        doc = _doc(max_Ca="poly4567", max_Cj="poly4567", spans=10)
+        doc["follower"]["roller_radius"] = 12.0 * k
+        doc["follower"]["stroke"] *= k
+        res = solve(design_from_dict(doc))
+        assert any("fails the profile's checks" in n for n in res.optimization["notes"])
+        got[k] = res.R0 / k
+    assert got[1e6] == pytest.approx(got[1.0], rel=2e-4)
+
+
 @pytest.mark.parametrize("example", [EXAMPLE, "examples/rocker_force.toml", "examples/rocker_flat.toml"])
 def test_no_free_phase_gives_todays_exact_answer(example):
     d = read_toml(example)
