@@ -186,7 +186,7 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     # phases' limits between the samples); the other objectives' laws are sized by the exact method, their least
     # R0 (within the size held up to the programs' sampling of the fixed phases: said if not)
     if spec.objective == "pressure_angle" and hold is not None and isinstance(new, CamDesign):
-        if isinstance(new.follower, Rocker):     # the centre of the cam sized at the least ratio's limits
+        if isinstance(new.follower, Rocker):     # the last accepted iterate's centre (within the size held)
             new = replace(new, centre=ld.centre, base_radius=None,
                           limits=replace(new.limits, centre_distance=None))
         else:

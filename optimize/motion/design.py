@@ -1,11 +1,14 @@
-"""The driver: a design's free phases' laws, designed with the cam (translating followers).
+"""The driver: a design's free phases' laws, designed with the cam.
 
-:func:`design_laws` resolves the request (free phases, caps, what is held),
-solves the conservative program (every constraint at every cam angle, by the
-Bernstein coefficients of every piece of every span) for the laws and the
-relaxed program (the constraints at samples only) for a proven lower bound on
-the space's optimum. The caller (:mod:`cams.motion_design`) then sizes and
-checks the cam of the laws found, which gives the upper bound.
+:func:`design_laws` resolves the request (free phases, caps, what is held).
+For a translating follower it solves the conservative program (every
+constraint at every cam angle, by the Bernstein coefficients of every piece of
+every span) for the laws and the relaxed program (the constraints at samples
+only) for a proven lower bound on the space's optimum. A rocker's problem is
+not convex: sequential convex programming (:mod:`optimize.motion.rocker`, a
+flat face's :mod:`optimize.motion.flat_rocker`) gives a local optimum and its
+measure, no bound. The caller (:mod:`cams.motion_design`) then sizes and checks
+the cam of the laws found, which gives the upper bound.
 """
 
 from __future__ import annotations
@@ -177,8 +180,9 @@ def design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, *, h
     Parameters
     ----------
     design : CamDesign or FlatFaceDesign
-        A translating follower's design; its free phases' laws are the
-        starting point only (not used by the programs).
+        Its free phases' laws are the reference (a translating follower's
+        programs do not use them; a rocker's iteration starts from the
+        space's law nearest them).
     spec : MotionDesignSpec
     hold : float or None
         For objectives other than ``"R0"``: the base radius held (length; the
@@ -310,11 +314,14 @@ def _rocker_result(steps, spec: MotionDesignSpec, free: tuple[int, ...], caps: d
                    space: Space, t0: float) -> LawDesign:
     """The :class:`LawDesign` of a rocker's sequential convex programming (no bound: a local optimum)."""
     box = space.bounds(caps)
-    return LawDesign(program=steps.program, free=free, objective=spec.objective, solver_value=steps.value,
+    history, value = steps.history, steps.value
+    if spec.objective in ("jerk_squared", "snap_squared"):     # the programs minimize the integral's root
+        history, value = tuple(x**2 for x in history), value**2
+    return LawDesign(program=steps.program, free=free, objective=spec.objective, solver_value=value,
                      lower_bound=None, centre=(float(steps.centre[0]), float(steps.centre[1])), caps=caps,
                      space=space, box_binds=bool(np.any((np.abs(steps.v) >= 0.999 * box) & space.declared(caps))),
                      seconds=time.perf_counter() - t0, local_measure=steps.local_measure,
-                     iterations=steps.iterations, history=steps.history)
+                     iterations=steps.iterations, history=history)
 
 
 def _explain_caps(req: Request) -> None:

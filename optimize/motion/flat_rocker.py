@@ -11,7 +11,9 @@ concave in them: the problem is not convex. Each iteration of
 1. linearizes ``rho`` at the samples of every free phase in the laws'
    variables and R0 (central differences in ``psi, psi', psi''`` and R0; the
    fixed phases' and the dwells' ``rho`` in R0 alone), keeps the caps, the
-   joints and a trust region on ``S, S', S''`` and on R0;
+   joints and a trust region on ``S, S', S''`` (R0 is free in its range, as
+   a rocker roller's centre is: with the laws held, the model is the sampled
+   sizing);
 2. solves that linear program for a step, and
 3. sizes the stepped laws' cam by the exact method
    (:func:`optimize.flat.min_base_radius_oscillating`: the least R0 with
@@ -36,18 +38,17 @@ from cams.model.design import FlatFaceDesign
 from cams.model.follower import FlatRocker
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
-from optimize.motion.conic import ConicProgram, solve
+from optimize.motion.conic import ConicProgram
 from optimize.motion.lawrows import cap_rows, fit, held_objective, held_value, samples, trust_rows, within_caps
-from optimize.motion.rocker import RockerSteps
-from optimize.motion.scp import Iterate, Outcome, minimize
+from optimize.motion.rocker import RockerSteps, steps_of
+from optimize.motion.scp import Iterate, minimize, solved
 from optimize.motion.space import Space
+from optimize.motion.translating import FIXED_SAMPLES
 
 __all__ = ["design_flat_rocker", "design_flat_rocker_held", "curvature_rates"]
 
 #: Central-difference steps of ``rho``'s rates: in the swing and its rates (radians), and in R0 (times L).
 STEP = 1e-6
-#: Positions a fixed phase at which its ``rho`` is held (linearized in R0).
-FIXED_SAMPLES = 400
 
 
 def _follower(design: FlatFaceDesign) -> FlatRocker:
@@ -181,8 +182,8 @@ def _step_program(design: FlatFaceDesign, space: Space, caps, v: np.ndarray, R0:
     lo = -hi
     if objective == "R0":
         cost[ir] = 1.0
-        lo[ir] = max(lo_R / ell, rk - trust)
-        hi[ir] = min(hi_R / ell * (1 - 1e-9), rk + trust)
+        lo[ir] = lo_R / ell
+        hi[ir] = hi_R / ell * (1 - 1e-9)
         cones: tuple = ()
     else:
         if hold is None:
@@ -194,20 +195,6 @@ def _step_program(design: FlatFaceDesign, space: Space, caps, v: np.ndarray, R0:
     enforce = np.zeros(n, bool)
     enforce[nc:] = True
     return ConicProgram(cost, np.vstack(G), np.concatenate(h), A, b, lo, hi, cones, enforce)
-
-
-def _solved(program: ConicProgram, n: int) -> tuple[float, np.ndarray] | None:
-    sol = solve(program)
-    return (float(sol.value), sol.v[:n]) if sol.feasible else None
-
-
-def _steps(out: Outcome, before: RockerSteps | None = None) -> RockerSteps:
-    b = out.best
-    program, R0 = b.state
-    return RockerSteps(v=b.v, program=program, value=b.value, centre=np.array([R0, 0.0]),
-                       iterations=out.iterations + (before.iterations if before else 0),
-                       accepted=out.accepted + (before.accepted if before else 0), trust=out.trust,
-                       local_measure=out.local_measure, history=out.history)
 
 
 def design_flat_rocker(design: FlatFaceDesign, space: Space, caps: dict[tuple[int, int], float],
@@ -231,7 +218,7 @@ def design_flat_rocker(design: FlatFaceDesign, space: Space, caps: dict[tuple[in
     start = Iterate(v, R0, (program, R0))
 
     def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
-        step = _solved(_step_program(design, space, caps, it.v, it.state[1], trust, "R0"), space.size + 2)
+        step = solved(_step_program(design, space, caps, it.v, it.state[1], trust, "R0"), space.size + 2)
         return None if step is None else (step[0] * ell, step[1])
 
     def exact(raw: np.ndarray) -> Iterate | None:
@@ -245,7 +232,7 @@ def design_flat_rocker(design: FlatFaceDesign, space: Space, caps: dict[tuple[in
             return None
         return Iterate(v_new, R0, (program_new, R0))
 
-    return _steps(minimize(start, model, exact))
+    return steps_of(minimize(start, model, exact), flat=True)
 
 
 def design_flat_rocker_held(design: FlatFaceDesign, space: Space, caps: dict[tuple[int, int], float],
@@ -272,7 +259,7 @@ def design_flat_rocker_held(design: FlatFaceDesign, space: Space, caps: dict[tup
     caps_ = cap_rows(space, caps, space.size)
 
     def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
-        return _solved(_step_program(design, space, caps, it.v, hold, trust, objective, hold), space.size + 2)
+        return solved(_step_program(design, space, caps, it.v, hold, trust, objective, hold), space.size + 2)
 
     def exact(raw: np.ndarray) -> Iterate | None:
         v_new = space.project(raw[:space.size])
@@ -284,4 +271,4 @@ def design_flat_rocker_held(design: FlatFaceDesign, space: Space, caps: dict[tup
         return Iterate(v_new, held_value(space, v_new, objective), (program_new, hold))
 
     start = Iterate(first.v, held_value(space, first.v, objective), (first.program, hold))
-    return _steps(minimize(start, model, exact), first)
+    return steps_of(minimize(start, model, exact), first, flat=True)

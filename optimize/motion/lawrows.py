@@ -107,7 +107,8 @@ def held_value(space: Space, v: np.ndarray, objective: str) -> float:
 
 
 def within_caps(caps_rows: tuple[np.ndarray, np.ndarray], v: np.ndarray) -> bool:
-    """Whether the laws ``v`` meet the caps' rows (the solver may leave one exceeded by its tolerance)."""
+    """Whether the laws ``v`` meet :func:`cap_rows`'s rows, the caps and S within [0, 1], with the caps'
+    tightening given back and 1e-12 (the solver may leave a row exceeded by its tolerance)."""
     G, h = caps_rows
     return not G.shape[0] or bool(np.all(G[:, :v.size] @ v <= h / (1 - TIGHTEN) + 1e-12))
 

@@ -17,18 +17,21 @@ sides of a position's wedge turn with the swing ``psi`` (``optimize.zone``,
    (the trust region grows after a good step and shrinks after a refused one).
 
 Every accepted iterate is a cam sized exactly for its laws (feasible at every
-cam angle); the last one is returned with its local-optimality measure: the
-decrease the linear model still predicts inside the final trust region,
-relative to the value (0 at a first-order stationary point). There is no gap:
-the problem is not convex.
+cam angle); the last one is returned with its local-optimality measure
+(:func:`optimize.motion.scp.stationarity`: the decrease the model predicts
+within a small radius against none, relative; 0 at a first-order stationary
+point). There is no gap: the problem is not convex.
 
 The least pressure angle at the size held (:func:`design_rocker_pressure`)
 is the same iteration on ``(laws, centre, t)``: every limit times ``t``, the
 sides' rate in ``t`` by central differences, the centre within the held R0
 (a cone), and the step's exact value the largest ratio of pressure angle to
-limit at its centre (:func:`ratio_at`). The ratio is the pressure angle's own
+limit at its centre (:func:`ratio_at`, 2,001 positions a phase: its centre
+is the model's, not a sizing's; the cam returned is checked by the
+independent check like any other). The ratio is the pressure angle's own
 (the wedges with K_C = 1); a K_C above 1 keeps its stricter zone at the
-limits themselves as a further constraint.
+limits themselves as a further constraint (:data:`ZONE_MARGIN` inside it at
+the samples).
 """
 
 from __future__ import annotations
@@ -40,10 +43,11 @@ import numpy as np
 from cams.model.design import CamDesign
 from laws.errors import InfeasibleError
 from laws.program import Program
-from optimize.motion.conic import Cone, ConicProgram, solve
+from optimize.motion.conic import Cone, ConicProgram
 from optimize.motion.lawrows import cap_rows, fit, held_objective, held_value, samples, trust_rows, within_caps
-from optimize.motion.scp import Iterate, Outcome, minimize
+from optimize.motion.scp import Iterate, Outcome, minimize, solved
 from optimize.motion.space import Space
+from optimize.motion.translating import FIXED_SAMPLES
 from optimize.zone import side_terms, wedges
 
 __all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "design_rocker_pressure", "ratio_at"]
@@ -61,17 +65,20 @@ class RockerSteps:
     program : Program
         Its programme.
     value : float
-        The exact value (R0 or L, length) of its cam.
+        The exact value of the objective minimized: R0 or L (length), the held objective's
+        (:func:`held_value`: a peak's bound, or the root of an integral), or the pressure-angle ratio.
     centre : ndarray, shape (2,)
-        Its cam centre (fixed frame).
+        Its cam centre (fixed frame); a flat-faced rocker's ``(R0, 0)``.
     iterations : int
+        All the iterations, a held objective's first loop (the least R0) included.
     accepted : int
+        The steps the last loop accepted (``len(history) - 1``).
     trust : float
         The last trust radius.
     local_measure : float
-        The relative decrease the linear model still predicts within the last trust radius.
+        :func:`optimize.motion.scp.stationarity` at the result.
     history : tuple of float
-        The exact value after each accepted step, the start first.
+        The last loop's exact value after each accepted step, its start first.
     """
 
     v: np.ndarray
@@ -123,7 +130,7 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
         pure = design.with_(limits=replace(design.limits, safety_factor=1.0))
         _side_rows(pure, space, vv, centre, u, ratio, G, h)
         if design.limits.safety_factor != 1.0:
-            _side_rows(design, space, vv, centre, u, None, G, h)
+            _side_rows(design, space, vv, centre, u, None, G, h, margin=ZONE_MARGIN)
     Gc, hc = cap_rows(space, caps, n)
     G.append(Gc)
     h.append(hc)
@@ -148,10 +155,6 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
         if hold is None or ratio is None:
             raise ValueError("the least pressure angle needs the size held and the current ratio")
         cones = (Cone(np.zeros(n), hold / ell, F, -A0 / ell),)
-        row = np.zeros((1, n))      # the trust region on the ratio
-        row[0, it] = 1.0
-        G += [row, -row]
-        h += [np.array([ratio + trust]), np.array([trust - ratio])]
     else:
         if hold is None:
             raise ValueError(f"objective {objective!r} needs the size held")
@@ -168,6 +171,9 @@ def _step_program(design: CamDesign, space: Space, caps, v: np.ndarray, centre: 
     return ConicProgram(cost, np.vstack(G), np.concatenate(h), A, b, lo, hi, cones, enforce)
 
 
+#: How far inside K_C's sampled sides the least pressure angle's model keeps the centre (units of the scale):
+#: more than the sides bulge between the samples, so that the iterate passes :func:`_zone_admits`.
+ZONE_MARGIN = 1e-4
 #: The step in the ratio of the central differences of the sides.
 RATE_STEP = 1e-6
 
@@ -177,6 +183,12 @@ def _times(design: CamDesign, ratio: float):
     lim = design.limits
     ret = None if lim.return_pressure_angle is None else lim.return_pressure_angle * ratio
     return replace(lim, pressure_angle=lim.pressure_angle * ratio, return_pressure_angle=ret)
+
+
+def _rate_points(design: CamDesign, tk: float) -> tuple[float, float]:
+    """The ratios of the sides' differences around ``tk``: ``tk +- RATE_STEP``, the upper one kept below
+    :func:`_top_ratio` (every limit below 90 degrees)."""
+    return min(tk + RATE_STEP, _top_ratio(design)), tk - RATE_STEP
 
 
 def _top_ratio(design: CamDesign) -> float:
@@ -217,13 +229,14 @@ def ratio_at(design: CamDesign, program: Program, centre: np.ndarray) -> float:
 
 
 def _side_rows(design: CamDesign, space: Space, vv: np.ndarray, centre: np.ndarray, u: np.ndarray,
-               ratio: float | None, G: list, h: list) -> None:
+               ratio: float | None, G: list, h: list, margin: float = 0.0) -> None:
     """Append to ``G, h`` the rows of every limited phase's wedge sides at the samples ``u`` (a free phase's
-    linearized at the laws ``vv`` and ``centre``, a fixed phase's exact in the centre, at 400 positions).
+    linearized at the laws ``vv`` and ``centre``, a fixed phase's exact in the centre, at FIXED_SAMPLES positions).
 
     Variables as :func:`_step_program`'s (``vv`` padded with its three: the centre over the scale, then the
     value). With ``ratio`` (the current ``t_k``), the limits are the design's times the value ``t``,
-    linearized in it by central differences of the sides.
+    linearized in it by central differences of the sides. ``margin`` (units of the scale) keeps the centre
+    that far inside every sampled side.
     """
     ell = design.scale
     n = vv.size
@@ -231,20 +244,20 @@ def _side_rows(design: CamDesign, space: Space, vv: np.ndarray, centre: np.ndarr
     index = {i: k for k, i in enumerate(space.free)}
     tk = 1.0 if ratio is None else ratio
     limits = {i: lim * tk for i, lim in design.constrained_phases()}
-    fixed = {i: np.linspace(0.0, 1.0, 400) for i in limits if i not in index}
+    fixed = {i: np.linspace(0.0, 1.0, FIXED_SAMPLES) for i in limits if i not in index}
     if fixed:
         N, c = wedges(design.with_(limits=_times(design, tk)), fixed).lines()
         rows = np.zeros((N.shape[0], n))
         rows[:, io:io + 2] = N
         rhs = c / ell
-        if ratio is not None:   # h = N(t) . O - c(t), its rate in t by central differences
-            up, down = (wedges(design.with_(limits=_times(design, tk + e)), fixed).lines()
-                        for e in (RATE_STEP, -RATE_STEP))
-            ht = ((up[0] - down[0]) @ centre - (up[1] - down[1])) / (2 * RATE_STEP)
+        if ratio is not None:   # h = N(t) . O - c(t), its rate in t by differences
+            t_up, t_down = _rate_points(design, tk)
+            up, down = (wedges(design.with_(limits=_times(design, t)), fixed).lines() for t in (t_up, t_down))
+            ht = ((up[0] - down[0]) @ centre - (up[1] - down[1])) / (t_up - t_down)
             rows[:, it] = ht / ell
             rhs = rhs + ht * tk / ell
         G.append(rows)
-        h.append(rhs)
+        h.append(rhs - margin)
     for i, k in index.items():
         if i not in limits:
             continue
@@ -256,8 +269,9 @@ def _side_rows(design: CamDesign, space: Space, vv: np.ndarray, centre: np.ndarr
         hk, hs, hd, normals = side_terms(design, limits[i], s, ds, centre)
         if ratio is not None:
             lim = limits[i] / tk
-            ht = (side_terms(design, lim * (tk + RATE_STEP), s, ds, centre)[0]
-                  - side_terms(design, lim * (tk - RATE_STEP), s, ds, centre)[0]) / (2 * RATE_STEP)
+            t_up, t_down = _rate_points(design, tk)
+            ht = (side_terms(design, lim * t_up, s, ds, centre)[0]
+                  - side_terms(design, lim * t_down, s, ds, centre)[0]) / (t_up - t_down)
         for side in (0, 1):
             nrm = normals[:, side]
             # h ~ h_k + n . (O - O_k) + dh/ds (s - s_k) + dh/ds' (s' - s'_k) [+ dh/dt (t - t_k)] <= 0
@@ -268,7 +282,7 @@ def _side_rows(design: CamDesign, space: Space, vv: np.ndarray, centre: np.ndarr
                 rows[:, it] = ht[:, side] / ell
                 rhs = rhs + ht[:, side] * tk / ell
             G.append(rows)
-            h.append(rhs)
+            h.append(rhs - margin)
 
 
 def _zone_admits(design: CamDesign, program: Program, centre: np.ndarray) -> bool:
@@ -283,20 +297,15 @@ def _zone_admits(design: CamDesign, program: Program, centre: np.ndarray) -> boo
     return worst <= 1e-9 * design.scale
 
 
-def _steps(out: Outcome, before: RockerSteps | None = None) -> RockerSteps:
-    """The :class:`RockerSteps` of a loop's outcome (its iterations added to ``before``'s)."""
+def steps_of(out: Outcome, before: RockerSteps | None = None, flat: bool = False) -> RockerSteps:
+    """The :class:`RockerSteps` of a loop's outcome, its iterates' state ``(programme, centre)`` (a flat face's
+    ``(programme, R0)``); the iterations of ``before`` (a first loop) added."""
     b = out.best
-    program, centre = b.state
+    program, where = b.state
+    centre = np.array([where, 0.0]) if flat else np.asarray(where, float)
     return RockerSteps(v=b.v, program=program, value=b.value, centre=centre,
-                       iterations=out.iterations + (before.iterations if before else 0),
-                       accepted=out.accepted + (before.accepted if before else 0), trust=out.trust,
-                       local_measure=out.local_measure, history=out.history)
-
-
-def _solved(program: ConicProgram, n: int) -> tuple[float, np.ndarray] | None:
-    """The model's value and variables, or None when it is infeasible."""
-    sol = solve(program)
-    return (float(sol.value), sol.v[:n]) if sol.feasible else None
+                       iterations=out.iterations + (before.iterations if before else 0), accepted=out.accepted,
+                       trust=out.trust, local_measure=out.local_measure, history=out.history)
 
 
 def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
@@ -304,7 +313,7 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
     """The SCP of the module notes for ``design`` (a rocker roller), minimizing ``objective`` (``"R0"``/``"L"``).
 
     ``start``: the laws' variables to start from (default: the space's law nearest the original laws,
-    :func:`optimize.motion.lawrows.fit`); they must meet the caps and the joints.
+    :func:`optimize.motion.lawrows.fit`), projected on the joints; the caller sees that they meet the caps.
 
     Raises
     ------
@@ -321,7 +330,7 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
     value, centre = _sized(design, program, objective)
 
     def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
-        step = _solved(_step_program(design, space, caps, it.v, it.state[1], trust, objective), space.size + 3)
+        step = solved(_step_program(design, space, caps, it.v, it.state[1], trust, objective), space.size + 3)
         return None if step is None else (step[0] * design.scale, step[1])
 
     def exact(raw: np.ndarray) -> Iterate | None:
@@ -335,7 +344,7 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
             return None
         return Iterate(v_new, value_new, (program_new, centre_new))
 
-    return _steps(minimize(Iterate(v, value, (program, centre)), model, exact))
+    return steps_of(minimize(Iterate(v, value, (program, centre)), model, exact))
 
 
 def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
@@ -361,7 +370,7 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
     caps_rows = cap_rows(space, caps, space.size)
 
     def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
-        return _solved(_step_program(design, space, caps, it.v, it.state[1], trust, objective, hold),
+        return solved(_step_program(design, space, caps, it.v, it.state[1], trust, objective, hold),
                        space.size + 3)
 
     def exact(raw: np.ndarray) -> Iterate | None:
@@ -378,7 +387,7 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
         return Iterate(v_new, held_value(space, v_new, objective), (program_new, centre_new))
 
     start = Iterate(first.v, held_value(space, first.v, objective), (first.program, first.centre))
-    return _steps(minimize(start, model, exact), first)
+    return steps_of(minimize(start, model, exact), first)
 
 
 def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], hold: float,
@@ -398,6 +407,9 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
         No law of the space found keeps the cam within ``hold`` at the pressure-angle limits.
     """
     first = design_rocker(design, space, caps, "R0", name)
+    start = Iterate(first.v, ratio_at(design, first.program, first.centre), (first.program, first.centre))
+    if not space.free:          # nothing to design: the laws' own least cam and its ratio
+        return replace(first, value=start.value, history=(start.value,))
     if first.value > hold * (1 + 1e-12):
         raise InfeasibleError("optimize", f"no law of the space found keeps the cam within the size held (R0 <= "
                               f"{hold:.6g} mm) at the pressure-angle limits: raise a cap or minimize R0")
@@ -406,7 +418,7 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
     caps_rows = cap_rows(space, caps, space.size)
 
     def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
-        return _solved(_step_program(design, space, caps, it.v, it.state[1], trust, "pressure_angle", hold,
+        return solved(_step_program(design, space, caps, it.v, it.state[1], trust, "pressure_angle", hold,
                                      it.value), space.size + 3)
 
     def exact(raw: np.ndarray) -> Iterate | None:
@@ -414,6 +426,9 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
         centre_new = raw[space.size:space.size + 2] * design.scale
         if L is not None:
             centre_new = centre_new * (L / np.linalg.norm(centre_new))
+        out = np.linalg.norm(centre_new - A0)
+        if hold < out <= hold * (1 + 1e-6):     # the solver's tolerance on the cone: back onto the circle
+            centre_new = A0 + (centre_new - A0) * (hold / out)
         if not within_caps(caps_rows, v_new) or np.linalg.norm(centre_new - A0) > hold:
             return None
         program_new = space.programme(v_new, name)
@@ -421,5 +436,4 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
             return None
         return Iterate(v_new, ratio_at(design, program_new, centre_new), (program_new, centre_new))
 
-    start = Iterate(first.v, ratio_at(design, first.program, first.centre), (first.program, first.centre))
-    return _steps(minimize(start, model, exact), first)
+    return steps_of(minimize(start, model, exact), first)

@@ -5,9 +5,16 @@ within a trust radius (the caller's ``model``), evaluates the step exactly
 (the caller's ``exact``: the cam sized or checked by the exact method) and
 keeps it only when its exact value is smaller. The radius doubles after a
 step that achieved more than 3/4 of the decrease the model predicted and is
-quartered after a refused one. The local-optimality measure is the decrease
-the model still predicts within the last radius, relative to the value (0 at
-a first-order stationary point).
+quartered after a refused one; the loop stops when the radius falls below
+:data:`TRUST_MIN` (or after :data:`MAX_ITERATIONS`).
+
+The models sample their constraints, so a model's value at the current
+iterate differs from the exact value by the sampling; the local-optimality
+measure therefore compares the model with itself: the decrease it predicts
+within the radius :data:`MEASURE_TRUST` against its value with the radius 0
+(nothing moved), relative to the exact value. It is 0 at a first-order
+stationary point of the model (no feasible direction of descent) and grows
+with the slope of descent left.
 """
 
 from __future__ import annotations
@@ -18,16 +25,18 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Iterate", "Outcome", "minimize", "MAX_ITERATIONS", "TRUST0", "TRUST_MIN"]
+__all__ = ["Iterate", "Outcome", "minimize", "stationarity", "solved", "MAX_ITERATIONS", "TRUST0", "TRUST_MIN",
+           "MEASURE_TRUST"]
 
 #: Iterations at most.
 MAX_ITERATIONS = 40
-#: Initial trust radius on the normalized law S at the samples (S' gets four times as much).
+#: Initial trust radius, in the models' units (the normalized law S at the samples; each model says what else
+#: it bounds with it: S' and S'' four and sixteen times as much, a ratio or R0 over the scale as much).
 TRUST0 = 0.05
+#: The radius within which the local-optimality measure asks the model for a decrease.
+MEASURE_TRUST = 1e-3
 #: The trust radius below which the iteration stops.
 TRUST_MIN = 1e-5
-#: The relative decrease the model must still predict to go on.
-STATIONARY = 1e-9
 
 
 @dataclass(frozen=True)
@@ -70,7 +79,6 @@ def minimize(start: Iterate, model: Callable[[Iterate, float], tuple[float, np.n
     it = start
     history = [float(start.value)]
     iterations = accepted = 0
-    measure = np.inf
     while iterations < MAX_ITERATIONS and trust >= TRUST_MIN:
         iterations += 1
         step = model(it, trust)
@@ -78,9 +86,9 @@ def minimize(start: Iterate, model: Callable[[Iterate, float], tuple[float, np.n
             trust /= 4
             continue
         predicted = it.value - step[0]
-        measure = max(predicted, 0.0) / max(abs(it.value), 1e-300)
-        if measure < STATIONARY:
-            break
+        if predicted <= 0:          # the model sees no decrease within the radius
+            trust /= 4
+            continue
         new = exact(step[1])
         if new is None or not new.value < it.value:
             trust /= 4
@@ -91,5 +99,25 @@ def minimize(start: Iterate, model: Callable[[Iterate, float], tuple[float, np.n
         accepted += 1
         if ratio > 0.75:
             trust *= 2
-    return Outcome(best=it, iterations=iterations, accepted=accepted, trust=trust, local_measure=float(measure),
-                   history=tuple(history))
+    return Outcome(best=it, iterations=iterations, accepted=accepted, trust=trust,
+                   local_measure=stationarity(model, it), history=tuple(history))
+
+
+def stationarity(model: Callable[[Iterate, float], tuple[float, np.ndarray] | None], it: Iterate,
+                 radius: float = MEASURE_TRUST) -> float:
+    """The local-optimality measure at ``it`` (module notes): ``(m(0) - m(radius)) / |value|``, at least 0;
+    ``inf`` when the model is infeasible at radius 0 (the iterate breaks the model's own constraints)."""
+    at = model(it, 0.0)
+    near = model(it, radius)
+    if at is None or near is None:
+        return float("inf")
+    return max(at[0] - near[0], 0.0) / max(abs(it.value), 1e-300)
+
+
+def solved(program, n: int) -> tuple[float, np.ndarray] | None:
+    """A model's value and its first ``n`` variables (:func:`optimize.motion.conic.solve`), or None when the
+    solver finds it infeasible."""
+    from optimize.motion.conic import solve
+
+    sol = solve(program)
+    return (float(sol.value), sol.v[:n]) if sol.feasible else None

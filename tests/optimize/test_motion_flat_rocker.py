@@ -134,3 +134,43 @@ def test_flat_rocker_refuses_what_does_not_apply(objective):
     with pytest.raises(InputError) as e:
         solve(design_from_dict(doc))
     assert e.value.field == "optimize.objective"
+
+
+def test_least_peak_jerk_where_convexity_binds():
+    """The return freed (3-4-5 today, whose radius of curvature sets today's R0): at that R0 the least peak jerk
+    cannot reach the rest-to-rest 32, the convexity limit binds (the independent envelope at the size held
+    touches it), and the jerk is below the 3-4-5's 60."""
+    doc = read_toml(FLAT)
+    doc["optimize"] = {"free": ["return"], "objective": "Cj", "continuity": 2, "spans": 8}
+    res = solve(design_from_dict(doc))
+    o = res.optimization
+    assert res.verified and o["certified"] and res.R0 <= o["held_R0"] * (1 + 1e-12)
+    rho = envelope_radii(res.design, o["held_R0"])
+    assert res.design.min_radius * (1 - 1e-5) <= rho.min() <= res.design.min_radius * (1 + 1e-3)
+    assert 32.0 * (1 + 1e-3) < o["value"] < 60.0
+    S = res.design.program.law_of(2).evaluate(np.linspace(0, 1, 200_001))
+    assert o["value"] == pytest.approx(np.max(np.abs(S[3])), rel=1e-6)
+
+
+def test_curvature_rates_are_first_order_exact_on_the_rise():
+    """At points of the cycloidal rise (s', s'' nonzero): the linear model rho + rates . step misses rho at
+    the stepped point by the step's square (errors fall 100-fold when the step falls 10-fold), in each of s,
+    s', s'' and R0."""
+    from optimize.motion.flat_rocker import curvature_rates
+
+    d = load_design(FLAT)
+    u = np.linspace(0.05, 0.95, 7)
+    m = d.program.evaluate_phase(0, u)
+    R0 = 37.0
+    rho, *g = curvature_rates(d, R0, m.s, m.ds, m.d2s)
+    for k in range(4):
+        errs = []
+        for h in (1e-2, 1e-3):
+            x = [R0, m.s, m.ds, m.d2s]
+            step = h * (10.0 if k == 0 else 1.0)        # R0 in mm, the others in radians
+            x[k] = x[k] + step
+            got = curvature_rates(d, x[0], x[1], x[2], x[3])[0]
+            rate = g[3] if k == 0 else g[k - 1]
+            errs.append(np.max(np.abs(got - (rho + rate * step))))
+        assert errs[1] < max(errs[0] / 50, 1e-9 * rho.max())      # (rho is nearly linear in R0)
+        assert errs[0] < 1e-2 * rho.max()

@@ -162,9 +162,10 @@ def test_rocker_least_pressure_angle_at_the_original_size():
 
 @pytest.mark.parametrize("centre_distance", [None, 140.0])
 def test_rocker_least_pressure_angle_keeps_k_c_and_l(centre_distance):
-    """Form closure, K_C = 1.1, both phases free: the ratio is the pressure angle's own (the independent check,
-    both phases), below 1, with the centre inside K_C's stricter zone at the limits (wedges at 20,001
-    positions a phase) and a fixed L kept."""
+    """Form closure, K_C = 1.1, both phases free: the ratio is the pressure angle's own (the kernel's inversion
+    at 100,001 angles of each phase), below 1, with the centre inside K_C's stricter zone at the limits (wedges
+    at 20,001 positions a phase: the model keeps 1e-4 of the arm inside them at its samples, more than they
+    bulge between) and a fixed L kept."""
     from optimize.zone import wedges
 
     doc = read_toml(FORM)
@@ -177,7 +178,14 @@ def test_rocker_least_pressure_angle_keeps_k_c_and_l(centre_distance):
     o = res.optimization
     p = res.pressure
     assert res.verified and o["certified"] and res.R0 <= o["held_R0"] * (1 + 1e-12)
-    assert o["value"] == max(p.rise / p.rise_limit, p.ret / p.return_limit) and o["value"] < 0.9
+    d = res.design
+    ratios = []
+    for i, lim in ((0, p.rise_limit), (2, p.return_limit)):
+        start, beta = d.program.starts[i], d.program.phases[i].angle
+        phi = np.linspace(start, start + beta, 100_001)
+        ratios.append(np.abs(pressure_angle(invert_at(d, res.centre, phi))).max() / lim)
+    assert o["value"] == pytest.approx(max(ratios), rel=1e-6) and o["value"] < 0.9
+    assert o["history"][-1] == pytest.approx(o["value"], rel=1e-6)
     if centre_distance is not None:
         assert res.L == pytest.approx(centre_distance, rel=1e-12)
     kc = replace(res.design, centre=None, limits=replace(load_design(FORM).limits,
