@@ -86,36 +86,25 @@ def _ratio(pressure) -> float:
 FALLBACK_RTOL = 1e-4
 
 
-#: The bisection's profiles are sampled at a chord of at most this fraction of R0 (when the design gives no
-#: tolerance); the cam returned is checked at the design's own.
-SEARCH_CHORD = 1e-7
-
-
-def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[[Any], bool]):
+def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[..., bool]):
     """The designed laws' smallest cam that passes the profile's checks: R0 raised by a floor, bisected.
 
-    The bisection samples each candidate's profile at a chord of ``SEARCH_CHORD`` times R0 when that is
-    coarser than the design's default (a cam of kilometres is not sampled at a micrometre for every floor
-    tried); the cam returned passes at the design's own tolerance (raised by ``FALLBACK_RTOL`` steps until it
-    does). Returns the passing solution, or None when no cam up to 2**10 times the optimum's R0 passes.
+    The bisection asks ``passes(candidate, search=True)`` (a coarser chord for a very large cam, see
+    :func:`cams.solve.profile_passes`); the cam returned passes at the design's own tolerance (raised by
+    ``FALLBACK_RTOL`` steps until it does). Returns the passing solution, or None when no cam up to 2**10
+    times the optimum's R0 passes.
     """
-    from cams.profile.roller import DEFAULT_TOLERANCE
-
-    search = new
-    if new.tolerance is None and SEARCH_CHORD * sol.R0 > DEFAULT_TOLERANCE:
-        search = replace(new, tolerance=SEARCH_CHORD * float(sol.R0))
-
-    def at(design, floor: float):
+    def at(floor: float, search: bool):
         try:
-            cand = solve_fixed(replace(design, limits=replace(design.limits, min_base_radius=floor)))
+            cand = solve_fixed(replace(new, limits=replace(new.limits, min_base_radius=floor)))
         except InfeasibleError:
             return None
-        return cand if passes(cand) else None
+        return cand if passes(cand, search=search) else None
 
     lo, hi, best = float(sol.R0), float(sol.R0), None
     for _ in range(40):
         hi *= 1.2
-        best = at(search, hi)
+        best = at(hi, True)
         if best is not None:
             break
         lo = hi
@@ -123,12 +112,12 @@ def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[[Any]
             return None
     while hi - lo > FALLBACK_RTOL * hi:
         mid = 0.5 * (lo + hi)
-        if at(search, mid) is None:
+        if at(mid, True) is None:
             lo = mid
         else:
             hi = mid
     for _ in range(100):        # the design's own tolerance
-        best = at(new, hi)
+        best = at(hi, False)
         if best is not None:
             return best
         hi *= 1 + FALLBACK_RTOL
@@ -136,7 +125,7 @@ def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[[Any]
 
 
 def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any], Any],
-                  passes: Callable[[Any], bool] | None = None):
+                  passes: Callable[..., bool] | None = None):
     """Design the free phases' laws of ``design`` with its cam (see the module notes).
 
     Parameters

@@ -325,18 +325,30 @@ def solve(design, *, method: str | None = None, objective: str | None = None):
                    certified=sized.certified)
 
 
-def profile_passes(result) -> bool:
+#: ``profile_passes(..., search=True)`` samples a cam at a chord of this fraction of R0 when that is coarser than
+#: the default (a search over many candidate cams of kilometres is not sampled at a micrometre).
+SEARCH_CHORD = 1e-7
+
+
+def profile_passes(result, *, search: bool = False) -> bool:
     """True when the cam of ``result`` (a roller's :class:`SolveResult`) has a working profile whose checks pass.
 
     The base circle larger than the roller, no knife edge in a groove, and every check of
     :func:`cams.checks.profile.check_profile` but the pressure angle's (undercut, sharp points, a closed
     profile, the bore, the least radius of curvature) at the design's chord tolerance: the buildability of
     :mod:`cams.assess` without the ``[dynamics]`` checks. A flat face's result: its checks
-    (:func:`cams.checks.flat.check_flat_face`).
+    (:func:`cams.checks.flat.check_flat_face`). ``search``: a design without a tolerance of its own is sampled
+    at :data:`SEARCH_CHORD` times R0 when that is coarser than the default (for a search; the answer is then
+    checked without it).
     """
+    from dataclasses import replace
+
     from cams.checks.base import PRESSURE_CHECKS
+    from cams.profile.roller import DEFAULT_TOLERANCE
 
     d = result.design
+    if search and d.tolerance is None and SEARCH_CHORD * result.R0 > DEFAULT_TOLERANCE:
+        d = replace(d, tolerance=SEARCH_CHORD * float(result.R0))
     try:
         if isinstance(d, FlatFaceDesign):
             from cams.checks.flat import check_flat_face
