@@ -92,8 +92,10 @@ def _characteristics_cached(law: Law) -> Characteristics:
     cv, ca, cj = (_peak(law, k) for k in (1, 2, 3))
     ends = law.evaluate(np.array([0.0, 1.0]))
     jumps = law_jumps(law)
-    hard = any(abs(v) > END_TOL * max(1.0, cv) for v in ends[1]) or any(j.kind == "hard" for j in jumps)
-    soft = hard or any(abs(a) > END_TOL * max(1.0, ca) for a in ends[2]) or any(j.kind == "soft" for j in jumps)
+    # an end value is zero within END_TOL of the law's own scale there: the derivative and the next one's peak
+    # (a designed spline's ends carry the rounding of its many spans' integration, of the size of the latter)
+    hard = any(abs(v) > END_TOL * max(1.0, cv, ca) for v in ends[1]) or any(j.kind == "hard" for j in jumps)
+    soft = hard or any(abs(a) > END_TOL * max(1.0, ca, cj) for a in ends[2]) or any(j.kind == "soft" for j in jumps)
     return Characteristics(law.name, cv, math.inf if hard else ca, math.inf if soft else cj)
 
 

@@ -103,16 +103,17 @@ def _law_jumps_cached(law: Law) -> tuple[LawJump, ...]:
     for k, kind in ((1, "hard"), (2, "soft")):
         peak = max(1.0, float(np.max(np.abs(d[k]))))
         tol = 1e-6 * peak
-        # declared breakpoints: one-sided values
+        slope = float(np.max(np.abs(d[k + 1])))
+        # declared breakpoints: one-sided values, 2 _EPS apart: a continuous derivative changes by up to
+        # 2 _EPS times the next one's peak across them (the scan's, doubled for the peak between samples)
         for b in law.breakpoints:
             if not 0.0 < b < 1.0:
                 continue
             lo, hi = law.evaluate(np.array([b - _EPS, b + _EPS]))[k]
-            if abs(hi - lo) > tol:
+            if abs(hi - lo) > tol + 4 * _EPS * slope:
                 found.append(LawJump(float(b), kind, float(hi - lo)))
         # scan for jumps nobody declared: a change between neighbours much
         # larger than the next derivative allows
-        slope = float(np.max(np.abs(d[k + 1])))
         step = np.abs(np.diff(d[k]))
         big = np.nonzero(step > max(20.0 * h * slope, 1e-3 * peak))[0]
         for i in big:

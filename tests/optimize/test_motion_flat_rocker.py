@@ -174,3 +174,16 @@ def test_curvature_rates_are_first_order_exact_on_the_rise():
             errs.append(np.max(np.abs(got - (rho + rate * step))))
         assert errs[1] < max(errs[0] / 50, 1e-9 * rho.max())      # (rho is nearly linear in R0)
         assert errs[0] < 1e-2 * rho.max()
+
+
+def test_a_steep_designed_law_has_a_finite_jerk_peak():
+    """Degree 11, C3, Ca minimized with no cap on the jerk: S''' reaches ~1.6e3, so the one-sided values 2e-9
+    apart at a knot differ by ~3e-6 and the ends carry ~1e-7 of rounding; neither is a jump (the joints are
+    C3 by construction): Cj is the dense peak of |S'''|, not infinite."""
+    doc = read_toml(FLAT)
+    doc["optimize"] = {"objective": "Ca", "degree": 11, "spans": 10}
+    res = solve(design_from_dict(doc))
+    (phase,) = res.optimization["phases"]
+    S = res.design.program.law_of(0).evaluate(np.linspace(0, 1, 400_001))
+    assert phase["Cj"] is not None and phase["Cj"] == pytest.approx(np.max(np.abs(S[3])), rel=1e-6)
+    assert phase["Cj"] > 100
