@@ -39,7 +39,9 @@ def _save(args, cam, rep: dict, usable: bool) -> None:
     from cams.io.tomlwrite import dumps
 
     o = cam.solution.optimization
-    doc = designed_document(read_toml(args.file), cam.design.program, tuple(o["free"]), floor=o.get("floor"))
+    held = getattr(cam.design, "centre", None) if o["objective"] == "pressure_angle" else None
+    doc = designed_document(read_toml(args.file), cam.design.program, tuple(o["free"]), floor=o.get("floor"),
+                            centre=held)
     source = Path(args.file).name.replace("\n", " ").replace("\r", " ")
     text = f"# The laws designed by cams solve from {source}\n" + dumps(doc)
     path = atomic_write(args.save_design, "--save-design", lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))

@@ -540,7 +540,8 @@ def load_design(path: str | Path) -> CamDesign | FlatFaceDesign:
     return design_from_dict(read_toml(path))
 
 
-def designed_document(doc: dict, program: Program, free: tuple[int, ...], *, floor: float | None = None) -> dict:
+def designed_document(doc: dict, program: Program, free: tuple[int, ...], *, floor: float | None = None,
+                      centre: tuple[float, float] | None = None) -> dict:
     """A design file's document with the free phases' laws replaced by ``program``'s, and no ``[optimize]``.
 
     Parameters
@@ -554,6 +555,10 @@ def designed_document(doc: dict, program: Program, free: tuple[int, ...], *, flo
         The phases whose law is replaced.
     floor : float or None
         ``limits.min_base_radius`` to write (length): the floor that made the designed cam pass its checks.
+    centre : (float, float) or None
+        ``[cam] centre`` to write (length, the follower's fixed frame): the cam the design holds (the least
+        pressure angle's). It replaces the keys that would fix it otherwise (``[cam] base_radius``,
+        ``follower.offset``, ``limits.centre_distance``).
 
     Returns
     -------
@@ -571,4 +576,10 @@ def designed_document(doc: dict, program: Program, free: tuple[int, ...], *, flo
         out["motion"][i]["law"] = law_to_table(program.law_of(i))
     if floor is not None:
         out.setdefault("limits", {})["min_base_radius"] = float(floor)
+    if centre is not None:
+        cam = out.setdefault("cam", {})
+        cam.pop("base_radius", None)
+        cam["centre"] = [float(centre[0]), float(centre[1])]
+        out.get("follower", {}).pop("offset", None)
+        out.get("limits", {}).pop("centre_distance", None)
     return out

@@ -406,3 +406,22 @@ def test_bug_plot_optimized_without_free_phase_warns_on_stderr(tmp_path):
     r = cams("plot", p, "--out", tmp_path / "pics", "--only", "optimized")
     assert r.returncode == 0
     assert r.stderr == "", r.stderr
+
+
+@pytest.mark.parametrize("example, subs", [
+    ("rocker_force", (("roller_radius = 10.0 ", "roller_radius = 2.0 "), ('[solve]\nmethod = "exact"\n', ""))),
+    ("translating_force", ()),
+    ("translating_force", (("roller_radius = 8.0\n", "roller_radius = 8.0\noffset = 2.0\n"),)),
+])
+def test_least_pressure_angle_saved_keeps_its_cam(tmp_path, example, subs):
+    """The least pressure angle holds the cam's size with its own centre: the saved design keeps that centre
+    ([cam] centre; the offset or L it replaces dropped) and solves back to the same cam, not to the designed
+    laws' smallest one (a regression: the saved file sized a smaller cam, which undercut)."""
+    p = design(tmp_path, example, "[optimize]\nobjective = \"pressure_angle\"\nspans = 6\n", subs=subs)
+    out = tmp_path / "saved.toml"
+    first = cams("solve", p, "--json", "--save-design", out)
+    assert first.returncode == 0, first.stdout + first.stderr
+    again = cams("solve", out, "--json")
+    assert again.returncode == 0, again.stdout + again.stderr
+    a, b = json.loads(first.stdout), json.loads(again.stdout)
+    assert b["R0"] == a["R0"] and b["centre"] == a["centre"]
