@@ -26,7 +26,8 @@ from dataclasses import dataclass
 from laws.errors import InputError, check_option, show_value
 
 __all__ = ["MOTION_OBJECTIVES", "CAP_KEYS", "MotionDesignSpec", "DEFAULT_DEGREE", "DEFAULT_SPANS",
-           "DEFAULT_CONTINUITY", "MAX_DEGREE", "MAX_SPANS"]
+           "DEFAULT_CONTINUITY", "MAX_DEGREE", "MAX_SPANS",
+           "MAX_ROCKER_SPANS"]
 
 #: What ``[optimize] objective`` may ask for.
 MOTION_OBJECTIVES = ("R0", "L", "pressure_angle", "Ca", "Cj", "jerk_squared", "snap_squared")
@@ -40,6 +41,9 @@ MAX_DEGREE = 11
 #: The most knot spans a phase: the programs' matrices grow with their square (80 spans take about 1.5 s, 100
 #: about 3 s after the imports on this project's machine; 400 took minutes).
 MAX_SPANS = 100
+#: Knot spans per free phase at most for a rocker (sequential convex programming: dozens of programs whose
+#: size grows with the spans; 40 spans take about 15 s a free phase).
+MAX_ROCKER_SPANS = 40
 #: The largest cap: a normalized peak beyond it is no cap a cam could meet with a roller (the library's laws
 #: have peaks below 100), and would only spoil the programs' scaling.
 MAX_CAP = 1e6

@@ -94,7 +94,7 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
         rows.append(("the original laws' cam", f"R0 = {ref['R0']:.6f} mm; this one: R0 = {R0:.6f} mm"))
     for p in o["phases"]:
         orig = p["original"]
-        rows.append((f"[[motion]] {p['phase'] + 1} ({p['kind']})",
+        rows.append((f"phase {p['phase']} ({p['kind']}; [[motion]] row {p['phase'] + 1})",
                      f"Cv {_peak(p['Cv'])}, Ca {_peak(p['Ca'])}, Cj {_peak(p['Cj'])}; was {orig['law']}: "
                      f"Cv {_peak(orig['Cv'])}, Ca {_peak(orig['Ca'])}, Cj {_peak(orig['Cj'])}"))
     return rows

@@ -20,7 +20,7 @@ import numpy as np
 
 from cams.model.design import CamDesign, FlatFaceDesign
 from cams.model.follower import Translating
-from cams.model.motiondesign import CAP_KEYS, MotionDesignSpec
+from cams.model.motiondesign import CAP_KEYS, MAX_ROCKER_SPANS, MotionDesignSpec
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
 from optimize.motion.conic import ConicProgram, SolverFailure, lower_bound, solve
@@ -141,6 +141,10 @@ def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -
     flat = isinstance(design, FlatFaceDesign)
     f = design.follower
     if f.kind == "rocker":
+        if spec.spans > MAX_ROCKER_SPANS:
+            raise InputError("optimize.spans", f"a rocker's motion design (sequential convex programming) takes "
+                             f"from 1 to {MAX_ROCKER_SPANS} spans, got {spec.spans}: its time grows with their "
+                             "square")
         if flat and spec.objective == "L":
             raise InputError("optimize.objective", "a flat-faced rocker's centre distance is given "
                              "(follower.centre_distance): its cam is sized by 'R0'")

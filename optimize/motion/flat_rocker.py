@@ -40,7 +40,7 @@ from laws.errors import InfeasibleError, InputError
 from laws.program import Program
 from optimize.motion.conic import ConicProgram
 from optimize.motion.lawrows import cap_rows, fit, held_objective, held_value, samples, trust_rows, within_caps
-from optimize.motion.rocker import RockerSteps, steps_of
+from optimize.motion.rocker import RockerSteps, held_size, steps_of
 from optimize.motion.scp import Iterate, minimize, solved
 from optimize.motion.space import Space
 from optimize.motion.translating import FIXED_SAMPLES
@@ -250,12 +250,12 @@ def design_flat_rocker_held(design: FlatFaceDesign, space: Space, caps: dict[tup
         No law of the space found is convex enough at ``hold`` under the caps.
     """
     first = design_flat_rocker(design, space, caps, name)
-    if first.value > hold * (1 + 1e-12) or not _convex_at(design, first.program, hold):
-        raise InfeasibleError("optimize", f"no law of the space found keeps the cam convex enough at the size held "
-                              f"(R0 = {hold:.6g} mm; the least found is {first.value:.6g} mm): raise a cap or "
-                              "minimize R0")
     if not space.free:
         return first
+    hold = held_size(first.value, hold, caps)
+    if not _convex_at(design, first.program, hold):
+        raise InfeasibleError("optimize", f"the least-R0 laws found are not convex enough at the size held (R0 = "
+                              f"{hold:.10g} mm) though they are at {first.value:.10g} mm: minimize R0")
     caps_ = cap_rows(space, caps, space.size)
 
     def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:

@@ -50,7 +50,8 @@ from optimize.motion.space import Space
 from optimize.motion.translating import FIXED_SAMPLES
 from optimize.zone import side_terms, wedges
 
-__all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "design_rocker_pressure", "ratio_at"]
+__all__ = ["RockerSteps", "design_rocker", "design_rocker_held", "design_rocker_pressure", "ratio_at", "held_size",
+           "steps_of"]
 
 
 
@@ -297,6 +298,27 @@ def _zone_admits(design: CamDesign, program: Program, centre: np.ndarray) -> boo
     return worst <= 1e-9 * design.scale
 
 
+#: The held size is met within this (relative): the space's law nearest the original ones may need a cam
+#: larger by the rounding of their fit (a size held at the original laws' least R0 is then that law's).
+HOLD_RTOL = 1e-8
+
+
+def held_size(least: float, hold: float, caps: dict) -> float:
+    """The size a held objective's iteration keeps: ``hold``, or ``least`` (the space's least R0 found, length)
+    when it exceeds ``hold`` by at most :data:`HOLD_RTOL` (the facade notes it).
+
+    Raises
+    ------
+    InfeasibleError
+        ``least`` exceeds ``hold`` by more: the space's laws (under the caps) cannot keep the size held.
+    """
+    if least <= hold * (1 + HOLD_RTOL):
+        return max(hold, least)
+    advice = "raise a cap, add spans or minimize R0" if caps else "add spans or minimize R0"
+    raise InfeasibleError("optimize", f"no law of the space found keeps the cam within the size held (R0 <= "
+                          f"{hold:.10g} mm; the least found is {least:.10g} mm): {advice}")
+
+
 def steps_of(out: Outcome, before: RockerSteps | None = None, flat: bool = False) -> RockerSteps:
     """The :class:`RockerSteps` of a loop's outcome, its iterates' state ``(programme, centre)`` (a flat face's
     ``(programme, R0)``); the iterations of ``before`` (a first loop) added."""
@@ -362,11 +384,9 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
         No law of the space found keeps the cam within ``hold`` under the caps.
     """
     first = design_rocker(design, space, caps, "R0", name)
-    if first.value > hold * (1 + 1e-12):
-        raise InfeasibleError("optimize", f"no law of the space found keeps the cam within the size held (R0 <= "
-                              f"{hold:.6g} mm; the least found is {first.value:.6g} mm): raise a cap or minimize R0")
     if not space.free:
         return first
+    hold = held_size(first.value, hold, caps)
     caps_rows = cap_rows(space, caps, space.size)
 
     def model(it: Iterate, trust: float) -> tuple[float, np.ndarray] | None:
@@ -410,9 +430,7 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
     start = Iterate(first.v, ratio_at(design, first.program, first.centre), (first.program, first.centre))
     if not space.free:          # nothing to design: the laws' own least cam and its ratio
         return replace(first, value=start.value, history=(start.value,))
-    if first.value > hold * (1 + 1e-12):
-        raise InfeasibleError("optimize", f"no law of the space found keeps the cam within the size held (R0 <= "
-                              f"{hold:.6g} mm) at the pressure-angle limits: raise a cap or minimize R0")
+    hold = held_size(first.value, hold, caps)
     A0 = design.follower.position(0.0)
     L = design.limits.centre_distance
     caps_rows = cap_rows(space, caps, space.size)

@@ -118,6 +118,8 @@ def test_solve_objective_beside_optimize(tmp_path):
     ("translating_flat", "continuity = 1\ndegree = 5", "optimize.continuity"),
     ("rocker_flat", 'objective = "L"', "optimize.objective"),
     ("rocker_flat", "continuity = 1\ndegree = 5", "optimize.continuity"),
+    ("rocker_flat", "spans = 41", "optimize.spans"),
+    ("rocker_force", "spans = 41", "optimize.spans"),
 ])
 def test_objective_or_space_that_does_not_apply(tmp_path, example, snippet, field):
     p = design(tmp_path, example, f"[optimize]\n{snippet}\n")
