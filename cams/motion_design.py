@@ -221,6 +221,11 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         r = 3 if obj == "jerk_squared" else 4
         value = sum(integral_of_square(law, r, ld.space.breaks, spec.degree) for law in laws_new.values())
     notes = notes_first
+    if obj == "pressure_angle" and isinstance(base, CamDesign):
+        limited = {i for i, _ in base.constrained_phases()}
+        if not limited & set(ld.free):
+            notes.append("no free phase has a limited pressure angle (force closure limits the rise only): the "
+                         "free laws cannot lower it; free a rise")
     caps_ok = True
     names = {1: "Cv", 2: "Ca", 3: "Cj"}
     for (k, r), cap in ld.caps.items():

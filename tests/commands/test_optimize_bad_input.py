@@ -427,3 +427,12 @@ def test_least_pressure_angle_saved_keeps_its_cam(tmp_path, example, subs):
     assert again.returncode == 0, again.stdout + again.stderr
     a, b = json.loads(first.stdout), json.loads(again.stdout)
     assert b["R0"] == a["R0"] and b["centre"] == a["centre"]
+
+
+def test_least_pressure_angle_with_no_limited_free_phase_says_so(tmp_path):
+    p = design(tmp_path, "rocker_force", '[optimize]\nobjective = "pressure_angle"\nfree = ["return"]\nspans = 4\n',
+               subs=(('[solve]\nmethod = "exact"\n', ""),))
+    r = cams("solve", p, "--json")
+    o = json.loads(r.stdout)["optimize"]
+    assert o["value"] == pytest.approx(1.0, rel=1e-9)
+    assert any("no free phase has a limited pressure angle" in n for n in o["notes"])
