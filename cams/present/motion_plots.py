@@ -32,11 +32,13 @@ def _laws_panel(fig, grid, given, designed, free) -> None:
     names = ("S", "dS/du", "d²S/du²", "d³S/du³")
     for k in range(4):
         ax = fig.add_subplot(grid[k // 2, k % 2])
+        # every free phase normalized alike; the legend names them all (phases as `free` counts them)
+        old_names = ", ".join(f"{i}: {given.program.law_of(i).name}" for i in free)
         for i in free:
             ax.plot(u, given.program.law_of(i).evaluate(u)[k], color=_OLD, lw=1.6,
-                    label=f"original ({given.program.law_of(i).name})" if i == free[0] else None)
+                    label=f"original (phase {old_names})" if i == free[0] else None)
             ax.plot(u, designed.program.law_of(i).evaluate(u)[k], color=_NEW, lw=1.1,
-                    label="designed" if i == free[0] else None)
+                    label=f"designed (phase {', '.join(map(str, free))})" if i == free[0] else None)
         ax.set_ylabel(names[k], fontsize=8)
         ax.grid(True, lw=0.3)
         ax.tick_params(labelsize=7)
@@ -125,20 +127,22 @@ def plot_motion_design(cam):
     free = tuple(info["free"])
     flat = getattr(designed, "face", "roller") == "flat"
     ref = info["reference"]
-    fig = Figure(figsize=(7.5, 10.0), layout="constrained")
-    grid = fig.add_gridspec(4, 2, height_ratios=(1, 1, 1.1, 2.2))
+    # a flat face has no pressure-angle panel (its pressure angle is the geometry's)
+    fig = Figure(figsize=(7.5, 8.5 if flat else 10.0), layout="constrained")
+    grid = fig.add_gridspec(3 if flat else 4, 2, height_ratios=(1, 1, 2.2) if flat else (1, 1, 1.1, 2.2))
     _laws_panel(fig, grid, given, designed, free)
     if not flat and ref is not None:
         _pressure_panel(fig.add_subplot(grid[2, :]), given, designed,
                         (np.array([ref["centre"]["x"], ref["centre"]["y"]]), sol.centre))
     if ref is not None:
         sizes = (ref["R0"], sol.R0) if flat else (np.array([ref["centre"]["x"], ref["centre"]["y"]]), sol.centre)
-        _cams_panel(fig.add_subplot(grid[3, :]), given, designed, sizes)
+        _cams_panel(fig.add_subplot(grid[2 if flat else 3, :]), given, designed, sizes)
+    unit = {"R0": " mm", "L": " mm", "pressure_angle": " of the limit"}.get(info["objective"], " (normalized)")
     if info["lower_bound"] is None:
         how = f"a local optimum ({info['iterations']} iterations)"
     else:
         gap = "-" if info["gap"] is None else f"{info['gap']:.2g}"
-        how = f"proven lower bound {info['lower_bound']:.6g}, gap {gap}"
-    fig.suptitle(f"{designed.name}: motion designed\n{info['objective']} {info['value']:.6g}, {how}; degree "
+        how = f"proven lower bound {info['lower_bound']:.6g}{unit}, gap {gap}"
+    fig.suptitle(f"{designed.name}: motion designed\n{info['objective']} {info['value']:.6g}{unit}, {how}; degree "
                  f"{info['degree']}, {info['spans']} spans, C{info['continuity']}", fontsize=9)
     return fig
