@@ -79,7 +79,8 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
     rows = [("minimized", f"{o['objective']}: {o['value']:.6g} {unit}")]
     if o["lower_bound"] is None:
         rows += [("optimality", f"a local optimum (sequential convex programming, {o['iterations']} iterations); "
-                                f"the linearized problem still predicts {o['local_measure']:.2g} (relative)"),
+                                f"the linearized problem still predicts a decrease of {o['local_measure']:.2g} "
+                                "(relative) within a radius of 1e-3"),
                  ("checked", "yes" if o["certified"] else "NO")]
     else:
         gap = "-" if o["gap"] is None else f"{o['gap']:.3g}"
@@ -89,9 +90,11 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
                           f"(the caps on Bernstein coefficients of {o['pieces']} pieces a span)"))
     ref = o.get("reference")
     if ref and o["objective"] == "L" and ref.get("L") is not None:
-        rows.append(("the original laws' cam", f"L = {ref['L']:.6f} mm; this one: L = {o['value']:.6f} mm"))
+        f = length_format(max(abs(ref["L"]), abs(o["value"])))
+        rows.append(("the original laws' cam", f"L = {ref['L']:{f}} mm; this one: L = {o['value']:{f}} mm"))
     elif ref and R0 is not None:
-        rows.append(("the original laws' cam", f"R0 = {ref['R0']:.6f} mm; this one: R0 = {R0:.6f} mm"))
+        f = length_format(max(abs(ref["R0"]), abs(R0)))
+        rows.append(("the original laws' cam", f"R0 = {ref['R0']:{f}} mm; this one: R0 = {R0:{f}} mm"))
     for p in o["phases"]:
         orig = p["original"]
         rows.append((f"phase {p['phase']} ({p['kind']}; [[motion]] row {p['phase'] + 1})",
