@@ -39,7 +39,15 @@ from cams.model.follower import FlatRocker
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
 from optimize.motion.conic import ConicProgram
-from optimize.motion.lawrows import cap_rows, fit, held_objective, held_value, samples, trust_rows, within_caps
+from optimize.motion.lawrows import (
+    cap_rows,
+    fit,
+    held_objective,
+    held_value,
+    samples,
+    stepped_laws,
+    trust_rows,
+)
 from optimize.motion.rocker import RockerSteps, held_size, steps_of
 from optimize.motion.scp import Iterate, minimize, solved
 from optimize.motion.space import Space
@@ -222,10 +230,10 @@ def design_flat_rocker(design: FlatFaceDesign, space: Space, caps: dict[tuple[in
         return None if step is None else (step[0] * ell, step[1])
 
     def exact(raw: np.ndarray) -> Iterate | None:
-        v_new = space.project(raw[:space.size])
-        if not within_caps(caps_, v_new):
+        stepped = stepped_laws(space, caps_, raw, name)
+        if stepped is None:
             return None
-        program_new = space.programme(v_new, name)
+        v_new, program_new = stepped
         try:
             R0 = _sized(design, program_new)
         except InfeasibleError:
@@ -262,10 +270,10 @@ def design_flat_rocker_held(design: FlatFaceDesign, space: Space, caps: dict[tup
         return solved(_step_program(design, space, caps, it.v, hold, trust, objective, hold), space.size + 2)
 
     def exact(raw: np.ndarray) -> Iterate | None:
-        v_new = space.project(raw[:space.size])
-        if not within_caps(caps_, v_new):
+        stepped = stepped_laws(space, caps_, raw, name)
+        if stepped is None:
             return None
-        program_new = space.programme(v_new, name)
+        v_new, program_new = stepped
         if not _convex_at(design, program_new, hold):
             return None
         return Iterate(v_new, held_value(space, v_new, objective), (program_new, hold))

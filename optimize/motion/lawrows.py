@@ -17,7 +17,8 @@ from optimize.motion.conic import Cone, ConicProgram, solve
 from optimize.motion.space import Space
 from optimize.motion.translating import S_MARGIN, SAMPLES_PER_SPAN, TIGHTEN
 
-__all__ = ["samples", "fit", "cap_rows", "trust_rows", "held_objective", "held_value", "within_caps"]
+__all__ = ["samples", "fit", "cap_rows", "trust_rows", "held_objective", "held_value", "within_caps",
+           "stepped_laws"]
 
 
 def samples(space: Space) -> np.ndarray:
@@ -124,3 +125,12 @@ def trust_rows(space: Space, vv: np.ndarray, u: np.ndarray, trust: float, top: i
             now = rows @ vv
             G += [rows, -rows]
             h += [now + width, width - now]
+
+
+def stepped_laws(space: Space, caps_rows: tuple[np.ndarray, np.ndarray], raw: np.ndarray, name: str):
+    """A model's step as laws: its first ``space.size`` variables projected on the joints and their
+    programme (named ``name``), or None when they exceed a cap (:func:`within_caps`)."""
+    v = space.project(raw[:space.size])
+    if not within_caps(caps_rows, v):
+        return None
+    return v, space.programme(v, name)

@@ -44,7 +44,15 @@ from cams.model.design import CamDesign
 from laws.errors import InfeasibleError
 from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram
-from optimize.motion.lawrows import cap_rows, fit, held_objective, held_value, samples, trust_rows, within_caps
+from optimize.motion.lawrows import (
+    cap_rows,
+    fit,
+    held_objective,
+    held_value,
+    samples,
+    stepped_laws,
+    trust_rows,
+)
 from optimize.motion.scp import Iterate, Outcome, minimize, solved
 from optimize.motion.space import Space
 from optimize.motion.translating import FIXED_SAMPLES
@@ -356,10 +364,10 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
         return None if step is None else (step[0] * design.scale, step[1])
 
     def exact(raw: np.ndarray) -> Iterate | None:
-        v_new = space.project(raw[:space.size])
-        if not within_caps(caps_rows, v_new):
+        stepped = stepped_laws(space, caps_rows, raw, name)
+        if stepped is None:
             return None
-        program_new = space.programme(v_new, name)
+        v_new, program_new = stepped
         try:
             value_new, centre_new = _sized(design, program_new, objective)
         except InfeasibleError:
@@ -394,10 +402,10 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
                        space.size + 3)
 
     def exact(raw: np.ndarray) -> Iterate | None:
-        v_new = space.project(raw[:space.size])
-        if not within_caps(caps_rows, v_new):
+        stepped = stepped_laws(space, caps_rows, raw, name)
+        if stepped is None:
             return None
-        program_new = space.programme(v_new, name)
+        v_new, program_new = stepped
         try:
             R0_new, centre_new = _sized(design, program_new, "R0")
         except InfeasibleError:
@@ -440,16 +448,16 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
                                      it.value), space.size + 3)
 
     def exact(raw: np.ndarray) -> Iterate | None:
-        v_new = space.project(raw[:space.size])
         centre_new = raw[space.size:space.size + 2] * design.scale
         if L is not None:
             centre_new = centre_new * (L / np.linalg.norm(centre_new))
         out = np.linalg.norm(centre_new - A0)
         if hold < out <= hold * (1 + 1e-6):     # the solver's tolerance on the cone: back onto the circle
             centre_new = A0 + (centre_new - A0) * (hold / out)
-        if not within_caps(caps_rows, v_new) or np.linalg.norm(centre_new - A0) > hold:
+        stepped = stepped_laws(space, caps_rows, raw, name)
+        if stepped is None or np.linalg.norm(centre_new - A0) > hold:
             return None
-        program_new = space.programme(v_new, name)
+        v_new, program_new = stepped
         if not _zone_admits(design, program_new, centre_new):
             return None
         return Iterate(v_new, ratio_at(design, program_new, centre_new), (program_new, centre_new))
