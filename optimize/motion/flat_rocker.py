@@ -206,8 +206,9 @@ def _step_program(design: FlatFaceDesign, space: Space, caps, v: np.ndarray, R0:
 
 
 def design_flat_rocker(design: FlatFaceDesign, space: Space, caps: dict[tuple[int, int], float],
-                       name: str) -> RockerSteps:
+                       name: str, measure: bool = True) -> RockerSteps:
     """The laws of least R0 of a flat-faced rocker's cam (module notes); ``centre`` holds ``(R0, 0)``.
+    ``measure``: compute the local-optimality measure (:func:`optimize.motion.scp.minimize`).
 
     Raises
     ------
@@ -217,7 +218,7 @@ def design_flat_rocker(design: FlatFaceDesign, space: Space, caps: dict[tuple[in
     if not space.free:
         R0 = _sized(design, space.program)
         return RockerSteps(v=np.zeros(0), program=space.program, value=R0, centre=np.array([R0, 0.0]),
-                           iterations=0, accepted=0, trust=0.0, local_measure=0.0, history=(R0,))
+                           iterations=0, local_measure=0.0, history=(R0,))
     ell = _follower(design).centre_distance
     v = fit(space, caps)
     caps_ = cap_rows(space, caps, space.size)
@@ -240,7 +241,7 @@ def design_flat_rocker(design: FlatFaceDesign, space: Space, caps: dict[tuple[in
             return None
         return Iterate(v_new, R0, (program_new, R0))
 
-    return steps_of(minimize(start, model, exact), flat=True)
+    return steps_of(minimize(start, model, exact, measure=measure), flat=True)
 
 
 def design_flat_rocker_held(design: FlatFaceDesign, space: Space, caps: dict[tuple[int, int], float],
@@ -257,7 +258,7 @@ def design_flat_rocker_held(design: FlatFaceDesign, space: Space, caps: dict[tup
     InfeasibleError
         No law of the space found is convex enough at ``hold`` under the caps.
     """
-    first = design_flat_rocker(design, space, caps, name)
+    first = design_flat_rocker(design, space, caps, name, measure=False)
     if not space.free:
         return first
     hold = held_size(first.value, hold, caps)

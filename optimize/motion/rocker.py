@@ -80,10 +80,6 @@ class RockerSteps:
         Its cam centre (fixed frame); a flat-faced rocker's ``(R0, 0)``.
     iterations : int
         All the iterations, a held objective's first loop (the least R0) included.
-    accepted : int
-        The steps the last loop accepted (``len(history) - 1``).
-    trust : float
-        The last trust radius.
     local_measure : float
         :func:`optimize.motion.scp.stationarity` at the result.
     history : tuple of float
@@ -95,10 +91,20 @@ class RockerSteps:
     value: float
     centre: np.ndarray
     iterations: int
-    accepted: int
-    trust: float
     local_measure: float
     history: tuple[float, ...]
+
+
+def _sized_step(design: CamDesign, space: Space, caps_rows, raw: np.ndarray, name: str, objective: str):
+    """A model's step as laws (:func:`optimize.motion.lawrows.stepped_laws`) and their cam sized exactly:
+    ``(v, programme, value, centre)``, or None when a cap is exceeded or the laws have no cam."""
+    stepped = stepped_laws(space, caps_rows, raw, name)
+    if stepped is None:
+        return None
+    try:
+        return (*stepped, *_sized(design, stepped[1], objective))
+    except InfeasibleError:
+        return None
 
 
 def _sized(design: CamDesign, program: Program, objective: str) -> tuple[float, np.ndarray]:
@@ -334,16 +340,17 @@ def steps_of(out: Outcome, before: RockerSteps | None = None, flat: bool = False
     program, where = b.state
     centre = np.array([where, 0.0]) if flat else np.asarray(where, float)
     return RockerSteps(v=b.v, program=program, value=b.value, centre=centre,
-                       iterations=out.iterations + (before.iterations if before else 0), accepted=out.accepted,
-                       trust=out.trust, local_measure=out.local_measure, history=out.history)
+                       iterations=out.iterations + (before.iterations if before else 0),
+                       local_measure=out.local_measure, history=out.history)
 
 
 def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
-                  name: str, start: np.ndarray | None = None) -> RockerSteps:
+                  name: str, start: np.ndarray | None = None, measure: bool = True) -> RockerSteps:
     """The SCP of the module notes for ``design`` (a rocker roller), minimizing ``objective`` (``"R0"``/``"L"``).
 
     ``start``: the laws' variables to start from (default: the space's law nearest the original laws,
     :func:`optimize.motion.lawrows.fit`), projected on the joints; the caller sees that they meet the caps.
+    ``measure``: compute the local-optimality measure (:func:`optimize.motion.scp.minimize`).
 
     Raises
     ------
@@ -353,7 +360,7 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
     if not space.free:           # nothing to design: the laws' own cam, sized exactly
         value, centre = _sized(design, space.program, objective)
         return RockerSteps(v=np.zeros(0), program=space.program, value=value, centre=centre, iterations=0,
-                           accepted=0, trust=0.0, local_measure=0.0, history=(value,))
+                           local_measure=0.0, history=(value,))
     v = fit(space, caps) if start is None else space.project(np.asarray(start, float))
     caps_rows = cap_rows(space, caps, space.size)
     program = space.programme(v, name)
@@ -364,17 +371,10 @@ def design_rocker(design: CamDesign, space: Space, caps: dict[tuple[int, int], f
         return None if step is None else (step[0] * design.scale, step[1])
 
     def exact(raw: np.ndarray) -> Iterate | None:
-        stepped = stepped_laws(space, caps_rows, raw, name)
-        if stepped is None:
-            return None
-        v_new, program_new = stepped
-        try:
-            value_new, centre_new = _sized(design, program_new, objective)
-        except InfeasibleError:
-            return None
-        return Iterate(v_new, value_new, (program_new, centre_new))
+        step = _sized_step(design, space, caps_rows, raw, name, objective)
+        return None if step is None else Iterate(step[0], step[2], (step[1], step[3]))
 
-    return steps_of(minimize(Iterate(v, value, (program, centre)), model, exact))
+    return steps_of(minimize(Iterate(v, value, (program, centre)), model, exact, measure=measure))
 
 
 def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, int], float], objective: str,
@@ -391,7 +391,7 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
     InfeasibleError
         No law of the space found keeps the cam within ``hold`` under the caps.
     """
-    first = design_rocker(design, space, caps, "R0", name)
+    first = design_rocker(design, space, caps, "R0", name, measure=False)
     if not space.free:
         return first
     hold = held_size(first.value, hold, caps)
@@ -402,17 +402,10 @@ def design_rocker_held(design: CamDesign, space: Space, caps: dict[tuple[int, in
                        space.size + 3)
 
     def exact(raw: np.ndarray) -> Iterate | None:
-        stepped = stepped_laws(space, caps_rows, raw, name)
-        if stepped is None:
+        step = _sized_step(design, space, caps_rows, raw, name, "R0")
+        if step is None or step[2] > hold:
             return None
-        v_new, program_new = stepped
-        try:
-            R0_new, centre_new = _sized(design, program_new, "R0")
-        except InfeasibleError:
-            return None
-        if R0_new > hold:
-            return None
-        return Iterate(v_new, held_value(space, v_new, objective), (program_new, centre_new))
+        return Iterate(step[0], held_value(space, step[0], objective), (step[1], step[3]))
 
     start = Iterate(first.v, held_value(space, first.v, objective), (first.program, first.centre))
     return steps_of(minimize(start, model, exact), first)
@@ -434,7 +427,7 @@ def design_rocker_pressure(design: CamDesign, space: Space, caps: dict[tuple[int
     InfeasibleError
         No law of the space found keeps the cam within ``hold`` at the pressure-angle limits.
     """
-    first = design_rocker(design, space, caps, "R0", name)
+    first = design_rocker(design, space, caps, "R0", name, measure=False)
     start = Iterate(first.v, ratio_at(design, first.program, first.centre), (first.program, first.centre))
     if not space.free:          # nothing to design: the laws' own least cam and its ratio
         return replace(first, value=start.value, history=(start.value,))

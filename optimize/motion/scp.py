@@ -55,14 +55,19 @@ class Outcome:
 
     best: Iterate
     iterations: int
-    accepted: int
     trust: float
     local_measure: float
     history: tuple[float, ...]
 
+    @property
+    def accepted(self) -> int:
+        """The steps accepted."""
+        return len(self.history) - 1
+
 
 def minimize(start: Iterate, model: Callable[[Iterate, float], tuple[float, np.ndarray] | None],
-             exact: Callable[[np.ndarray], Iterate | None], *, trust: float = TRUST0) -> Outcome:
+             exact: Callable[[np.ndarray], Iterate | None], *, trust: float = TRUST0,
+             measure: bool = True) -> Outcome:
     """Sequential convex programming from ``start`` (module notes).
 
     Parameters
@@ -75,10 +80,13 @@ def minimize(start: Iterate, model: Callable[[Iterate, float], tuple[float, np.n
         ``exact(step variables) -> Iterate``, or None when the step is refused (a cap exceeded, no cam).
     trust : float
         The initial trust radius.
+    measure : bool
+        Whether to compute the local-optimality measure at the result (two more model solves); ``nan`` if not
+        (a first loop whose result only starts another).
     """
     it = start
     history = [float(start.value)]
-    iterations = accepted = 0
+    iterations = 0
     while iterations < MAX_ITERATIONS and trust >= TRUST_MIN:
         iterations += 1
         step = model(it, trust)
@@ -96,11 +104,10 @@ def minimize(start: Iterate, model: Callable[[Iterate, float], tuple[float, np.n
         ratio = (it.value - new.value) / predicted
         it = new
         history.append(float(new.value))
-        accepted += 1
         if ratio > 0.75:
             trust *= 2
-    return Outcome(best=it, iterations=iterations, accepted=accepted, trust=trust,
-                   local_measure=stationarity(model, it), history=tuple(history))
+    return Outcome(best=it, iterations=iterations, trust=trust,
+                   local_measure=stationarity(model, it) if measure else float("nan"), history=tuple(history))
 
 
 def stationarity(model: Callable[[Iterate, float], tuple[float, np.ndarray] | None], it: Iterate,
