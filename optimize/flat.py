@@ -23,6 +23,7 @@ from cams.kinematics.flat import (
     curvature_radius,
     cusp_error,
     flat_parts,
+    near_dwell_angle,
     oscillating_cusps,
     oscillating_parts,
     oscillating_setup,
@@ -110,7 +111,7 @@ def _oscillating_scan(program: Program, L: float, f: float, sigma: int, eps: int
     s, ds, d2s = (np.concatenate([getattr(m, k) for m in parts] + [z])[None, :]
                   for k, z in (("s", levels), ("ds", 0 * levels), ("d2s", 0 * levels)))
     for k0 in range(0, len(R0), block):
-        a0 = sigma * np.arccos((f - R0[k0:k0 + block]) / L)[:, None]
+        a0 = near_dwell_angle(L, f, R0[k0:k0 + block], sigma)[:, None]
         _, dth, d2th, p, dp, d2p = oscillating_support(L, f, sigma, eps, a0, s, ds, d2s)
         with np.errstate(divide="ignore", invalid="ignore"):
             rho = curvature_radius(dth, d2th, p, dp, d2p)

@@ -69,6 +69,7 @@ __all__ = [
     "translating_parts",
     "translating_cusps",
     "oscillating_setup",
+    "near_dwell_angle",
     "oscillating_terms",
     "oscillating_support",
     "oscillating_parts",
@@ -239,14 +240,20 @@ def oscillating_setup(program: Program, L: float, R0: float, f: float, rise_sens
     """
     if rise_sense not in (1, -1):
         raise InputError("follower.rise_direction", f"rise_sense must be +1 (ccw) or -1 (cw), got {rise_sense!r}")
-    c0 = (f - R0) / L
-    if not -1 < c0 < 1:
+    if not -1 < (f - R0) / L < 1:
         raise InputError("base_radius", f"the face cannot touch a base circle of R0 = {R0:g} (|f - R0| >= L = {L:g})")
-    a0 = rise_sense * np.arccos(c0)
+    a0 = near_dwell_angle(L, f, R0, rise_sense)
     if abs(a0) + program.lift >= np.pi:
         raise InputError("base_radius", f"R0 = {R0:g}: the face would turn past the line of centres during the "
                          f"rise (need R0 < f + L cos(swing) = {f + L * np.cos(program.lift):.6g})")
     return float(a0)
+
+
+def near_dwell_angle(L: float, f: float, R0, sigma: int):
+    """The face normal's angle ``a0`` at the near dwell (radians, line-of-centres frame), unchecked:
+    ``cos a0 = (f - R0) / L`` (clipped to [-1, 1]), ``a0`` of the sign ``sigma``. Arrays of R0 broadcast;
+    :func:`oscillating_setup` checks that the face can touch the base circle."""
+    return sigma * np.arccos(np.clip((f - np.asarray(R0, float)) / L, -1.0, 1.0))
 
 
 def oscillating_terms(program: Program, L: float, f: float, sigma: int, eps: int, a0: float, phi=None,

@@ -33,7 +33,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from cams.kinematics.flat import curvature_radius, flat_parts, oscillating_support, phase_minimum
+from cams.kinematics.flat import curvature_radius, flat_parts, near_dwell_angle, oscillating_support, phase_minimum
 from cams.model.design import FlatFaceDesign
 from cams.model.follower import FlatRocker
 from laws.errors import InfeasibleError, InputError
@@ -70,7 +70,7 @@ def _rho(design: FlatFaceDesign, R0, s, ds, d2s) -> np.ndarray:
     """The radius of curvature (length) at swing ``s`` and its rates, for base radius ``R0``."""
     fo = _follower(design)
     L, f, sigma = fo.centre_distance, fo.face_offset, fo.sense
-    a0 = sigma * np.arccos(np.clip((f - R0) / L, -1.0, 1.0))
+    a0 = near_dwell_angle(L, f, R0, sigma)
     _, dth, d2th, p, dp, d2p = oscillating_support(L, f, sigma, design.cam_sense, a0, s, ds, d2s)
     with np.errstate(divide="ignore", invalid="ignore"):
         return curvature_radius(dth, d2th, p, dp, d2p)
