@@ -76,6 +76,7 @@ def test_flat_rocker_design_is_smaller_convex_and_minimal(designed):
     assert designed.verified and o["certified"] and o["method"] == "sequential convex programming"
     assert o["lower_bound"] is None and o["gap"] is None and 0 <= o["local_measure"] < 1e-3
     assert designed.R0 < 0.9 * o["reference"]["R0"] and o["value"] == designed.R0
+    assert o["reference"]["R0"] == solve(load_design(FLAT)).R0     # the original laws' cam, sized alone
     assert all(b < a for a, b in zip(o["history"], o["history"][1:], strict=False))
     rho = envelope_radii(d, designed.R0)
     assert rho.min() >= d.min_radius * (1 - 1e-5)

@@ -153,6 +153,7 @@ def test_rocker_least_pressure_angle_at_the_original_size():
     assert o["value"] == pytest.approx(g.max() / design.limits.pressure_angle, rel=1e-6)
     assert o["value"] == pytest.approx(o["history"][-1], rel=1e-6)
     hold = o["held_R0"]
+    assert hold == solve(load_design(FORCE)).R0 == o["reference"]["R0"]   # the cycloid's least R0, sized alone
     library = {law: _least_ratio_of(law, hold) for law in ("poly345", "modified_sine")}
     assert all(r < 1 for r in library.values())
     assert o["value"] <= min(library.values())
