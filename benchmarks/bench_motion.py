@@ -67,7 +67,7 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
         doc["optimize"] = {"free": ["rise"], "max_Ca": "poly4567", "max_Cj": "poly4567", "continuity": 3,
                            "degree": 7, "spans": n}
         res, seconds = _timed(solve, design_from_dict(doc), repeats)
-        o = res.optimization
+        o = res.optimization.to_dict()
         rows.append({"spans": n, "R0_mm": res.R0, "lower_bound_mm": o["lower_bound"], "gap": o["gap"],
                      "verified": bool(res.verified), "certified": bool(o["certified"]),
                      "seconds_median": seconds})
@@ -76,7 +76,7 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
     doc = read_toml(ROCKER)
     doc["optimize"] = {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "continuity": 2, "spans": 10}
     res, seconds = _timed(solve, design_from_dict(doc), repeats)
-    o = res.optimization
+    o = res.optimization.to_dict()
     rocker = {"example": ROCKER.name, "original_R0_mm": o["reference"]["R0"], "R0_mm": res.R0,
               "iterations": o["iterations"], "local_measure": o["local_measure"], "verified": bool(res.verified),
               "seconds_median": seconds}
@@ -85,7 +85,7 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
     doc["optimize"] = {"objective": "pressure_angle", "max_Ca": "cycloidal", "max_Cj": "cycloidal",
                        "continuity": 2, "spans": 10}
     res, seconds = _timed(solve, design_from_dict(doc), repeats)
-    o = res.optimization
+    o = res.optimization.to_dict()
     rocker_pressure = {"example": ROCKER.name, "held_R0_mm": o["held_R0"], "R0_mm": res.R0,
                        "ratio": o["value"], "iterations": o["iterations"], "local_measure": o["local_measure"],
                        "verified": bool(res.verified), "seconds_median": seconds}
@@ -95,7 +95,7 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
     doc["optimize"] = {"free": ["rise", "return"], "max_Ca": "cycloidal", "max_Cj": "cycloidal",
                        "continuity": 2, "spans": 10}
     res, seconds = _timed(solve, design_from_dict(doc), repeats)
-    o = res.optimization
+    o = res.optimization.to_dict()
     flat_rocker = {"example": FLAT_ROCKER.name, "original_R0_mm": o["reference"]["R0"], "R0_mm": res.R0,
                    "iterations": o["iterations"], "local_measure": o["local_measure"],
                    "verified": bool(res.verified), "seconds_median": seconds}

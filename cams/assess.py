@@ -78,10 +78,11 @@ class Assessment:
 
 
 def knife_in_groove(design) -> bool:
-    """True for a roller design with form closure (a groove) and roller radius 0 (a knife edge)."""
-    if getattr(design, "face", "roller") == "flat":
-        return False
-    return design.limits.closure == "form" and not design.follower.roller_radius > 0
+    """True when no profile of ``design`` can be built at any size (a knife edge in a groove: its face's
+    :meth:`cams.faces.base.Face.no_profile`)."""
+    from cams.faces import face_of
+
+    return face_of(design).no_profile(design) is not None
 
 
 def _dynamics_failure(forces) -> str | None:
@@ -103,8 +104,8 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
 
     Parameters
     ----------
-    design : CamDesign or FlatFaceDesign
-    solution : cams.solve.SolveResult or optimize.flat.FlatFaceSolution
+    design : cams.model.design.Design
+    solution : cams.faces.result.SolveResult
         Its ``verified`` is the verified side.
     checks : CheckReport or FlatCheckReport, optional
         The checks of the finished profile; None only when no profile can be
@@ -120,24 +121,23 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     -------
     Assessment
     """
+    from cams.faces import face_of
+
+    face = face_of(design)
     failures: list[tuple[str, str]] = []  # (short, line)
-    certified = getattr(solution, "certified", None) is not False
+    certified = solution.certified is not False
     if not certified:
         eb = solution.error_bound
         failures.append(("not certified", "not certified: the exact method's bounds on the size "
                          + ("do not meet (no feasible centre near it)" if eb is None else f"differ by {eb:.3g} mm")))
-    opt = getattr(solution, "optimization", None)
-    if opt is not None and not opt["certified"]:
+    opt = solution.optimization
+    if opt is not None and not opt.certified:
         certified = False
-        failures.append(("not certified", "motion design not certified: " + ("; ".join(opt["notes"])
+        failures.append(("not certified", "motion design not certified: " + ("; ".join(opt.notes)
                                                                             or "no lower bound was proven")))
     verified = bool(solution.verified)
     if not verified:
-        which = ["the independent check finds a limit exceeded"]
-        if getattr(solution, "pressure", None) is not None:  # a roller's cam: which limit and by how much
-            from cams.solve import pressure_failures
-
-            which = pressure_failures(solution.pressure) or which
+        which = face.not_verified(solution) or ["the independent check finds a limit exceeded"]
         failures.append(("not verified", "not verified: " + "; ".join(which)))
     buildable = True
 
@@ -146,15 +146,8 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
         buildable = False
         failures.append((short, line))
 
-    flat = getattr(design, "face", "roller") == "flat"
-    if not flat:
-        r = float(design.follower.roller_radius)
-        if not solution.R0 > r:
-            fail("no working profile", f"no working profile: R0 = {solution.R0:.6g} mm is not larger than the "
-                 f"roller radius {r:g} mm")
-        if knife_in_groove(design):
-            fail("knife edge in a groove", "a knife edge cannot run in a groove: form closure needs "
-                 "follower.roller_radius > 0")
+    for short, line in face.unbuildable(design, solution):
+        fail(short, line)
     if checks is not None:
         from cams.words import fault_words, off_by
 
@@ -171,7 +164,7 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
                 fail(words, line + off_by(c.worst, c.limit, c.unit))  # by how much, as cams check says it
     elif no_profile is not None:
         fail("no profile", f"no profile: {no_profile}")
-    elif not flat and not knife_in_groove(design):
+    elif face.no_profile(design) is None:
         raise ValueError("assess: the profile checks are required")
     if forces is not None:
         why = _dynamics_failure(forces.forces)
@@ -185,11 +178,11 @@ def assess_cam(cam) -> Assessment:
     from cams.profile.roller import ProfileSizeError
 
     checks, no_profile = None, None
-    if not knife_in_groove(cam.design):
+    if cam.face.no_profile(cam.design) is None:
         try:
             checks = cam.checks
         except ProfileSizeError as e:  # a valid design whose profile the tolerance cannot carry: not buildable
             no_profile = str(e)
-    has_dynamics = getattr(cam.design, "dynamics", None) is not None  # else no forces module to import
+    has_dynamics = cam.design.dynamics is not None  # else no forces module to import
     return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None,
                   no_profile=no_profile)

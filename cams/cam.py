@@ -4,18 +4,24 @@
 the zone (once); ``tradeoff`` needs the zone but not the profile; the motion
 diagrams need only the program. Every result is computed once and reused.
 
-A flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`) has the
-same attributes: ``solution`` is a :class:`optimize.flat.FlatFaceSolution`
-(size from convexity), ``profile`` a :class:`cams.profile.flat.FlatFaceProfile`,
-``checks`` a :class:`cams.checks.flat.FlatCheckReport`; it has no trade-off and
-no forces (both None).
+The follower's face is chosen once (:attr:`Cam.face`, :func:`cams.faces.face_of`); each property below is one
+call of the face's pipeline (:class:`cams.faces.base.Face`): a flat face's ``profile`` is a
+:class:`cams.profile.flat.FlatFaceProfile`, its ``checks`` a :class:`cams.checks.flat.FlatCheckReport`, and it has
+no trade-off and no forces.
 """
 
 from __future__ import annotations
 
 from functools import cached_property
+from typing import TYPE_CHECKING
 
-from cams.model.design import CamDesign, FlatFaceDesign
+from cams.faces import face_of
+
+if TYPE_CHECKING:
+    from cams.faces.base import Face
+    from cams.faces.result import SolveResult
+    from cams.model.design import Design
+    from cams.model.options import ProfileOptions
 
 __all__ = ["Cam"]
 
@@ -25,7 +31,7 @@ class Cam:
 
     Parameters
     ----------
-    design : CamDesign or FlatFaceDesign
+    design : cams.model.design.Design
     objective : {"R0", "L"}, optional
         What to minimize; default from the design file's ``[solve] objective``.
     method : {"exact", "convex", "exhaustive"}, optional
@@ -37,10 +43,11 @@ class Cam:
         taken as the cam's, not solved again.
     """
 
-    def __init__(self, design: CamDesign | FlatFaceDesign, *, objective: str | None = None, method: str | None = None,
-                 tolerance: float | None = None, solution=None):
+    def __init__(self, design: Design, *, objective: str | None = None, method: str | None = None,
+                 tolerance: float | None = None, solution: SolveResult | None = None):
         self.given = design
-        self.objective = objective or getattr(design, "objective", "R0")
+        self.face: Face = face_of(design)
+        self.objective = objective or design.objective
         self.method = method
         self.tolerance = tolerance
         if solution is not None:
@@ -56,17 +63,10 @@ class Cam:
         return self.__dict__.get(name)
 
     @property
-    def design(self) -> CamDesign | FlatFaceDesign:
+    def design(self) -> Design:
         """The design whose cam this is: as given, or, with an ``[optimize]`` table, the design of the laws found
         (:mod:`cams.motion_design`; solved on first use)."""
-        if getattr(self.given, "optimize", None) is None:
-            return self.given
-        return self.solution.design
-
-    @property
-    def flat(self) -> bool:
-        """True for a flat-faced follower (sized by convexity)."""
-        return isinstance(self.given, FlatFaceDesign)
+        return self.given if self.given.optimize is None else self.solution.design
 
     @classmethod
     def from_file(cls, path) -> Cam:
@@ -76,28 +76,19 @@ class Cam:
         return cls(load_design(path))
 
     @cached_property
-    def solution(self):
-        """The sized cam (:class:`cams.solve.SolveResult`), solved on first use."""
-        given = self.given
-        if isinstance(given, FlatFaceDesign) and given.optimize is None:  # narrowing the design's type
-            from optimize.flat import size_flat_face
-
-            return size_flat_face(given)
+    def solution(self) -> SolveResult:
+        """The sized cam (:class:`cams.faces.result.SolveResult`), solved on first use (:func:`cams.solve.solve`)."""
         from cams.solve import solve
 
-        return solve(given, method=self.method, objective=self.objective)
+        return solve(self.given, method=self.method, objective=self.objective)
 
     @cached_property
     def tradeoff(self):
-        """The R0-L trade-off (rocker only; None for a translating follower)."""
-        if isinstance(self.design, FlatFaceDesign) or self.design.follower.kind != "rocker":
-            return None
-        from optimize.tradeoff import tradeoff
-
-        return tradeoff(self.design, 15)
+        """The R0-L trade-off (a rocker roller's; None for other followers)."""
+        return self.face.tradeoff(self.design)
 
     @cached_property
-    def options(self):
+    def options(self) -> ProfileOptions:
         """The design's profile settings (:class:`cams.model.options.ProfileOptions`), ``tolerance`` overriding."""
         from cams.model.options import profile_options
 
@@ -105,37 +96,18 @@ class Cam:
 
     @cached_property
     def profile(self):
-        """The sampled pitch curve and working profile(s) at the design's chord tolerance."""
-        if isinstance(self.design, FlatFaceDesign):  # as self.flat, narrowing the design's type
-            from cams.profile.flat import flat_face_profile
-
-            opts = self.options
-            return flat_face_profile(self.design, self.solution.R0, tolerance=opts.tolerance,
-                                     field=opts.tolerance_field)
-        from cams.profile.roller import build_profile
-
-        return build_profile(self.design, self.solution.centre, tolerance=self.options.tolerance,
-                             field=self.options.tolerance_field)
+        """The sampled working profile (a roller's pitch curve too) at the design's chord tolerance."""
+        return self.face.profile(self.design, self.solution, self.options)
 
     @cached_property
     def checks(self):
-        """Jamming, undercut, validity and bore checks of the finished profile."""
-        if isinstance(self.design, FlatFaceDesign):  # as self.flat, narrowing the design's type
-            from cams.checks.flat import check_flat_face
-
-            return check_flat_face(self.design, self.solution, self.profile)
-        from cams.checks.profile import check_profile
-
-        return check_profile(self.design, self.solution.centre, options=self.options, profile=self.profile)
+        """The checks of the finished profile: jamming, undercut, validity, the bore (the face's)."""
+        return self.face.checks(self.design, self.solution, self.profile, self.options)
 
     @cached_property
     def _forces(self):
-        """``(DesignForces or None, note or None)`` of :func:`cams.dynamics.forces.design_forces`, computed once."""
-        if isinstance(self.design, FlatFaceDesign):  # as self.flat, narrowing the design's type
-            return None, None
-        from cams.dynamics.forces import design_forces
-
-        return design_forces(self.design, self.solution.centre)
+        """``(DesignForces or None, note or None)`` of the face's forces stage, computed once."""
+        return self.face.forces(self.design, self.solution)
 
     @property
     def forces(self):

@@ -28,14 +28,20 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 from itertools import pairwise
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from cams.model.design import CamDesign, FlatFaceDesign
+from cams.faces import face_of
+from cams.faces.result import SolveResult
 from cams.model.follower import Rocker, Translating
+from cams.model.motiondesign import MotionCertificate
 from laws.base import Law
 from laws.errors import InfeasibleError
+
+if TYPE_CHECKING:
+    from cams.faces.base import Face
+    from cams.model.design import Design
 
 __all__ = ["design_motion", "law_peaks", "integral_of_square"]
 
@@ -86,20 +92,20 @@ def _ratio(pressure) -> float:
 FALLBACK_RTOL = 1e-4
 
 
-def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[..., bool]):
+def _passing(new, sol, size_fixed: Callable[[Any], Any], face: Face):
     """The designed laws' smallest cam that passes the profile's checks: R0 raised by a floor, bisected.
 
-    The bisection asks ``passes(candidate, search=True)`` (a coarser chord for a very large cam, see
-    :func:`cams.solve.profile_passes`); the cam returned passes at the design's own tolerance (raised by
-    ``FALLBACK_RTOL`` steps until it does). Returns the passing solution, or None when no cam up to 2**10
+    The bisection asks ``face.profile_passes(candidate, search=True)`` (a coarser chord for a very large cam, see
+    :meth:`cams.faces.base.Face.profile_passes`); the cam returned passes at the design's own tolerance (raised
+    by ``FALLBACK_RTOL`` steps until it does). Returns the passing solution, or None when no cam up to 2**10
     times the optimum's R0 passes.
     """
     def at(floor: float, search: bool):
         try:
-            cand = solve_fixed(replace(new, limits=replace(new.limits, min_base_radius=floor)))
+            cand = size_fixed(new.with_floor(floor))
         except InfeasibleError:
             return None
-        return cand if passes(cand, search=search) else None
+        return cand if face.profile_passes(cand, search=search) else None
 
     lo, hi, best = float(sol.R0), float(sol.R0), None
     for _ in range(40):
@@ -124,41 +130,40 @@ def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[..., 
     return None
 
 
-def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any], Any],
-                  passes: Callable[..., bool] | None = None):
+def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
     """Design the free phases' laws of ``design`` with its cam (see the module notes).
 
     Parameters
     ----------
-    design : CamDesign or FlatFaceDesign
+    design : cams.model.design.Design
         With ``optimize`` set.
-    solve_fixed : callable
-        The verified solve of a design whose laws are fixed
-        (:func:`cams.solve.solve`; passed in, so that the solve may call this
-        module without an import cycle).
-    passes : callable, optional
-        Whether a fixed-law solution's profile passes its checks
-        (:func:`cams.solve.profile_passes`). When the optimum of ``"R0"``
-        fails them, the designed laws' smallest cam that passes is returned
-        (R0 raised by a floor, to :data:`FALLBACK_RTOL`), and a note gives the
-        optimum that failed; the lower bound stays the optimum's.
+    method : {"exact", "convex", "exhaustive"}, optional
+        The method of the solves of the cams of fixed laws (a roller's; the face's pipeline refuses it for a
+        flat face).
 
     Returns
     -------
-    cams.solve.SolveResult or optimize.flat.FlatFaceSolution
-        The cam of the designed laws, its ``optimization`` holding the
-        certificate (:meth:`to_dict`'s ``"optimize"``).
+    cams.faces.result.SolveResult
+        The cam of the designed laws, its ``optimization`` holding the certificate (a
+        :class:`cams.model.motiondesign.MotionCertificate`). When the optimum of ``"R0"`` fails its profile's
+        checks, the designed laws' smallest cam that passes is returned (R0 raised by a floor, to
+        :data:`FALLBACK_RTOL`), and a note gives the optimum that failed; the lower bound stays the optimum's.
     """
     from optimize.motion.design import design_laws
 
     spec = design.optimize
     assert spec is not None
-    base = replace(design, optimize=None)
-    if spec.objective == "L" and isinstance(base, CamDesign) and isinstance(base.follower, Rocker):
+    face = face_of(design)
+
+    def size_fixed(d):
+        return face.size(d, method=method)
+
+    base = design.with_(optimize=None)
+    if spec.objective == "L" and isinstance(base.follower, Rocker):
         # a rocker's least L: the cams of fixed laws are sized so too (a translating follower is refused below)
         base = replace(base, objective="L")
     try:
-        reference = solve_fixed(base)
+        reference = size_fixed(base)
     except InfeasibleError:
         reference = None
     hold = None
@@ -174,7 +179,7 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     # the size held: the least pressure angle's cam sits at the program's centre (its margin keeps the fixed
     # phases' limits between the samples); the other objectives' laws are sized by the exact method, their least
     # R0 (within the size held up to the programs' sampling of the fixed phases: said if not)
-    if spec.objective == "pressure_angle" and hold is not None and isinstance(new, CamDesign):
+    if spec.objective == "pressure_angle" and hold is not None:     # a roller's (refused for a flat face)
         if isinstance(new.follower, Rocker):     # the last accepted iterate's centre (within the size held)
             new = replace(new, centre=ld.centre, base_radius=None,
                           limits=replace(new.limits, centre_distance=None))
@@ -184,16 +189,16 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
             if isinstance(f, Translating) and f.offset is not None:
                 f = replace(f, offset=None)
             new = replace(new, follower=f, centre=(x, -d), base_radius=None)
-    sol = solve_fixed(new)
+    sol = size_fixed(new)
     notes_first: list[str] = []
     if not sizes and hold is not None and spec.objective != "pressure_angle" and sol.R0 > hold * (1 + 1e-9):
         notes_first.append(f"the designed laws' least R0, {sol.R0:.6g} mm, exceeds the size held, {hold:.6g} mm "
                            "(the program saw the fixed phases at samples)")
     floor = None
-    if passes is not None and spec.objective == "R0" and ld.free and not isinstance(new, FlatFaceDesign) \
-            and not passes(sol):
-        better = _passing(new, sol, solve_fixed, passes)
-        if reference is not None and passes(reference) and (better is None or reference.R0 < better.R0):
+    if spec.objective == "R0" and ld.free and not face.profile_passes(sol):
+        better = _passing(new, sol, size_fixed, face)
+        if reference is not None and face.profile_passes(reference) and (better is None
+                                                                         or reference.R0 < better.R0):
             notes_first.append(f"the optimum, R0 = {sol.R0:.6g} mm, fails the profile's checks and the designed "
                                f"laws pass only at a larger cam: the original laws' cam (R0 = {reference.R0:.6g} "
                                "mm) is smaller and passes, and is returned")
@@ -214,14 +219,14 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
     elif obj == "L":
         value = float(sol.L)
     elif obj == "pressure_angle":
-        value = _ratio(sol.pressure)
+        value = _ratio(sol.detail.pressure)
     elif obj in ("Ca", "Cj"):
         value = max(np.inf if (pk := p[obj]) is None else float(pk) for p in peaks.values())
     else:
         r = 3 if obj == "jerk_squared" else 4
         value = sum(integral_of_square(law, r, ld.space.breaks, spec.degree) for law in laws_new.values())
     notes = notes_first
-    if obj == "pressure_angle" and isinstance(base, CamDesign):
+    if obj == "pressure_angle":     # a roller's (refused for a flat face)
         limited = {i for i, _ in base.constrained_phases()}
         if not limited & set(ld.free):
             notes.append("no free phase has a limited pressure angle (force closure limits the rise only): the "
@@ -246,31 +251,31 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
             "phase": i, "kind": base.program.phases[i].kind, **peaks[i],
             "original": {"law": original[i].name, **law_peaks(original[i])},
         })
-    info = {
-        "objective": obj,
-        "value": value,
-        "lower_bound": None if ld.lower_bound is None else float(ld.lower_bound),
-        "gap": None if gap is None else float(gap),
-        "certified": certified,
-        "degree": spec.degree,
-        "spans": spec.spans,
-        "continuity": spec.continuity,
-        "pieces": ld.space.pieces,
-        "free": list(ld.free),
-        "caps": [{"phase": ld.free[k], "derivative": names[r], "max": cap} for (k, r), cap in ld.caps.items()],
-        "phases": phases,
-        "reference": None if reference is None else {
+    info = MotionCertificate(
+        objective=obj,
+        value=value,
+        lower_bound=None if ld.lower_bound is None else float(ld.lower_bound),
+        gap=None if gap is None else float(gap),
+        certified=certified,
+        degree=spec.degree,
+        spans=spec.spans,
+        continuity=spec.continuity,
+        pieces=ld.space.pieces,
+        free=tuple(ld.free),
+        caps=tuple({"phase": ld.free[k], "derivative": names[r], "max": cap} for (k, r), cap in ld.caps.items()),
+        phases=tuple(phases),
+        reference=None if reference is None else {
             "R0": float(reference.R0),
-            "L": None if getattr(reference, "L", None) is None else float(reference.L),
+            "L": None if reference.L is None else float(reference.L),
             "centre": {"x": float(reference.centre[0]), "y": float(reference.centre[1])},
         },
-        "held_R0": hold,
-        "floor": floor,
-        "method": "conic" if proven else "sequential convex programming",
-        "local_measure": ld.local_measure,
-        "iterations": ld.iterations,
-        "history": list(ld.history),
-        "seconds": float(ld.seconds),
-        "notes": notes,
-    }
+        held_R0=hold,
+        floor=floor,
+        method="conic" if proven else "sequential convex programming",
+        local_measure=ld.local_measure,
+        iterations=ld.iterations,
+        history=tuple(ld.history),
+        seconds=float(ld.seconds),
+        notes=tuple(notes),
+    )
     return replace(sol, optimization=info, notes=(*sol.notes, *notes))

@@ -99,8 +99,8 @@ def interior_point(design: CamDesign, near: np.ndarray) -> tuple[np.ndarray, flo
         )
         if res.status == 0 and res.x is not None and res.x[2] > 0:
             cands.append(res.x[:2])
-    except Exception:  # pragma: no cover - linprog failure only loses a candidate
-        pass
+    except ValueError:  # pragma: no cover - linprog refusing non-finite rows, or the sampled zone's own refusal
+        pass            # (InputError, InfeasibleError): only this candidate is lost
     best = None
     for c in cands:
         peaks = max_violation(design, c)

@@ -259,7 +259,6 @@ class FlatFaceSolution:
     pressure_max_at: float
     seconds: float
     notes: tuple[str, ...] = ()
-    optimization: dict | None = None
 
     @property
     def centre(self) -> np.ndarray:
@@ -366,8 +365,12 @@ class FlatFaceSolution:
         """True when the profile at R0 is convex enough: ``min_rho >= min_radius`` (to :attr:`rho_tolerance`)."""
         return bool(self.min_rho >= self.design.min_radius - self.rho_tolerance)
 
-    def to_dict(self) -> dict:
-        """JSON-ready report: lengths in the design's unit, angles in degrees."""
+    def to_dict(self, result: object = None) -> dict:
+        """JSON-ready report: lengths in the design's unit, angles in degrees.
+
+        ``result``: the :class:`cams.faces.result.SolveResult` that holds this sizing as its detail (it adds its
+        notes and the motion design's certificate to the report); its other fields are this sizing's.
+        """
         fo = self.design.follower
         lo, hi = self.face_range
         deg = lambda x: None if x is None else float(np.degrees(x))  # noqa: E731
@@ -395,7 +398,6 @@ class FlatFaceSolution:
             "verified": self.verified,
             "seconds": float(self.seconds),
             "notes": list(self.notes),
-            **({} if self.optimization is None else {"optimize": self.optimization}),
         }
 
 

@@ -37,23 +37,25 @@ MAY_IMPORT: dict[str, tuple[str, ...]] = {
     "cams.checks": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams._moved"),
     "cams.dynamics": (*_BASE, "cams.model", "cams.kinematics"),
     "cams.io": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams.dynamics"),
-    # the facade: a cam solved, verified, profiled, checked and assessed, one call each
-    "cams.solve": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                   "cams.checks", "cams.dynamics", "cams.motion_design"),
-    # the motion design: the laws designed (optimize.motion), the cam checked by the solve it is handed
-    "cams.motion_design": (*_BASE, "cams.model", "optimize"),
+    # the follower faces' pipelines: size, profile, checks, forces of one face each (cams.faces.face_of chooses)
+    "cams.faces": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
+                   "cams.checks", "cams.dynamics"),
+    # the motion design: the laws designed (optimize.motion), their cam sized by the face's pipeline
+    "cams.motion_design": (*_BASE, "cams.model", "optimize", "cams.faces"),
+    # the facade: a design of fixed laws to its face's pipeline, one with [optimize] to the motion design
+    "cams.solve": (*_BASE, "cams.model", "cams.faces", "cams.motion_design"),
     "cams.assess": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                    "cams.checks", "cams.dynamics", "cams.solve"),
+                    "cams.checks", "cams.dynamics", "cams.faces"),
     "cams.cam": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                 "cams.checks", "cams.dynamics", "cams.io", "cams.solve", "cams.assess"),
+                 "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess"),
     "cams.sweep": (*_BASE, "cams.model", "cams.io", "cams.cam"),
     "cams.machine": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                     "cams.checks", "cams.dynamics", "cams.io", "cams.solve", "cams.assess", "cams.cam", "cams._moved"),
+                     "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess", "cams.cam", "cams._moved"),
     "cams.present": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                     "cams.checks", "cams.dynamics", "cams.io", "cams.solve", "cams.assess", "cams.cam",
+                     "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess", "cams.cam",
                      "cams.machine"),
     "cams.commands": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                      "cams.checks", "cams.dynamics", "cams.io", "cams.solve", "cams.assess", "cams.cam",
+                      "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess", "cams.cam",
                       "cams.sweep", "cams.machine", "cams.present"),
     "cams.cli": ("laws", "cams.commands"),
 }

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Check", "ChecksMixin", "polygon_check", "bore_check", "PRESSURE_CHECKS"]
+__all__ = ["Check", "ChecksMixin", "polygon_check", "bore_check", "PRESSURE_CHECKS", "finite_or_none"]
 
 #: The checks of a profile that repeat the verified side (the pressure angle; a flat face's radius of
 #: curvature against limits.min_radius), not buildability.
@@ -52,14 +52,15 @@ class Check:
         return {
             "name": self.name,
             "passed": bool(self.passed),
-            "worst": _finite(self.worst),
-            "at_deg": _finite(_deg(self.at)),
-            "limit": _finite(self.limit),
+            "worst": finite_or_none(self.worst),
+            "at_deg": finite_or_none(_deg(self.at)),
+            "limit": finite_or_none(self.limit),
             "unit": self.unit,
         }
 
 
-def _finite(x):
+def finite_or_none(x):
+    """``x`` as a float, or None when it is None or not finite (for JSON)."""
     return None if x is None or not np.isfinite(x) else float(x)
 
 

@@ -45,8 +45,8 @@ import numpy as np
 from cams.checks.base import (
     Check,
     ChecksMixin,
-    _finite,
     bore_check,
+    finite_or_none,
     polygon_check,
 )
 from cams.kinematics.extremum import maximize, phase_positions
@@ -114,8 +114,8 @@ class CheckReport(ChecksMixin):
             "passed": bool(self.passed),
             "checks": [c.to_dict() for c in self.checks],
             "roller_radius": float(self.profile.roller_radius),
-            "largest_roller_radius": _finite(self.largest_roller_radius),
-            "recommended_roller_radius": _finite(self.recommended_roller_radius),
+            "largest_roller_radius": finite_or_none(self.largest_roller_radius),
+            "recommended_roller_radius": finite_or_none(self.recommended_roller_radius),
             "bore_radius": float(self.bore_radius),
             "R0": float(self.profile.R0),
             "points": len(self.profile),

@@ -5,21 +5,18 @@ from __future__ import annotations
 import argparse
 import json
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, face_cam
 from cams.present.text import print_checks
 
 __all__ = ["register"]
 
 
 def run(args) -> int:
-    from cams.cam import Cam
     from cams.io.designfile import load_design
     from cams.present.text import print_assessment
 
     design = load_design(args.file)
-    if is_flat(design):
-        refuse_method(args.method)
-    cam = Cam(design, method=None if is_flat(design) else args.method, tolerance=args.tolerance)
+    cam = face_cam(design, args)
     _ = cam.options  # bad options fail before solving
     a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
     report = cam.computed("checks")  # None: a knife edge in a groove, or no profile at the tolerance
@@ -28,7 +25,7 @@ def run(args) -> int:
     passed = a.usable and report is not None and report.passed
     rep["passed"] = passed
     notes: list[str] = []
-    if getattr(design, "chosen", False) and not is_flat(design):  # how the chosen cam's centre was found
+    if design.chosen:  # how the chosen cam's centre was found
         notes = [n for n in cam.solution.notes if not any(n in f for f in a.failures)]  # said once, on its FAIL line
     if notes:
         rep["notes"] = notes

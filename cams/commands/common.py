@@ -1,21 +1,18 @@
 """Exit codes and small helpers shared by the subcommands."""
 
-__all__ = ["EXIT_OK", "EXIT_CHECK_FAILED", "EXIT_BAD_INPUT", "is_flat", "refuse_method"]
+__all__ = ["EXIT_OK", "EXIT_CHECK_FAILED", "EXIT_BAD_INPUT", "face_cam"]
 
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT = 0, 1, 2
 #: Exit code after Ctrl-C (128 + SIGINT), as shells report it.
 EXIT_INTERRUPTED = 130
 
 
-def is_flat(design) -> bool:
-    """True for a flat-faced follower's design (:class:`cams.model.design.FlatFaceDesign`)."""
-    return getattr(design, "face", "roller") == "flat"
+def face_cam(design, args):
+    """The :class:`cams.cam.Cam` of ``design`` with the command's ``--method`` (refused where the face takes none)
+    and ``--tolerance`` (where the command has it)."""
+    from cams.cam import Cam
 
-
-def refuse_method(method) -> None:
-    """``--method`` chooses a zone solver: a flat face has none (its size follows from convexity)."""
-    if method is not None:
-        from laws.errors import InputError
-
-        raise InputError("--method", "does not apply to a flat-faced follower: its base radius follows from "
-                         "convexity directly")
+    cam = Cam(design, tolerance=getattr(args, "tolerance", None))
+    cam.face.check_method(args.method, "--method")
+    cam.method = args.method
+    return cam

@@ -11,21 +11,13 @@ from laws.errors import InputError
 
 __all__ = ["register", "run", "PICTURES", "FLAT_PICTURES"]
 
-#: Picture names in the order they are written; each needs only what it draws.
+#: Picture names in the order they are written; each needs only what it draws (for the help: the faces'
+#: pipelines say which they draw, :attr:`cams.faces.base.Face.pictures`).
 PICTURES = ("motion", "zone", "pressure", "profile")
 #: A flat-faced follower's pictures: no zone; the radius of curvature with the contact's travel instead.
 FLAT_PICTURES = ("motion", "pressure", "curvature", "profile")
 #: Every picture name ``--only`` takes ("optimized": a design with an [optimize] table, drawn for it by default).
 NAMES = ("motion", "zone", "pressure", "curvature", "profile", "optimized")
-
-#: Why a picture is skipped, by follower face.
-_SKIP = {
-    ("flat", "zone"): "the allowable-centre zone does not apply to a flat-faced follower (its size is set by "
-                      "convexity, not by a pressure-angle limit); skipped",
-    ("roller", "curvature"): "drawn for flat-faced followers only (a roller cam's curvature is checked by cams "
-                             "check); skipped",
-}
-
 
 def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Path]:
     """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.
@@ -33,27 +25,19 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Pat
     ``title`` (:meth:`cams.assess.Assessment.title`) marks every picture of a failing cam.
     """
     from cams.present import plots
+    from cams.present.faces import presenter
 
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
-    flat = getattr(cam, "flat", False)
-    for name in (*(FLAT_PICTURES if flat else PICTURES), "optimized"):
+    for name in (*cam.face.pictures, "optimized"):
         if name not in which:
             continue
         if name == "optimized":
             from cams.present.motion_plots import plot_motion_design
 
             fig = plot_motion_design(cam)
-        elif name == "motion":
-            fig = plots.plot_motion(cam.design)
-        elif name == "zone":
-            fig = plots.plot_zone(cam.solution, tradeoff=cam.tradeoff)
-        elif name == "pressure":
-            fig = plots.plot_flat_pressure(cam.solution) if flat else plots.plot_pressure(cam.solution)
-        elif name == "curvature":
-            fig = plots.plot_curvature(cam.solution)
         else:
-            fig = plots.plot_profile(cam)
+            fig = plots.picture(presenter(cam).pictures[name], cam)
         written += plots.save(plots.mark_failing(fig, title), f"{stem}_{name}")
     return written
 
@@ -83,24 +67,24 @@ def run(args) -> int:
     from cams.io.files import all_or_nothing, atomic_write, ensure_folder
 
     which = _only(args.only)
+    from cams.present.faces import presenter
+
     cam = Cam.from_file(args.file)
-    face = "flat" if cam.flat else "roller"
-    designed = getattr(cam.given, "optimize", None) is not None
+    designed = cam.given.optimize is not None
     if which is None:  # everything that applies: no note for what the user did not ask for
-        which = (*(FLAT_PICTURES if cam.flat else PICTURES), *(("optimized",) if designed else ()))
+        which = (*cam.face.pictures, *(("optimized",) if designed else ()))
     elif "optimized" in which and not designed:
         which = tuple(w for w in which if w != "optimized")
         print("cams plot: note: optimized: the design has no [optimize] table, no motion was designed; skipped",
               file=sys.stderr)
-    from cams.assess import knife_in_groove
-
-    if not cam.flat and knife_in_groove(cam.design) and "profile" in which:
+    no_profile = cam.face.no_profile(cam.design)
+    if no_profile is not None and "profile" in which:
         which = tuple(w for w in which if w != "profile")
-        print("cams plot: note: profile: a knife edge cannot run in a groove, there is no profile to draw; skipped",
-              file=sys.stderr)
+        print(f"cams plot: note: profile: {no_profile} to draw; skipped", file=sys.stderr)
+    skipped = presenter(cam).skipped
     for w in which:
-        if (face, w) in _SKIP:
-            print(f"cams plot: note: {w}: {_SKIP[face, w]}", file=sys.stderr)
+        if w in skipped:
+            print(f"cams plot: note: {w}: {skipped[w]}", file=sys.stderr)
     # one rule for every command (cams.assess): a failing cam's pictures are drawn, titled as failing, exit 1;
     # the motion diagrams alone need no solution, so they alone assess nothing
     a = None if set(which) <= {"motion"} and not args.animate else cam.assessment
@@ -109,9 +93,8 @@ def run(args) -> int:
     with all_or_nothing():
         out = ensure_folder(args.out, "--out")
         written = draw(cam, which, out, title="" if a is None else a.title())
-        if args.animate and not cam.flat and knife_in_groove(cam.design):
-            print("cams plot: note: --animate: a knife edge cannot run in a groove, there is no profile to turn; "
-                  "skipped", file=sys.stderr)
+        if args.animate and no_profile is not None:
+            print(f"cams plot: note: --animate: {no_profile} to turn; skipped", file=sys.stderr)
         elif args.animate:
             from cams.present.plots import animate_profile
 

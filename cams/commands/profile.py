@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 import json
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
-from cams.words import bore_text, length_format
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, face_cam
+from cams.words import length_format
 
 __all__ = ["register"]
 
@@ -53,43 +53,25 @@ def _report(cam, prof, bore, given) -> dict:
     if prof is None:  # a knife edge in a groove: no profile
         return {"name": design.name, "R0": float(sol.R0),
                 "centre": {"x": float(sol.centre[0]), "y": float(sol.centre[1])}}
-    rep = {"name": design.name}
-    if cam.flat:
-        rep["face"] = "flat"
-    rep.update({"points": len(prof), "tolerance": prof.tolerance, "R0": prof.R0,
-                "centre": {"x": float(sol.centre[0]), "y": float(sol.centre[1])}})
-    if cam.flat:
-        rep.update({"min_work_radius": prof.min_work_radius, "min_rho": sol.min_rho, "min_radius": design.min_radius,
-                    "bore_radius": bore, "bore_suggested": given is None, "columns": "phi_deg,work_x,work_y"})
-    else:
-        from cams.kinematics.inversion import smallest_cam_radius
+    from cams.present.faces import presenter
 
-        rep.update({"roller_radius": prof.roller_radius, "min_work_radius": prof.min_work_radius, "bore_radius": bore,
-                    "bore_suggested": given is None,
-                    "smallest_cam_radius": smallest_cam_radius(design, sol.centre)[0],
-                    "largest_roller_radius": cam.checks.largest_roller_radius, "groove": prof.groove})
-    return rep
+    return {"name": design.name, **presenter(cam).profile_report(cam, prof, bore, given)}
 
 
 def run(args) -> int:
     import sys
 
-    from cams.assess import knife_in_groove
-    from cams.cam import Cam
     from cams.io.designfile import load_design
     from cams.present.text import print_assessment
     from cams.profile.roller import default_bore_radius
 
     design = load_design(args.file)
-    flat = is_flat(design)
-    if flat:
-        refuse_method(args.method)
-    cam = Cam(design, method=None if flat else args.method, tolerance=args.tolerance)
+    cam = face_cam(design, args)
     opts = cam.options  # bad options fail before solving
     _check_outputs(args)  # fail before solving, and before writing any file
     out = _summary_stream(args)
     a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
-    prof = None if knife_in_groove(design) else cam.profile
+    prof = None if cam.face.no_profile(design) is not None else cam.profile
     bore = None
     if prof is not None:
         bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
@@ -112,14 +94,10 @@ def run(args) -> int:
         f = length_format(rep["R0"])  # enough digits for the cam's size
         if prof is None or bore is None:  # a bore whenever there is a profile
             print(f"{rep['name']}: no profile: R0 = {rep['R0']:{f}} mm", file=out)
-        elif flat:
-            print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-                  f"R0 = {rep['R0']:{f}} mm, profile radius >= {rep['min_work_radius']:{f}} mm, "
-                  f"radius of curvature >= {rep['min_rho']:{f}} mm, {bore_text(bore, rep['bore_suggested'])}", file=out)
         else:
-            print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-                  f"R0 = {rep['R0']:{f}} mm (pitch curve), cam's smallest radius "
-                  f"{rep['smallest_cam_radius']:{f}} mm, {bore_text(bore, rep['bore_suggested'])}", file=out)
+            from cams.present.faces import presenter
+
+            print(presenter(cam).profile_line(rep, bore, f), file=out)
         print(f"  verified: {'yes' if a.verified else 'NO'}", file=out)
         print_assessment(rep, file=out)
         for w in written:

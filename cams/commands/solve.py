@@ -6,8 +6,8 @@ import argparse
 import json
 import sys
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, is_flat, refuse_method
-from cams.present.text import print_assessment, print_flat_summary, print_summary
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+from cams.present.text import print_assessment
 
 __all__ = ["register"]
 
@@ -39,9 +39,8 @@ def _save(args, cam, rep: dict, usable: bool) -> None:
     from cams.io.tomlwrite import dumps
 
     o = cam.solution.optimization
-    held = getattr(cam.design, "centre", None) if o["objective"] == "pressure_angle" else None
-    doc = designed_document(read_toml(args.file), cam.design.program, tuple(o["free"]), floor=o.get("floor"),
-                            centre=held)
+    held = getattr(cam.design, "centre", None) if o.objective == "pressure_angle" else None
+    doc = designed_document(read_toml(args.file), cam.design.program, tuple(o.free), floor=o.floor, centre=held)
     source = Path(args.file).name.replace("\n", " ").replace("\r", " ")
     text = f"# The laws designed by cams solve from {source}\n" + dumps(doc)
     path = atomic_write(args.save_design, "--save-design", lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
@@ -53,35 +52,18 @@ def _said_saved(rep: dict) -> None:
         print(f"wrote {rep['saved_design']}")
 
 
-def _run_flat(args, cam) -> int:
-    refuse_method(args.method)
-    rep = cam.solution.to_dict()
-    a = cam.assessment
-    rep.update(a.to_dict())
-    _save(args, cam, rep, a.usable)
-    if args.json:
-        print(json.dumps(rep, indent=2))
-    else:
-        print_flat_summary(rep)
-        print_assessment(rep)
-        _said_saved(rep)
-    return EXIT_OK if a.usable else EXIT_CHECK_FAILED
-
-
 def run(args) -> int:
-    from cams.cam import Cam
+    from cams.commands.common import face_cam
     from cams.io.designfile import load_design
-    from cams.model.design import FlatFaceDesign
+    from cams.present.faces import presenter
 
     design = load_design(args.file)
     if args.save_design is not None:
         _check_save(args, design)
-    cam = Cam(design, method=None if is_flat(design) else args.method)
-    if isinstance(design, FlatFaceDesign):  # is_flat, narrowing the design's type for what follows
-        return _run_flat(args, cam)
+    cam = face_cam(design, args)
     result = cam.solution
     rep = result.to_dict()
-    if rep["certified"] is False:
+    if rep.get("certified") is False:
         return _not_certified(args, rep)
     forces = None
     if design.dynamics is not None:
@@ -95,7 +77,8 @@ def run(args) -> int:
             note = impact_note(df.forces)
             if note:
                 rep["notes"].append(note)
-    rep["forces"] = forces
+    if cam.face.forces_computed:
+        rep["forces"] = forces
     # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
     a = cam.assessment
     rep.update(a.to_dict())
@@ -107,7 +90,7 @@ def run(args) -> int:
             rep["forces"] = json_safe(forces)  # an unbounded force (rigid impact) as null: strict JSON
         print(json.dumps(rep, indent=2))
     else:
-        print_summary(rep)
+        presenter(cam).print_summary(rep)
         print_assessment(rep)
         _said_saved(rep)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED

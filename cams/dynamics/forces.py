@@ -62,7 +62,7 @@ import numpy as np
 
 from cams.dynamics.impacts import rigid_impacts
 from cams.dynamics.jump import JumpSpeed, jump_dict, jump_speed
-from cams.dynamics.motion import _grid, _kinematics, _omega
+from cams.dynamics.motion import cam_speed, dynamics_grid, follower_kinematics
 from cams.kinematics.inversion import contact_normal, invert, pressure_angle
 from cams.kinematics.vectors import cross
 from cams.model.design import CamDesign
@@ -307,11 +307,11 @@ def cam_forces(
     """
     if dyn.spring is None:
         raise InputError("dynamics.spring_rate", "the forces need a spring; design one with spring_for_contact")
-    w = _omega(design, rpm)
-    phi = _grid(samples) if phi is None else np.asarray(phi, dtype=float)
+    w = cam_speed(design, rpm)
+    phi = dynamics_grid(samples) if phi is None else np.asarray(phi, dtype=float)
     f = design.follower
     mo = design.program.evaluate(phi)
-    q, dq, d2q, arm = _kinematics(design, phi, dyn)
+    q, dq, d2q, arm = follower_kinematics(design, phi, dyn)
     inv = invert(design, centre, phi, mo)
     n = contact_normal(inv)
     gamma = pressure_angle(inv)
@@ -400,9 +400,9 @@ def spring_for_contact(
         would exceed ``dyn.max_spring_force`` at any preload.
     """
     m = _num("dynamics.margin", margin, lo=1.0)
-    w = _omega(design, rpm)
-    phi = _grid(samples)
-    q, _, d2q, _ = _kinematics(design, phi, dyn)
+    w = cam_speed(design, rpm)
+    phi = dynamics_grid(samples)
+    q, _, d2q, _ = follower_kinematics(design, phi, dyn)
     need = m * (-dyn.mass * w**2 * d2q - dyn.load)
     qmax = float(np.max(q))
     if rate is not None:

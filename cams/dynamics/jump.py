@@ -12,7 +12,7 @@ from functools import partial
 import numpy as np
 
 from cams.dynamics.impacts import rigid_impacts
-from cams.dynamics.motion import _grid, _kinematics, _si
+from cams.dynamics.motion import dynamics_grid, follower_kinematics, si_per_unit
 from cams.kinematics.extremum import maximize, phase_positions
 from cams.model.design import CamDesign
 from cams.model.dynamics import FollowerDynamics
@@ -83,8 +83,8 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
     """
     if dyn.spring is None:
         raise InputError("dynamics.spring_rate", "the jump speed needs a spring")
-    phi = _grid(samples)
-    q = _kinematics(design, phi, dyn)[0]
+    phi = dynamics_grid(samples)
+    q = follower_kinematics(design, phi, dyn)[0]
     spring = dyn.spring
     hold = spring.force(q) + dyn.load
     if np.any(hold < 0):
@@ -95,7 +95,7 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
             f"{hold[k]:.6g} at cam angle {np.degrees(phi[k]):.6g} deg; raise the preload",
         )
     prog = design.program
-    si = _si(design, dyn)
+    si = si_per_unit(design, dyn)
 
     def pull(i: int, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``g = -m q'' / (F0 + k q + P)`` in phase ``i`` and its derivative by the cam angle."""

@@ -15,8 +15,11 @@ from laws.errors import InputError, show_value
 from laws.errors import check_number as _num
 from laws.units import TWO_PI, rpm_to_omega
 
+__all__ = ["cam_speed", "dynamics_grid", "si_per_unit", "follower_kinematics"]
 
-def _omega(design: CamDesign, rpm: float | None) -> float:
+
+def cam_speed(design: CamDesign, rpm: float | None) -> float:
+    """The cam's angular speed (rad/s) at ``rpm`` (rev/min), or at the design's ``cam.rpm`` when ``rpm`` is None."""
     n = design.rpm if rpm is None else rpm
     if n is None:
         raise InputError("cam.rpm", "the cam's speed is needed for its forces; give cam.rpm")
@@ -24,13 +27,14 @@ def _omega(design: CamDesign, rpm: float | None) -> float:
     return rpm_to_omega(float(n))
 
 
-def _grid(samples: int) -> np.ndarray:
+def dynamics_grid(samples: int) -> np.ndarray:
+    """``samples`` equally spaced cam angles over one turn (rad), from 0; ``dynamics.samples`` checked (>= 8)."""
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 8:
         raise InputError("dynamics.samples", f"must be an integer >= 8, got {show_value(samples)}")
     return np.linspace(0.0, TWO_PI, int(samples), endpoint=False)
 
 
-def _si(design: CamDesign, dyn: FollowerDynamics) -> float:
+def si_per_unit(design: CamDesign, dyn: FollowerDynamics) -> float:
     """SI units of the follower coordinate ``q`` per unit of the program's ``s``.
 
     1 for a rocker (rad), else metres per length unit.
@@ -38,9 +42,9 @@ def _si(design: CamDesign, dyn: FollowerDynamics) -> float:
     return 1.0 if isinstance(design.follower, Rocker) else dyn.length_unit
 
 
-def _kinematics(design: CamDesign, phi: np.ndarray, dyn: FollowerDynamics):
+def follower_kinematics(design: CamDesign, phi: np.ndarray, dyn: FollowerDynamics):
     """q, dq/dphi, d2q/dphi2 in SI and the arm |dA/dq| (m)."""
     mo = design.program.evaluate(phi)
-    u = _si(design, dyn)
+    u = si_per_unit(design, dyn)
     arm = design.follower.arm * dyn.length_unit if isinstance(design.follower, Rocker) else 1.0
     return mo.s * u, mo.ds * u, mo.d2s * u, arm

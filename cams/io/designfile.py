@@ -54,7 +54,15 @@ from cams.io.document import check_document, check_keys, read_toml, toml_integer
 from cams.io.document import toml_number as _num
 from cams.io.document import toml_table as _table
 from cams.io.lawtable import law_from_table
-from cams.model.design import MAX_SAMPLES, OBJECTIVE_SUPERSEDED, CamDesign, FlatFaceDesign, Limits, check_lift
+from cams.model.design import (
+    FLAT_NO_FORCES,
+    MAX_SAMPLES,
+    OBJECTIVE_SUPERSEDED,
+    CamDesign,
+    FlatFaceDesign,
+    Limits,
+    check_lift,
+)
 from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, journal_error
 from cams.model.follower import (
     FlatRocker,
@@ -432,8 +440,7 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         raise InputError(f"solve.{k}", "does not apply to a flat-faced follower: its base radius follows from "
                          "convexity directly; remove the [solve] table")
     if "dynamics" in d:
-        raise InputError("dynamics", "forces are computed for roller followers only; remove the [dynamics] table "
-                         "for a flat face")
+        raise InputError("dynamics", FLAT_NO_FORCES)
     return FlatFaceDesign(
         follower=follower, program=program,
         min_radius=_num(li, "min_radius", "limits.min_radius", default=default_min_radius),

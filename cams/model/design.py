@@ -6,7 +6,8 @@ command line speak degrees, and :func:`cams.io.designfile.load_design` converts.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import ClassVar
 
 import numpy as np
 
@@ -25,8 +26,8 @@ from cams.model.options import ProfileOptions, check_objective, check_tolerance
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
-__all__ = ["Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES", "check_lift",
-           "check_optimize", "OBJECTIVE_SUPERSEDED"]
+__all__ = ["Design", "FLAT_NO_FORCES", "Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES",
+           "check_lift", "check_optimize", "OBJECTIVE_SUPERSEDED"]
 
 METHODS = ("exact", "convex", "exhaustive")
 CLOSURES = ("force", "form")
@@ -57,6 +58,9 @@ def check_lift(lift: float, rocker: bool) -> None:
         raise InputError("follower.stroke", f"must be > 0, got {show_value(lift)}")
 
 
+#: Why a flat face's design takes no ``[dynamics]`` table (said by the loader and by the flat face's pipeline).
+FLAT_NO_FORCES = "forces are computed for roller followers only; remove the [dynamics] table for a flat face"
+
 #: Why ``[solve] objective`` (or ``solve(objective=...)``) is refused beside ``[optimize]``.
 OBJECTIVE_SUPERSEDED = "[optimize] objective supersedes it: give the objective in [optimize] only"
 
@@ -80,6 +84,80 @@ def check_optimize(spec: MotionDesignSpec | None, objective: str, chosen: bool) 
     if chosen and spec.objective in ("R0", "L"):
         raise InputError("optimize.objective", f"{spec.objective!r} sizes the cam, but the cam is chosen "
                          "([cam] base_radius or centre): choose another objective or remove the chosen cam")
+
+
+class Design:
+    """What every cam design has, whatever its follower's face: the base of :class:`CamDesign` (roller and knife
+    edge) and :class:`FlatFaceDesign` (flat face).
+
+    The follower's face fixes the design's type in one place (the loader, :func:`cams.io.designfile.design_from_dict`)
+    and the face's pipeline (:mod:`cams.faces`) in one other (:func:`cams.faces.face_of`); nothing above reads
+    :attr:`face` to branch. Each subclass is a frozen dataclass holding these attributes (lengths in the design's
+    unit, angles in radians) and checks them through :meth:`_check_common`.
+
+    Attributes
+    ----------
+    follower : cams.model.follower.RollerFollower or cams.model.follower.FlatFollower
+    program : laws.program.Program
+        Lift in radians (rocker swing) or length (translating stroke).
+    cam_sense : {+1, -1}
+        The cam's sense of rotation: +1 counter-clockwise.
+    rpm : float or None
+        Cam speed, revolutions per minute.
+    name : str
+    base_radius : float or None
+        A chosen R0 (length): the cam is checked, not sized.
+    tolerance : float or None
+        Chord tolerance of the sampled profile (length); None: the default for the cam's size.
+    bore_radius : float or None
+        Radius of the cam's bore (length), checked against the working profile; None: not checked.
+    dynamics : DynamicsSpec or None
+        The follower's dynamics (a file's ``[dynamics]``); None: no forces.
+    optimize : MotionDesignSpec or None
+        Design the free phases' laws with the cam (a file's ``[optimize]``); None: the laws are as given.
+    """
+
+    #: The follower's face: ``"roller"`` (a knife edge is a roller of radius 0) or ``"flat"``; a label for texts
+    #: and reports, never a branch (the face's pipeline, :mod:`cams.faces`, holds what differs).
+    face: ClassVar[str]
+    #: What the sizing minimizes (a roller design's ``[solve] objective``; a flat face's cam is sized by R0).
+    objective: str = "R0"
+
+    follower: RollerFollower | FlatFollower
+    program: Program
+    cam_sense: int
+    rpm: float | None
+    name: str
+    base_radius: float | None
+    tolerance: float | None
+    bore_radius: float | None
+    dynamics: DynamicsSpec | None
+    optimize: MotionDesignSpec | None
+
+    def _check_common(self) -> None:
+        """Refuse the common fields' bad values (one line each, named as in the design file)."""
+        if self.cam_sense not in (1, -1):
+            raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
+        if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
+            raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
+
+    @property
+    def scale(self) -> float:
+        """Characteristic length for relative tolerances (the follower's: arm, stroke or centre distance)."""
+        return self.follower.scale
+
+    @property
+    def chosen(self) -> bool:
+        """True when the designer chose the cam (``base_radius``, or a roller's ``centre``): checked, not sized."""
+        return self.base_radius is not None
+
+    def with_(self, **changes):
+        """A copy with some fields changed (the same type)."""
+        return replace(self, **changes)  # type: ignore[type-var]
+
+    def with_floor(self, R0: float):
+        """A copy whose sizing is floored at base radius ``R0`` (length): ``limits.min_base_radius``."""
+        raise NotImplementedError
 
 
 @dataclass(frozen=True)
@@ -134,7 +212,7 @@ class Limits:
 
 
 @dataclass(frozen=True)
-class CamDesign:
+class CamDesign(Design):
     """Everything that defines a cam-sizing problem.
 
     Parameters
@@ -211,8 +289,7 @@ class CamDesign:
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         check_option("solve.method", self.method, METHODS)
         self._check_chosen()
-        if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
-            raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
+        self._check_common()
         check_lift(self.program.lift, isinstance(self.follower, Rocker))
         if isinstance(self.follower, Translating):
             if self.limits.safety_factor != 1.0:
@@ -227,11 +304,6 @@ class CamDesign:
             raise InputError("follower.kind", "must be 'rocker' or 'translating'")
         ProfileOptions(self.tolerance, self.min_curvature_radius, self.bore_radius)  # checks the three
         check_optimize(self.optimize, self.objective, self.chosen)
-
-    @property
-    def scale(self) -> float:
-        """Characteristic length for relative tolerances (arm or stroke)."""
-        return self.follower.scale
 
     @property
     def chosen(self) -> bool:
@@ -342,15 +414,13 @@ class CamDesign:
 
     face = "roller"
 
-    def with_(self, **changes) -> CamDesign:
-        """A copy with some fields changed."""
-        from dataclasses import replace
-
-        return replace(self, **changes)
+    def with_floor(self, R0: float) -> CamDesign:
+        """A copy sized with the floor ``limits.min_base_radius = R0`` (length)."""
+        return replace(self, limits=replace(self.limits, min_base_radius=R0))
 
 
 @dataclass(frozen=True)
-class FlatFaceDesign:
+class FlatFaceDesign(Design):
     """A cam for a flat-faced follower: sized by convexity, not by a pressure-angle limit.
 
     The pressure angle of a flat face is fixed by the geometry (zero for a
@@ -379,6 +449,8 @@ class FlatFaceDesign:
         for the cam's size (:func:`cams.profile.roller.cap_tolerance`).
     optimize : MotionDesignSpec or None
         Design the free phases' laws with the cam (a file's ``[optimize]``).
+    dynamics : DynamicsSpec or None
+        Refused by the face's pipeline (:mod:`cams.faces.flat`): forces are computed for roller followers only.
     """
 
     follower: FlatFollower
@@ -392,14 +464,12 @@ class FlatFaceDesign:
     bore_radius: float | None = None
     tolerance: float | None = None
     optimize: MotionDesignSpec | None = None
+    dynamics: DynamicsSpec | None = None
 
     face = "flat"
 
     def __post_init__(self):
-        if self.cam_sense not in (1, -1):
-            raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
-        if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
-            raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
+        self._check_common()
         if not isinstance(self.follower, (FlatTranslating, FlatRocker)):
             raise InputError("follower", "must be a FlatTranslating or FlatRocker follower")
         check_lift(self.program.lift, isinstance(self.follower, FlatRocker))
@@ -414,7 +484,6 @@ class FlatFaceDesign:
                              "to size; remove one of them")
         check_optimize(self.optimize, "R0", self.base_radius is not None)
 
-    @property
-    def scale(self) -> float:
-        """Characteristic length for relative tolerances (stroke or centre distance)."""
-        return self.follower.scale
+    def with_floor(self, R0: float) -> FlatFaceDesign:
+        """A copy sized with the floor ``min_base_radius = R0`` (length)."""
+        return replace(self, min_base_radius=R0)

@@ -21,11 +21,12 @@ Each field is checked once, here, with the message the file's key gets.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Any
 
 from laws.errors import InputError, check_option, show_value
 
-__all__ = ["MOTION_OBJECTIVES", "CAP_KEYS", "MotionDesignSpec", "DEFAULT_DEGREE", "DEFAULT_SPANS",
+__all__ = ["MOTION_OBJECTIVES", "CAP_KEYS", "MotionDesignSpec", "MotionCertificate", "DEFAULT_DEGREE", "DEFAULT_SPANS",
            "DEFAULT_CONTINUITY", "MAX_DEGREE", "MAX_SPANS",
            "MAX_ROCKER_SPANS"]
 
@@ -131,3 +132,95 @@ class MotionDesignSpec:
         """The cap ``key`` (``"max_Ca"``...) of the ``k``-th free phase (one cap given: it holds for each)."""
         caps = getattr(self, key)
         return caps[0] if len(caps) == 1 else caps[k]
+
+
+@dataclass(frozen=True)
+class MotionCertificate:
+    """The motion design's certificate: what was designed, the value found and what proves it.
+
+    Attributes
+    ----------
+    objective : str
+        What was minimized (:data:`MOTION_OBJECTIVES`).
+    value : float
+        The checked design's value (mm for ``"R0"`` and ``"L"``; the ratio of pressure angle to limit; the
+        normalized peak; the dimensionless integral), computed on the designed laws themselves.
+    lower_bound : float or None
+        A proven lower bound on the space's optimum (a convex program's); None for a local optimum.
+    gap : float or None
+        ``(value - lower_bound) / |value|``.
+    certified : bool
+        The cam verified, the caps met by the laws themselves and, where a bound is proven, the bound.
+    degree, spans, continuity, pieces : int
+        The spline space (``pieces``: subdivisions of a span for the conservative constraints).
+    free : tuple of int
+        The free phases, their ``[[motion]]`` indices from 0.
+    caps : tuple of dict
+        ``{phase, derivative, max}`` per cap.
+    phases : tuple of dict
+        Per free phase: ``phase``, ``kind``, ``Cv``, ``Ca``, ``Cj`` of the designed law and of the ``original``.
+    reference : dict or None
+        The original laws' cam: ``R0``, ``L`` (mm) and ``centre`` ``{x, y}`` (mm); None when they admit none.
+    held_R0 : float or None
+        The base radius held (mm) by objectives other than R0 and L.
+    floor : float or None
+        The R0 (mm) the cam was grown to so that its profile passes its checks; None when the optimum passes.
+    method : str
+        ``"conic"`` or ``"sequential convex programming"``.
+    local_measure : float or None
+        A local optimum's measure (the decrease its model predicts within a small radius); None for a conic one.
+    iterations : int or None
+    history : tuple of float
+        The objective at each accepted iterate.
+    seconds : float
+        Time of the laws' design (s).
+    notes : tuple of str
+    """
+
+    objective: str
+    value: float
+    lower_bound: float | None
+    gap: float | None
+    certified: bool
+    degree: int
+    spans: int
+    continuity: int
+    pieces: int
+    free: tuple[int, ...]
+    caps: tuple[dict[str, Any], ...]
+    phases: tuple[dict[str, Any], ...]
+    reference: dict[str, Any] | None
+    held_R0: float | None
+    floor: float | None
+    method: str
+    local_measure: float | None
+    iterations: int | None
+    history: tuple[float, ...] = field(default_factory=tuple)
+    seconds: float = 0.0
+    notes: tuple[str, ...] = field(default_factory=tuple)
+
+    def to_dict(self) -> dict:
+        """The JSON report's ``optimize`` object (units as in :class:`MotionCertificate`)."""
+        return {
+            "objective": self.objective,
+            "value": self.value,
+            "lower_bound": self.lower_bound,
+            "gap": self.gap,
+            "certified": self.certified,
+            "degree": self.degree,
+            "spans": self.spans,
+            "continuity": self.continuity,
+            "pieces": self.pieces,
+            "free": list(self.free),
+            "caps": [dict(c) for c in self.caps],
+            "phases": [dict(p) for p in self.phases],
+            "reference": self.reference,
+            "held_R0": self.held_R0,
+            "floor": self.floor,
+            "method": self.method,
+            "local_measure": self.local_measure,
+            "iterations": self.iterations,
+            "history": list(self.history),
+            "seconds": self.seconds,
+            "notes": list(self.notes),
+        }

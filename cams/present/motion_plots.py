@@ -19,7 +19,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from cams.kinematics.inversion import invert_phase, pitch_curve, pressure_angle
+from cams.kinematics.inversion import invert_phase, pressure_angle
+from cams.present.faces import presenter_of_face
 from laws.units import TWO_PI
 
 __all__ = ["plot_motion_design"]
@@ -76,21 +77,11 @@ def _pressure_panel(ax, given, designed, centres, n: int = 721) -> None:
 
 
 def _cams_panel(ax, given, designed, sizes) -> None:
-    phi = np.linspace(0.0, TWO_PI, 1441)
     for design, size, colour, label in ((given, sizes[0], _OLD, "original"), (designed, sizes[1], _NEW,
                                                                                 "designed")):
-        if getattr(design, "face", "roller") == "flat":
-            from cams.profile.flat import flat_face_profile
-
-            pts = flat_face_profile(design, float(size)).point
-            ax.plot(pts[:, 0], pts[:, 1], color=colour, lw=1.6 if colour == _OLD else 1.1,
-                    label=f"{label}: R0 = {float(size):.3f} mm")
-            continue
-        pg = pitch_curve(design, size, phi)
-        R0 = float(np.linalg.norm(size - design.follower.position(0.0)))
-        r = design.follower.roller_radius
-        ax.plot(pg.point[:, 0], pg.point[:, 1], color=colour, lw=0.8, ls="--")
-        work = pg.offset(-r) if r > 0 else pg.point
+        work, pitch, R0 = presenter_of_face(design.face).outline(design, size)
+        if pitch is not None:
+            ax.plot(pitch[:, 0], pitch[:, 1], color=colour, lw=0.8, ls="--")
         ax.plot(work[:, 0], work[:, 1], color=colour, lw=1.6 if colour == _OLD else 1.1,
                 label=f"{label}: R0 = {R0:.3f} mm")
     ax.plot(0, 0, "k+", ms=10)
@@ -119,24 +110,25 @@ def plot_motion_design(cam):
     from matplotlib.figure import Figure
 
     sol = cam.solution
-    info = sol.optimization
-    if info is None:
+    if sol.optimization is None:
         raise ValueError("the cam's design has no [optimize] table")
+    info = sol.optimization.to_dict()
     given = replace(cam.given, optimize=None)
     designed = sol.design
     free = tuple(info["free"])
-    flat = getattr(designed, "face", "roller") == "flat"
     ref = info["reference"]
-    # a flat face has no pressure-angle panel (its pressure angle is the geometry's)
-    fig = Figure(figsize=(7.5, 8.5 if flat else 10.0), layout="constrained")
-    grid = fig.add_gridspec(3 if flat else 4, 2, height_ratios=(1, 1, 2.2) if flat else (1, 1, 1.1, 2.2))
+    face = presenter_of_face(designed.face)
+    # a face without a pressure-angle limit (a flat face's is the geometry's) has no pressure-angle panel
+    panel = face.pressure_panel
+    fig = Figure(figsize=(7.5, 10.0 if panel else 8.5), layout="constrained")
+    grid = fig.add_gridspec(4 if panel else 3, 2, height_ratios=(1, 1, 1.1, 2.2) if panel else (1, 1, 2.2))
     _laws_panel(fig, grid, given, designed, free)
-    if not flat and ref is not None:
+    if panel and ref is not None:
         _pressure_panel(fig.add_subplot(grid[2, :]), given, designed,
                         (np.array([ref["centre"]["x"], ref["centre"]["y"]]), sol.centre))
     if ref is not None:
-        sizes = (ref["R0"], sol.R0) if flat else (np.array([ref["centre"]["x"], ref["centre"]["y"]]), sol.centre)
-        _cams_panel(fig.add_subplot(grid[2 if flat else 3, :]), given, designed, sizes)
+        sizes = (face.reference_size(ref), face.size_of(sol))
+        _cams_panel(fig.add_subplot(grid[3 if panel else 2, :]), given, designed, sizes)
     unit = {"R0": " mm", "L": " mm", "pressure_angle": " of the limit"}.get(info["objective"], " (normalized)")
     if info["lower_bound"] is None:
         how = f"a local optimum ({info['iterations']} iterations)"

@@ -1,6 +1,6 @@
 """Pictures: the allowable-centre zone, motion diagrams, pressure angle.
 
-A flat-faced follower's cam (``cam.flat``) has no zone; its pictures are the
+A flat-faced follower's cam has no zone; its pictures are the
 motion diagrams, the pressure angle (:func:`plot_flat_pressure`, fixed by the
 geometry), the radius of curvature with the contact's travel on the face
 (:func:`plot_curvature`) and the profile (:func:`plot_profile`, face drawn).
@@ -22,12 +22,13 @@ from cams.kinematics.inversion import (
     invert_phase,
     pressure_angle,
     smallest_cam_radius,
-    to_fixed_frame,
 )
+from cams.present.mechanism import radii_label
 from cams.words import binding_text, phase_words
 from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
+           "picture", "PICTURES",
            "animate_profile", "save", "mark_failing", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
@@ -78,14 +79,6 @@ def _legend_below(fig, ax, ncol: int = 2):
     return fig.legend(*_unique_handles(ax), loc="outside lower center", ncol=ncol, fontsize=7)
 
 
-def _radii_label(R0: float, cam_radius: float | None) -> str:
-    """The legend of the base circle: R0 (pitch curve) and, for a roller, the cam's own smallest radius."""
-    text = f"base circle R0 = {R0:.3f} mm (pitch curve)"
-    if cam_radius is not None:
-        text += f"\ncam's smallest radius {cam_radius:.3f} mm"
-    return text
-
-
 def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
     """Write ``fig`` as ``stem.png`` and ``stem.svg``, each whole or not at all."""
     from cams.io.files import atomic_write
@@ -108,18 +101,6 @@ def mark_failing(fig, title: str):
     return fig
 
 
-
-def _add_polygon(ax, points: np.ndarray, **style) -> None:
-    """A filled polygon through ``points`` (shape (n, 2)), the axes' limits taken from its points at once.
-
-    ``ax.fill``/``add_patch`` walk every vertex of the path in Python to update the limits: slow for a
-    profile of thousands of points, drawn at every frame of an animation.
-    """
-    from matplotlib.patches import Polygon
-
-    ax.add_artist(Polygon(points, closed=True, **style))
-    ax.update_datalim(points)
-    ax.autoscale_view()
 
 def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
     """The allowable-centre zone of a solved design (seed 001, figure 3.13).
@@ -181,7 +162,7 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
     ax.annotate("A0", A0, textcoords="offset points", xytext=(4, -10))
     ax.plot(*result.centre, "o", color="#c53030", ms=6, label="cam centre O")
     ax.add_patch(Circle(result.centre, result.R0, fill=False, ls=":", color="#c53030",
-                        label=_radii_label(result.R0, smallest_cam_radius(d, result.centre)[0])))
+                        label=radii_label(result.R0, smallest_cam_radius(d, result.centre)[0])))
     if d.limits.centre_distance is not None and f.kind == "rocker":
         ax.add_patch(Circle((0, 0), d.limits.centre_distance, fill=False, ls="-.", color="0.3",
                             label=f"L = {d.limits.centre_distance:g} mm"))
@@ -349,84 +330,11 @@ def plot_curvature(solution, *, n: int = 721):
     return fig
 
 
-def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
-    """A roller cam's profile points in the fixed frame at cam angle ``phi`` (its centre and sense)."""
-    return to_fixed_frame(pts, profile.centre, profile.cam_sense, phi)
-
-
-def _draw_flat_mechanism(ax, cam, profile, phi: float):
-    """A flat-faced follower's cam (turned to ``phi``) and its face, in the frame of ``FlatFaceSolution.centre``."""
-    from matplotlib.patches import Circle
-
-    d = cam.design
-    sol = cam.solution
-    centre = sol.centre
-    work = to_fixed_frame(profile.work, centre, d.cam_sense, phi)
-    _add_polygon(ax, work, fc="#e2e8f0", ec="#1a202c", lw=1.2, label="cam profile")
-    ax.add_patch(Circle(centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
-                        label=_radii_label(profile.R0, None)))
-    origin, direction = (v[0] for v in sol.face_line(np.array([phi])))
-    lo, hi = sol.face_range
-    margin = 0.1 * max(hi - lo, 1e-9)
-    ends = origin + np.outer([lo - margin, hi + margin], direction)
-    ax.plot(ends[:, 0], ends[:, 1], color="#c53030", lw=3, solid_capstyle="butt", label="flat face")
-    k = int(np.argmin(np.abs((profile.phi - phi + np.pi) % TWO_PI - np.pi)))
-    contact = to_fixed_frame(profile.work[k:k + 1], centre, d.cam_sense, profile.phi[k])[0]
-    ax.plot(*contact, "o", color="#c53030", ms=3)
-    if d.follower.kind == "translating":
-        top = origin + np.array([0.0, 0.6 * d.scale])
-        ax.plot([origin[0], top[0]], [origin[1], top[1]], color="#c53030", lw=3, label="follower")
-        ax.axvline(0.0, color="k", lw=0.6, ls="-.")
-    else:
-        near = origin + (lo - margin) * direction
-        ax.plot([0, origin[0], near[0]], [0, origin[1], near[1]], color="#c53030", lw=2.5,
-                solid_capstyle="round", label="rocker")
-        ax.plot(0, 0, "ko", ms=5)
-    ax.plot(*centre, "k+", ms=10)
-    ax.set_aspect("equal")
-    ax.grid(True, lw=0.3)
-    ax.set_xlabel("x, mm")
-    ax.set_ylabel("y, mm")
-
-
 def _draw(ax, cam, profile, phi: float):
-    if getattr(cam, "flat", False):
-        _draw_flat_mechanism(ax, cam, profile, phi)
-    else:
-        _draw_mechanism(ax, cam, profile, phi)
+    """The cam turned to ``phi`` with its follower, as its face draws it (:mod:`cams.present.faces`)."""
+    from cams.present.faces import presenter
 
-
-def _draw_mechanism(ax, cam, profile, phi: float):
-    """Cam (turned to ``phi``), follower and roller in the follower's fixed frame."""
-    from matplotlib.patches import Circle
-
-    d = cam.design
-    f = d.follower
-    work = _cam_in_fixed_frame(profile, profile.work, phi)
-    pitch = _cam_in_fixed_frame(profile, profile.pitch, phi)
-    _add_polygon(ax, work, fc="#e2e8f0", ec="#1a202c", lw=1.2, label="working profile")
-    if profile.outer is not None:
-        outer = _cam_in_fixed_frame(profile, profile.outer, phi)
-        ax.plot(outer[:, 0], outer[:, 1], color="#1a202c", lw=1.2, label="groove, outer wall")
-    ax.plot(pitch[:, 0], pitch[:, 1], color="#2b6cb0", lw=0.8, ls="--", label="pitch curve")
-    ax.add_patch(Circle(profile.centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
-                        label=_radii_label(profile.R0, smallest_cam_radius(d, profile.centre)[0])))
-    m = d.program.evaluate(np.array([phi]))
-    A = f.position(m.s)[0]
-    if profile.roller_radius > 0:
-        ax.add_patch(Circle(A, profile.roller_radius, fill=False, color="#c53030", lw=1.4))
-    ax.plot(*A, "o", color="#c53030", ms=3)
-    if f.kind == "rocker":
-        ax.plot([0, A[0]], [0, A[1]], color="#c53030", lw=2.5, solid_capstyle="round", label="rocker")
-        ax.plot(0, 0, "ko", ms=5)
-    else:
-        top = A + np.array([0.0, 0.6 * d.scale + 2 * profile.roller_radius])
-        ax.plot([A[0], top[0]], [A[1], top[1]], color="#c53030", lw=3, label="follower")
-    ax.plot(*profile.centre, "k+", ms=10)
-    ax.set_aspect("equal")
-    ax.grid(True, lw=0.3)
-    ax.set_xlabel("x, mm")
-    ax.set_ylabel("y, mm")
+    presenter(cam).draw_mechanism(ax, cam, profile, phi)
 
 
 def plot_profile(cam, *, phi: float | None = None):
@@ -460,28 +368,11 @@ def _animation_box(cam, profile) -> tuple[np.ndarray, np.ndarray]:
     farthest point (working profile, pitch curve plus the roller, a groove's
     outer wall); the follower (roller, face, stem) is taken at every lift.
     """
+    from cams.present.faces import presenter
+
     d = cam.design
     span = 0.05 * max(float(np.max(np.abs(profile.work))), d.scale)
-    if getattr(cam, "flat", False):
-        sol = cam.solution
-        centre = sol.centre
-        reach = float(np.max(np.linalg.norm(profile.work, axis=1)))
-        phis = np.linspace(0, TWO_PI, 145)
-        o, t = sol.face_line(phis)
-        lo_f, hi_f = sol.face_range
-        margin = 0.1 * max(hi_f - lo_f, 1e-9)
-        follower = np.concatenate([o + (lo_f - margin) * t, o + (hi_f + margin) * t,
-                                   o + np.array([0.0, 0.6 * d.scale]), np.zeros((1, 2))])
-    else:
-        centre = profile.centre
-        r = profile.roller_radius
-        reach = max(float(np.max(np.linalg.norm(c, axis=1))) + (r if c is profile.pitch else 0.0)
-                    for c in (profile.work, profile.pitch, profile.outer) if c is not None)
-        A = d.follower.position(np.linspace(0.0, d.program.lift, 33))
-        pts = [A - r, A + r, d.follower.pivot[None]]
-        if d.follower.kind != "rocker":
-            pts.append(A + np.array([0.0, 0.6 * d.scale + 2 * r]))
-        follower = np.concatenate(pts)
+    centre, reach, follower = presenter(cam).animation_extent(cam, profile)
     cam_box = np.asarray(centre)[None] + reach * np.array([[-1.0, -1.0], [1.0, 1.0]])
     allp = np.concatenate([cam_box, follower])
     return allp.min(axis=0) - span, allp.max(axis=0) + span
@@ -510,3 +401,20 @@ def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = 
     path = Path(path)
     anim.save(str(path), writer=PillowWriter(fps=fps))
     return path
+
+
+#: The pictures of a cam by kind (a face's presenter names the kind it draws under each picture name,
+#: :attr:`cams.present.faces.Presenter.pictures`): each takes the :class:`cams.cam.Cam`.
+PICTURES = {
+    "zone": lambda cam: plot_zone(cam.solution, tradeoff=cam.tradeoff),
+    "motion": lambda cam: plot_motion(cam.design),
+    "pressure": lambda cam: plot_pressure(cam.solution),
+    "flat_pressure": lambda cam: plot_flat_pressure(cam.solution),
+    "curvature": lambda cam: plot_curvature(cam.solution),
+    "profile": lambda cam: plot_profile(cam),
+}
+
+
+def picture(kind: str, cam):
+    """The picture of ``kind`` (:data:`PICTURES`) of ``cam``: a matplotlib ``Figure``."""
+    return PICTURES[kind](cam)

@@ -267,7 +267,8 @@ def test_a_result_that_is_not_certified_is_not_usable():
     cam = Cam(load_design(EXAMPLES / "rocker_force.toml"))
     ok = assess(cam.design, cam.solution, checks=cam.checks)
     assert ok.usable and ok.certified and "certified" not in ok.to_dict()
-    bad = dataclasses.replace(cam.solution, certified=False, error_bound=1e-3)
+    bad = dataclasses.replace(cam.solution, certified=False,
+                              detail=dataclasses.replace(cam.solution.detail, error_bound=1e-3))
     a = assess(cam.design, bad, checks=cam.checks)
     assert not a.usable and not a.certified and a.verified and a.buildable
     assert a.to_dict()["certified"] is False

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from cams.dynamics.motion import _kinematics
+from cams.dynamics.motion import follower_kinematics
 from cams.model.design import CamDesign
 from cams.model.dynamics import FollowerDynamics
 
@@ -52,7 +52,7 @@ def simulate(design: CamDesign, dyn: FollowerDynamics, rpm: float, *, cycles: in
     # the cam's lift as a cubic Hermite table (values and slopes from the program): fast and C1
     nt = 20000
     grid = np.linspace(0.0, 2 * np.pi, nt + 1)
-    qg, dqg, _, _ = _kinematics(design, grid, dyn)
+    qg, dqg, _, _ = follower_kinematics(design, grid, dyn)
     qg, dqg = qg.tolist(), dqg.tolist()
     h = 2 * np.pi / nt
 

@@ -119,12 +119,12 @@ def test_free_spring_is_the_linear_programmes_optimum(name, rpm):
     """The closed-form spring against scipy's LP solver (HiGHS) on the same sampled constraints."""
     from scipy.optimize import linprog
 
-    from cams.dynamics.motion import _grid, _kinematics, _omega
+    from cams.dynamics.motion import cam_speed, dynamics_grid, follower_kinematics
 
     design, dyn = CASES[name]
     sp = spring_for_contact(design, dyn, rpm=rpm, margin=1.25)
-    q, _, d2q, _ = _kinematics(design, _grid(3600), dyn)
-    need = 1.25 * (-dyn.mass * _omega(design, rpm) ** 2 * d2q - dyn.load)
+    q, _, d2q, _ = follower_kinematics(design, dynamics_grid(3600), dyn)
+    need = 1.25 * (-dyn.mass * cam_speed(design, rpm) ** 2 * d2q - dyn.load)
     qmax = float(q.max())
     # it holds at every sample
     assert np.all(sp.preload + sp.rate * q >= need - 1e-12 * abs(need).max())

@@ -230,7 +230,7 @@ def test_R0_and_L_name_both_centres_and_take_the_one_nearer_its_limit(tmp_path, 
 
 
 def test_two_equally_good_centres_are_refused_naming_both(monkeypatch):
-    import cams.solve as s
+    import cams.faces.roller as s
     from cams.verify.pressure import PressureReport
 
     d, res = _minimum("rocker_force.toml")

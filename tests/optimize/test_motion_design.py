@@ -70,7 +70,7 @@ def designed():
 
 
 def test_designed_cam_is_smaller_and_certified(designed):
-    o = designed.optimize if hasattr(designed, "optimize") else designed.optimization
+    o = designed.optimization.to_dict()
     reference = solve(load_design(EXAMPLE))
     assert designed.verified and designed.certified is not False and o["certified"]
     assert designed.R0 < 0.8 * reference.R0
@@ -109,7 +109,7 @@ def test_library_law_in_the_space_is_no_better():
     doc["optimize"] = {"max_Ca": 5.7735 * 1.01, "max_Cj": 60 * 1.01, "continuity": 2, "degree": 5, "spans": 8}
     got = solve(design_from_dict(doc))
     assert got.R0 <= ref.R0 * (1 + 1e-9)
-    assert got.optimization["lower_bound"] <= got.R0
+    assert got.optimization.lower_bound <= got.R0
 
 
 def test_round_trip_through_a_spline_table(designed, tmp_path):
@@ -193,7 +193,7 @@ def test_squared_objectives_value_and_bound(objective, continuity, degree, exact
         snap = P([0, 0, 0, 0, 35, -84, 70, -20]).deriv(4)
         exact = float((snap**2).integ()(1.0))
     o = solve(design_from_dict(_slack_doc(objective=objective, continuity=continuity, degree=degree,
-                                          spans=4))).optimization
+                                          spans=4))).optimization.to_dict()
     assert o["value"] == pytest.approx(exact, rel=1e-7)
     assert o["lower_bound"] <= exact and o["gap"] < 1e-6
 
@@ -202,7 +202,7 @@ def test_printed_peaks_are_the_laws_dense_peaks(designed):
     """Cv, Ca, Cj beside the original law's: the designed law's dense maxima (200,001 points)."""
     law = designed.design.program.law_of(0)
     S = law.evaluate(np.linspace(0, 1, 200_001))
-    p = designed.optimization["phases"][0]
+    p = designed.optimization.phases[0]
     for k, key in ((1, "Cv"), (2, "Ca"), (3, "Cj")):
         assert p[key] == pytest.approx(np.max(np.abs(S[k])), rel=1e-6)
     assert p["original"] == {"law": "poly4567", "Cv": pytest.approx(2.1875, rel=1e-6),
@@ -215,7 +215,7 @@ def test_least_pressure_angle_at_todays_size():
     from cams.kinematics.inversion import invert_at, pressure_angle
 
     res = solve(design_from_dict(_doc(objective="pressure_angle", max_Ca="poly4567", max_Cj="poly4567", spans=8)))
-    o = res.optimization
+    o = res.optimization.to_dict()
     design = res.design
     beta = design.program.phases[0].angle
     phi = np.linspace(0, beta, 100_001)
@@ -231,7 +231,7 @@ def test_flat_face_from_a_file():
     reference = solve(design_from_dict(flat))
     flat["optimize"] = {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "continuity": 2, "degree": 6, "spans": 8}
     res = solve(design_from_dict(flat))
-    o = res.optimization
+    o = res.optimization.to_dict()
     assert o["certified"] and o["lower_bound"] <= res.R0 < reference.R0
     assert o["reference"]["R0"] == pytest.approx(reference.R0, rel=1e-12)
     m = res.design.program.evaluate(np.linspace(0, 2 * np.pi, 200_001))
@@ -308,7 +308,7 @@ def test_optimum_failing_the_profile_checks_gives_the_smallest_passing_cam():
     doc = _doc(max_Ca="poly4567", max_Cj="poly4567", spans=10)
     doc["follower"]["roller_radius"] = 12.0
     res = solve(design_from_dict(doc))
-    o = res.optimization
+    o = res.optimization.to_dict()
     assert res.R0 > 12.0 and any("fails the profile's checks" in n for n in o["notes"])
     assert o["lower_bound"] <= res.R0 and o["certified"]
     cam = Cam(res.design.with_(limits=replace(res.design.limits, min_base_radius=res.R0)))
@@ -326,7 +326,7 @@ def test_the_smallest_passing_cam_is_the_same_at_a_large_scale():
         doc["follower"]["roller_radius"] = 12.0 * k
         doc["follower"]["stroke"] *= k
         res = solve(design_from_dict(doc))
-        assert any("fails the profile's checks" in n for n in res.optimization["notes"])
+        assert any("fails the profile's checks" in n for n in res.optimization.notes)
         got[k] = res.R0 / k
     assert got[1e6] == pytest.approx(got[1.0], rel=2e-4)
 
@@ -337,8 +337,8 @@ def test_no_free_phase_gives_todays_exact_answer(example):
     today = solve(design_from_dict(d))
     d["optimize"] = {"free": []}
     res = solve(design_from_dict(d))
-    assert res.R0 == today.R0 and res.optimization["value"] == today.R0
-    lb = res.optimization["lower_bound"]
+    assert res.R0 == today.R0 and res.optimization.value == today.R0
+    lb = res.optimization.lower_bound
     assert lb is None or lb <= today.R0
 
 
@@ -361,7 +361,7 @@ def test_every_unit_scale_gives_the_same_design(example, lengths, optimize):
             d[table][key] *= k
         d["optimize"] = optimize
         res = solve(design_from_dict(d))
-        o = res.optimization
+        o = res.optimization.to_dict()
         assert res.verified and o["certified"]
         got[k] = (res.R0 / k, None if o["lower_bound"] is None else o["lower_bound"] / k)
     for k in (1e-3, 1e3):
@@ -375,7 +375,7 @@ def test_the_declared_box_is_not_touched(designed):
     caps imply one); S and S' at the knots have a declared one, which the answer stays well inside."""
     from optimize.motion.space import Space
 
-    o = designed.optimization
+    o = designed.optimization.to_dict()
     assert not any("bound on their coefficients" in n for n in o["notes"])
     law = designed.design.program.law_of(0)
     S = law.evaluate(np.array(law.breaks))

@@ -71,7 +71,7 @@ def test_envelope_radii_reproduce_the_sizing_of_todays_cam():
 
 
 def test_flat_rocker_design_is_smaller_convex_and_minimal(designed):
-    o = designed.optimization
+    o = designed.optimization.to_dict()
     d = designed.design
     assert designed.verified and o["certified"] and o["method"] == "sequential convex programming"
     assert o["lower_bound"] is None and o["gap"] is None and 0 <= o["local_measure"] < 1e-3
@@ -121,7 +121,7 @@ def test_least_peak_jerk_is_the_bang_bang_law(spans):
     doc = read_toml(FLAT)
     doc["optimize"] = {"objective": "Cj", "continuity": 2, "spans": spans}
     res = solve(design_from_dict(doc))
-    o = res.optimization
+    o = res.optimization.to_dict()
     assert res.verified and o["certified"] and res.R0 <= o["held_R0"] * (1 + 1e-12)
     S = res.design.program.law_of(0).evaluate(np.linspace(0, 1, 200_001))
     assert o["value"] == pytest.approx(32.0, rel=1e-6) and np.max(np.abs(S[3])) >= 32.0 * (1 - 1e-9)
@@ -144,7 +144,7 @@ def test_least_peak_jerk_where_convexity_binds():
     doc = read_toml(FLAT)
     doc["optimize"] = {"free": ["return"], "objective": "Cj", "continuity": 2, "spans": 8}
     res = solve(design_from_dict(doc))
-    o = res.optimization
+    o = res.optimization.to_dict()
     assert res.verified and o["certified"] and res.R0 <= o["held_R0"] * (1 + 1e-12)
     rho = envelope_radii(res.design, o["held_R0"])
     assert res.design.min_radius * (1 - 1e-5) <= rho.min() <= res.design.min_radius * (1 + 1e-3)
@@ -184,7 +184,7 @@ def test_a_steep_designed_law_has_a_finite_jerk_peak():
     doc = read_toml(FLAT)
     doc["optimize"] = {"objective": "Ca", "degree": 11, "spans": 10}
     res = solve(design_from_dict(doc))
-    (phase,) = res.optimization["phases"]
+    (phase,) = res.optimization.phases
     S = res.design.program.law_of(0).evaluate(np.linspace(0, 1, 400_001))
     assert phase["Cj"] is not None and phase["Cj"] == pytest.approx(np.max(np.abs(S[3])), rel=1e-6)
     assert phase["Cj"] > 100

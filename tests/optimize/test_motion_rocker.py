@@ -47,7 +47,7 @@ def designed():
 
 
 def test_rocker_design_is_smaller_checked_and_local(designed):
-    o = designed.optimization
+    o = designed.optimization.to_dict()
     reference = solve(load_design(FORCE))
     assert designed.verified and o["certified"] and o["method"] == "sequential convex programming"
     assert o["lower_bound"] is None and o["gap"] is None
@@ -83,7 +83,7 @@ def test_rocker_least_centre_distance_form_closure():
                        "continuity": 2, "spans": 6}
     doc.pop("solve", None)
     res = solve(design_from_dict(doc))
-    o = res.optimization
+    o = res.optimization.to_dict()
     assert res.verified and o["certified"] and o["value"] == res.L
     assert res.L < o["reference"]["L"]
     assert [p["phase"] for p in o["phases"]] == [0, 2]
@@ -110,7 +110,7 @@ def test_rocker_smoothest_law_at_the_original_size(objective):
     doc = read_toml(FORCE)
     doc["optimize"] = {"objective": objective, "max_Ca": "cycloidal", "continuity": 2, "spans": 6}
     res = solve(design_from_dict(doc))
-    o = res.optimization
+    o = res.optimization.to_dict()
     assert res.verified and o["certified"] and res.R0 <= o["held_R0"] * (1 + 1e-12)
     S = res.design.program.law_of(0).evaluate(np.linspace(0, 1, 200_001))
     if objective == "Cj":
@@ -144,7 +144,7 @@ def test_rocker_least_pressure_angle_at_the_original_size():
     doc = read_toml(FORCE)
     doc["optimize"] = {"objective": "pressure_angle", "max_Ca": "cycloidal", "continuity": 2, "spans": 8}
     res = solve(design_from_dict(doc))
-    o = res.optimization
+    o = res.optimization.to_dict()
     assert res.verified and o["certified"] and o["method"] == "sequential convex programming"
     assert res.R0 <= o["held_R0"] * (1 + 1e-12) and o["lower_bound"] is None
     design = res.design
@@ -176,7 +176,7 @@ def test_rocker_least_pressure_angle_keeps_k_c_and_l(centre_distance):
     doc["optimize"] = {"free": ["rise", "return"], "objective": "pressure_angle", "max_Ca": "cycloidal",
                        "max_Cj": "cycloidal", "continuity": 2, "spans": 6}
     res = solve(design_from_dict(doc))
-    o = res.optimization
+    o = res.optimization.to_dict()
     p = res.pressure
     assert res.verified and o["certified"] and res.R0 <= o["held_R0"] * (1 + 1e-12)
     d = res.design

@@ -35,7 +35,7 @@ def test_picture_draws_both_laws_pressures_and_cams(cam):
     # the designed cam's pressure angle on the rise, drawn: its peak is the independent check's (the limit)
     assert np.max(designed.get_ydata()) == pytest.approx(np.degrees(cam.solution.pressure.rise), abs=0.05)
     labels = [ln.get_label() for ln in cams.lines]
-    reference = cam.solution.optimization["reference"]["R0"]
+    reference = cam.solution.optimization.reference["R0"]
     assert f"original: R0 = {reference:.3f} mm" in labels
     assert f"designed: R0 = {cam.solution.R0:.3f} mm" in labels
 
@@ -64,7 +64,7 @@ def test_report_has_the_motion_design_table_and_picture(cam):
 
     sections = dict(report_sections(cam))
     rows = dict(sections["Motion design"])
-    o = cam.solution.optimization
+    o = cam.solution.optimization.to_dict()
     assert rows["minimized"] == f"R0: {o['value']:.6g} mm"
     assert rows["proven lower bound"].startswith(f"{o['lower_bound']:.6g} mm")
     assert rows["certified"] == "yes"

@@ -70,11 +70,10 @@ def legend_duplicates(fig) -> list[str]:
 
 
 def _figures(cam):
-    if cam.flat:
-        return {"motion": plots.plot_motion(cam.design), "pressure": plots.plot_flat_pressure(cam.solution),
-                "curvature": plots.plot_curvature(cam.solution), "profile": plots.plot_profile(cam)}
-    return {"zone": plots.plot_zone(cam.solution, tradeoff=cam.tradeoff), "motion": plots.plot_motion(cam.design),
-            "pressure": plots.plot_pressure(cam.solution), "profile": plots.plot_profile(cam)}
+    """Every picture of the cam's face (its pipeline's names), drawn as cams plot draws them."""
+    from cams.present.faces import presenter
+
+    return {name: plots.picture(presenter(cam).pictures[name], cam) for name in cam.face.pictures}
 
 
 @pytest.mark.parametrize("name", ALL_EXAMPLES)

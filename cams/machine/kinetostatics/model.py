@@ -26,7 +26,7 @@ from cams.machine.kinetostatics.loads import (
     check_table,
     cycle_turns,
 )
-from cams.machine.linkage.common import _Base
+from cams.machine.linkage.common import LinkageBase
 from cams.machine.linkage.machines import MACHINES
 from cams.machine.linkage.primitives import Angle, Point
 from laws.errors import InputError, check_number, show_value
@@ -114,7 +114,7 @@ class Model:
     gravity: float
     output: str
     sense: int
-    linkage: _Base | None = None
+    linkage: LinkageBase | None = None
     cycle: float = TWO_PI
     origin: float = 0.0
 

@@ -17,7 +17,8 @@ from laws.errors import InfeasibleError, InputError, check_number
 from laws.errors import show_value as _show
 from laws.units import TWO_PI, rpm_to_omega
 
-__all__ = ["Pair", "LinkStates", "describe_angles"]
+__all__ = ["Pair", "LinkStates", "describe_angles", "LinkageBase", "SwingingLever", "still", "check_sign",
+           "verify_course", "swing_bar_checks"]
 
 _CHECK_GRID = np.linspace(0.0, TWO_PI, 1440, endpoint=False)
 
@@ -56,7 +57,8 @@ def describe_angles(phi: np.ndarray, mask: np.ndarray, *, periodic: bool = False
     return ", ".join(text) + " deg"
 
 
-def _sign(field_: str, v, words=("+1", "-1")) -> None:
+def check_sign(field_: str, v, words=("+1", "-1")) -> None:
+    """Refuse a sign ``v`` other than +1 or -1, naming ``field_`` and the two values in ``words``."""
     if v not in (1, -1):
         raise InputError(field_, f"must be +1 or -1 ({words[0]} or {words[1]}), got {_show(v)}")
 
@@ -104,13 +106,13 @@ class LinkStates:
     axis: dict
 
 
-def _still(phi: np.ndarray) -> Angle:
+def still(phi: np.ndarray) -> Angle:
     """The angle of a link that does not turn (a slider), zero at every crank angle."""
     z = np.zeros_like(phi)
     return Angle(z, z.copy(), z.copy())
 
 
-class _Base:
+class LinkageBase:
     """Shared plumbing: crank speed, error context, checks, the output protocol, the topology.
 
     Each machine declares its own topology for the forces: its moving links
@@ -161,7 +163,7 @@ class _Base:
         raise NotImplementedError
 
     def _check_common(self) -> None:
-        _sign("linkage.crank_rotation", self.crank_sense, ("ccw", "cw"))
+        check_sign("linkage.crank_rotation", self.crank_sense, ("ccw", "cw"))
         if self.rpm is not None:
             check_number("linkage.rpm", self.rpm, lo=0.0, strict=True)
 
@@ -205,7 +207,7 @@ class _Base:
         }
 
 
-def _verify_course(machine, *, stroke: float, time_ratio: float | None = None, allowed: str = "") -> None:
+def verify_course(machine, *, stroke: float, time_ratio: float | None = None, allowed: str = "") -> None:
     """Check a synthesized linkage against its course data: its own stroke and time ratio to 1e-9 (relative).
 
     Raises
@@ -237,7 +239,7 @@ def _verify_course(machine, *, stroke: float, time_ratio: float | None = None, a
         )
 
 
-class _SwingingLever(_Base):
+class SwingingLever(LinkageBase):
     """A crank driving a slotted bar or lever that swings about a pivot at ``(-centre_distance, 0)``."""
 
     crank: float
@@ -258,7 +260,8 @@ class _SwingingLever(_Base):
         return np.array([np.pi / 2 + h, 1.5 * np.pi - h])
 
 
-def _swing_bar_checks(crank_: float, L: float, bar: float, side: int, name: str, field_: str) -> None:
+def swing_bar_checks(crank_: float, L: float, bar: float, side: int, name: str, field_: str) -> None:
+    """Refuse a swinging bar's lengths that admit no full crank turn (mm; one line naming ``field_``)."""
     if crank_ >= L:
         raise InputError(
             "linkage.crank",

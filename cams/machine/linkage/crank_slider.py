@@ -10,12 +10,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from cams.machine.linkage.common import (
+    LinkageBase,
     LinkStates,
     Pair,
-    _Base,
-    _sign,
-    _still,
-    _verify_course,
+    check_sign,
+    still,
+    verify_course,
 )
 from cams.machine.linkage.primitives import (
     Angle,
@@ -67,7 +67,7 @@ class CrankSliderKinematics:
 
 
 @dataclass(frozen=True, eq=False)
-class CrankSlider(_Base):
+class CrankSlider(LinkageBase):
     """Crank-slider mechanism (seed 002), central or offset.
 
     Frame: origin at the crank centre O, the slider's line is ``y = offset``
@@ -111,7 +111,7 @@ class CrankSlider(_Base):
         check_number("linkage.crank", self.crank, lo=0.0, strict=True)
         check_number("linkage.rod", self.rod, lo=0.0, strict=True)
         check_number("linkage.offset", self.offset)
-        _sign("linkage.slider_side", self.slider_side, ("right", "left"))
+        check_sign("linkage.slider_side", self.slider_side, ("right", "left"))
         if self.rod_cg is not None:
             check_number("linkage.rod_cg", self.rod_cg)
         self._check_common()
@@ -133,7 +133,7 @@ class CrankSlider(_Base):
         0.175
         """
         m = cls(crank=crank_slider_crank(stroke, rod, offset), rod=rod, offset=offset, **kw)
-        _verify_course(m, stroke=float(stroke), allowed="a shorter stroke, a longer rod or a smaller offset")
+        verify_course(m, stroke=float(stroke), allowed="a shorter stroke, a longer rod or a smaller offset")
         return m
 
     @property
@@ -170,13 +170,13 @@ class CrankSlider(_Base):
         )
 
     def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:
-        """The links' motion for the forces (:meth:`_Base.link_states`): the slider slides along x."""
+        """The links' motion for the forces (:meth:`LinkageBase.link_states`): the slider slides along x."""
         k = self.kinematics(phi, omega=omega)
         zero = np.zeros_like(phi)
         O = Point(zero + 0j, zero + 0j, zero + 0j)
         rod_cg = self.rod_cg if self.rod_cg is not None else self.rod / 2
         cgs = {"crank": on_link(O, k.crank, cg("crank", 0.0)), "rod": on_link(k.A, k.rod, cg("rod", rod_cg)),
                "slider": k.B}
-        angles = {"crank": k.crank, "rod": k.rod, "slider": _still(phi)}
+        angles = {"crank": k.crank, "rod": k.rod, "slider": still(phi)}
         points = {"O": O.pos, "A": k.A.pos, "B": k.B.pos, "B_guide": k.B.pos}
         return LinkStates(cgs, angles, points, {"B_guide": np.ones_like(phi, dtype=complex)})

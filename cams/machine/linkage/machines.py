@@ -28,7 +28,7 @@ Each machine exposes ``kinematics(phi)`` (every point and link),
 :func:`cams.machine.linkage.analyse`), ``transmission(phi)`` and ``lengths()``.
 """
 
-from cams.machine.linkage.common import LinkStates, Pair, _Base, describe_angles
+from cams.machine.linkage.common import LinkageBase, LinkStates, Pair, describe_angles
 from cams.machine.linkage.crank_slider import CrankSlider, CrankSliderKinematics
 from cams.machine.linkage.opposed_twin import OpposedTwin, OpposedTwinKinematics
 from cams.machine.linkage.pump import PumpKinematics, SlottedLeverPump
@@ -49,7 +49,7 @@ __all__ = [
     "describe_angles",
 ]
 
-MACHINES: dict[str, type[_Base]] = {
+MACHINES: dict[str, type[LinkageBase]] = {
     SlottingMachine.kind: SlottingMachine,
     CrankSlider.kind: CrankSlider,
     OpposedTwin.kind: OpposedTwin,

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cams.machine.linkage.common import LinkStates, Pair, _Base, _still
+from cams.machine.linkage.common import LinkageBase, LinkStates, Pair, still
 from cams.machine.linkage.primitives import (
     Angle,
     AssemblyError,
@@ -50,7 +50,7 @@ class OpposedTwinKinematics:
 
 
 @dataclass(frozen=True, eq=False)
-class OpposedTwin(_Base):
+class OpposedTwin(LinkageBase):
     """Two-cylinder mechanism of seed 000: one crank with pins A and C, two rods, two pistons.
 
     Frame: origin at the crank centre O; both pistons move on the x axis, B on
@@ -126,7 +126,7 @@ class OpposedTwin(_Base):
         )
 
     def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:
-        """The links' motion for the forces (:meth:`_Base.link_states`): both pistons slide along x."""
+        """The links' motion for the forces (:meth:`LinkageBase.link_states`): both pistons slide along x."""
         k = self.kinematics(phi, omega=omega)
         zero = np.zeros_like(phi)
         O = Point(zero + 0j, zero + 0j, zero + 0j)
@@ -138,7 +138,7 @@ class OpposedTwin(_Base):
             "rod4": on_link(k.C, k.rod4, cg("rod4", self.rod_cg)),
             "piston5": k.D,
         }
-        angles = {"crank": crank_, "rod2": k.rod2, "piston3": _still(phi), "rod4": k.rod4, "piston5": _still(phi)}
+        angles = {"crank": crank_, "rod2": k.rod2, "piston3": still(phi), "rod4": k.rod4, "piston5": still(phi)}
         points = {"O": O.pos, "A": k.A.pos, "B": k.B.pos, "B_guide": k.B.pos, "C": k.C.pos, "D": k.D.pos,
                   "D_guide": k.D.pos}
         x = np.ones_like(phi, dtype=complex)

@@ -12,11 +12,11 @@ import numpy as np
 from cams.machine.linkage.common import (
     LinkStates,
     Pair,
-    _sign,
-    _still,
-    _swing_bar_checks,
-    _SwingingLever,
-    _verify_course,
+    SwingingLever,
+    check_sign,
+    still,
+    swing_bar_checks,
+    verify_course,
 )
 from cams.machine.linkage.primitives import (
     Angle,
@@ -80,7 +80,7 @@ class PumpKinematics:
 
 
 @dataclass(frozen=True, eq=False)
-class SlottedLeverPump(_SwingingLever):
+class SlottedLeverPump(SwingingLever):
     """Pump with a swinging slotted lever (seed 004): O1A, lever O2C, piston by a Scotch yoke.
 
     Frame: origin at the crank centre O1, +x from the lever's pivot O2 to O1
@@ -131,9 +131,9 @@ class SlottedLeverPump(_SwingingLever):
         for f, v in (("crank", self.crank), ("centre_distance", self.centre_distance), ("lever", self.lever)):
             check_number(f"linkage.{f}", v, lo=0.0, strict=True)
         check_number("linkage.guide_x", self.guide_x)
-        _sign("linkage.lever_side", self.lever_side, ("same", "opposite"))
+        check_sign("linkage.lever_side", self.lever_side, ("same", "opposite"))
         self._check_common()
-        _swing_bar_checks(self.crank, self.centre_distance, self.lever, self.lever_side, "slotted lever",
+        swing_bar_checks(self.crank, self.centre_distance, self.lever, self.lever_side, "slotted lever",
                           "linkage.lever")
 
     @classmethod
@@ -153,7 +153,7 @@ class SlottedLeverPump(_SwingingLever):
         syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance)
         m = cls(crank=syn.crank, centre_distance=syn.centre_distance, lever=syn.bar, lever_side=lever_side,
                 synthesis=syn, **kw)
-        _verify_course(m, stroke=syn.stroke, time_ratio=syn.time_ratio,
+        verify_course(m, stroke=syn.stroke, time_ratio=syn.time_ratio,
                        allowed=f"a slotted-lever pump allows 1 < K <= {MAX_TIME_RATIO:g}")
         return m
 
@@ -185,7 +185,8 @@ class SlottedLeverPump(_SwingingLever):
         )
 
     def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:
-        """The links' motion for the forces (:meth:`_Base.link_states`): the piston slides along y at ``guide_x``."""
+        """The links' motion for the forces (:meth:`LinkageBase.link_states`): the piston slides along y at
+        ``guide_x``."""
         k = self.kinematics(phi, omega=omega)
         zero = np.zeros_like(phi)
         O1 = Point(zero + 0j, zero + 0j, zero + 0j)
@@ -198,7 +199,7 @@ class SlottedLeverPump(_SwingingLever):
             "pin_block": k.C,
             "piston": E,
         }
-        angles = {"crank": k.crank, "block": k.lever, "lever": k.lever, "pin_block": _still(phi), "piston": _still(phi)}
+        angles = {"crank": k.crank, "block": k.lever, "lever": k.lever, "pin_block": still(phi), "piston": still(phi)}
         points = {"O1": O1.pos, "A": k.A.pos, "A_slot": k.A.pos, "O2": O2.pos, "C": k.C.pos, "C_slot": k.C.pos,
                   "E": E.pos}
         axes = {"A_slot": k.lever.unit, "C_slot": np.ones_like(phi, dtype=complex),

@@ -12,11 +12,11 @@ import numpy as np
 from cams.machine.linkage.common import (
     LinkStates,
     Pair,
-    _sign,
-    _still,
-    _swing_bar_checks,
-    _SwingingLever,
-    _verify_course,
+    SwingingLever,
+    check_sign,
+    still,
+    swing_bar_checks,
+    verify_course,
 )
 from cams.machine.linkage.primitives import (
     Angle,
@@ -33,7 +33,7 @@ from cams.machine.linkage.primitives import (
 from cams.machine.linkage.synthesis import (
     MAX_TIME_RATIO,
     SlottedLeverSynthesis,
-    _below,
+    rounded_down,
     slotted_lever_synthesis,
     slotting_time_ratio_limit,
 )
@@ -86,7 +86,7 @@ class SlottingKinematics:
 
 
 @dataclass(frozen=True, eq=False)
-class SlottingMachine(_SwingingLever):
+class SlottingMachine(SwingingLever):
     """The slotting machine's six-bar linkage (seed 003, 六杆插床机构).
 
     Frame: origin at the crank centre O2 (the feed cam's shaft), +x from the
@@ -158,10 +158,10 @@ class SlottingMachine(_SwingingLever):
         for f, v in lengths:
             check_number(f"linkage.{f}", v, lo=0.0, strict=True)
         check_number("linkage.guide_x", self.guide_x)
-        _sign("linkage.bar_side", self.bar_side, ("same", "opposite"))
-        _sign("linkage.tool_side", self.tool_side, ("above", "below"))
+        check_sign("linkage.bar_side", self.bar_side, ("same", "opposite"))
+        check_sign("linkage.tool_side", self.tool_side, ("above", "below"))
         self._check_common()
-        _swing_bar_checks(self.crank, self.centre_distance, self.bar, self.bar_side, "guide bar", "linkage.bar")
+        swing_bar_checks(self.crank, self.centre_distance, self.bar, self.bar_side, "guide bar", "linkage.bar")
         # BC must reach y-y at every swing: x_B = -L + side*bar*cos(beta), |beta| <= theta/2;
         # the farthest B is at the bar's mid-position (crank at 0 or 180 deg) or at its ends (dead positions)
         half = self.half_swing
@@ -205,7 +205,7 @@ class SlottingMachine(_SwingingLever):
         >>> round(m.crank, 9), round(m.bar, 9), round(m.rod, 9)
         (75.0, 100.0, 100.0)
         """
-        _sign("linkage.bar_side", bar_side, ("same", "opposite"))
+        check_sign("linkage.bar_side", bar_side, ("same", "opposite"))
         syn = slotted_lever_synthesis(time_ratio, stroke, centre_distance, rod_ratio)
         assert syn.rod is not None and syn.rod_ratio is not None  # a rod_ratio gives the rod
         m = cls(
@@ -221,8 +221,9 @@ class SlottingMachine(_SwingingLever):
             synthesis=syn,
         )
         kmax = min(slotting_time_ratio_limit(syn.rod_ratio), MAX_TIME_RATIO)
-        _verify_course(m, stroke=syn.stroke, time_ratio=syn.time_ratio,
-                       allowed=f"a slotting linkage with rod_ratio = {syn.rod_ratio:.6g} allows 1 < K < {_below(kmax)}")
+        verify_course(m, stroke=syn.stroke, time_ratio=syn.time_ratio,
+                  allowed=f"a slotting linkage with rod_ratio = {syn.rod_ratio:.6g} allows 1 < K < "
+                          f"{rounded_down(kmax)}")
         return m
 
     def kinematics(self, phi, *, omega: float | None = None) -> SlottingKinematics:
@@ -255,7 +256,7 @@ class SlottingMachine(_SwingingLever):
         )
 
     def link_states(self, phi: np.ndarray, omega: float, cg) -> LinkStates:
-        """The links' motion for the forces (:meth:`_Base.link_states`): the tool slides on y-y."""
+        """The links' motion for the forces (:meth:`LinkageBase.link_states`): the tool slides on y-y."""
         k = self.kinematics(phi, omega=omega)
         zero = np.zeros_like(phi)
         O2 = Point(zero + 0j, zero + 0j, zero + 0j)
@@ -267,7 +268,7 @@ class SlottingMachine(_SwingingLever):
             "rod": on_link(k.B, k.rod, cg("rod", self.rod / 2)),
             "tool": k.C,
         }
-        angles = {"crank": k.crank, "block": k.bar, "bar": k.bar, "rod": k.rod, "tool": _still(phi)}
+        angles = {"crank": k.crank, "block": k.bar, "bar": k.bar, "rod": k.rod, "tool": still(phi)}
         points = {"O2": O2.pos, "A": k.A.pos, "A_slot": k.A.pos, "O3": O3.pos, "B": k.B.pos, "C": k.C.pos,
                   "C_guide": k.C.pos}
         axes = {"A_slot": k.bar.unit, "C_guide": np.full_like(phi, 1j, dtype=complex)}

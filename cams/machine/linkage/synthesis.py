@@ -30,6 +30,7 @@ from laws.errors import InfeasibleError, InputError, check_positive
 from laws.errors import show_value as _show
 
 __all__ = [
+    "rounded_down",
     "swing_from_time_ratio",
     "time_ratio_from_swing",
     "slotting_time_ratio_limit",
@@ -51,7 +52,7 @@ pivot and the linkage's own time ratio can no longer be checked to 1e-9.
 """
 
 
-def _below(x: float) -> str:
+def rounded_down(x: float) -> str:
     """``x`` to 6 significant digits, rounded down (an upper limit quoted in a message stays valid)."""
     t = f"{x:.6g}"
     if float(t) > x:  # rounded up: step down by one unit of the 6th digit
@@ -238,7 +239,8 @@ def slotted_lever_synthesis(
                 "linkage.time_ratio",
                 f"K = {K:.6g} is too large for rod_ratio = {rr:.6g}: the tool would stop and turn back near both ends "
                 f"of its stroke (4 dead positions a turn); a slotting linkage with rod_ratio = {rr:.6g} allows "
-                f"1 < K < {_below(kmax)}" + ("" if need is None else f" (K = {K:.6g} needs rod_ratio > {need:.6g})"),
+                f"1 < K < {rounded_down(kmax)}"
+                + ("" if need is None else f" (K = {K:.6g} needs rod_ratio > {need:.6g})"),
             )
     if K > MAX_TIME_RATIO:
         what = "slotting" if rr is not None else "slotted-lever"
@@ -247,7 +249,8 @@ def slotted_lever_synthesis(
             f"K = {K:.6g} is too large: a {what} linkage allows 1 < K <= {MAX_TIME_RATIO:g} (at larger K the "
             f"return stroke takes under {360 / (MAX_TIME_RATIO + 1):.2g} deg of crank and the crank passes next to the "
             "pivot)"
-            + ("" if rr is None else f"; with rod_ratio = {rr:.6g} also K < {_below(slotting_time_ratio_limit(rr))}"),
+            + ("" if rr is None
+               else f"; with rod_ratio = {rr:.6g} also K < {rounded_down(slotting_time_ratio_limit(rr))}"),
         )
     half = theta / 2
     bar = H / (2 * np.sin(half))

@@ -1,0 +1,111 @@
+"""A follower face's pipeline: the stages every face implements once (size, profile, checks, forces).
+
+Each face (:mod:`cams.faces.roller`, :mod:`cams.faces.flat`) is a :class:`Face`; :func:`cams.faces.face_of` picks
+it once from the design's type, and everything above calls its stages without asking which face it has. A stage a
+face lacks refuses in that face's module, in one place, with one message.
+"""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from dataclasses import replace
+from typing import TYPE_CHECKING, Any, ClassVar
+
+from laws.errors import InputError
+
+if TYPE_CHECKING:
+    from cams.faces.result import SolveResult
+    from cams.model.options import ProfileOptions
+
+__all__ = ["Face", "SEARCH_CHORD"]
+
+#: :meth:`Face.profile_passes` with ``search=True`` samples a cam at a chord of this fraction of R0 when that is
+#: coarser than the default (a search over many candidate cams of kilometres is not sampled at a micrometre).
+SEARCH_CHORD = 1e-7
+
+
+class Face(ABC):
+    """The stages of one follower face's cam (one instance per face, no state).
+
+    Lengths are in the design's unit, angles in radians. ``design`` is a :class:`cams.model.design.Design` of
+    the face, ``solution`` the :class:`cams.faces.result.SolveResult` of :meth:`size`.
+    """
+
+    #: The face's label, as :attr:`cams.model.design.Design.face` (for texts, never for a branch).
+    name: ClassVar[str]
+    #: The pictures ``cams plot`` draws of the face's cam (names of ``cams plot --only``).
+    pictures: ClassVar[tuple[str, ...]]
+    #: True when :meth:`forces` computes the ``[dynamics]`` table's forces (the reports then have ``forces``).
+    forces_computed: ClassVar[bool] = False
+
+    @abstractmethod
+    def size(self, design, *, method: str | None = None, objective: str | None = None) -> SolveResult:
+        """The cam of ``design``'s fixed laws, sized (or the chosen cam) and verified independently.
+
+        Raises
+        ------
+        InputError
+            A method or objective the face does not take, or one not among the allowed values.
+        InfeasibleError
+            No cam meets the limits.
+        """
+
+    def check_method(self, method: str | None, field: str) -> None:
+        """Refuse a zone solver's ``method`` the face does not take (``field``: the key or option that gave it)."""
+        return None
+
+    def no_profile(self, design) -> str | None:
+        """Why no profile of ``design`` can be built at any size (a knife edge in a groove), or None."""
+        return None
+
+    @abstractmethod
+    def profile(self, design, solution: SolveResult, options: ProfileOptions) -> Any:
+        """The sampled working profile of the cam at the chord tolerance of ``options`` (cam frame).
+
+        The roller's is a :class:`cams.profile.roller.Profile`, the flat face's a
+        :class:`cams.profile.flat.FlatFaceProfile`; the exports read their common attributes (``phi``, ``work``,
+        ``pitch``, ``outer``, ``R0``, ``roller_radius``, ``tolerance``, ``min_work_radius``).
+        """
+
+    @abstractmethod
+    def checks(self, design, solution: SolveResult, profile: Any, options: ProfileOptions) -> Any:
+        """The checks of the finished profile (``profile``: :meth:`profile`'s, or None to build it); a report
+        with ``checks`` (:class:`cams.checks.base.Check`), ``passed`` and ``to_dict()``."""
+
+    def forces(self, design, solution: SolveResult) -> tuple[Any, str | None]:
+        """``(DesignForces or None, note or None)``: the ``[dynamics]`` table's spring, forces and jump speed."""
+        return None, None
+
+    def tradeoff(self, design) -> Any:
+        """The R0-L trade-off of the cam (a rocker roller's), or None where the face has none."""
+        return None
+
+    def unbuildable(self, design, solution: SolveResult) -> list[tuple[str, str]]:
+        """The face's own reasons (short, line) the cam cannot be built, before its profile's checks."""
+        return []
+
+    def not_verified(self, solution: SolveResult) -> list[str]:
+        """Which of the verified side's limits the cam exceeds and by how much (one line each; [] if unsaid)."""
+        return []
+
+    def profile_passes(self, solution: SolveResult, *, search: bool = False) -> bool:
+        """True when the cam of ``solution`` can be built and its profile passes every check but the verified
+        side's (the pressure angle, checked by :meth:`size`): buildability without the ``[dynamics]`` checks.
+
+        ``search``: a design without a tolerance of its own is sampled at :data:`SEARCH_CHORD` times R0 when that
+        is coarser than the default (for a search; the answer is then checked without it).
+        """
+        from cams.checks.base import PRESSURE_CHECKS
+        from cams.model.options import profile_options
+        from cams.profile.roller import DEFAULT_TOLERANCE
+
+        d = solution.design
+        if search and d.tolerance is None and SEARCH_CHORD * solution.R0 > DEFAULT_TOLERANCE:
+            d = replace(d, tolerance=SEARCH_CHORD * float(solution.R0))  # type: ignore[type-var]
+        if self.unbuildable(d, solution):
+            return False
+        try:
+            report = self.checks(d, solution, None, profile_options(d))
+        except InputError:          # a profile the chord tolerance cannot carry
+            return False
+        return all(c.passed or c.name in PRESSURE_CHECKS for c in report.checks)
