@@ -48,7 +48,7 @@ MOVED: dict[str, tuple[str, ...]] = {
     # old modules whose names are packages now: their __init__ forwards the old names
     "cams.profile": ("cams.profile.roller", "cams.model.options", "cams.kinematics.inversion"),
     "cams.checks": ("cams.checks.profile", "cams.checks.base", "cams.solve"),
-    "cams.machine": ("cams.machine.timing",),
+    "cams.machine": ("cams.machine.timing", "cams.machine.design"),
 }
 
 

@@ -45,7 +45,7 @@ DOCTEST_MODULES = [
     "cams.machine.timing.cycle",
     "cams.machine.timing.placement",
     "cams.machine.timing.diagram",
-    "cams.machine.timing.result",
+    "cams.machine.design",
     "cams.machine.machinefile",
     "cams.commands.machine",
     # forces
