@@ -38,9 +38,13 @@ MAY_IMPORT: dict[str, tuple[str, ...]] = {
     "cams.checks": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams._moved"),
     "cams.dynamics": (*_BASE, "cams.model", "cams.kinematics"),
     "cams.io": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams.dynamics"),
+    # rooms for what comes next: the cam's strength (contact stress, film, life), below the facade; manufacture
+    # (the profile's exports now, tool paths next), above the file's schema, which keeps only the readers
+    "cams.strength": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams.dynamics"),
+    "cams.manufacture": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams.io"),
     # the facade: a cam solved, verified, profiled, checked and assessed, one call each
     "cams.solve": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                   "cams.checks", "cams.dynamics", "cams.motion_design"),
+                   "cams.checks", "cams.dynamics", "cams.motion_design", "cams.strength"),
     # the motion design: the laws designed (optimize.motion), the cam checked by the solve it is handed
     "cams.motion_design": (*_BASE, "cams.model", "optimize"),
     "cams.assess": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
@@ -55,7 +59,7 @@ MAY_IMPORT: dict[str, tuple[str, ...]] = {
                      "cams.machine"),
     "cams.commands": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
                       "cams.checks", "cams.dynamics", "cams.io", "cams.solve", "cams.assess", "cams.cam",
-                      "cams.sweep", "cams.machine", "cams.present"),
+                      "cams.sweep", "cams.machine", "cams.present", "cams.manufacture"),
     "cams.cli": ("laws", "cams.commands"),
 }
 
