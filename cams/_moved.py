@@ -37,7 +37,8 @@ MOVED: dict[str, tuple[str, ...]] = {
                        "cams.model.dynamics", "cams.io.designfile"),
     "cams.files": ("cams.io.files", "cams.io.document"),
     "cams.designfile": ("cams.io.designfile",),
-    "cams.export": ("cams.io.export",),
+    "cams.export": ("cams.manufacture.points", "cams.manufacture.dxf", "cams.manufacture.svg",
+                    "cams.manufacture.drawing"),
     "cams.templates": ("cams.io.templates",),
     "cams.machinefile": ("cams.machine.machinefile",),
     "cams.linkage": ("cams.machine.linkage",),
@@ -48,7 +49,7 @@ MOVED: dict[str, tuple[str, ...]] = {
     # old modules whose names are packages now: their __init__ forwards the old names
     "cams.profile": ("cams.profile.roller", "cams.model.options", "cams.kinematics.inversion"),
     "cams.checks": ("cams.checks.profile", "cams.checks.base", "cams.solve"),
-    "cams.machine": ("cams.machine.timing",),
+    "cams.machine": ("cams.machine.timing", "cams.machine.design"),
 }
 
 

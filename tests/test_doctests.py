@@ -45,7 +45,7 @@ DOCTEST_MODULES = [
     "cams.machine.timing.cycle",
     "cams.machine.timing.placement",
     "cams.machine.timing.diagram",
-    "cams.machine.timing.result",
+    "cams.machine.design",
     "cams.machine.machinefile",
     "cams.commands.machine",
     # forces
@@ -66,7 +66,11 @@ DOCTEST_MODULES = [
     "cams.words",
     "cams.sweep",
     "cams.profile.roller",
-    "cams.io.export",
+    # exports for manufacture
+    "cams.manufacture.drawing",
+    "cams.manufacture.points",
+    "cams.manufacture.dxf",
+    "cams.manufacture.svg",
     # the design, typed, and its file
     "cams.model.dynamics",
     "cams.model.options",

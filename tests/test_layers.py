@@ -3,7 +3,8 @@
 The rule is written once, as data (:data:`MAY_IMPORT`): each layer names the layers it may import. A layer is
 a package (``cams.model`` holds ``cams.model.design``...) or a single module (``cams.words``); a module belongs
 to the longest layer name that prefixes it. Imports within a layer are free, but no module may sit on an import
-cycle (:func:`test_no_cycle`). The same table is drawn in the README's map of the layers.
+cycle (:func:`test_no_cycle`). Importing a module counts the packages above it that Python runs first (their
+``__init__``), but for the importer's own. The same table is drawn in the README's map of the layers.
 """
 
 from __future__ import annotations
@@ -31,32 +32,38 @@ MAY_IMPORT: dict[str, tuple[str, ...]] = {
     "cams.kinematics": (*_BASE, "cams.model"),
     # the independent check: its own inversion and search, no solver's formula, no kernel
     "cams.verify": (*_BASE, "cams.model"),
-    # the zone and the solvers: no check formula
-    "optimize": (*_BASE, "cams.model", "cams.kinematics"),
+    # the zone and the solvers: no check formula (importing cams.model runs the package's entry, cams)
+    "optimize": (*_BASE, "cams", "cams.model", "cams.kinematics"),
     "cams.profile": (*_BASE, "cams.model", "cams.kinematics", "cams._moved"),
     "cams.checks": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams._moved"),
     "cams.dynamics": (*_BASE, "cams.model", "cams.kinematics"),
     "cams.io": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams.dynamics"),
+    # rooms for what comes next: the cam's strength (contact stress, film, life), below the faces' pipelines
+    # (a stage of each); manufacture (the profile's exports now, tool paths next), above the file's schema, which
+    # keeps only the readers
+    "cams.strength": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams.dynamics"),
+    "cams.manufacture": (*_BASE, "cams.model", "cams.kinematics", "cams.profile", "cams.io"),
     # the follower faces' pipelines: size, profile, checks, forces of one face each (cams.faces.face_of chooses)
     "cams.faces": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                   "cams.checks", "cams.dynamics"),
+                   "cams.checks", "cams.dynamics", "cams.strength"),
     # the motion design: the laws designed (optimize.motion), their cam sized by the face's pipeline
     "cams.motion_design": (*_BASE, "cams.model", "optimize", "cams.faces"),
     # the facade: a design of fixed laws to its face's pipeline, one with [optimize] to the motion design
-    "cams.solve": (*_BASE, "cams.model", "cams.faces", "cams.motion_design"),
+    "cams.solve": (*_BASE, "cams.model", "cams.faces", "cams.motion_design", "cams.strength"),
     "cams.assess": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
                     "cams.checks", "cams.dynamics", "cams.faces"),
     "cams.cam": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
                  "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess"),
     "cams.sweep": (*_BASE, "cams.model", "cams.io", "cams.cam"),
     "cams.machine": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
-                     "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess", "cams.cam", "cams._moved"),
+                     "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess", "cams.cam",
+                     "cams._moved"),
     "cams.present": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
                      "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess", "cams.cam",
                      "cams.machine"),
     "cams.commands": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
                       "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess", "cams.cam",
-                      "cams.sweep", "cams.machine", "cams.present"),
+                      "cams.sweep", "cams.machine", "cams.present", "cams.manufacture"),
     "cams.cli": ("laws", "cams.commands"),
 }
 
@@ -93,7 +100,20 @@ def _imports(name: str, path: Path, mods: dict[str, Path]) -> set[str]:
                 t = t.rpartition(".")[0]
             if t and t != name:
                 found.add(t)
-    return found
+    return found | _packages_run(name, found, mods)
+
+
+def _packages_run(name: str, targets: set[str], mods: dict[str, Path]) -> set[str]:
+    """The packages whose ``__init__`` Python runs to import ``targets`` from ``name``: importing ``a.b.c`` runs
+    ``a`` and ``a.b`` first, except the packages ``name`` itself belongs to (they ran before it)."""
+    inside = _ancestors(name) | {name}
+    return {p for t in targets for p in _ancestors(t) if p in mods and p not in inside}
+
+
+def _ancestors(module: str) -> set[str]:
+    """The packages above ``module``: ``a.b.c`` -> ``{"a.b", "a"}``."""
+    parts = module.split(".")
+    return {".".join(parts[:i]) for i in range(1, len(parts))}
 
 
 def layer_of(module: str) -> str:
@@ -143,8 +163,13 @@ def test_the_rule_itself_has_no_cycle() -> None:
 
 
 def test_no_cycle() -> None:
-    """No import cycle among the project's modules (Tarjan's strongly connected components)."""
-    graph = _graph()
+    """No import cycle among the project's modules."""
+    cycles = _cycles(_graph())
+    assert not cycles, "import cycles: " + "; ".join(", ".join(c) for c in cycles)
+
+
+def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The import cycles of ``graph``, each as its sorted modules (Tarjan's strongly connected components)."""
     index: dict[str, int] = {}
     low: dict[str, int] = {}
     stack: list[str] = []
@@ -177,7 +202,7 @@ def test_no_cycle() -> None:
     for v in sorted(graph):
         if v not in index:
             strong(v)
-    assert not cycles, "import cycles: " + "; ".join(", ".join(c) for c in cycles)
+    return cycles
 
 
 def test_the_checker_sees_function_level_imports(tmp_path: Path) -> None:
@@ -187,3 +212,32 @@ def test_the_checker_sees_function_level_imports(tmp_path: Path) -> None:
     mods["optimize.zone"].write_text("")
     assert _imports("cams.model.design", mods["cams.model.design"], mods) == {"optimize.zone"}
     assert "optimize" not in MAY_IMPORT[layer_of("cams.model.design")]
+
+
+def test_the_checker_sees_a_package_s_init(tmp_path: Path) -> None:
+    """Importing ``a.b.c`` runs ``a.b``'s ``__init__`` first: the rule counts it (not the importer's own packages,
+    which ran before it), so a loop through an ``__init__`` is caught. The machine's timing and kinetostatics
+    made one: the timing's ``__init__`` re-exported ``design_machine``, whose module imported the kinetostatics'
+    loads, whose ``__init__`` imports the coupling, which imports the timing."""
+    texts = {
+        "cams.machine.timing": "from cams.machine.timing.result import design_machine\n",
+        "cams.machine.timing.result": "from cams.machine.kinetostatics.loads import ForceSpec\n",
+        "cams.machine.kinetostatics": "from cams.machine.kinetostatics.coupling import machine_forces\n",
+        "cams.machine.kinetostatics.loads": "",
+        "cams.machine.kinetostatics.coupling": ("from cams.machine.kinetostatics.loads import G\n"
+                                                "def machine_forces():\n    from cams.machine.timing import windows\n"),
+    }
+    packages = {"cams.machine.timing", "cams.machine.kinetostatics"}
+    mods = {}
+    for name, text in texts.items():
+        path = tmp_path.joinpath(*name.split("."), "__init__.py") if name in packages else \
+            tmp_path.joinpath(*name.split(".")).with_suffix(".py")
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+        mods[name] = path
+    graph = {m: _imports(m, p, mods) for m, p in mods.items()}
+    assert graph["cams.machine.timing.result"] == {"cams.machine.kinetostatics.loads", "cams.machine.kinetostatics"}
+    assert graph["cams.machine.kinetostatics.coupling"] == {"cams.machine.kinetostatics.loads", "cams.machine.timing"}
+    assert graph["cams.machine.timing"] == {"cams.machine.timing.result"}
+    assert _cycles(graph) == [["cams.machine.kinetostatics", "cams.machine.kinetostatics.coupling",
+                               "cams.machine.timing", "cams.machine.timing.result"]]

@@ -27,8 +27,8 @@ def _check_plot_folder(path: str) -> None:
 
 
 def run(args) -> int:
+    from cams.machine.design import design_machine
     from cams.machine.machinefile import load_machine
-    from cams.machine.timing import design_machine
 
     if args.plot is not None:
         _check_plot_folder(args.plot)

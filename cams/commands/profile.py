@@ -24,8 +24,10 @@ def _write(args, prof, bore, failing: str = "") -> list[str]:
 
     ``failing`` (the reasons a failing cam fails) marks the DXF and SVG as failing; a CSV is never marked.
     """
-    from cams.io.export import write_csv, write_dxf, write_svg
     from cams.io.files import STDOUT, all_or_nothing
+    from cams.manufacture.dxf import write_dxf
+    from cams.manufacture.points import write_csv
+    from cams.manufacture.svg import write_svg
 
     written = []
     with all_or_nothing():

@@ -29,7 +29,7 @@ Schema (see ``examples/machines/``)::
     [follower], [[motion]], [limits], [solve], [dynamics]   as in a design file (cams/io/designfile.py);
                 [dynamics] journal_radius for a rocker only
     [cam]       bore_radius only (checked against the sized cam's working profile by
-                cams.machine.timing.design_machine): rotation and rpm follow from the crank and the drive
+                cams.machine.design.design_machine): rotation and rpm follow from the crank and the drive
     [forces]    optional: masses, loads, friction and the flywheel's delta of the linkage
                 (:func:`force_spec_from_dict`); parsed into ``spec.forces`` and ``spec.force_options``
 """
@@ -43,6 +43,7 @@ import numpy as np
 
 from cams.io.designfile import design_from_dict
 from cams.io.document import check_document, check_keys, read_toml, toml_number, toml_table
+from cams.machine.design import MachineSpec
 from cams.machine.kinetostatics.loads import (
     WINDOWS,
     ConstantFriction,
@@ -65,7 +66,6 @@ from cams.machine.linkage.machines import (
 from cams.machine.timing import (
     CuttingZone,
     Drive,
-    MachineSpec,
     Timing,
     check_follower_direction,
 )

@@ -103,7 +103,7 @@ class FlatFaceProfile:
     name: str = "cam"
     tolerance: float | None = None
 
-    # the attributes cams.io.export reads (a flat face has no pitch curve and no groove)
+    # the attributes the exports (cams.manufacture) read (a flat face has no pitch curve and no groove)
     pitch = None
     outer = None
     roller_radius = 0.0
@@ -114,12 +114,12 @@ class FlatFaceProfile:
 
     @property
     def work(self) -> np.ndarray:
-        """The cam profile (``point``), under the name :mod:`cams.io.export` uses."""
+        """The cam profile (``point``), under the name :mod:`cams.manufacture` uses."""
         return self.point
 
     @property
     def R0(self) -> float:
-        """The base radius (``base_radius``), under the name :mod:`cams.io.export` uses."""
+        """The base radius (``base_radius``), under the name :mod:`cams.manufacture` uses."""
         return self.base_radius
 
     @property

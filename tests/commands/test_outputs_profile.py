@@ -81,14 +81,14 @@ def test_a_name_too_long_is_refused_before_solving(design, capsys):
 
 def test_a_failing_output_leaves_no_other_output(design, capsys, monkeypatch):
     """The DXF fails while written (disk full): the CSV, rendered first, must not remain, nor any temporary."""
-    import cams.io.export
+    import cams.manufacture.dxf
 
     def full_disk(prof, path, **kw):
         def write(tmp):
             raise OSError(28, "No space left on device")
         return atomic_write(path, "--dxf", write)
 
-    monkeypatch.setattr(cams.io.export, "write_dxf", full_disk)
+    monkeypatch.setattr(cams.manufacture.dxf, "write_dxf", full_disk)
     folder = design.parent
     rc, out, err = _run(capsys, design, "--csv", folder / "ok.csv", "--dxf", folder / "x.dxf",
                         "--svg", folder / "ok.svg")

@@ -16,10 +16,11 @@ import pytest
 
 from cams.cli import main
 from cams.io.designfile import dynamics_from_dict
+from cams.machine.design import design_machine
 from cams.machine.kinetostatics import ForceSpec, LinkMass, Resistance, analyse_forces
 from cams.machine.linkage.machines import CrankSlider
 from cams.machine.machinefile import force_spec_from_dict, machine_from_dict
-from cams.machine.timing import Drive, Timing, design_machine, place_cam, windows
+from cams.machine.timing import Drive, Timing, place_cam, windows
 from laws.errors import InputError
 from laws.units import LENGTH_UNITS
 

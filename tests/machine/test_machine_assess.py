@@ -58,8 +58,8 @@ def test_machine_result_ok_is_the_shared_usable(tmp_path):
     from cams.assess import assess_cam
     from cams.cam import Cam
     from cams.io.designfile import load_design
+    from cams.machine.design import design_machine
     from cams.machine.machinefile import load_machine
-    from cams.machine.timing import design_machine
 
     machine, design = _files(tmp_path, "25.0")
     res = design_machine(load_machine(machine))

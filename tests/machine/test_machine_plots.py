@@ -23,7 +23,7 @@ import matplotlib.pyplot as plt
 plt.figure()
 before = (matplotlib.get_backend(), plt.get_fignums())
 from cams.machine.machinefile import load_machine
-from cams.machine.timing import design_machine
+from cams.machine.design import design_machine
 from cams.machine.kinetostatics import machine_forces
 from cams.present.machine_plots import machine_figures
 from matplotlib.figure import Figure

@@ -9,9 +9,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from cams.machine.design import design_machine
 from cams.machine.linkage.machines import SlottingMachine
 from cams.machine.machinefile import load_machine, machine_from_dict
-from cams.machine.timing import CamTiming, CuttingZone, Drive, Timing, cycle_diagram, design_machine, place_cam, windows
+from cams.machine.timing import CamTiming, CuttingZone, Drive, Timing, cycle_diagram, place_cam, windows
 from laws.errors import InfeasibleError, InputError
 
 ROOT = Path(__file__).resolve().parents[2]

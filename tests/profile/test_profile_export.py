@@ -1,4 +1,4 @@
-"""cams.io.export: CSV, DXF (read back with ezdxf), SVG (parsed as XML); atomic writes."""
+"""cams.manufacture: CSV, DXF (read back with ezdxf), SVG (parsed as XML); atomic writes."""
 
 from __future__ import annotations
 
@@ -10,8 +10,10 @@ import pytest
 import shapely
 from shapely.geometry import LineString
 
-from cams.io.export import csv_header, write_csv, write_dxf, write_svg
 from cams.io.files import check_output_path
+from cams.manufacture.dxf import write_dxf
+from cams.manufacture.points import csv_header, write_csv
+from cams.manufacture.svg import write_svg
 from cams.profile.roller import build_profile, default_bore_radius
 from laws.errors import InputError
 

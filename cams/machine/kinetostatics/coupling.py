@@ -116,7 +116,7 @@ CAM_ANGLE = "cam angle from the start of its program"
 
 
 def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
-    """Forces of a machine file's machine (:class:`cams.machine.timing.MachineSpec`).
+    """Forces of a machine file's machine (:class:`cams.machine.design.MachineSpec`).
 
     Parameters
     ----------
@@ -125,8 +125,8 @@ def machine_forces(spec, centre=None, *, found=None) -> MachineForces:
         ``spec.cam.dynamics`` (from ``[dynamics]``) the follower's.
     centre : array_like or None
         The cam's centre (``SolveResult.centre``); needed for the cam's forces.
-    found : cams.machine.timing.MachineResult, optional
-        What :func:`cams.machine.timing.design_machine` found for ``spec``: its
+    found : cams.machine.design.MachineResult, optional
+        What :func:`cams.machine.design.design_machine` found for ``spec``: its
         windows, cam timing and (without ``centre``) the cam's centre are
         used, not found again.
 

@@ -1,10 +1,12 @@
 """The cam in its machine: windows of the cycle, the cam's timing and the cycle diagram.
 
 By stage: :mod:`~cams.machine.timing.cycle` (the cycle's windows), :mod:`~cams.machine.timing.placement`
-(the drive and the cam's rises placed), :mod:`~cams.machine.timing.diagram` (the cycle diagram) and
-:mod:`~cams.machine.timing.result` (the machine designed); this module re-exports them.
+(the drive and the cam's rises placed) and :mod:`~cams.machine.timing.diagram` (the cycle diagram); this module
+re-exports them. The machine designed (:class:`~cams.machine.design.MachineSpec`,
+:class:`~cams.machine.design.MachineResult`) is :mod:`cams.machine.design`, above this package and the
+kinetostatics.
 
-The pipeline (:func:`design_machine`): the linkage's stroke analysis
+The pipeline (:func:`cams.machine.design.design_machine`): the linkage's stroke analysis
 (:func:`cams.machine.linkage.analyse`) -> the cutting and out-of-work windows on the
 crank's cycle (:func:`windows`) -> the cam's rises placed inside the
 out-of-work window with a margin, which fixes the cam's mounting angle
@@ -43,7 +45,6 @@ from cams.machine.timing.placement import (
     check_follower_direction,
     place_cam,
 )
-from cams.machine.timing.result import MachineResult, MachineSpec, design_machine
 
 __all__ = [
     "CuttingZone",
@@ -52,12 +53,9 @@ __all__ = [
     "Windows",
     "CamTiming",
     "CycleDiagram",
-    "MachineSpec",
-    "MachineResult",
     "windows",
     "place_cam",
     "check_follower_direction",
     "cycle_diagram",
-    "design_machine",
     "PLACEMENTS",
 ]

@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from cams.cli import main
+from cams.machine.design import design_machine
 from cams.machine.kinetostatics import machine_forces
 from cams.machine.machinefile import load_machine
-from cams.machine.timing import design_machine
 
 ROOT = Path(__file__).resolve().parents[3]
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"

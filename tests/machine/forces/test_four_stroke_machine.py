@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 
 from cams.cli import main
+from cams.machine.design import design_machine
 from cams.machine.kinetostatics import ForceSpec, GasPressure, LinkMass, analyse_forces, machine_forces
 from cams.machine.linkage.machines import CrankSlider
 from cams.machine.machinefile import machine_from_dict
-from cams.machine.timing import design_machine
 
 ROOT = Path(__file__).resolve().parents[3]
 SLOTTING = ROOT / "examples" / "machines" / "slotting_machine.toml"

@@ -59,7 +59,7 @@ def test_machine_file_forces_table():
 
 def test_machine_forces_api():
     spec = load_machine(DATA)
-    from cams.machine.timing import design_machine
+    from cams.machine.design import design_machine
 
     res = design_machine(spec)
     mf = machine_forces(spec, res.solve.centre)
@@ -193,9 +193,9 @@ def test_flywheel_without_link_masses_but_with_loads_is_sized(tmp_path, capsys):
 
 def test_hodographs_draw_the_reactions():
     """Each panel of the hodograph figure traces its pair's reaction vector (R_x, R_y) over the whole cycle."""
+    from cams.machine.design import design_machine
     from cams.machine.kinetostatics import machine_forces
     from cams.machine.machinefile import load_machine
-    from cams.machine.timing import design_machine
 
     spec = load_machine(DATA)
     mf = machine_forces(spec, design_machine(spec).solve.centre)
@@ -223,9 +223,9 @@ def test_forces_reuse_what_the_machine_design_found(monkeypatch):
     again (a resistance load still finds its own window: its approach and overrun are its own), and gives the
     same forces as when it finds them itself."""
     import cams.machine.timing as machine_mod
+    from cams.machine.design import design_machine
     from cams.machine.kinetostatics import machine_forces
     from cams.machine.machinefile import load_machine
-    from cams.machine.timing import design_machine
 
     spec = load_machine(DATA)
     res = design_machine(spec)

@@ -1,6 +1,8 @@
 """The machine designed: a machine file's machine (:class:`MachineSpec`) -> windows, timing, the cam, the diagram.
 
-:func:`design_machine` runs the pipeline of :mod:`cams.machine.timing`.
+:func:`design_machine` runs the pipeline of :mod:`cams.machine.timing` and sizes the cam. It sits above the
+timing and the kinetostatics (its :class:`MachineSpec` carries the ``[forces]`` table's
+:class:`~cams.machine.kinetostatics.loads.ForceSpec`), so neither package imports the other through it.
 """
 
 from __future__ import annotations
