@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from laws.errors import InfeasibleError
+from laws.errors import InfeasibleError, SolverError
 
 __all__ = ["NearestPoint", "nearest_point", "line_crossings", "clip_polygon", "feasible_mask", "EPS"]
 
@@ -133,8 +133,9 @@ class NearestPoint:
         ------
         InfeasibleError
             When the half-planes have no common point (a dual ray: the
-            violated half-plane is opposed by the active ones), or when the
-            cap on the steps is reached.
+            violated half-plane is opposed by the active ones).
+        SolverError
+            When the cap on the steps is reached (the solver's fault).
         """
         N, c = self._N, self._c
         limit = (max_steps if max_steps is not None else 4 * self.m + 100)
@@ -148,7 +149,7 @@ class NearestPoint:
             while True:  # raise the multiplier of p until p is active (full step)
                 steps += 1
                 if steps > limit:
-                    raise InfeasibleError("solve", f"the nearest-point method did not settle in {limit} steps")
+                    raise SolverError(f"the nearest-point method did not settle in {limit} steps")
                 A = self.active
                 if not A:
                     w, r = n, np.zeros(0)

@@ -213,3 +213,14 @@ def test_lower_bound_never_exceeds_the_distance():
             true = float(_exact_nearest(P, N[:k + 3], c[:k + 3])) ** 0.5
             assert q.lower_bound() <= true
             assert q.lower_bound() == pytest.approx(true, rel=1e-12, abs=1e-14)
+
+
+def test_an_unsettled_solve_is_a_solver_failure_not_bad_input():
+    """The cap on the steps raises SolverError (the product's failure), not a CamsError (the user's)."""
+    from laws.errors import CamsError, SolverError
+
+    q = NearestPoint(np.array([5.0, 5.0]))
+    q.add(np.array([[1.0, 0.0], [0.0, 1.0]]), np.array([1.0, 1.0]))
+    with pytest.raises(SolverError, match="did not settle in 1 steps") as err:
+        q.solve(max_steps=1)
+    assert not isinstance(err.value, CamsError)
