@@ -1,8 +1,10 @@
 """The ``cams`` command line: a thin layer over the API.
 
 Every subcommand turns a :class:`~laws.errors.CamsError` (bad input, no
-feasible design) into one line on stderr and exit code 2. The subcommands live
-in :mod:`cams.commands`, one module each.
+feasible design) into one line on stderr and exit code 2, and a
+:class:`~laws.errors.SolverError` (a solver that could not settle on a valid
+input: the product's failure) into one line and exit code 1. The subcommands
+live in :mod:`cams.commands`, one module each.
 
 Importing this module loads only the standard library (``cams`` itself is
 empty): :func:`main` first takes Ctrl-C, then imports the project, so an
@@ -74,8 +76,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         import warnings
 
-        from cams.commands.common import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK
-        from laws.errors import CamsError
+        from cams.commands.common import EXIT_BAD_INPUT, EXIT_CHECK_FAILED, EXIT_INTERRUPTED, EXIT_OK
+        from laws.errors import CamsError, SolverError
 
         parser = build_parser()
     finally:
@@ -100,6 +102,10 @@ def main(argv: list[str] | None = None) -> int:
     except CamsError as e:
         print(f"cams {args.command}: error: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except SolverError as e:
+        # not the input's fault: no exit 2 as if it were
+        print(f"cams {args.command}: solver failure (a fault of cams, not of the input): {e}", file=sys.stderr)
+        return EXIT_CHECK_FAILED
     except KeyboardInterrupt:
         # Ctrl-C: one line, the shell's exit code for SIGINT; outputs are whole or absent (cams.io.files)
         print(f"cams {args.command}: interrupted", file=sys.stderr)

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from laws.errors import CamsError, InputError
+from laws.errors import CamsError, InputError, SolverError
 
 __all__ = ["parse_vary", "key_parts", "sweep", "SweepResult", "COLUMNS", "COLUMN_UNITS", "csv_header", "csv_row",
            "MAX_WORKERS_PER_CPU", "MAX_DESIGNS"]
@@ -205,6 +205,8 @@ def _solve_one(args) -> dict:
                    failures="; ".join(a.failures) or None)
     except CamsError as e:
         row["error"] = str(e)
+    except SolverError as e:  # one design the solver failed on: a row that says so, not a lost batch
+        row["error"] = f"solver failure: {e}"
     return row
 
 

@@ -3,6 +3,10 @@
 All errors a user can cause are subclasses of :class:`CamsError`, itself a
 ``ValueError``. Each names the offending field so that the command line can
 print it as one line and exit with code 2.
+
+A solver that cannot settle on a valid input is the product's failure, not the
+user's: :class:`SolverError`, not a :class:`CamsError`, which the command line
+prints as one line with exit code 1.
 """
 
 from __future__ import annotations
@@ -12,8 +16,8 @@ from typing import Literal, overload
 
 import numpy as np
 
-__all__ = ["CamsError", "InputError", "InfeasibleError", "check_option", "check_number", "check_positive",
-           "check_numbers", "show_value"]
+__all__ = ["CamsError", "InputError", "InfeasibleError", "SolverError", "check_option", "check_number",
+           "check_positive", "check_numbers", "show_value"]
 
 
 class CamsError(ValueError):
@@ -42,6 +46,20 @@ class InfeasibleError(CamsError):
     def __init__(self, field: str, message: str):
         self.field = field
         super().__init__(f"{field}: {message}" if field else message)
+
+
+class SolverError(RuntimeError):
+    """A solver could not settle on an input that is valid: a fault of the product, not of the input.
+
+    Not a :class:`CamsError` (a caller that takes those for bad input or an
+    empty zone must not take this for either); the command line reports it as
+    one line and exit code 1.
+
+    Parameters
+    ----------
+    message : str
+        Which solver and what it could not do, one line.
+    """
 
 
 def check_option(field: str, value: object, allowed: tuple[str, ...]) -> str:

@@ -38,7 +38,7 @@ import numpy as np
 
 from cams.model.design import CamDesign
 from cams.model.follower import Rocker
-from laws.errors import InfeasibleError
+from laws.errors import InfeasibleError, SolverError
 from optimize.result import CentreSolution
 
 __all__ = ["admissible_L_range", "diagnosed", "explain_infeasible", "Relaxation", "relaxations", "zone_margin",
@@ -386,8 +386,9 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
     or ``follower.offset``) is replaced by :func:`explain_infeasible`'s, which
     names the limit that binds and its nearest feasible value. When the
     continuous zone is not empty after all (a centre where the continuous
-    zone's violation, :func:`optimize.zone.max_violation`, is proven <= 0), the solver failed: the error says so
-    (field ``solve.method``) and gives that centre's R0. A result that is not
+    zone's violation, :func:`optimize.zone.max_violation`, is proven <= 0), the solver failed: a
+    :class:`laws.errors.SolverError` (the product's failure, not the input's) says so and gives that centre's
+    R0. A result that is not
     certified because no feasible centre was found near it (``certified`` False,
     ``error_bound`` None) is checked the same way: when the zone is empty or
     its infimum is not attained (the cam grows without bound), that diagnosis
@@ -402,11 +403,12 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
             if e.field not in ("limits.pressure_angle", "follower.offset"):
                 raise
             why = explain_infeasible(design, half_planes)
-            if why is None:
-                why = _solver_failed(design, half_planes, e)
-            if why is None:
+            if why is not None:
+                raise why from e
+            failed = _solver_failed(design, half_planes, e)
+            if failed is None:
                 raise
-            raise why from e
+            raise failed from e
         if sol.certified is False and sol.error_bound is None:
             why = explain_infeasible(design, half_planes)
             if why is not None:
@@ -416,15 +418,18 @@ def diagnosed(solver: Callable[..., CentreSolution]) -> Callable[..., CentreSolu
     return wrapper
 
 
-def _solver_failed(design: CamDesign, half_planes, err: InfeasibleError) -> InfeasibleError | None:
-    """The error of a solver that found no centre in a zone that is not empty, or None if unconfirmed."""
+def _solver_failed(design: CamDesign, half_planes, err: InfeasibleError) -> SolverError | None:
+    """The error of a solver that found no centre in a zone that is not empty, or None if unconfirmed.
+
+    A :class:`laws.errors.SolverError`: the input is valid, the solver failed on it.
+    """
     _lower, upper, O = zone_margin(design, half_planes)
     if upper > 0:
         return None
     R0 = float(np.linalg.norm(O - design.follower.position(0.0)))
-    return InfeasibleError("solve.method", f"the {design.method} method found no admissible cam centre ({err}), but "
-                           f"the zone is not empty: a centre at R0 = {R0:.6g} mm satisfies every limit; try "
-                           "another method")
+    return SolverError(f"the {design.method} method found no admissible cam centre ({err}), but the zone is not "
+                       f"empty: a centre at R0 = {R0:.6g} mm satisfies every limit; try another method "
+                       "(solve.method or --method)")
 
 
 def _lmax(design: CamDesign) -> float:

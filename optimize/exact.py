@@ -39,7 +39,7 @@ from __future__ import annotations
 import numpy as np
 
 from cams.model.design import CamDesign
-from laws.errors import CamsError, InfeasibleError
+from laws.errors import InfeasibleError, SolverError
 from optimize.bounds import push_inside
 from optimize.planar import EPS, NearestPoint
 from optimize.result import Binding, CentreSolution
@@ -51,12 +51,14 @@ __all__ = ["nearest_exact", "ExchangeInvariantError", "CERT_RTOL"]
 CERT_RTOL = 1e-9
 
 
-class ExchangeInvariantError(CamsError):
-    """An internal invariant of the exchange method broke (the relaxation's distance decreased)."""
+class ExchangeInvariantError(SolverError):
+    """An internal invariant of the exchange method broke (the relaxation's distance decreased).
+
+    A fault of the solver, not of the input (:class:`laws.errors.SolverError`).
+    """
 
     def __init__(self, message: str):
-        self.field = "solve"
-        super().__init__(f"solve: internal error of the exact method: {message}")
+        super().__init__(f"internal error of the exact method: {message}")
 
 
 def _magnitude(*points: np.ndarray) -> float:
@@ -107,6 +109,10 @@ def nearest_exact(
     ExchangeInvariantError
         When the relaxation's distance decreases between iterations (never
         in exact arithmetic; beyond rounding it is a fault).
+    SolverError
+        When the nearest-point method cannot settle on the cuts
+        (:meth:`optimize.planar.NearestPoint.solve`; never in exact
+        arithmetic): a fault of the solver, not of the input.
     """
     rel = max(float(tol), EPS)
     T = np.asarray(target, dtype=float)

@@ -12,6 +12,7 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from cams.cli import main
@@ -163,3 +164,31 @@ def test_import_cams_loads_nothing_and_takes_no_signal():
             "print('numpy' in sys.modules, signal.getsignal(signal.SIGINT) is before, cams.InputError.__name__)")
     r = subprocess.run([sys.executable, "-c", prog], capture_output=True, text=True, check=True)
     assert r.stdout.split() == ["False", "True", "InputError"]
+
+
+def _unsettling(monkeypatch) -> None:
+    """The nearest-point method made to give up at its first step: a solver that cannot settle."""
+    from optimize.planar import NearestPoint
+
+    real = NearestPoint.solve
+    monkeypatch.setattr(NearestPoint, "solve", lambda self, max_steps=None: real(self, max_steps=0))
+
+
+def test_a_solver_that_cannot_settle_is_its_failure_exit_1_not_bad_input(monkeypatch, capsys):
+    """Issue 28, defect 1: a solver failure is one line saying so and exit code 1, never exit 2 (bad input)."""
+    _unsettling(monkeypatch)
+    rc, out, err = _run(["solve", EXAMPLES / "rocker_force.toml"], capsys)
+    assert rc == 1 and out == "" and err.count("\n") == 1
+    assert err.startswith("cams solve: solver failure (a fault of cams, not of the input): ")
+    assert "did not settle in 0 steps" in err
+
+
+def test_a_solver_failure_in_a_sweep_is_a_row_that_says_so(monkeypatch):
+    """One design the solver fails on is a row with its error, not a lost batch (one process: the patch holds)."""
+    from cams.sweep import sweep
+    from tests.conftest import rocker_dict
+
+    _unsettling(monkeypatch)
+    res = sweep(rocker_dict(), [("follower.arm", np.array([100.0]))], workers=1)
+    assert res.rows[0]["error"].startswith("solver failure: the nearest-point method did not settle")
+    assert res.rows[0]["R0"] is None and res.failed == 1

@@ -25,7 +25,7 @@ from cams.cli import main
 from cams.io.designfile import design_from_dict
 from cams.solve import solve
 from cams.verify.pressure import check_pressure
-from laws.errors import InfeasibleError
+from laws.errors import CamsError, InfeasibleError, SolverError
 from optimize.diagnose import _attained, diagnosed, explain_infeasible, relaxations, zone_margin
 from tests.conftest import EXAMPLES, rocker_dict
 from tests.validation.reference import ReferenceZone
@@ -220,16 +220,20 @@ def test_translating_fixed_offset_never_empties_the_zone(closure, offset):
 
 
 def test_a_solver_that_fails_on_a_non_empty_zone_is_not_reported_as_infeasible_limits():
-    """A solver refusing a feasible design: the error blames the solver and gives a centre checked independently."""
+    """A solver refusing a feasible design: the error blames the solver and gives a centre checked independently.
+
+    A SolverError, not an InfeasibleError (a CamsError, which the command line reports as bad input, exit 2).
+    """
 
     @diagnosed
     def refuses(design, target, *, half_planes=None):
         raise InfeasibleError("limits.pressure_angle", "no cam centre satisfies the pressure-angle limits")
 
     d = design_from_dict(rocker_dict())
-    with pytest.raises(InfeasibleError) as info:
+    with pytest.raises(SolverError) as info:
         refuses(d, d.follower.position(0.0))
-    assert info.value.field == "solve.method" and "the zone is not empty" in str(info.value)
+    assert not isinstance(info.value, CamsError)
+    assert "the zone is not empty" in str(info.value) and "try another method" in str(info.value)
     R0 = float(re.search(r"R0 = ([0-9.e+]+) mm", str(info.value)).group(1))
     assert R0 >= solve(d).R0 * (1 - 1e-9)  # no centre nearer than the least R0
     # the centre the message names (the zone's own proof, upper <= 0) is admissible by the independent check

@@ -11,6 +11,7 @@ import pytest
 import optimize.exact as exact
 from cams.io.designfile import design_from_dict, load_design
 from cams.solve import solve
+from laws.errors import CamsError, SolverError
 from optimize.exact import ExchangeInvariantError, nearest_exact
 from tests.conftest import EXAMPLES
 from tests.stress.helpers import assert_minimal
@@ -142,8 +143,10 @@ def test_decreasing_relaxation_raises(monkeypatch):
 
     monkeypatch.setattr(NearestPoint, "solve", shrinking)
     design = design_from_dict(NONMINIMAL)
-    with pytest.raises(ExchangeInvariantError, match="fell"):
+    with pytest.raises(ExchangeInvariantError, match="fell") as err:
         nearest_exact(design, design.follower.position(0.0))
+    # the product's failure, not the input's (issue 28, defect 1): not a CamsError, which the CLI calls bad input
+    assert isinstance(err.value, SolverError) and not isinstance(err.value, CamsError)
 
 
 def _many_phases(n: int) -> dict:

@@ -213,3 +213,70 @@ def test_lower_bound_never_exceeds_the_distance():
             true = float(_exact_nearest(P, N[:k + 3], c[:k + 3])) ** 0.5
             assert q.lower_bound() <= true
             assert q.lower_bound() == pytest.approx(true, rel=1e-12, abs=1e-14)
+
+
+# -- nearly parallel lines (issue 28, defect 1) -----------------------------------------------------------
+
+from laws.errors import CamsError, SolverError  # noqa: E402
+
+#: The two cuts on which the exact method gave up ("did not settle in 108 steps") for
+#: ../shared/repro/answers/exact_nosettle_2178.toml: t-t lines 1.2e-3 rad apart, from the target T = A0.
+PAIR_T = np.array([4.259996571466902, 0.0])
+PAIR_N = np.array([[0.4075486535907736, 0.9131834946802025], [0.40862162338718727, 0.9127038779913338]])
+PAIR_C = np.array([-4.002871822467924, -4.002871652183345]) + PAIR_N @ PAIR_T
+
+
+def _residual_within_rounding(q: NearestPoint, N: np.ndarray, c: np.ndarray) -> None:
+    """Every half-plane holds at ``q.x`` within its own rounding allowance (:meth:`NearestPoint.tolerances`)."""
+    y = q.x - q.P
+    assert np.all(N @ y - (c - N @ q.P) <= q.tolerances()), (N @ y - (c - N @ q.P), q.tolerances())
+
+
+def test_nearly_parallel_pair_of_the_exact_method_settles():
+    """The cuts added one after the other: the vertex is found and both lines hold within rounding (the vertex
+    by Cramer's rule missed them by 1.2e-13, beyond the allowance, so the active cut was entered again, dropped
+    and entered again until the cap)."""
+    q = NearestPoint(PAIR_T)
+    q.add(PAIR_N[:1], PAIR_C[:1])
+    q.solve()
+    q.add(PAIR_N[1:], PAIR_C[1:])
+    x = q.solve()
+    assert sorted(q.active) == [0, 1] and q.steps < 5
+    _residual_within_rounding(q, PAIR_N, PAIR_C)
+    ref = float(_exact_nearest(PAIR_T, PAIR_N, PAIR_C)) ** 0.5
+    assert np.linalg.norm(x - PAIR_T) == pytest.approx(ref, rel=1e-14)
+    assert q.lower_bound() <= ref
+
+
+@pytest.mark.parametrize("k", [1e-2, 1.0, 1e3])
+def test_nearly_parallel_pairs_settle_on_the_exact_distance(k):
+    """Two lines from 1e-1 to 1e-13 rad apart crossing near the nearest point, added one at a time, at three unit
+    scales: the method settles, every line holds within rounding, the distance is the rational enumeration's
+    and the lower bound does not exceed it (the former vertex failed to settle on 1.2 % of such pairs)."""
+    rng = np.random.default_rng(28)
+    for trial in range(400):
+        th = rng.uniform(0.0, 2 * np.pi)
+        delta = 10.0 ** rng.uniform(-13.0, -1.0) * rng.choice([-1.0, 1.0])
+        N = np.array([[np.cos(th), np.sin(th)], [np.cos(th + delta), np.sin(th + delta)]])
+        P = k * rng.normal(size=2)
+        V = P - k * rng.uniform(0.5, 2.0) * N[0] + k * 1e-3 * rng.normal(size=2)
+        c = N @ V + k * 1e-9 * rng.normal(size=2)
+        q = NearestPoint(P)
+        q.add(N[:1], c[:1])
+        q.solve()
+        q.add(N[1:], c[1:])
+        x = q.solve()
+        _residual_within_rounding(q, N, c)
+        ref = float(_exact_nearest(P, N, c)) ** 0.5
+        # the distance is well conditioned (the vertex moves along the lines, across the narrow cone of normals)
+        assert abs(np.linalg.norm(x - P) - ref) <= 1e-13 * (ref + np.abs(P).sum()), trial
+        assert q.lower_bound() <= ref, trial
+
+
+def test_an_unsettled_solve_is_a_solver_failure_not_bad_input():
+    """The cap on the steps raises SolverError (the product's failure), not a CamsError (the user's)."""
+    q = NearestPoint(np.array([5.0, 5.0]))
+    q.add(np.array([[1.0, 0.0], [0.0, 1.0]]), np.array([1.0, 1.0]))
+    with pytest.raises(SolverError, match="did not settle in 1 steps") as err:
+        q.solve(max_steps=1)
+    assert not isinstance(err.value, CamsError)
