@@ -279,7 +279,7 @@ def check_profile(
         Cam centre in the fixed frame (``SolveResult.centre``), length unit.
     options : ProfileOptions, optional
         Tolerance, user minimum radius of curvature, bore radius; default from
-        the design file (:func:`cams.profile.roller.profile_options`).
+        the design file (:func:`cams.model.options.profile_options`).
     profile : Profile, optional
         An already built profile of the same design and centre.
     grid : int

@@ -272,7 +272,8 @@ def plot_flat_pressure(solution, *, n: int = 721):
 
     Parameters
     ----------
-    solution : optimize.flat.FlatFaceSolution
+    solution : cams.faces.result.SolveResult
+        A flat face's sized cam (its detail an :class:`optimize.flat.FlatFaceSolution`, read through it).
     """
     d = solution.design
     c = solution.curves(n)
@@ -299,7 +300,8 @@ def plot_curvature(solution, *, n: int = 721):
 
     Parameters
     ----------
-    solution : optimize.flat.FlatFaceSolution
+    solution : cams.faces.result.SolveResult
+        A flat face's sized cam (its detail an :class:`optimize.flat.FlatFaceSolution`, read through it).
     """
     d = solution.design
     c = solution.curves(n)
