@@ -203,7 +203,7 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
             notes_first.append(f"the optimum, R0 = {sol.R0:.6g} mm, fails the profile's checks (undercut, sharp "
                                f"points, the bore...): the designed laws' smallest cam that passes, R0 = "
                                f"{better.R0:.6g} mm, is returned (a floor on R0)")
-            sol, floor = better, float(better.R0)
+            sol, floor = better, float(better.design.limits.min_base_radius)  # the floor it was sized with
 
     # -- the value of the checked design, computed on the laws themselves ----------------------------------------
     obj = spec.objective
