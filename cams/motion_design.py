@@ -97,8 +97,8 @@ def _passing(new, sol, size_fixed: Callable[[Any], Any], face: Face):
 
     The bisection asks ``face.profile_passes(candidate, search=True)`` (a coarser chord for a very large cam, see
     :meth:`cams.faces.base.Face.profile_passes`); the cam returned passes at the design's own tolerance (raised
-    by ``FALLBACK_RTOL`` steps until it does). Returns the passing solution, or None when no cam up to 2**10
-    times the optimum's R0 passes.
+    by ``FALLBACK_RTOL`` steps until it does). Returns the passing solution and the floor (length) it was sized
+    with, or ``(None, None)`` when no cam up to 2**10 times the optimum's R0 passes.
     """
     def at(floor: float, search: bool):
         try:
@@ -115,7 +115,7 @@ def _passing(new, sol, size_fixed: Callable[[Any], Any], face: Face):
             break
         lo = hi
         if hi > 1024 * sol.R0:
-            return None
+            return None, None
     while hi - lo > FALLBACK_RTOL * hi:
         mid = 0.5 * (lo + hi)
         if at(mid, True) is None:
@@ -125,9 +125,9 @@ def _passing(new, sol, size_fixed: Callable[[Any], Any], face: Face):
     for _ in range(100):        # the design's own tolerance
         best = at(hi, False)
         if best is not None:
-            return best
+            return best, hi
         hi *= 1 + FALLBACK_RTOL
-    return None
+    return None, None
 
 
 def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
@@ -196,7 +196,7 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
                            "(the program saw the fixed phases at samples)")
     floor = None
     if spec.objective == "R0" and ld.free and not face.profile_passes(sol):
-        better = _passing(new, sol, size_fixed, face)
+        better, better_floor = _passing(new, sol, size_fixed, face)
         if reference is not None and face.profile_passes(reference) and (better is None
                                                                          or reference.R0 < better.R0):
             notes_first.append(f"the optimum, R0 = {sol.R0:.6g} mm, fails the profile's checks and the designed "
@@ -208,7 +208,7 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
             notes_first.append(f"the optimum, R0 = {sol.R0:.6g} mm, fails the profile's checks (undercut, sharp "
                                f"points, the bore...): the designed laws' smallest cam that passes, R0 = "
                                f"{better.R0:.6g} mm, is returned (a floor on R0)")
-            sol, floor = better, float(better.R0)
+            sol, floor = better, better_floor  # the floor it was sized with (a saved design solves back to it)
 
     # -- the value of the checked design, computed on the laws themselves ----------------------------------------
     obj = spec.objective
