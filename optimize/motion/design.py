@@ -20,11 +20,12 @@ import numpy as np
 
 from cams.model.design import CamDesign, FlatFaceDesign
 from cams.model.follower import Translating
-from cams.model.motiondesign import CAP_KEYS, MAX_ROCKER_SPANS, MotionDesignSpec
+from cams.model.motiondesign import CAP_KEYS, MAX_DEGREE, MAX_ROCKER_SPANS, MAX_SPANS, MotionDesignSpec
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
 from optimize.motion.conic import ConicProgram, SolverFailure, lower_bound, solve
-from optimize.motion.space import Space
+from optimize.motion.lawrows import check_lift
+from optimize.motion.space import CONSISTENT, Space
 from optimize.motion.translating import Request, build
 
 __all__ = ["LawDesign", "design_laws", "free_phases", "resolve_caps", "BISECTION_STEPS"]
@@ -231,6 +232,7 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     caps = resolve_caps(spec, free)
     kw = {} if pieces is None else {"pieces": pieces}
     space = Space(program, free, spec.degree, spec.spans, spec.continuity, **kw)
+    _check_space(space)
     name = f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})"
     if isinstance(design, FlatFaceDesign) and design.follower.kind == "rocker":
         from optimize.motion.flat_rocker import design_flat_rocker, design_flat_rocker_held
@@ -314,6 +316,32 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
                      seconds=time.perf_counter() - t0)
 
 
+def _check_space(space: Space) -> None:
+    """Refuse a space that holds no law meeting the ends and the joints (its equalities have no solution,
+    :meth:`optimize.motion.space.Space.inconsistency`), naming the spans or the degree that would hold one.
+
+    Raises
+    ------
+    InputError
+        Field ``"optimize"``: the space is empty, whatever the cam, the limits and the caps.
+    """
+    if space.inconsistency() <= CONSISTENT:
+        return
+    p, n, c = space.degree, space.spans, space.continuity
+
+    def holds(**change) -> bool:
+        return replace(space, **change).inconsistency() <= CONSISTENT
+
+    spans = next((m for m in range(n + 1, min(n + 2 * (c + 1), MAX_SPANS) + 1) if holds(spans=m)), None)
+    degree = next((q for q in range(p + 1, MAX_DEGREE + 1) if holds(degree=q)), None)
+    ways = [f"{spans} spans" if spans else "", f"degree {degree}" if degree else ""]
+    would = " or ".join(w for w in ways if w)
+    raise InputError("optimize", f"the space (degree {p}, continuity {c}, {n} span{'s' if n > 1 else ''} per free "
+                     f"phase) holds no law that meets the joints' conditions (S(0) = 0, S(1) = 1 and derivatives 1 "
+                     f"to {c} equal to the neighbouring phases' at both ends): "
+                     + (f"{would} would hold one, or a lower continuity" if would else "lower the continuity"))
+
+
 def _rocker_result(steps, spec: MotionDesignSpec, free: tuple[int, ...], caps: dict[tuple[int, int], float],
                    space: Space, t0: float) -> LawDesign:
     """The :class:`LawDesign` of a rocker's sequential convex programming (no bound: a local optimum)."""
@@ -329,8 +357,10 @@ def _rocker_result(steps, spec: MotionDesignSpec, free: tuple[int, ...], caps: d
 
 
 def _explain_caps(req: Request) -> None:
-    """Raise naming a cap that no law of the space meets on its own (with the joints), proven by solving the
-    space with that cap alone; return when each alone is feasible."""
+    """Raise when the space alone has no law within the lift (:func:`optimize.motion.lawrows.check_lift`), or
+    naming a cap that no law of the space meets on its own (with the joints), proven by solving the space with
+    that cap alone; return when each alone is feasible."""
+    check_lift(req.space)
     names = {r: k for k, r in CAP_KEYS.items()}
     for (k, r), cap in req.caps.items():
         alone = replace(req, caps={(k, r): cap}, limits={}, objective="Ca",
