@@ -311,9 +311,30 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     binds = bool(np.any((np.abs(v[:nc]) >= 0.999 * box) & space.declared(caps)))
     ell = design.scale
     geo = (float(v[nc]) * ell, 0.0) if flat else (float(v[nc]) * ell, float(v[nc + 1]) * ell)
+    if held is not None and not flat:
+        geo = _within(geo, held, x_fixed is not None)
     return LawDesign(program=new_program, free=free, objective=spec.objective, solver_value=float(result.value),
                      lower_bound=float(lb), centre=geo, caps=caps, space=space, box_binds=binds,
                      seconds=time.perf_counter() - t0)
+
+
+def _within(centre: tuple[float, float], held: float, x_fixed: bool) -> tuple[float, float]:
+    """A translating roller's centre ``(x, d)`` (length) put within the size held, ``hypot(x, d) <= held``: the
+    conic solver meets the size's cone only to its tolerance (a centre 7e-8 of R0 outside was returned).
+    Radially, or, with the offset fixed (``x_fixed``), by ``d`` alone; unchanged when it is within."""
+    x, d = centre
+    if np.hypot(x, d) <= held:
+        return centre
+    if x_fixed:
+        d = float(np.sqrt(max(held * held - x * x, 0.0)))
+    else:
+        k = held / float(np.hypot(x, d))
+        x, d = x * k, d * k
+    while np.hypot(x, d) > held and d > 0:       # the rounding of the products
+        d = float(np.nextafter(d, 0.0))
+        if not x_fixed:
+            x = float(np.nextafter(x, 0.0))
+    return x, d
 
 
 def _check_space(space: Space) -> None:

@@ -17,8 +17,13 @@ from optimize.motion.conic import Cone, ConicProgram, solve
 from optimize.motion.space import Space
 from optimize.motion.translating import S_MARGIN, SAMPLES_PER_SPAN, TIGHTEN
 
-__all__ = ["samples", "fit", "check_lift", "cap_rows", "trust_rows", "held_objective", "held_value",
+__all__ = ["HOLD_RTOL", "samples", "fit", "check_lift", "cap_rows", "trust_rows", "held_objective", "held_value",
            "within_caps", "stepped_laws"]
+
+#: The held size is met within this (relative): the space's law nearest the original ones may need a cam
+#: larger by the rounding of their fit (a size held at the original laws' least R0 is then that law's). A
+#: designed cam larger than the size held by more is said so, and not certified (:mod:`cams.motion_design`).
+HOLD_RTOL = 1e-8
 
 
 def samples(space: Space) -> np.ndarray:
