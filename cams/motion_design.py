@@ -244,6 +244,13 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         notes.append("the laws touch the space's bound on their coefficients: the lower bound holds within it")
     certified = bool(caps_ok and held_ok and sol.verified and (getattr(sol, "certified", None) is not False)
                      and (gap is not None or not proven))
+    # every reason the certificate fails is said (the caps and the size held are said above)
+    if not sol.verified:
+        notes.append("the designed laws' cam is not verified: the independent check finds a limit exceeded")
+    if getattr(sol, "certified", None) is False:
+        notes.append("the designed laws' cam's size is not proven: the exact method's bounds disagree")
+    if proven and gap is None:
+        notes.append("no gap: the value is 0")
     original = {i: base.program.law_of(i) for i in ld.free}
     phases = []
     for i in ld.free:

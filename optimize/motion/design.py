@@ -397,6 +397,8 @@ def _solve_or_explain(prog: ConicProgram, req: Request):
     sol = solve(prog)
     if sol.feasible:
         return sol
+    if (req.hold is not None or req.centre is not None) and req.follower != "flat" and req.limits:
+        _no_law_at_size(req)
     _explain_caps(req)
     limit = "the convexity limit (limits.min_radius)" if req.follower == "flat" else "the pressure-angle limits"
     field = "limits.min_radius" if req.follower == "flat" else "optimize"
@@ -411,28 +413,87 @@ def _solve_or_explain(prog: ConicProgram, req: Request):
                           "lengthen the free phases, lower the continuity, or raise a cap")
 
 
+def _top(limits: dict[int, float]) -> float:
+    """The largest ratio that keeps every pressure-angle limit (radians) below 90 degrees."""
+    return (np.pi / 2) / max(limits.values()) * (1 - 1e-9)
+
+
+def _proven_above(base: Request, ratio: float) -> bool:
+    """Whether no law of the space meets the limits times ``ratio`` at ``base``'s cam: the relaxed program's
+    proven lower bound of the pressure rows' least slack is above 0 (weak duality; the samples a relaxation)."""
+    rel = build(replace(base, objective="feasibility", ratio=ratio), "relaxed")
+    return lower_bound(rel, solve(rel)) > 0
+
+
+def _least_ratio_proven(base: Request, lo: float, hi: float) -> float:
+    """The largest ratio in ``[lo, hi]`` at which :func:`_proven_above` holds, by bisection (``lo`` where it is
+    known to hold, else 0): no law of the space has a smaller ratio of pressure angle to limit."""
+    a, b = lo, hi
+    for _ in range(BISECTION_STEPS):
+        mid = 0.5 * (a + b)
+        if _proven_above(base, mid):
+            a = mid
+        else:
+            b = mid
+    return a
+
+
+def _down(x: float, digits: int = 6) -> str:
+    """``x`` with ``digits`` significant digits, rounded down (a lower bound printed stays one)."""
+    if x <= 0 or not np.isfinite(x):
+        return f"{x:.{digits}g}"
+    e = int(np.floor(np.log10(x))) - digits + 1
+    q = np.floor(x / 10.0**e) * 10.0**e
+    while q > x:
+        q -= 10.0**e
+    return f"{q:.{digits}g}"
+
+
+def _no_law_at_size(base: Request) -> None:
+    """Raise: no law of the space found meets the pressure-angle limits at the cam held (its size, or the chosen
+    centre), said the same way by every objective, with the least ratio of pressure angle to limit proven.
+
+    First a family infeasible on its own (the lift, a cap: :func:`_explain_caps`); then, when the relaxation
+    proves that no law meets the limits, the least ratio proven (bisection up to every limit at 90 degrees);
+    else that none was found and none is proven not to exist.
+
+    Raises
+    ------
+    InputError, InfeasibleError
+    """
+    _explain_caps(base)
+    where = ("at the chosen cam" if base.centre is not None or base.hold is None else
+             f"at the cam size held (R0 = {base.hold:.10g} mm)")
+    with_caps = " with the caps (each cap alone is feasible)" if base.caps else ""
+    top = _top(base.limits)
+    one = min(1.0, top)
+    if not _proven_above(base, one):
+        raise InfeasibleError("optimize", f"no law of the space found meets the pressure-angle limits at every cam "
+                              f"angle {where}{with_caps}, and none is proven not to (the relaxation at samples "
+                              "has laws that meet them): let the cam grow (objective 'R0'), choose a larger cam, or "
+                              "add spans")
+    if _proven_above(base, top):
+        raise InfeasibleError("optimize", f"no law of the space meets the caps {where} with any pressure angle "
+                              "below 90 degrees (each cap alone is feasible)")
+    least = _least_ratio_proven(base, one, top)
+    raise InfeasibleError("optimize", f"the pressure-angle limits admit no law of the space {where}{with_caps}: "
+                          f"the least ratio of pressure angle to limit there is at least {_down(least)} (proven); "
+                          "let the cam grow (objective 'R0') or choose a larger cam")
+
+
 def _bisect_pressure(base: Request, limits: dict[int, float]):
-    """The least ratio of pressure angle to limit: bisection on feasibility.
+    """The least ratio of pressure angle to limit, at most 1: bisection on feasibility.
 
     Upper end: the conservative program feasible (slack <= 0) at the ratio.
     Lower end: the relaxed program proven infeasible at the ratio (its proven
-    lower bound of the least slack is > 0).
+    lower bound of the least slack is > 0). When no law found meets the
+    limits themselves (ratio 1), :func:`_no_law_at_size` says so.
     """
-    top = (np.pi / 2) / max(limits.values()) * (1 - 1e-9)
-    lo, hi = 0.0, min(1.0, top)
-    feas = None
-    while True:
-        req = replace(base, objective="feasibility", ratio=hi)
-        sol = solve(build(req, "conservative"))
-        if sol.feasible and sol.value <= 0:
-            feas = sol
-            break
-        if hi >= top:
-            _explain_caps(base)
-            raise InfeasibleError("optimize", "no law of the space meets the caps at the cam size held with any "
-                                  "pressure angle below 90 degrees (each cap alone is feasible)")
-        lo, hi = hi, min(2 * hi, top)
-    up_lo = lo
+    hi = min(1.0, _top(limits))
+    feas = solve(build(replace(base, objective="feasibility", ratio=hi), "conservative"))
+    if not (feas.feasible and feas.value <= 0):
+        _no_law_at_size(base)
+    up_lo = 0.0
     for _ in range(BISECTION_STEPS):
         mid = 0.5 * (up_lo + hi)
         sol = solve(build(replace(base, objective="feasibility", ratio=mid), "conservative"))
@@ -440,14 +501,4 @@ def _bisect_pressure(base: Request, limits: dict[int, float]):
             hi, feas = mid, sol
         else:
             up_lo = mid
-    # the proven lower end: largest ratio at which the relaxation is proven infeasible
-    a, b = 0.0, hi
-    for _ in range(BISECTION_STEPS):
-        mid = 0.5 * (a + b)
-        rel = build(replace(base, objective="feasibility", ratio=mid), "relaxed")
-        if lower_bound(rel, solve(rel)) > 0:
-            a = mid
-        else:
-            b = mid
-    assert feas is not None
-    return replace(feas, value=hi), a
+    return replace(feas, value=hi), _least_ratio_proven(base, 0.0, hi)

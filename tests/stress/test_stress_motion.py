@@ -8,10 +8,14 @@ or the same one-line refusal):
   translating followers alike (it claimed an optimum, built a discontinuous law or blamed the limits);
 * a size held (an objective other than R0 at the original laws' R0): the designed cam within it, its centre
   checked on the cam itself, not within a solver's tolerance;
+* no law of the space meeting the pressure-angle limits at the size held: every objective says so in the same
+  line with the least ratio of pressure angle to limit proven (it printed a proven bound and "no lower bound
+  was proven" together), and that bound is below what the independent check measures on a law designed there.
 """
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -22,7 +26,7 @@ import pytest
 from cams.io.designfile import design_from_dict
 from cams.io.document import read_toml
 from cams.solve import solve
-from laws.errors import InputError
+from laws.errors import InfeasibleError, InputError
 
 ROOT = Path(__file__).resolve().parents[2]
 SCALES = (1e-3, 1.0, 1e3)
@@ -142,3 +146,68 @@ def test_the_size_held_is_held(k):
     assert float(np.hypot(*res.centre)) <= reference.R0 and res.R0 <= reference.R0
     assert res.verified and o["certified"] and not any("size held" in n for n in o["notes"])
     assert o["lower_bound"] <= o["value"] < 1
+
+
+# -- defect 7: no law of the space meets the limits at the size held ------------------------------------------
+
+def harmonic_design(k: float, objective: str = "pressure_angle") -> dict:
+    """A harmonic rise's cam (infinite jerk) held while the rise is redesigned under a jerk cap and C2: no law of
+    the space meets the pressure-angle limit at that size. It printed a proven lower bound of the ratio and, in
+    the same output, 'no lower bound was proven'."""
+    return scaled({
+        "name": "opt 40",
+        "follower": {"kind": "translating", "stroke": 121.56336468685289, "roller_radius": 20.97999399734686},
+        "cam": {"rotation": "ccw"},
+        "motion": [{"phase": "rise", "law": "harmonic", "angle": 104.3319},
+                   {"phase": "dwell", "angle": 56.4602},
+                   {"phase": "return", "law": "modified_trapezoid", "angle": 107.4385},
+                   {"phase": "dwell"}],
+        "limits": {"pressure_angle": 40.5998111963878},
+        "optimize": {"objective": objective, "free": [0], "continuity": 2, "degree": 3, "spans": 9,
+                     "max_Cj": 38.763269113803304},
+    }, k)
+
+
+NO_LAW = re.compile(r"^optimize: the pressure-angle limits admit no law of the space at the cam size held "
+                    r"\(R0 = ([0-9.e+-]+) mm\) with the caps \(each cap alone is feasible\): the least ratio of "
+                    r"pressure angle to limit there is at least ([0-9.]+) \(proven\); let the cam grow "
+                    r"\(objective 'R0'\) or choose a larger cam$")
+
+
+@pytest.fixture(scope="module")
+def no_law() -> dict:
+    """The refusal's held R0 and least ratio, per (objective, scale)."""
+    out = {}
+    for objective in ("pressure_angle", "Ca"):
+        for k in SCALES:
+            with pytest.raises(InfeasibleError) as e:
+                solve(design_from_dict(harmonic_design(k, objective)))
+            m = NO_LAW.match(str(e.value))
+            assert m, str(e.value)
+            out[objective, k] = (float(m.group(1)), float(m.group(2)))
+    return out
+
+
+def test_no_law_at_the_size_held_is_said_the_same_way_with_the_least_ratio(no_law):
+    """Every objective that holds the size, at every scale: one line, the same least ratio (above 1), the held R0
+    in proportion to the scale and equal to the original laws' cam."""
+    ref = solve(design_from_dict({key: v for key, v in harmonic_design(1.0).items() if key != "optimize"}))
+    for (_objective, k), (held, least) in no_law.items():
+        assert held == pytest.approx(ref.R0 * k, rel=1e-9)
+        assert least > 1 and least == pytest.approx(no_law["pressure_angle", 1.0][1], rel=1e-4)
+
+
+def test_the_least_ratio_proven_is_below_every_law_checked(no_law):
+    """An independent check of the proven bound: the cam centred where the original laws' is (its R0 the size
+    held), the rise redesigned under a limit 1.25 times larger; the pressure angle the independent check
+    measures on that cam, over the true limit, is at least the least ratio proven at the size held (a chosen
+    centre within that size can only do worse)."""
+    doc = {key: v for key, v in harmonic_design(1.0).items() if key != "optimize"}
+    ref = solve(design_from_dict(doc))
+    doc = harmonic_design(1.0)
+    limit = doc["limits"]["pressure_angle"]
+    doc["limits"]["pressure_angle"] = 1.25 * limit
+    doc["cam"]["centre"] = [float(ref.centre[0]), float(ref.centre[1])]
+    res = solve(design_from_dict(doc))
+    assert res.verified and res.optimization["certified"]
+    assert res.pressure.rise / np.radians(limit) >= no_law["pressure_angle", 1.0][1]   # radians over radians
