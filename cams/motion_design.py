@@ -237,7 +237,8 @@ def design_motion(design: CamDesign | FlatFaceDesign, solve_fixed: Callable[[Any
         got = peaks[ld.free[k]][names[r]]
         if got is None or got > cap:
             caps_ok = False
-            notes.append(f"free phase {ld.free[k]}: {names[r]} = {got} exceeds its cap {cap:.6g}")
+            shown = "infinite (the derivative below it jumps)" if got is None else f"{got:.10g}"
+            notes.append(f"free phase {ld.free[k]}: {names[r]} = {shown} exceeds its cap {cap:.10g}")
     proven = ld.lower_bound is not None     # a convex program's bound; a rocker's is a local optimum
     gap = (value - ld.lower_bound) / abs(value) if ld.lower_bound is not None and value else None
     if ld.box_binds:

@@ -20,7 +20,14 @@ import numpy as np
 
 from cams.model.design import CamDesign, FlatFaceDesign
 from cams.model.follower import Translating
-from cams.model.motiondesign import CAP_KEYS, MAX_DEGREE, MAX_ROCKER_SPANS, MAX_SPANS, MotionDesignSpec
+from cams.model.motiondesign import (
+    CAP_KEYS,
+    MAX_DEGREE,
+    MAX_ROCKER_SPANS,
+    MAX_SPANS,
+    MAX_VARIABLES,
+    MotionDesignSpec,
+)
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
 from optimize.motion.conic import ConicProgram, SolverFailure, lower_bound, solve
@@ -229,6 +236,13 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     if not free and spec.objective in ("Ca", "Cj", "jerk_squared", "snap_squared"):
         raise InputError("optimize.free", f"objective {spec.objective!r} is a property of the designed laws: name "
                          "the free phases (free = [] designs none)")
+    size = len(free) * spec.spans * (spec.degree + 1)
+    if size > MAX_VARIABLES:
+        most = MAX_VARIABLES // (len(free) * (spec.degree + 1))
+        raise InputError("optimize.spans", f"{spec.spans} spans of degree {spec.degree} for {len(free)} free "
+                         f"phase{'s' if len(free) > 1 else ''} are {size:,} variables, the programs take at most "
+                         f"{MAX_VARIABLES:,} (their memory grows with the square): at most {most} spans at this "
+                         "degree, or fewer free phases")
     caps = resolve_caps(spec, free)
     kw = {} if pieces is None else {"pieces": pieces}
     space = Space(program, free, spec.degree, spec.spans, spec.continuity, **kw)

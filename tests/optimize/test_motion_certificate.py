@@ -54,3 +54,21 @@ def test_every_reason_a_certificate_fails_is_said(change, reason):
 def test_a_certified_design_says_no_reason():
     o = design_motion(_design(), partial(solve)).optimization
     assert o["certified"] and o["notes"] == []
+
+
+def test_an_infinite_peak_over_its_cap_is_said_in_words(monkeypatch):
+    """A designed law whose Cj is infinite (its acceleration jumps) breaks its cap: the note says 'infinite',
+    never 'None' (law_peaks' JSON value for it), and gives the cap with its digits."""
+    import cams.motion_design as md
+
+    real = md.law_peaks
+
+    def peaks(law):
+        out = real(law)
+        return {**out, "Cj": None} if law.name.startswith("designed") else out
+
+    monkeypatch.setattr(md, "law_peaks", peaks)
+    o = design_motion(_design(), partial(solve)).optimization
+    assert not o["certified"]
+    assert "free phase 0: Cj = infinite (the derivative below it jumps) exceeds its cap 52.5" in o["notes"]
+    assert not any("None" in n for n in o["notes"])

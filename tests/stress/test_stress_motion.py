@@ -10,14 +10,19 @@ or the same one-line refusal):
   checked on the cam itself, not within a solver's tolerance;
 * no law of the space meeting the pressure-angle limits at the size held: every objective says so in the same
   line with the least ratio of pressure angle to limit proven (it printed a proven bound and "no lower bound
-  was proven" together), and that bound is below what the independent check measures on a law designed there.
+  was proven" together), and that bound is below what the independent check measures on a law designed there;
+* many short spans of a high degree (degree 11 on 40 spans): certified, its caps proven on the law's own
+  coefficients in rational arithmetic (its Cj came out infinite and was printed as None), and a space too large
+  for the programs refused in one line.
 """
 
 from __future__ import annotations
 
+import math
 import re
 import subprocess
 import sys
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -211,3 +216,68 @@ def test_the_least_ratio_proven_is_below_every_law_checked(no_law):
     res = solve(design_from_dict(doc))
     assert res.verified and res.optimization["certified"]
     assert res.pressure.rise / np.radians(limit) >= no_law["pressure_angle", 1.0][1]   # radians over radians
+
+
+# -- defect 6: many short spans of a high degree ----------------------------------------------------------------
+
+def _split(c: list[Fraction], s: Fraction) -> tuple[list[Fraction], list[Fraction]]:
+    """A Bernstein polynomial's coefficients on ``[0, s]`` and ``[s, 1]`` (de Casteljau's triangle, exact)."""
+    left, right, pts = [], [], c
+    while pts:
+        left.append(pts[0])
+        right.append(pts[-1])
+        pts = [(1 - s) * pts[i] + s * pts[i + 1] for i in range(len(pts) - 1)]
+    return left, right[::-1]
+
+
+def _exact_peak_bound(coefficients, r: int, pieces: int = 4) -> tuple[Fraction, Fraction, Fraction]:
+    """From a spline's own Bernstein coefficients (equal spans), in rational arithmetic and with no formula of the
+    product: an upper bound of ``max |S^(r)|`` (the largest coefficient of ``S^(r)`` on ``pieces`` equal parts
+    of each span: the convex hull holds the polynomial), and ``S^(r-1)`` at ``u = 0`` and ``u = 1``."""
+    n, p = len(coefficients), len(coefficients[0]) - 1
+    top, ends = Fraction(0), []
+    for j, row in enumerate(coefficients):
+        c = [Fraction(x) for x in row]
+        for _ in range(r - 1):
+            c = [c[i + 1] - c[i] for i in range(len(c) - 1)]
+        if j in (0, n - 1):
+            ends += [c[0] * math.perm(p, r - 1) * n ** (r - 1)] if j == 0 else []
+            ends += [c[-1] * math.perm(p, r - 1) * n ** (r - 1)] if j == n - 1 else []
+        rest = [(c[i + 1] - c[i]) * math.perm(p, r) * n**r for i in range(len(c) - 1)]
+        for k in range(pieces - 1):
+            piece, rest = _split(rest, Fraction(1, pieces - k))
+            top = max(top, max(abs(x) for x in piece))
+        top = max(top, max(abs(x) for x in rest))
+    return top, ends[0], ends[1]
+
+
+def fine_design(k: float) -> dict:
+    """Degree 11 on 40 spans (within the documented range): its designed law's Cj came out infinite, 'Cj = None
+    exceeds its cap 52.5', exit 1 (the power form's rounding at the law's end)."""
+    return example("translating_force", {"free": [0], "continuity": 3, "degree": 11, "spans": 40,
+                                         "max_Ca": "poly4567", "max_Cj": "poly4567"}, k)
+
+
+@pytest.mark.parametrize("k", SCALES)
+def test_many_short_spans_of_a_high_degree_are_certified(k):
+    res = solve(design_from_dict(fine_design(k)))
+    o = res.optimization
+    assert res.verified and o["certified"] and o["notes"] == []
+    (phase,) = o["phases"]
+    assert phase["Cj"] is not None and phase["Cj"] <= 52.5
+    law = res.design.program.law_of(0)
+    jerk, a0, a1 = _exact_peak_bound(law.coefficients, 3)
+    assert jerk <= Fraction(52.5)                      # the cap, proven on the law's own coefficients
+    assert abs(a0) <= Fraction(1, 10**9) and abs(a1) <= Fraction(1, 10**9)   # no soft impact at the dwells
+    acc, _, _ = _exact_peak_bound(law.coefficients, 2)
+    assert acc <= Fraction(7.513188404399298)          # poly4567's Ca, the cap
+    assert o["lower_bound"] <= res.R0
+
+
+def test_a_space_too_large_for_the_programs_is_refused_in_one_line():
+    with pytest.raises(InputError) as e:
+        solve(design_from_dict(example("translating_force", {"free": [0, 2], "degree": 11, "spans": 100}, 1.0)))
+    assert e.value.field == "optimize.spans"
+    assert str(e.value) == ("optimize.spans: 100 spans of degree 11 for 2 free phases are 2,400 variables, the "
+                            "programs take at most 1,600 (their memory grows with the square): at most 66 spans "
+                            "at this degree, or fewer free phases")
