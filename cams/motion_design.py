@@ -191,9 +191,14 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
             new = replace(new, follower=f, centre=(x, -d), base_radius=None)
     sol = size_fixed(new)
     notes_first: list[str] = []
-    if not sizes and hold is not None and spec.objective != "pressure_angle" and sol.R0 > hold * (1 + 1e-9):
-        notes_first.append(f"the designed laws' least R0, {sol.R0:.6g} mm, exceeds the size held, {hold:.6g} mm "
-                           "(the program saw the fixed phases at samples)")
+    held_ok = True
+    if not sizes and hold is not None and sol.R0 > hold * (1 + 4 * np.finfo(float).eps):
+        from optimize.motion.lawrows import HOLD_RTOL
+
+        held_ok = sol.R0 <= hold * (1 + HOLD_RTOL)
+        notes_first.append(f"the designed laws' cam, R0 = {sol.R0:.10g} mm, exceeds the size held, {hold:.10g} mm, "
+                           f"by {sol.R0 / hold - 1:.2g} (relative; "
+                           + ("within the tolerance" if held_ok else "more than the tolerance") + f" {HOLD_RTOL:g})")
     floor = None
     if spec.objective == "R0" and ld.free and not face.profile_passes(sol):
         better, better_floor = _passing(new, sol, size_fixed, face)
@@ -237,13 +242,21 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
         got = peaks[ld.free[k]][names[r]]
         if got is None or got > cap:
             caps_ok = False
-            notes.append(f"free phase {ld.free[k]}: {names[r]} = {got} exceeds its cap {cap:.6g}")
+            shown = "infinite (the derivative below it jumps)" if got is None else f"{got:.10g}"
+            notes.append(f"free phase {ld.free[k]}: {names[r]} = {shown} exceeds its cap {cap:.10g}")
     proven = ld.lower_bound is not None     # a convex program's bound; a rocker's is a local optimum
     gap = (value - ld.lower_bound) / abs(value) if ld.lower_bound is not None and value else None
     if ld.box_binds:
         notes.append("the laws touch the space's bound on their coefficients: the lower bound holds within it")
-    certified = bool(caps_ok and sol.verified and (getattr(sol, "certified", None) is not False)
+    certified = bool(caps_ok and held_ok and sol.verified and (getattr(sol, "certified", None) is not False)
                      and (gap is not None or not proven))
+    # every reason the certificate fails is said (the caps and the size held are said above)
+    if not sol.verified:
+        notes.append("the designed laws' cam is not verified: the independent check finds a limit exceeded")
+    if getattr(sol, "certified", None) is False:
+        notes.append("the designed laws' cam's size is not proven: the exact method's bounds disagree")
+    if proven and gap is None:
+        notes.append("no gap: the value is 0")
     original = {i: base.program.law_of(i) for i in ld.free}
     phases = []
     for i in ld.free:

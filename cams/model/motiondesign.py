@@ -28,7 +28,7 @@ from laws.errors import InputError, check_option, show_value
 
 __all__ = ["MOTION_OBJECTIVES", "CAP_KEYS", "MotionDesignSpec", "MotionCertificate", "DEFAULT_DEGREE", "DEFAULT_SPANS",
            "DEFAULT_CONTINUITY", "MAX_DEGREE", "MAX_SPANS",
-           "MAX_ROCKER_SPANS"]
+           "MAX_ROCKER_SPANS", "MAX_VARIABLES"]
 
 #: What ``[optimize] objective`` may ask for.
 MOTION_OBJECTIVES = ("R0", "L", "pressure_angle", "Ca", "Cj", "jerk_squared", "snap_squared")
@@ -42,6 +42,10 @@ MAX_DEGREE = 11
 #: The most knot spans a phase: the programs' matrices grow with their square (80 spans take about 1.5 s, 100
 #: about 3 s after the imports on this project's machine; 400 took minutes).
 MAX_SPANS = 100
+#: The free phases' variables at most, free phases x spans x (degree + 1): the programs' matrices are dense, their
+#: memory grows with its square (two free phases of degree 7 on 100 spans, 1,600 variables: 1.2 GB and about
+#: 20 s; of degree 11 on 100 spans, 2,400: 2.6 GB).
+MAX_VARIABLES = 1600
 #: Knot spans per free phase at most for a rocker (sequential convex programming: dozens of programs whose
 #: size grows with the spans; 40 spans take about 15 s a free phase).
 MAX_ROCKER_SPANS = 40
