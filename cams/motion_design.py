@@ -248,12 +248,12 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
     gap = (value - ld.lower_bound) / abs(value) if ld.lower_bound is not None and value else None
     if ld.box_binds:
         notes.append("the laws touch the space's bound on their coefficients: the lower bound holds within it")
-    certified = bool(caps_ok and held_ok and sol.verified and (getattr(sol, "certified", None) is not False)
+    certified = bool(caps_ok and held_ok and sol.verified and (sol.certified is not False)
                      and (gap is not None or not proven))
     # every reason the certificate fails is said (the caps and the size held are said above)
     if not sol.verified:
         notes.append("the designed laws' cam is not verified: the independent check finds a limit exceeded")
-    if getattr(sol, "certified", None) is False:
+    if sol.certified is False:
         notes.append("the designed laws' cam's size is not proven: the exact method's bounds disagree")
     if proven and gap is None:
         notes.append("no gap: the value is 0")
