@@ -16,6 +16,11 @@ with the neighbouring phases, its normalized peaks (``Cv = max |S'|``,
   of the integral of ``S'''(u)**2`` or ``S''''(u)**2`` over ``u`` in [0, 1]
   (dimensionless; the cam's size held).
 
+Translating followers: a second stage then returns, among the laws whose
+objective is within ``(1 + smoothing_slack)`` times the value found, the
+smoothest (the least integral of the squared derivative after the last
+continuous one: ``S''''`` for C3; :mod:`optimize.motion.smooth`).
+
 Each field is checked once, here, with the message the file's key gets.
 """
 
@@ -27,7 +32,7 @@ from laws.errors import InputError, check_option, show_value
 
 __all__ = ["MOTION_OBJECTIVES", "CAP_KEYS", "MotionDesignSpec", "DEFAULT_DEGREE", "DEFAULT_SPANS",
            "DEFAULT_CONTINUITY", "MAX_DEGREE", "MAX_SPANS",
-           "MAX_ROCKER_SPANS"]
+           "MAX_ROCKER_SPANS", "MAX_SMOOTHING_SLACK"]
 
 #: What ``[optimize] objective`` may ask for.
 MOTION_OBJECTIVES = ("R0", "L", "pressure_angle", "Ca", "Cj", "jerk_squared", "snap_squared")
@@ -44,6 +49,8 @@ MAX_SPANS = 100
 #: Knot spans per free phase at most for a rocker (sequential convex programming: dozens of programs whose
 #: size grows with the spans; 40 spans take about 15 s a free phase).
 MAX_ROCKER_SPANS = 40
+#: ``smoothing_slack`` is below this: the share of the objective given up for smoothness (1 would double it).
+MAX_SMOOTHING_SLACK = 1.0
 #: The largest cap: a normalized peak beyond it is no cap a cam could meet with a roller (the library's laws
 #: have peaks below 100), and would only spoil the programs' scaling.
 MAX_CAP = 1e6
@@ -74,6 +81,11 @@ class MotionDesignSpec:
         Polynomial degree of each span, ``continuity < degree <= MAX_DEGREE``.
     spans : int
         Knot spans per free phase, 1 to :data:`MAX_SPANS`.
+    smoothing_slack : float
+        The share of the objective given up for smoothness, in [0, 1): the
+        second stage returns the smoothest law whose objective is at most
+        ``(1 + smoothing_slack)`` times the first stage's value (translating
+        followers; :mod:`optimize.motion.smooth`).
     """
 
     free: tuple[str | int, ...] = ("rise",)
@@ -84,6 +96,7 @@ class MotionDesignSpec:
     continuity: int = DEFAULT_CONTINUITY
     degree: int = DEFAULT_DEGREE
     spans: int = DEFAULT_SPANS
+    smoothing_slack: float = 0.0
 
     def __post_init__(self) -> None:
         if not isinstance(self.free, tuple):
@@ -109,6 +122,10 @@ class MotionDesignSpec:
             raise InputError("optimize.degree", f"must be at most {MAX_DEGREE}, got {self.degree}")
         if not 1 <= self.spans <= MAX_SPANS:
             raise InputError("optimize.spans", f"must be from 1 to {MAX_SPANS}, got {self.spans}")
+        slack = self.smoothing_slack
+        if isinstance(slack, bool) or not isinstance(slack, (int, float)) or not 0 <= slack < MAX_SMOOTHING_SLACK:
+            raise InputError("optimize.smoothing_slack", f"must be a number in [0, {MAX_SMOOTHING_SLACK:g}) (the "
+                             f"share of the objective given up for smoothness), got {show_value(slack)}")
         from laws.registry import LAWS
 
         for key in CAP_KEYS:
