@@ -60,22 +60,22 @@ def integral_of_square(law: Law, r: int, breaks: np.ndarray, degree: int) -> flo
     ``r`` up to 3 uses the law's own derivatives; ``r = 4`` differentiates
     ``S'''`` by the quadrature's exact rule for polynomials: the pieces'
     ``S''''`` as the derivative of their ``S'''`` fitted at ``degree - 2``
-    Chebyshev points (exact for a polynomial of degree ``degree - 3``).
+    Chebyshev points (exact for a polynomial of degree ``degree - 3``). The
+    law is evaluated once at every span's points.
     """
     x, w = np.polynomial.legendre.leggauss(degree + 2)
-    total = 0.0
-    for a, b in pairwise(breaks):
-        u = a + (b - a) * (x + 1) / 2
-        if r <= 3:
-            vals = law.evaluate(u)[r]
-        else:
-            q = max(degree - 3, 0)
-            t = a + (b - a) * (1 - np.cos(np.pi * (np.arange(q + 1) + 0.5) / (q + 1))) / 2
-            j3 = law.evaluate(t)[3]
-            coef = np.polynomial.polynomial.polyfit(t - a, j3, q)
-            vals = np.polynomial.polynomial.polyval(u - a, np.polynomial.polynomial.polyder(coef))
-        total += float((b - a) / 2 * np.sum(w * vals**2))
-    return total
+    a, b = np.asarray(breaks[:-1], float), np.asarray(breaks[1:], float)
+    u = a[:, None] + (b - a)[:, None] * (x[None, :] + 1) / 2
+    if r <= 3:
+        vals = law.evaluate(u.ravel())[r].reshape(u.shape)
+    else:
+        q = max(degree - 3, 0)
+        cheb = (1 - np.cos(np.pi * (np.arange(q + 1) + 0.5) / (q + 1))) / 2
+        t = a[:, None] + (b - a)[:, None] * cheb[None, :]
+        j3 = law.evaluate(t.ravel())[3].reshape(t.shape)
+        P = np.polynomial.polynomial
+        vals = np.array([P.polyval(u[k] - a[k], P.polyder(P.polyfit(t[k] - a[k], j3[k], q))) for k in range(a.size)])
+    return float(np.sum((b - a) / 2 * (vals**2 @ w)))
 
 
 #: Points at which :func:`jerk_variation` samples S''' (the knots added).
@@ -84,16 +84,31 @@ VARIATION_SAMPLES = 100_001
 
 def jerk_variation(law: Law, breaks: np.ndarray | None = None) -> float | None:
     """The total variation of ``S'''`` over ``u`` in [0, 1] (its jumps inside the phase included; the ends'
-    steps to a neighbouring phase not), sampled at :data:`VARIATION_SAMPLES` points and ``breaks``: a lower bound
-    within about ``1e-9`` relative for the laws here (their ``S''''`` is bounded). None where the jerk is
-    infinite (``Cj`` infinite: an acceleration jump, or ``S''`` not 0 where the law meets a dwell)."""
+    steps to a neighbouring phase not). A spline's exactly: each span's ``S'''`` at its ends and at the real
+    parts of its derivative's roots inside (points added never raise a sampled variation above the true one).
+    Another law's sampled at :data:`VARIATION_SAMPLES` points and ``breaks``: a lower bound, within about
+    ``1e-9`` relative for the library's laws. None where the jerk is infinite (``Cj`` infinite: an
+    acceleration jump, or ``S''`` not 0 where the law meets a dwell)."""
     if law_peaks(law)["Cj"] is None:
         return None
+    from laws.spline import SplineLaw
+
+    if isinstance(law, SplineLaw):
+        from laws.bernstein import to_power
+
+        m = to_power(law.degree)
+        total, last = 0.0, None
+        for (a, b), row in zip(pairwise(law.breaks), law.coefficients, strict=True):
+            jerk = np.polynomial.Polynomial(m @ np.asarray(row)).deriv(3) / (b - a) ** 3
+            roots = np.real(jerk.deriv().roots()) if jerk.degree() > 1 else np.zeros(0)
+            vals = jerk(np.concatenate([[0.0], np.sort(roots[(roots > 0.0) & (roots < 1.0)]), [1.0]]))
+            total += float(np.sum(np.abs(np.diff(vals)))) + (0.0 if last is None else abs(float(vals[0]) - last))
+            last = float(vals[-1])
+        return total
     u = np.linspace(0.0, 1.0, VARIATION_SAMPLES)
     if breaks is not None:
         u = np.unique(np.concatenate([u, np.asarray(breaks, float)]))
     return float(np.sum(np.abs(np.diff(law.evaluate(u)[3]))))
-
 
 def _objective_value(obj: str, sol, laws: dict[int, Law], peaks: dict[int, dict], breaks: np.ndarray,
                      degree: int) -> float:
@@ -185,7 +200,7 @@ def _passing(new, sol, solve_fixed: Callable[[Any], Any], passes: Callable[..., 
 
 
 #: Bisection steps of :func:`_checked_stages` on the way from the first stage's laws to the second's.
-STEP_BISECTIONS = 12
+STEP_BISECTIONS = 10
 
 
 def _blend(first: Program, second: Program, free: tuple[int, ...], step: float) -> Program:
@@ -209,8 +224,9 @@ def _checked_stages(ld, spec, placed: Callable, solve_fixed: Callable, new, sol)
     The second stage's laws are kept when their checked value is within ``(1 + smoothing_slack)`` of the
     first's (to ``ACCEPT_RTOL``) and they meet the caps and the check where the first's do. Otherwise (the
     programs' conservatism differs between the two laws; the solver's tolerance) the laws are taken on the
-    segment between the two, as far toward the second as keeps that true (bisection, :data:`STEP_BISECTIONS`
-    steps; the objectives are convex along it, a pressure-angle ratio quasi-convex), and a note says so.
+    segment between the two, as far toward the second as keeps that true, and a note says so: where the chord of
+    the values crosses the limit (enough for an objective convex along the segment: R0, a peak, an integral),
+    else by bisection (:data:`STEP_BISECTIONS` steps; a pressure-angle ratio is quasi-convex along it).
     ``smoothing["step"]`` is that share of the way (1: the second stage's laws).
     """
     from optimize.motion.smooth import ACCEPT_RTOL, smoothing_derivative
@@ -239,13 +255,25 @@ def _checked_stages(ld, spec, placed: Callable, solve_fixed: Callable, new, sol)
         return e is not None and e[4] <= limit and (e[5] or not ok1)
 
     chosen, step, notes = evaluate(ld.program, ld.centre, sol), 1.0, []
+
+    def at(t: float):
+        centre = tuple((1 - t) * a + t * b for a, b in zip(ld.first_centre, ld.centre, strict=True))
+        return evaluate(_blend(ld.first, ld.program, ld.free, t), centre)
+
     if not good(chosen):
         e2 = chosen
         lo, hi, chosen = 0.0, 1.0, first
-        for _ in range(STEP_BISECTIONS):
+        # first where the chord crosses the limit: enough for an objective convex along the segment
+        if e2 is not None and e2[4] > limit > v1:
+            t = (limit - v1) / (e2[4] - v1)
+            e = at(t)
+            if good(e):
+                lo, hi, chosen = t, t, e
+            else:
+                hi = t
+        for _ in range(STEP_BISECTIONS if hi > lo else 0):
             mid = 0.5 * (lo + hi)
-            centre = tuple((1 - mid) * a + mid * b for a, b in zip(ld.first_centre, ld.centre, strict=True))
-            e = evaluate(_blend(ld.first, ld.program, ld.free, mid), centre)
+            e = at(mid)
             if good(e):
                 lo, chosen = mid, e
             else:

@@ -119,7 +119,9 @@ def _smoothing_text(sm: dict, o: dict) -> str:
     tv2 = "-" if sm["jerk_variation_after"] is None else f"{sm['jerk_variation_after']:.1f}"
     orig = [p["original"].get("jerk_variation") for p in o["phases"]]
     was = "" if any(t is None for t in orig) else f" (the original laws': {sum(orig):.1f})"
-    kept = "" if sm["smoothed"] else "the second stage's laws not kept (see the note); "
+    step = sm.get("step", 1.0)
+    kept = ("" if step == 1.0 else "the second stage's laws not kept (see the note); " if step == 0.0
+            else f"the laws {step:.4g} of the way to the second stage's (see the note); ")
     return (f"{kept}{o['objective']} {value}; integral of {d}^2 {sm['integral_before']:.4g} -> "
             f"{sm['integral_after']:.4g}, of S'''^2 {sm['jerk_squared_before']:.6g} -> {sm['jerk_squared_after']:.6g}; "
             f"total variation of S''' {tv} -> {tv2}{was}")

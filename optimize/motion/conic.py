@@ -98,8 +98,8 @@ class Solution:
         return self.status in ("optimal", "optimal_inaccurate")
 
 
-def solve(prog: ConicProgram, settings: dict | None = None) -> Solution:
-    """Solve ``prog`` with Clarabel through cvxpy (``settings``: Clarabel's, added to each of :data:`RETRIES`).
+def solve(prog: ConicProgram) -> Solution:
+    """Solve ``prog`` with Clarabel through cvxpy.
 
     Returns a :class:`Solution` whose status is ``"infeasible"`` when the
     solver proves the program infeasible (no point, no multipliers), else
@@ -133,13 +133,13 @@ def solve(prog: ConicProgram, settings: dict | None = None) -> Solution:
         idx = np.flatnonzero(ranged)
         cons += [v[idx] >= prog.lo[ranged], v[idx] <= prog.hi[ranged]]
     problem = cp.Problem(cp.Minimize(prog.cost @ v), cons)
-    for retry in RETRIES:
+    for settings in RETRIES:
         try:
             with warnings.catch_warnings():
                 # "optimal_inaccurate" is kept in the status; no answer rests on the solver's accuracy (the bound
                 # is proven from its multipliers, the laws are checked on themselves): its warning is not the user's
                 warnings.simplefilter("ignore", UserWarning)
-                problem.solve(solver="CLARABEL", **{**retry, **(settings or {})})
+                problem.solve(solver="CLARABEL", **settings)
             break
         except cp.error.SolverError:
             continue

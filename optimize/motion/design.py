@@ -31,7 +31,7 @@ from cams.model.motiondesign import CAP_KEYS, MAX_ROCKER_SPANS, MotionDesignSpec
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
 from optimize.motion.conic import ConicProgram, SolverFailure, lower_bound, solve
-from optimize.motion.smooth import SETTINGS, allowance, pulled_back, smoothing_derivative, smoothing_program
+from optimize.motion.smooth import allowance, pulled_back, smoothing_derivative, smoothing_program
 from optimize.motion.space import Space
 from optimize.motion.translating import Request, build, conservative_ratio
 
@@ -361,7 +361,7 @@ def _second_stage(stage: ConicProgram, space: Space, bound: float,
         return None, (f"the objective is the smoothing integral itself (of the derivative {r}): its optimum is the "
                       "smoothest law")
     try:
-        sol = solve(smoothing_program(stage, space, bound), SETTINGS)
+        sol = solve(smoothing_program(stage, space, bound))
     except SolverFailure as e:
         return None, f"the second stage's solver failed ({e.status}): the first stage's laws are returned"
     if not sol.feasible:

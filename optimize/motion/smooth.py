@@ -36,7 +36,7 @@ import numpy as np
 from optimize.motion.conic import Cone, ConicProgram
 from optimize.motion.space import Space
 
-__all__ = ["SMOOTH_RTOL", "ACCEPT_RTOL", "REST_TO_REST", "SETTINGS", "smoothing_derivative", "integral_factor",
+__all__ = ["SMOOTH_RTOL", "ACCEPT_RTOL", "REST_TO_REST", "smoothing_derivative", "integral_factor",
            "allowance", "smoothing_program", "pulled_back"]
 
 #: The room beyond the slack in the second stage's bound on the objective, relative to the value found.
@@ -67,9 +67,6 @@ def allowance(value: float, slack: float, root: bool = False) -> float:
     return float(value + abs(value) * (share - 1.0))
 
 
-#: Clarabel's tolerances in the second stage (its defaults are 1e-8): the laws ride the caps the first stage's
-#: ride, with the caps' tightening (:data:`optimize.motion.translating.TIGHTEN`, 1e-7) as the only margin.
-SETTINGS = {"tol_feas": 1e-10, "tol_gap_abs": 1e-10, "tol_gap_rel": 1e-10}
 #: The least integral of ``S^(c+1)**2`` over the rest-to-rest laws of continuity ``c`` (dwells on both sides):
 #: the polynomials of degree ``2c + 1``, ``3u^2 - 2u^3`` (12), the 3-4-5 law (720), the 4-5-6-7 law (100,800).
 REST_TO_REST = {1: 12.0, 2: 720.0, 3: 100800.0}
