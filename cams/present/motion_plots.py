@@ -50,7 +50,7 @@ def _laws_panel(fig, grid, given, designed, free, first=None) -> None:
                     label=f"original (phase {old_names})" if i == free[0] else None)
             if first and i in first:
                 ax.plot(u, first[i].evaluate(u)[k], color=_FIRST, lw=0.9, ls="--",
-                        label="first stage (a vertex of the optimum)" if i == free[0] else None)
+                        label="first stage (the optimum found)" if i == free[0] else None)
             ax.plot(u, designed.program.law_of(i).evaluate(u)[k], color=_NEW, lw=1.1,
                     label=f"designed (phase {', '.join(map(str, free))})" if i == free[0] else None)
         ax.set_ylabel(names[k], fontsize=8)
