@@ -141,21 +141,22 @@ def _cli(*args):
                           cwd=ROOT)
 
 
-@pytest.mark.parametrize("slack", [0.0, 0.01])
-def test_the_smoothed_law_checked_from_the_saved_design(tmp_path, slack):
+@pytest.mark.parametrize(("slack", "continuity"), [(0.0, 3), (0.01, 3), (0.01, 2)])
+def test_the_smoothed_law_checked_from_the_saved_design(tmp_path, slack, continuity):
     """The designed rise (10 spans) with a slack: the saved design's cam, sized again, is within (1 + slack) of
-    the first stage's law's cam, sized again from its law table; the integral the second stage minimizes is
-    no larger; every number the report gives is the laws' own."""
+    the first stage's law's cam, sized again from its law table; the integral the second stage minimizes (of
+    S'''' for C3, of the jerk S''' for C2) is no larger; every number the report gives is the laws' own."""
     f = tmp_path / "designed.toml"
     text = re.sub(r"smoothing_slack = [^\n]*", f"smoothing_slack = {slack}",
-                  DESIGNED.read_text(encoding="utf-8").replace("spans = 20", "spans = 10"))
+                  DESIGNED.read_text(encoding="utf-8").replace("spans = 20", "spans = 10")
+                  .replace("continuity = 3", f"continuity = {continuity}"))
     f.write_text(text, encoding="utf-8")
     out = tmp_path / "saved.toml"
     r = _cli("solve", f, "--json", "--save-design", out)
     assert r.returncode == 0, r.stderr
     o = json.loads(r.stdout)["optimize"]
     sm = o["smoothing"]
-    assert sm["smoothed"] and sm["slack"] == slack and sm["derivative"] == 4
+    assert sm["smoothed"] and sm["slack"] == slack and sm["derivative"] == continuity + 1
 
     after = solve(load_design(out))
     first_doc = read_toml(f)
@@ -174,12 +175,12 @@ def test_the_smoothed_law_checked_from_the_saved_design(tmp_path, slack):
 
     saved = _table(load_design(out).program.law_of(0))
     for key, table in (("after", saved), ("before", first_table)):
-        assert sm[f"integral_{key}"] == pytest.approx(_integral_of_square(table, 4), rel=1e-8)
+        assert sm[f"integral_{key}"] == pytest.approx(_integral_of_square(table, continuity + 1), rel=1e-8)
         assert sm[f"jerk_squared_{key}"] == pytest.approx(_integral_of_square(table, 3), rel=1e-8)
         assert sm[f"jerk_variation_{key}"] == pytest.approx(_total_variation_of_jerk(table), rel=1e-6)
     assert sm["integral_after"] <= sm["integral_before"] * (1 + 1e-9)
     if slack > 0:       # what a share of 0.01 buys on this design
-        assert sm["integral_after"] < 0.8 * sm["integral_before"]
+        assert sm["integral_after"] < 0.95 * sm["integral_before"]
         assert sm["jerk_variation_after"] < sm["jerk_variation_before"]
 
     r = _cli("solve", f)
