@@ -43,8 +43,9 @@ DEFAULT_DEGREE = 7
 DEFAULT_SPANS = 20
 DEFAULT_CONTINUITY = 3
 MAX_DEGREE = 11
-#: The most knot spans a phase: the programs' matrices grow with their square (80 spans take about 1.5 s, 100
-#: about 3 s after the imports on this project's machine; 400 took minutes).
+#: The most knot spans a phase: the programs' matrices grow with their square (80 spans took about 1.5 s, 100
+#: about 3 s after the imports on this project's machine before the smoothing stage about doubled them; 400 took
+#: minutes).
 MAX_SPANS = 100
 #: Knot spans per free phase at most for a rocker (sequential convex programming: dozens of programs whose
 #: size grows with the spans; 40 spans take about 15 s a free phase).
