@@ -303,3 +303,32 @@ def test_a_rockers_slack_is_refused():
     with pytest.raises(InputError) as e:
         solve(design_from_dict(d))
     assert e.value.field == "optimize.smoothing_slack"
+
+
+def test_conservative_ratio_is_where_the_point_meets_the_rows():
+    """The least ratio at which a point meets the conservative program's pressure rows: built at that ratio
+    (times 1 + 1e-9) the rows hold at the point, at 1 - 1e-6 of it one does not."""
+    from optimize.motion.conic import solve as conic_solve
+    from optimize.motion.design import free_phases, resolve_caps
+    from optimize.motion.translating import Request, build, conservative_ratio
+
+    design = load_design(FORCE)
+    spec = MotionDesignSpec(max_Ca=("poly4567",), max_Cj=("poly4567",), spans=4)
+    free = free_phases(spec, design.program)
+    space = Space(design.program, free, spec.degree, spec.spans, spec.continuity)
+    req = Request(space=space, follower="roller", cam_sense=design.cam_sense, limits=dict(design.constrained_phases()),
+                  caps=resolve_caps(spec, free), objective="feasibility", bound=1e4, ratio=0.9, length=design.scale,
+                  hold=20.0)
+    sol = conic_solve(build(req, "conservative"))
+    assert sol.feasible and sol.value <= 0
+    v = sol.v.copy()
+    v[-1] = 0.0                                     # the rows' slack variable: the rows as they are
+    rho = conservative_ratio(req, v)
+    assert 0 < rho <= 0.9 * (1 + 1e-9)
+
+    def worst(ratio: float) -> float:
+        prog = build(replace(req, ratio=ratio), "conservative")
+        pressure = prog.G[:, -1] != 0               # the rows that carry the slack: the pressure rows
+        return float(np.max(prog.G[pressure] @ v - prog.h[pressure]))
+
+    assert worst(rho * (1 + 1e-9)) <= 1e-12 and worst(rho * (1 - 1e-6)) > 0
