@@ -9,6 +9,13 @@ not convex: sequential convex programming (:mod:`optimize.motion.rocker`, a
 flat face's :mod:`optimize.motion.flat_rocker`) gives a local optimum and its
 measure, no bound. The caller (:mod:`cams.motion_design`) then sizes and checks
 the cam of the laws found, which gives the upper bound.
+
+A translating follower's laws then go through a second stage
+(:mod:`optimize.motion.smooth`): the same conservative program with the
+objective held within ``(1 + smoothing_slack)`` of the value found, minimizing
+the integral of the squared derivative after the last continuous one; the
+first stage's laws are kept beside them (:attr:`LawDesign.first`) for the
+caller to check and compare. A rocker's laws are its iteration's, unsmoothed.
 """
 
 from __future__ import annotations
@@ -32,8 +39,9 @@ from laws.errors import InfeasibleError, InputError
 from laws.program import Program
 from optimize.motion.conic import ConicProgram, SolverFailure, lower_bound, solve
 from optimize.motion.lawrows import check_lift
+from optimize.motion.smooth import allowance, pulled_back, smoothing_derivative, smoothing_program
 from optimize.motion.space import CONSISTENT, Space
-from optimize.motion.translating import Request, build
+from optimize.motion.translating import Request, build, conservative_ratio
 
 __all__ = ["LawDesign", "design_laws", "free_phases", "resolve_caps", "BISECTION_STEPS"]
 
@@ -73,6 +81,13 @@ class LawDesign:
         Rocker: the sequential convex programming's iterations.
     history : tuple of float
         Rocker: the exact value after each accepted step, the start first.
+    first : Program or None
+        The first stage's laws when the second stage (:mod:`optimize.motion.smooth`) replaced them by the
+        smoothest within ``smoothing_slack``; None when no second stage ran (see ``smoothing_note``).
+    first_centre : (float, float) or None
+        The first stage's centre, as ``centre``.
+    smoothing_note : str or None
+        Why no second stage ran, or why its laws were not kept (None when they were, or for no free phase).
     """
 
     program: Program
@@ -88,6 +103,9 @@ class LawDesign:
     local_measure: float | None = None
     iterations: int | None = None
     history: tuple[float, ...] = ()
+    first: Program | None = None
+    first_centre: tuple[float, float] | None = None
+    smoothing_note: str | None = None
 
 
 def free_phases(spec: MotionDesignSpec, program: Program) -> tuple[int, ...]:
@@ -149,6 +167,9 @@ def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -
     flat = isinstance(design, FlatFaceDesign)
     f = design.follower
     if f.kind == "rocker":
+        if spec.smoothing_slack > 0:
+            raise InputError("optimize.smoothing_slack", "applies to translating followers (one convex program): a "
+                             "rocker's laws are its sequential iteration's local optimum, not smoothed; remove it")
         if spec.spans > MAX_ROCKER_SPANS:
             raise InputError("optimize.spans", f"a rocker's motion design (sequential convex programming) takes "
                              f"from 1 to {MAX_ROCKER_SPANS} spans, got {spec.spans}: its time grows with their "
@@ -305,31 +326,66 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     base = Request(space=space, follower="flat" if flat else "roller", cam_sense=design.cam_sense, limits=limits,
                    caps=caps, objective=spec.objective, bound=bound, centre=centre, x_fixed=x_fixed, hold=held,
                    min_radius=min_radius, length=design.scale)
+    squared = spec.objective in ("jerk_squared", "snap_squared")
     if spec.objective == "pressure_angle":
         result, lb = _bisect_pressure(base, limits)
+        # the second stage: the feasibility program at the ratio found times (1 + slack), its slack at most 0; the
+        # ratio found is the first stage's point's own in the conservative rows (the bisection's end is above it)
+        found = min(conservative_ratio(base, result.v), float(result.value))
+        ratio = min(allowance(found, spec.smoothing_slack), _top(limits))
+        stage, bound = build(replace(base, objective="feasibility", ratio=ratio), "conservative"), 0.0
     else:
-        result = _solve_or_explain(build(base, "conservative"), base)
+        stage = build(base, "conservative")
+        result = _solve_or_explain(stage, base)
+        bound = allowance(float(result.value), spec.smoothing_slack, root=squared)
         relaxed = build(base, "relaxed")
         lb = lower_bound(relaxed, solve(relaxed))
         value = result.value
         if spec.objective == "R0":                # the programs' lengths are in units of the design's scale
             lb, value = lb * design.scale, value * design.scale
-        if spec.objective in ("jerk_squared", "snap_squared"):
+        if squared:
             lb = max(lb, 0.0) ** 2
             value = value**2
         result = replace(result, value=value)
-    v = space.project(result.v)
     nc = space.size
+    ell = design.scale
+
+    def geometry(w: np.ndarray) -> tuple[float, float]:
+        geo = (float(w[nc]) * ell, 0.0) if flat else (float(w[nc]) * ell, float(w[nc + 1]) * ell)
+        if held is not None and not flat:
+            geo = _within(geo, held, x_fixed is not None)
+        return geo
+
+    v = space.project(result.v)
+    first, first_centre, note = None, None, None
+    if free:
+        smoothed, note = _second_stage(stage, space, bound, spec.objective)
+        if smoothed is not None:
+            first, first_centre = space.programme(v, name), geometry(v)
+            v = pulled_back(space, caps, v, space.project(smoothed))
     new_program = space.programme(v, name)
     box = space.bounds(caps)
     binds = bool(np.any((np.abs(v[:nc]) >= 0.999 * box) & space.declared(caps)))
-    ell = design.scale
-    geo = (float(v[nc]) * ell, 0.0) if flat else (float(v[nc]) * ell, float(v[nc + 1]) * ell)
-    if held is not None and not flat:
-        geo = _within(geo, held, x_fixed is not None)
     return LawDesign(program=new_program, free=free, objective=spec.objective, solver_value=float(result.value),
-                     lower_bound=float(lb), centre=geo, caps=caps, space=space, box_binds=binds,
-                     seconds=time.perf_counter() - t0)
+                     lower_bound=float(lb), centre=geometry(v), caps=caps, space=space, box_binds=binds,
+                     seconds=time.perf_counter() - t0, first=first, first_centre=first_centre, smoothing_note=note)
+
+
+def _second_stage(stage: ConicProgram, space: Space, bound: float,
+                  objective: str) -> tuple[np.ndarray | None, str | None]:
+    """The second stage's point (:mod:`optimize.motion.smooth`) on the first stage's program ``stage`` with
+    its objective at most ``bound``: ``(v, None)``, or ``(None, why not)``."""
+    r = smoothing_derivative(space)
+    if {"jerk_squared": 3, "snap_squared": 4}.get(objective) == r:
+        return None, (f"the objective is the smoothing integral itself (of the derivative {r}): its optimum is the "
+                      "smoothest law")
+    try:
+        sol = solve(smoothing_program(stage, space, bound))
+    except SolverFailure as e:
+        return None, f"the second stage's solver failed ({e.status}): the first stage's laws are returned"
+    if not sol.feasible:
+        return None, "the second stage's solver found no point: the first stage's laws are returned"
+    return sol.v[:-1], None
 
 
 def _within(centre: tuple[float, float], held: float, x_fixed: bool) -> tuple[float, float]:
