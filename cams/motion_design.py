@@ -224,7 +224,7 @@ def _blend(first: Program, second: Program, free: tuple[int, ...], step: float) 
     return Program(tuple(replace(p, law=laws.get(i, p.law)) for i, p in enumerate(first.phases)), first.lift)
 
 
-def _checked_stages(ld, spec, placed: Callable, solve_fixed: Callable, new, sol):
+def _checked_stages(ld, spec, placed: Callable, size_fixed: Callable, new, sol):
     """Both stages' laws checked (:mod:`optimize.motion.smooth`): ``(ld, new, sol, smoothing, notes)``.
 
     The second stage's laws are kept when their checked value is within ``(1 + smoothing_slack)`` of the
@@ -242,7 +242,7 @@ def _checked_stages(ld, spec, placed: Callable, solve_fixed: Callable, new, sol)
     def evaluate(program, centre, done=None):
         new = placed(program, centre)
         try:
-            s = solve_fixed(new) if done is None else done
+            s = size_fixed(new) if done is None else done
         except InfeasibleError:
             return None
         laws = {i: program.law_of(i) for i in ld.free}

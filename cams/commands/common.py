@@ -12,7 +12,6 @@ def face_cam(design, args):
     and ``--tolerance`` (where the command has it)."""
     from cams.cam import Cam
 
-    cam = Cam(design, tolerance=getattr(args, "tolerance", None))
+    cam = Cam(design, method=args.method, tolerance=getattr(args, "tolerance", None))  # nothing solved yet
     cam.face.check_method(args.method, "--method")
-    cam.method = args.method
     return cam

@@ -7,15 +7,16 @@ import sys
 from pathlib import Path
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+from cams.present.faces import FlatPresenter, RollerPresenter
 from laws.errors import InputError
 
 __all__ = ["register", "run", "PICTURES", "FLAT_PICTURES"]
 
-#: Picture names in the order they are written; each needs only what it draws (for the help: the faces'
-#: pipelines say which they draw, :attr:`cams.faces.base.Face.pictures`).
-PICTURES = ("motion", "zone", "pressure", "profile")
+#: Picture names in the order they are written; each needs only what it draws (the faces' presenters say which
+#: they draw, :attr:`cams.present.faces.Presenter.pictures`).
+PICTURES = tuple(RollerPresenter.pictures)
 #: A flat-faced follower's pictures: no zone; the radius of curvature with the contact's travel instead.
-FLAT_PICTURES = ("motion", "pressure", "curvature", "profile")
+FLAT_PICTURES = tuple(FlatPresenter.pictures)
 #: Every picture name ``--only`` takes ("optimized": a design with an [optimize] table, drawn for it by default).
 NAMES = ("motion", "zone", "pressure", "curvature", "profile", "optimized")
 
@@ -29,7 +30,7 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Pat
 
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
-    for name in (*cam.face.pictures, "optimized"):
+    for name in (*presenter(cam).pictures, "optimized"):
         if name not in which:
             continue
         if name == "optimized":
@@ -72,7 +73,7 @@ def run(args) -> int:
     cam = Cam.from_file(args.file)
     designed = cam.given.optimize is not None
     if which is None:  # everything that applies: no note for what the user did not ask for
-        which = (*cam.face.pictures, *(("optimized",) if designed else ()))
+        which = (*presenter(cam).pictures, *(("optimized",) if designed else ()))
     elif "optimized" in which and not designed:
         which = tuple(w for w in which if w != "optimized")
         print("cams plot: note: optimized: the design has no [optimize] table, no motion was designed; skipped",

@@ -33,8 +33,6 @@ class Face(ABC):
 
     #: The face's label, as :attr:`cams.model.design.Design.face` (for texts, never for a branch).
     name: ClassVar[str]
-    #: The pictures ``cams plot`` draws of the face's cam (names of ``cams plot --only``).
-    pictures: ClassVar[tuple[str, ...]]
     #: True when :meth:`forces` computes the ``[dynamics]`` table's forces (the reports then have ``forces``).
     forces_computed: ClassVar[bool] = False
 

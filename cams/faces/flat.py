@@ -29,7 +29,6 @@ class FlatFace(Face):
     """The pipeline of a flat-faced follower's cam (translating or rocker)."""
 
     name = "flat"
-    pictures = ("motion", "pressure", "curvature", "profile")
 
     def size(self, design, *, method=None, objective=None) -> SolveResult:
         """The smallest base radius the convexity allows (or the floor, or the chosen ``[cam] base_radius``).

@@ -255,7 +255,6 @@ class RollerFace(Face):
     """The pipeline of a roller (or knife-edge) follower's cam."""
 
     name = "roller"
-    pictures = ("motion", "zone", "pressure", "profile")
     forces_computed = True
 
     def size(self, design, *, method=None, objective=None) -> SolveResult:

@@ -30,8 +30,8 @@ class Presenter(ABC):
     def print_summary(self, rep: dict) -> None:
         """Print the readable summary of a solve report (:meth:`cams.faces.result.SolveResult.to_dict`)."""
 
-    #: The kind of picture (:data:`cams.present.plots.PICTURES`) drawn under each picture name of the face's
-    #: pipeline (:attr:`cams.faces.base.Face.pictures`).
+    #: The pictures ``cams plot`` draws of the face's cam, in order (the names ``--only`` takes), each with the
+    #: kind of picture (:data:`cams.present.plots.PICTURES`) drawn under it.
     pictures: ClassVar[dict[str, str]]
     #: The report's pictures: (title, picture kind), in order, before the motion design's.
     report_pictures: ClassVar[tuple[tuple[str, str], ...]]

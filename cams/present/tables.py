@@ -19,6 +19,17 @@ def _deg(x):
     return "—" if x is None else deg(x, radians=True)
 
 
+def _cam_inputs(d) -> list[tuple[str, str]]:
+    """The rows every face's inputs share: the cam's sense and speed (rpm), each phase (kind, law, degrees)."""
+    rows = [("cam rotation", "ccw" if d.cam_sense > 0 else "cw")]
+    if d.rpm:
+        rows.append(("cam speed", f"{d.rpm:g} rpm"))
+    for i, p in enumerate(d.program.phases):
+        law = "" if p.law is None else f", {p.law.name}"
+        rows.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.6g} deg"))
+    return rows
+
+
 def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     """The report's tables for a flat-faced follower."""
     from cams.present.text import pressure_text
@@ -32,12 +43,7 @@ def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
                    ("face offset from the pivot", f"{f.face_offset:g} mm")]
     else:
         inputs += [("stroke h", f"{d.program.lift:g} mm"), ("offset", f"{f.offset:g} mm")]
-    inputs += [("cam rotation", "ccw" if d.cam_sense > 0 else "cw")]
-    if d.rpm:
-        inputs.append(("cam speed", f"{d.rpm:g} rpm"))
-    for i, p in enumerate(d.program.phases):
-        law = "" if p.law is None else f", {p.law.name}"
-        inputs.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.6g} deg"))
+    inputs += _cam_inputs(d)
     inputs.append(("smallest radius of curvature allowed", f"{d.min_radius:g} mm"))
     if d.min_base_radius is not None:
         inputs.append(("constructive floor on R0", f"{d.min_base_radius:g} mm"))
@@ -104,12 +110,7 @@ def roller_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     else:
         inputs += [("stroke h", f"{d.program.lift:g} mm"),
                    ("offset", "free (solved)" if f.offset is None else f"{f.offset:g} mm")]
-    inputs += [("cam rotation", "ccw" if d.cam_sense > 0 else "cw")]
-    if d.rpm:
-        inputs.append(("cam speed", f"{d.rpm:g} rpm"))
-    for i, p in enumerate(d.program.phases):
-        law = "" if p.law is None else f", {p.law.name}"
-        inputs.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.6g} deg"))
+    inputs += _cam_inputs(d)
     lim = d.limits
     inputs += [("closure", lim.closure), ("allowable pressure angle, rise", _deg(lim.pressure_angle))]
     if lim.closure == "form":

@@ -73,7 +73,7 @@ def _figures(cam):
     """Every picture of the cam's face (its pipeline's names), drawn as cams plot draws them."""
     from cams.present.faces import presenter
 
-    return {name: plots.picture(presenter(cam).pictures[name], cam) for name in cam.face.pictures}
+    return {name: plots.picture(presenter(cam).pictures[name], cam) for name in presenter(cam).pictures}
 
 
 @pytest.mark.parametrize("name", ALL_EXAMPLES)
