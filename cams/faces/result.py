@@ -70,7 +70,7 @@ class SolveResult:
     R0: float
     L: float | None
     offset: float | None
-    detail: Any
+    detail: SizingDetail
     seconds: float
     notes: tuple[str, ...] = field(default_factory=tuple)
     certified: bool | None = None

@@ -306,7 +306,9 @@ class RollerFace(Face):
         return out
 
     def not_verified(self, solution: SolveResult) -> list[str]:
-        return pressure_failures(solution.detail.pressure)
+        detail = solution.detail
+        assert isinstance(detail, RollerSizing)  # the roller pipeline's sizing
+        return pressure_failures(detail.pressure)
 
 
 #: The roller follower's pipeline.

@@ -54,3 +54,13 @@ print(sorted(h for h in heavy if h in sys.modules))
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "[]", r.stdout
+
+
+def test_the_package_re_exports_its_api_lazily():
+    """``cams.Cam``, ``cams.solve`` and ``cams.load_design`` come on first use: ``import cams`` loads none of their
+    modules, and ``cams.solve`` is the one function whichever of the module or the name was imported first."""
+    assert _loaded_after("import cams", ("cams.cam", "cams.solve", "cams.io.designfile")) == []
+    code = (f"import cams\nd = cams.load_design({str(EXAMPLES / 'rocker_force.toml')!r})\n"
+            "a = cams.solve(d).R0\nimport cams.solve\nb = cams.solve.solve(d).R0\nc = cams.Cam(d).solution.R0\n"
+            "assert a == b == c, (a, b, c)")
+    assert _loaded_after(code) == []
