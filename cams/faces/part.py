@@ -64,6 +64,9 @@ MAX_STEPS = 200
 GOVERNS = {"jamming_rise": "pressure_angle", "jamming_return": "pressure_angle", "bore": "bore",
            "undercut": "undercut", "undercut_outer": "undercut", "no working profile": "undercut",
            "min_curvature_radius": "curvature", "convexity": "convexity"}
+#: The checks whose worst value 0 is a corner of the pitch curve at a phase joint (a velocity jump): radius 0 at
+#: every size, so no cam of the family passes them (:func:`cams.checks.profile.curvature_extremes`).
+SIZELESS = ("undercut", "undercut_outer")
 #: The design file's field that asks for each constraint (for the error when no cam of the family meets it).
 FIELDS = {"pressure_angle": "limits.pressure_angle", "bore": "cam.bore_radius", "undercut": "follower.roller_radius",
           "curvature": "profile.min_curvature_radius", "convexity": "limits.min_radius"}
@@ -231,7 +234,8 @@ def size_to_part(face: Face, design, base: SolveResult, size_at: Callable[[float
     base : SolveResult
         The cam sized by the pressure angle alone (a flat face: convexity; a user's floor included), with its
         ``governs`` and ``pressure_angle_R0``: returned as it is when it passes (or fails its own limit alone: a
-        sampled method's cam that exceeds it between samples is reported so, not raised).
+        sampled method's cam that exceeds it between samples is reported so, not raised; or has a corner, a
+        velocity jump's, that no size clears: a note says so).
     size_at : callable
         ``size_at(F)``: the family's cam at floor ``F`` (length), sized by the pressure angle alone; it raises
         :class:`laws.errors.CamsError` where the family has no cam.
@@ -253,6 +257,12 @@ def size_to_part(face: Face, design, base: SolveResult, size_at: Callable[[float
     v0 = judge(face, design, base)
     if not set(v0.failing) - {"pressure_angle"}:   # a cam that fails only its own limit (a sampled method's) stays
         return base
+    corner = next((c for c in v0.checks if c.name in SIZELESS and not c.passed and c.worst == 0.0), None)
+    if corner is not None:      # a corner of the pitch curve (a velocity jump): radius 0 at every size
+        return replace(base, notes=(*base.notes, f"not sized to the part: the pitch curve has a corner (a velocity "
+                                    f"jump) at cam angle {np.degrees(corner.at or 0.0) % 360:.4f} deg, radius of "
+                                    "curvature 0 at every size, which no larger cam clears; use a law without "
+                                    "velocity jumps"))
     lo, g_lo = float(base.R0), v0.margin
     fam.failing[lo] = v0
     least = face.bore_R0(design)
