@@ -35,7 +35,6 @@ __all__ = [
     "elevation",
     "subdivision",
     "gram",
-    "power_values",
 ]
 
 
@@ -167,38 +166,3 @@ def gram(p: int) -> np.ndarray:
         for j in range(p + 1):
             g[i, j] = comb(p, i) * comb(p, j) / ((2 * p + 1) * comb(2 * p, i + j))
     return _frozen(g)
-
-
-def power_values(a: np.ndarray, t: np.ndarray, derivatives: int = 3) -> np.ndarray:
-    """Values of power-form polynomials and their derivatives by Horner's rule.
-
-    Parameters
-    ----------
-    a : ndarray, shape (n, p+1)
-        Power coefficients (``a[..., k]`` of ``t**k``), one row per point.
-    t : ndarray, shape (n,)
-        Local positions, one per row of ``a``.
-    derivatives : int
-        How many derivatives with respect to ``t`` besides the value.
-
-    Returns
-    -------
-    ndarray, shape (derivatives + 1, n)
-    """
-    a = np.asarray(a, float)
-    t = np.asarray(t, float)
-    p = a.shape[-1] - 1
-    out = np.zeros((derivatives + 1, *t.shape))
-    c = a
-    for k in range(derivatives + 1):
-        if c.shape[-1] == 0:
-            break
-        v = c[..., -1].copy()
-        for i in range(c.shape[-1] - 2, -1, -1):
-            v = v * t + c[..., i]
-        out[k] = v
-        # derivative of the power form: i * a_i for i >= 1
-        c = c[..., 1:] * np.arange(1, c.shape[-1])
-        if p - k <= 0:
-            break
-    return out

@@ -9,30 +9,39 @@ derivatives may jump at a break, and :attr:`SplineLaw.breakpoints` lists the
 interior breaks so that the diagnostics take one-sided limits there.
 
 ``S', S'', S'''`` are the polynomials' own derivatives (exact, no numerical
-differentiation): each span's coefficients are turned once into the power form
-of ``t``, evaluated by Horner's rule, and the ``k``-th derivative divided by the
-span's width to the power ``k``.
+differentiation), evaluated in Bernstein form: each span's ``k``-th derivative
+has the coefficients ``p!/(p-k)! Delta^k c`` (forward differences, computed
+once), summed against the degree ``p - k`` basis at ``t`` and divided by the
+span's width to the power ``k``. The basis is a partition of unity with
+nonnegative terms, so a value's rounding is a few units of its coefficients'
+(the power form's Horner's rule was not: its coefficients are alternating sums
+with binomial weights up to ``C(p, k) C(k, i)``; on 40 spans of degree 11 it
+gave ``S''(1)`` as 1.4e-7 where the coefficients give 2e-11).
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from math import comb
 
 import numpy as np
 
 from laws.base import Law
-from laws.bernstein import power_values, to_power
+from laws.bernstein import derivative_chain
 from laws.errors import InputError, check_numbers
 
 __all__ = ["SplineLaw", "MAX_DEGREE"]
 
-#: The largest degree of a span (the power form of a higher degree loses too many digits).
+#: The largest degree of a span (the files' limit).
 MAX_DEGREE = 15
 #: Tolerance on the first and last break (0 and 1).
 BREAK_TOL = 1e-12
 #: Tolerance on ``S(0) = 0``, ``S(1) = 1`` and on the continuity of ``S``, times max(1, largest |coefficient|).
 VALUE_TOL = 1e-9
+
+#: ``C(q, i)`` for ``q`` up to MAX_DEGREE, one row each (the Bernstein basis's weights).
+_BINOMIALS = tuple(np.array([comb(q, i) for i in range(q + 1)], float) for q in range(MAX_DEGREE + 1))
 
 _BREAKS = "spline.breaks"
 _COEFFS = "spline.coefficients"
@@ -94,8 +103,9 @@ class SplineLaw(Law):
     breaks: tuple[float, ...]
     coefficients: tuple[tuple[float, ...], ...]
     name: str = field(default="spline", kw_only=True)
-    #: Power coefficients of each span in its local variable, shape (spans, degree + 1).
-    _power: np.ndarray = field(init=False, repr=False, compare=False, hash=False)
+    #: Per derivative k = 0..3 (up to the degree): each span's Bernstein coefficients of d^k S / dt^k in its
+    #: local variable times the basis's weights C(degree - k, i), shape (spans, degree - k + 1).
+    _derivatives: tuple[np.ndarray, ...] = field(init=False, repr=False, compare=False, hash=False)
 
     def __post_init__(self):
         c = self.coefficients
@@ -131,12 +141,16 @@ class SplineLaw(Law):
             if abs(after - before) > tol:
                 raise InputError(_COEFFS, f"S must be continuous, but it jumps at the break u = {b[j + 1]!r}: "
                                  f"{before!r} at the end of span {j}, {after!r} at the start of span {j + 1}")
-        m = to_power(size - 1)
-        power = np.array([m @ np.asarray(r) for r in rows])
-        power.setflags(write=False)
+        coeffs = np.array(rows, float)
+        derivs = []
+        for k in range(min(3, size - 1) + 1):
+            q = size - 1 - k
+            d = coeffs @ derivative_chain(size - 1, k).T * _BINOMIALS[q]     # the basis's weights C(q, i) folded in
+            d.setflags(write=False)
+            derivs.append(d)
         object.__setattr__(self, "breaks", b)
         object.__setattr__(self, "coefficients", rows)
-        object.__setattr__(self, "_power", power)
+        object.__setattr__(self, "_derivatives", tuple(derivs))
         # the instance's own interior breaks, where laws.diagnostics and laws.characteristics look for jumps
         object.__setattr__(self, "breakpoints", b[1:-1])
 
@@ -184,7 +198,15 @@ class SplineLaw(Law):
         # a u on an interior break belongs to the later span, u = 1 to the last
         j = np.clip(np.searchsorted(b, flat, side="right") - 1, 0, self.spans - 1)
         h = b[j + 1] - b[j]
-        out = power_values(self._power[j], (flat - b[j]) / h, 3)
-        for k in range(1, 4):
-            out[k] /= h**k
+        t = (flat - b[j]) / h
+        p = self.degree
+        up = np.ones((flat.size, p + 1))                # t**i and (1 - t)**i, shared by the four bases
+        down = np.ones((flat.size, p + 1))
+        for i in range(1, p + 1):
+            up[:, i] = up[:, i - 1] * t
+            down[:, i] = down[:, i - 1] * (1.0 - t)
+        out = np.zeros((4, flat.size))
+        for k, d in enumerate(self._derivatives):      # a derivative above the degree is 0
+            q = p - k
+            out[k] = np.einsum("ni,ni,ni->n", d[j], up[:, :q + 1], down[:, q::-1]) / h**k
         return tuple(row.reshape(np.shape(u)) for row in out)

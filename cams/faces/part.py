@@ -222,7 +222,8 @@ def _narrow(fam: _Family, lo: float, g_lo: float, hi: float, g_hi: float, best: 
     return hi, best[0], best[1]
 
 
-def size_to_part(face: Face, design, base: SolveResult, size_at: Callable[[float], SolveResult]) -> SolveResult:
+def size_to_part(face: Face, design, base: SolveResult,
+                 size_at: Callable[[float], SolveResult]) -> tuple[SolveResult, float | None]:
     """The smallest cam of ``design``'s floor family that meets every constraint of the part (see the module).
 
     Parameters
@@ -245,6 +246,8 @@ def size_to_part(face: Face, design, base: SolveResult, size_at: Callable[[float
     SolveResult
         The passing cam (``design`` as its design), its ``governs`` the constraint the cam at
         ``R0 (1 - BELOW)`` fails, its ``pressure_angle_R0`` the base's, and a note.
+    float or None
+        The floor it was sized with (length; a design saved with it solves back to it), None for ``base``.
 
     Raises
     ------
@@ -256,13 +259,13 @@ def size_to_part(face: Face, design, base: SolveResult, size_at: Callable[[float
     fam = _Family(face, design, size_at)
     v0 = judge(face, design, base)
     if not set(v0.failing) - {"pressure_angle"}:   # a cam that fails only its own limit (a sampled method's) stays
-        return base
+        return base, None
     corner = next((c for c in v0.checks if c.name in SIZELESS and not c.passed and c.worst == 0.0), None)
     if corner is not None:      # a corner of the pitch curve (a velocity jump): radius 0 at every size
         return replace(base, notes=(*base.notes, f"not sized to the part: the pitch curve has a corner (a velocity "
                                     f"jump) at cam angle {np.degrees(corner.at or 0.0) % 360:.4f} deg, radius of "
                                     "curvature 0 at every size, which no larger cam clears; use a law without "
-                                    "velocity jumps"))
+                                    "velocity jumps")), None
     lo, g_lo = float(base.R0), v0.margin
     fam.failing[lo] = v0
     least = face.bore_R0(design)
@@ -311,7 +314,7 @@ def size_to_part(face: Face, design, base: SolveResult, size_at: Callable[[float
         notes.append(f"no [cam] bore_radius: nothing keeps material round the cam centre, whose own smallest radius "
                      f"is {smallest:.6g} mm; give the shaft's bore (and a hub_wall) to size a cam that can be mounted")
     return replace(cand, design=design, governs=governs, pressure_angle_R0=base.pressure_angle_R0,
-                   notes=tuple(notes))
+                   notes=tuple(notes)), hi
 
 
 def sized_to_part(face: Face, design, base: SolveResult, size_alone: Callable[[Any], SolveResult]) -> SolveResult:
@@ -323,8 +326,8 @@ def sized_to_part(face: Face, design, base: SolveResult, size_alone: Callable[[A
         return base
     t0 = time.perf_counter()
     alone = design.with_(constraints="pressure_angle")
-    out = size_to_part(face, design, base, lambda F: size_alone(alone.with_floor(F)))
-    return out if out is base else replace(out, seconds=base.seconds + time.perf_counter() - t0)
+    out, floor = size_to_part(face, design, base, lambda F: size_alone(alone.with_floor(F)))
+    return out if floor is None else replace(out, seconds=base.seconds + time.perf_counter() - t0)
 
 
 def chosen_bore_notes(face: Face, design, solution: SolveResult) -> list[str]:

@@ -107,6 +107,7 @@ class RollerSizing:
             "max_pressure_angle": {"rise": deg(p.rise), "return": deg(p.ret)},
             "pressure_angle_at": {"rise": deg(p.rise_at), "return": deg(p.ret_at)},
             "limits": {"rise": deg(p.rise_limit), "return": deg(p.return_limit)},
+            **({} if p.safety is None else {"safety_factor": p.safety.to_dict()}),
             "verified": bool(self.verified),
             "buildable": bool(result.R0 > design.follower.roller_radius),
             "binding": [
@@ -175,6 +176,8 @@ def excess(pressure: PressureReport) -> float:
         out.append(pressure.rise - pressure.rise_limit)
     if pressure.ret is not None and pressure.return_limit is not None:
         out.append(pressure.ret - pressure.return_limit)
+    if pressure.safety is not None:  # K_C: the moved lines' excess, an angle's sine
+        out.append(pressure.safety.excess)
     return float(max(out))
 
 
@@ -188,7 +191,8 @@ def pressure_failures(pressure: PressureReport) -> list[str]:
         d = np.degrees
         out.append(f"{kind} pressure angle {d(g):.4f} deg exceeds the limit {d(lim):.4f} deg by {d(g - lim):.4f} deg "
                    f"at cam angle {d(at) % 360:.4f} deg")
-    return out
+    safety = None if pressure.safety is None else pressure.safety.failure()  # K_C (seed 3.26)
+    return out if safety is None else [*out, safety]
 
 
 def _solve_chosen(design: CamDesign) -> SolveResult:

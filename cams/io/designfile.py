@@ -574,14 +574,21 @@ def designed_document(doc: dict, program: Program, free: tuple[int, ...], *, flo
     -------
     dict
         For :func:`cams.io.tomlwrite.dumps`: read back, it is the designed
-        design without the request (so it solves to the same cam).
+        design without the request (so it solves to the same cam). The
+        request's objective goes with it where it sized the cam: ``[optimize]
+        objective = "L"`` (a rocker's cams of fixed laws are then sized by
+        their least L, :mod:`cams.motion_design`) becomes ``[solve]
+        objective = "L"``; ``"R0"`` is the default, and the other objectives
+        hold the cam's size (the chosen cam, or ``centre``).
     """
     import copy
 
     from cams.io.lawtable import law_to_table
 
     out = copy.deepcopy(doc)
-    out.pop("optimize", None)
+    request = out.pop("optimize", None)
+    if isinstance(request, dict) and request.get("objective") == "L":
+        out.setdefault("solve", {})["objective"] = "L"
     for i in free:
         out["motion"][i]["law"] = law_to_table(program.law_of(i))
     if floor is not None:

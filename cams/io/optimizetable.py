@@ -12,6 +12,7 @@ Keys (see docs/files.md)::
     continuity = 3           # derivatives continuous at the joints: 1, 2 or 3
     degree = 7               # polynomial degree of each span (> continuity)
     spans = 20               # knot spans per free phase
+    smoothing_slack = 0      # the share of the objective given up for smoothness, in [0, 1)
 
 The loader checks the table's shape (known keys, lists); the model checks the values.
 """
@@ -25,7 +26,8 @@ from laws.errors import InputError, show_value
 __all__ = ["OPTIMIZE_KEYS", "optimize_from_table"]
 
 #: The keys of ``[optimize]``, in their documented order.
-OPTIMIZE_KEYS = ("free", "objective", "max_Cv", "max_Ca", "max_Cj", "continuity", "degree", "spans")
+OPTIMIZE_KEYS = ("free", "objective", "max_Cv", "max_Ca", "max_Cj", "continuity", "degree", "spans",
+                 "smoothing_slack")
 
 
 def _listed(table: dict, key: str, default: tuple) -> tuple:
@@ -58,4 +60,5 @@ def optimize_from_table(table: object) -> MotionDesignSpec:
         continuity=table.get("continuity", DEFAULT_CONTINUITY),
         degree=table.get("degree", DEFAULT_DEGREE),
         spans=table.get("spans", DEFAULT_SPANS),
+        smoothing_slack=table.get("smoothing_slack", 0.0),
     )

@@ -16,6 +16,11 @@ with the neighbouring phases, its normalized peaks (``Cv = max |S'|``,
   of the integral of ``S'''(u)**2`` or ``S''''(u)**2`` over ``u`` in [0, 1]
   (dimensionless; the cam's size held).
 
+Translating followers: a second stage then returns, among the laws whose
+objective is within ``(1 + smoothing_slack)`` times the value found, the
+smoothest (the least integral of the squared derivative after the last
+continuous one: ``S''''`` for C3; :mod:`optimize.motion.smooth`).
+
 Each field is checked once, here, with the message the file's key gets.
 """
 
@@ -28,7 +33,7 @@ from laws.errors import InputError, check_option, show_value
 
 __all__ = ["MOTION_OBJECTIVES", "CAP_KEYS", "MotionDesignSpec", "MotionCertificate", "DEFAULT_DEGREE", "DEFAULT_SPANS",
            "DEFAULT_CONTINUITY", "MAX_DEGREE", "MAX_SPANS",
-           "MAX_ROCKER_SPANS"]
+           "MAX_ROCKER_SPANS", "MAX_VARIABLES", "MAX_SMOOTHING_SLACK"]
 
 #: What ``[optimize] objective`` may ask for.
 MOTION_OBJECTIVES = ("R0", "L", "pressure_angle", "Ca", "Cj", "jerk_squared", "snap_squared")
@@ -39,12 +44,19 @@ DEFAULT_DEGREE = 7
 DEFAULT_SPANS = 20
 DEFAULT_CONTINUITY = 3
 MAX_DEGREE = 11
-#: The most knot spans a phase: the programs' matrices grow with their square (80 spans take about 1.5 s, 100
-#: about 3 s after the imports on this project's machine; 400 took minutes).
+#: The most knot spans a phase: the programs' matrices grow with their square (80 spans took about 1.5 s, 100
+#: about 3 s after the imports on this project's machine before the smoothing stage about doubled them; 400 took
+#: minutes).
 MAX_SPANS = 100
+#: The free phases' variables at most, free phases x spans x (degree + 1): the programs' matrices are dense, their
+#: memory grows with its square (two free phases of degree 7 on 100 spans, 1,600 variables: 1.2 GB and about
+#: 20 s; of degree 11 on 100 spans, 2,400: 2.6 GB).
+MAX_VARIABLES = 1600
 #: Knot spans per free phase at most for a rocker (sequential convex programming: dozens of programs whose
 #: size grows with the spans; 40 spans take about 15 s a free phase).
 MAX_ROCKER_SPANS = 40
+#: ``smoothing_slack`` is below this: the share of the objective given up for smoothness (1 would double it).
+MAX_SMOOTHING_SLACK = 1.0
 #: The largest cap: a normalized peak beyond it is no cap a cam could meet with a roller (the library's laws
 #: have peaks below 100), and would only spoil the programs' scaling.
 MAX_CAP = 1e6
@@ -75,6 +87,11 @@ class MotionDesignSpec:
         Polynomial degree of each span, ``continuity < degree <= MAX_DEGREE``.
     spans : int
         Knot spans per free phase, 1 to :data:`MAX_SPANS`.
+    smoothing_slack : float
+        The share of the objective given up for smoothness, in [0, 1): the
+        second stage returns the smoothest law whose objective is at most
+        ``(1 + smoothing_slack)`` times the first stage's value (translating
+        followers; :mod:`optimize.motion.smooth`).
     """
 
     free: tuple[str | int, ...] = ("rise",)
@@ -85,6 +102,7 @@ class MotionDesignSpec:
     continuity: int = DEFAULT_CONTINUITY
     degree: int = DEFAULT_DEGREE
     spans: int = DEFAULT_SPANS
+    smoothing_slack: float = 0.0
 
     def __post_init__(self) -> None:
         if not isinstance(self.free, tuple):
@@ -110,6 +128,10 @@ class MotionDesignSpec:
             raise InputError("optimize.degree", f"must be at most {MAX_DEGREE}, got {self.degree}")
         if not 1 <= self.spans <= MAX_SPANS:
             raise InputError("optimize.spans", f"must be from 1 to {MAX_SPANS}, got {self.spans}")
+        slack = self.smoothing_slack
+        if isinstance(slack, bool) or not isinstance(slack, (int, float)) or not 0 <= slack < MAX_SMOOTHING_SLACK:
+            raise InputError("optimize.smoothing_slack", f"must be a number in [0, {MAX_SMOOTHING_SLACK:g}) (the "
+                             f"share of the objective given up for smoothness), got {show_value(slack)}")
         from laws.registry import LAWS
 
         for key in CAP_KEYS:
@@ -172,6 +194,8 @@ class MotionCertificate:
     iterations : int or None
     history : tuple of float
         The objective at each accepted iterate.
+    smoothing : dict or None
+        What the second stage's smoothing bought (docs/files.md, *Smoothing*); None when no second stage ran.
     seconds : float
         Time of the laws' design (s).
     notes : tuple of str
@@ -196,6 +220,7 @@ class MotionCertificate:
     local_measure: float | None
     iterations: int | None
     history: tuple[float, ...] = field(default_factory=tuple)
+    smoothing: dict[str, Any] | None = None
     seconds: float = 0.0
     notes: tuple[str, ...] = field(default_factory=tuple)
 
@@ -221,6 +246,7 @@ class MotionCertificate:
             "local_measure": self.local_measure,
             "iterations": self.iterations,
             "history": list(self.history),
+            "smoothing": self.smoothing,
             "seconds": self.seconds,
             "notes": list(self.notes),
         }

@@ -4,7 +4,8 @@
 an ``[optimize]`` table:
 
 - the normalized laws ``S, S', S'', S'''`` of each free phase against ``u``,
-  the designed one beside the original;
+  the designed one beside the original (and beside the first stage's, when
+  the second stage smoothed it: ``optimization["smoothing"]``);
 - the pressure angle over the cycle of both cams, each at its own centre,
   against the limits (roller followers; the kernel's inversion);
 - the two cams overlaid to scale in the cam frame (pitch curves and working
@@ -25,10 +26,20 @@ from laws.units import TWO_PI
 
 __all__ = ["plot_motion_design"]
 
-_NEW, _OLD = "#2b6cb0", "#a0aec0"
+_NEW, _OLD, _FIRST = "#2b6cb0", "#a0aec0", "#dd6b20"
 
 
-def _laws_panel(fig, grid, given, designed, free) -> None:
+def _first_stage(smoothing: dict | None) -> dict:
+    """The first stage's laws by phase when the second stage's replaced them (else empty)."""
+    if not smoothing or not smoothing.get("smoothed"):
+        return {}
+    from laws.spline import SplineLaw
+
+    return {t["phase"]: SplineLaw(tuple(t["breaks"]), tuple(tuple(r) for r in t["coefficients"]))
+            for t in smoothing["first_stage_laws"]}
+
+
+def _laws_panel(fig, grid, given, designed, free, first=None) -> None:
     u = np.linspace(0.0, 1.0, 401)
     names = ("S", "dS/du", "d²S/du²", "d³S/du³")
     for k in range(4):
@@ -38,6 +49,9 @@ def _laws_panel(fig, grid, given, designed, free) -> None:
         for i in free:
             ax.plot(u, given.program.law_of(i).evaluate(u)[k], color=_OLD, lw=1.6,
                     label=f"original (phase {old_names})" if i == free[0] else None)
+            if first and i in first:
+                ax.plot(u, first[i].evaluate(u)[k], color=_FIRST, lw=0.9, ls="--",
+                        label="first stage (the optimum found)" if i == free[0] else None)
             ax.plot(u, designed.program.law_of(i).evaluate(u)[k], color=_NEW, lw=1.1,
                     label=f"designed (phase {', '.join(map(str, free))})" if i == free[0] else None)
         ax.set_ylabel(names[k], fontsize=8)
@@ -122,7 +136,7 @@ def plot_motion_design(cam):
     panel = face.pressure_panel
     fig = Figure(figsize=(7.5, 10.0 if panel else 8.5), layout="constrained")
     grid = fig.add_gridspec(4 if panel else 3, 2, height_ratios=(1, 1, 1.1, 2.2) if panel else (1, 1, 2.2))
-    _laws_panel(fig, grid, given, designed, free)
+    _laws_panel(fig, grid, given, designed, free, _first_stage(info.get("smoothing")))
     if panel and ref is not None:
         _pressure_panel(fig.add_subplot(grid[2, :]), given, designed,
                         (np.array([ref["centre"]["x"], ref["centre"]["y"]]), sol.centre))
@@ -135,6 +149,11 @@ def plot_motion_design(cam):
     else:
         gap = "-" if info["gap"] is None else f"{info['gap']:.2g}"
         how = f"proven lower bound {info['lower_bound']:.6g}{unit}, gap {gap}"
+    sm = info.get("smoothing")
+    smooth = ""
+    if sm and sm["smoothed"] and sm["jerk_variation_before"] is not None and sm["jerk_variation_after"] is not None:
+        smooth = (f"\nsmoothed within {sm['slack']:g} of the first stage's {sm['value_before']:.6g}{unit}: "
+                  f"the total variation of S''' {sm['jerk_variation_before']:.0f} -> {sm['jerk_variation_after']:.0f}")
     fig.suptitle(f"{designed.name}: motion designed\n{info['objective']} {info['value']:.6g}{unit}, {how}; degree "
-                 f"{info['degree']}, {info['spans']} spans, C{info['continuity']}", fontsize=9)
+                 f"{info['degree']}, {info['spans']} spans, C{info['continuity']}{smooth}", fontsize=9)
     return fig

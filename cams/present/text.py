@@ -143,6 +143,9 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
                  ("certified", "yes" if o["certified"] else "NO")]
     rows.append(("space", f"degree {o['degree']}, {o['spans']} spans per free phase, C{o['continuity']} joints "
                           f"(the caps on Bernstein coefficients of {o['pieces']} pieces a span)"))
+    sm = o.get("smoothing")
+    if sm:
+        rows.append((f"smoothing (slack {sm['slack']:g})", _smoothing_text(sm, o)))
     ref = o.get("reference")
     if ref and o["objective"] == "L" and ref.get("L") is not None:
         f = length_format(max(abs(ref["L"]), abs(o["value"])))
@@ -156,6 +159,27 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
                      f"Cv {_peak(p['Cv'])}, Ca {_peak(p['Ca'])}, Cj {_peak(p['Cj'])}; was {orig['law']}: "
                      f"Cv {_peak(orig['Cv'])}, Ca {_peak(orig['Ca'])}, Cj {_peak(orig['Cj'])}"))
     return rows
+
+
+def _smoothing_text(sm: dict, o: dict) -> str:
+    """What the second stage's slack bought (:mod:`cams.motion_design`'s ``smoothing``), in words."""
+    unit = _OBJECTIVE_UNITS.get(o["objective"], "")
+    if unit == "mm":
+        f = length_format(max(abs(sm["value_before"]), abs(sm["value_after"])))
+        value = f"{sm['value_before']:{f}} -> {sm['value_after']:{f}} mm"
+    else:
+        value = f"{sm['value_before']:.8g} -> {sm['value_after']:.8g} {unit}"
+    d = "S" + "'" * sm["derivative"]
+    tv = "-" if sm["jerk_variation_before"] is None else f"{sm['jerk_variation_before']:.1f}"
+    tv2 = "-" if sm["jerk_variation_after"] is None else f"{sm['jerk_variation_after']:.1f}"
+    orig = [p["original"].get("jerk_variation") for p in o["phases"]]
+    was = "" if any(t is None for t in orig) else f" (the original laws': {sum(orig):.1f})"
+    step = sm.get("step", 1.0)
+    kept = ("" if step == 1.0 else "the second stage's laws not kept (see the note); " if step == 0.0
+            else f"the laws {step:.4g} of the way to the second stage's (see the note); ")
+    return (f"{kept}{o['objective']} {value}; integral of {d}^2 {sm['integral_before']:.4g} -> "
+            f"{sm['integral_after']:.4g}, of S'''^2 {sm['jerk_squared_before']:.6g} -> {sm['jerk_squared_after']:.6g}; "
+            f"total variation of S''' {tv} -> {tv2}{was}")
 
 
 def print_optimization(o: dict, R0: float | None = None) -> None:

@@ -10,18 +10,27 @@ force the driving side exerts on the roller and the roller centre's velocity:
 ``n`` on a rise, ``-n`` on a return, which both reduce to
 ``gamma = arccos(n . e)`` with ``e`` the unit direction of the rise. Values
 above 90 degrees mean the cam would pull, not push (the wrong branch).
+
+A rocker's safety factor K_C (seed 3.26) is checked from the same normal:
+where it crosses the rocker line, and the seed's lines moved from there
+(:mod:`cams.verify.safety`), not from the zone's instant point D.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 
 from cams.model.design import CamDesign
+from cams.model.follower import Rocker
+from cams.verify.safety import safety_terms
+from cams.words import phase_words
 from laws.errors import InputError, show_value
 
-__all__ = ["pressure_angle", "contact_normal", "PressureReport", "check_pressure", "check_pressure_many"]
+__all__ = ["pressure_angle", "contact_normal", "PressureReport", "SafetyReport", "check_pressure",
+           "check_pressure_many"]
 
 
 def contact_normal(design: CamDesign, centre: np.ndarray, s: np.ndarray, ds: np.ndarray):
@@ -105,10 +114,13 @@ def pressure_angle(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndar
 
 @dataclass(frozen=True)
 class PressureReport:
-    """Largest pressure angles over the rise and return phases.
+    """Largest pressure angles over the rise and return phases, and the safety factor's zone.
 
     Angles in radians; ``None`` where the program has no such phase.
-    ``where_*`` is the cam angle (radians) of the maximum.
+    ``rise_at``, ``ret_at`` are the cam angles (radians) of the maxima.
+    ``safety`` is the check of the safety factor K_C (:class:`SafetyReport`),
+    None where it does not apply (K_C = 1, a translating follower). ``ok``:
+    every limit the design sets holds, K_C included.
     """
 
     rise: float | None
@@ -118,6 +130,69 @@ class PressureReport:
     rise_limit: float
     return_limit: float | None
     ok: bool
+    safety: SafetyReport | None = None
+
+
+@dataclass(frozen=True)
+class SafetyReport:
+    """The safety factor K_C (seed 3.26) at a rocker's cam centre: the moved lines of :mod:`cams.verify.safety`.
+
+    Attributes
+    ----------
+    factor : float
+        The K_C required (``limits.safety_factor``, above 1).
+    met : float
+        The largest K_C the centre meets over every constrained position (below 1 where it fails the
+        pressure angle itself).
+    outside : float
+        The largest distance of the centre outside a moved line, over every constrained position, length
+        unit (mm); <= 0 inside, by that much.
+    at : float
+        Cam angle of that line's position, radians from the start of the cycle.
+    phase : int
+        Its phase, the index into the program (``[[motion]]`` row ``phase + 1``).
+    kind : str
+        That phase's kind, ``"rise"`` or ``"return"``.
+    line : str
+        Which of its two lines: ``"t-t"``, where the pressure angle signed positive in the cam's sense of
+        rotation reaches +[γ], or ``"t1-t1"`` (-[γ]).
+    excess : float
+        The largest sine of the angle by which the direction from the centre to a moved line's pole exceeds
+        the limit (the pressure angle's excess, were the poles not moved; negative inside), over every
+        constrained position.
+    ok : bool
+        ``excess`` within the check's tolerance (radians, as the pressure angle's).
+    """
+
+    factor: float
+    met: float
+    outside: float
+    at: float
+    phase: int
+    kind: str
+    line: str
+    excess: float
+    ok: bool
+
+    def failure(self) -> str | None:
+        """The line a failed check prints: by how much (mm, and the K_C met) and where; None when it passes."""
+        if self.ok:
+            return None
+        digits = 6  # as many as tell the K_C met from the one required
+        while digits < 15 and f"{self.met:.{digits}g}" == f"{self.factor:.{digits}g}":
+            digits += 1
+        return (f"safety factor K_C = {self.factor:g} not met: the largest K_C the centre meets is "
+                f"{self.met:.{digits}g}; "
+                f"it lies {self.outside:.6g} mm outside the K_C zone's {self.line} line at cam angle "
+                f"{np.degrees(self.at) % 360:.4f} deg ({phase_words(self.kind, self.phase)})")
+
+    def to_dict(self) -> dict:
+        """JSON-ready: ``required``, ``met`` (None when not finite), ``outside`` (mm), ``at_deg``, ``phase``,
+        ``line``, ``ok``."""
+        return {"required": float(self.factor), "met": float(self.met) if np.isfinite(self.met) else None,
+                "outside": float(self.outside),
+                "at_deg": float(np.degrees(self.at) % 360), "phase": int(self.phase), "line": self.line,
+                "ok": bool(self.ok)}
 
 
 #: Points of every bracket at each zoom step (the bracket shrinks to two of
@@ -129,14 +204,15 @@ ZOOM_STEPS = 10
 CHUNK = 200_000
 
 
-def _angles(design: CamDesign, ox, oy, s: np.ndarray, ds: np.ndarray) -> np.ndarray:
-    """Pressure angle (radians) at the motion ``s, ds`` for the centres ``(ox, oy)`` (broadcast); -1 where undefined.
+def _angles(design: CamDesign, i: int, ox, oy, s: np.ndarray, ds: np.ndarray) -> np.ndarray:
+    """Pressure angle (radians) at the motion ``s, ds`` for the centres ``(ox, oy)`` (broadcast); -inf where undefined.
 
-    -1 lies below every angle, so the maxima below skip the undefined positions.
+    -inf lies below every value, so the maxima below skip the undefined positions. ``i`` (the phase) is unused:
+    the signature of the values :func:`_phases_max` searches.
     """
     nx, ny, ex, ey, _, _ = _normal(design, ox, oy, s, ds)
     g = np.arccos(np.clip(nx * ex + ny * ey, -1.0, 1.0))
-    g[np.isnan(g)] = -1.0
+    g[np.isnan(g)] = -np.inf
     return g
 
 
@@ -146,9 +222,12 @@ def _motion(design: CamDesign, i: int, u: np.ndarray) -> tuple[np.ndarray, np.nd
     return m.s.reshape(u.shape), m.ds.reshape(u.shape)
 
 
-def _phases_max(design: CamDesign, centres: np.ndarray, phases: list[int],
-                grid: int) -> list[tuple[np.ndarray, np.ndarray]]:
+def _phases_max(design: CamDesign, centres: np.ndarray, phases: list[int], grid: int,
+                value: Callable[..., np.ndarray] = _angles) -> list[tuple[np.ndarray, np.ndarray]]:
     """Largest pressure angle in each of ``phases`` for each of the centres (shape (k, 2)), and its position.
+
+    Or the largest of another ``value(design, i, ox, oy, s, ds)`` of phase
+    ``i``'s motion and the centres (broadcast), -inf where undefined.
 
     Every local maximum of the sampled angle (the phase ends included: the
     angle may jump at a join between phases, where each side is its own
@@ -162,7 +241,7 @@ def _phases_max(design: CamDesign, centres: np.ndarray, phases: list[int],
     Returns
     -------
     list of (g, u), one per phase, each ndarray of shape (k,)
-        Radians (-1 where the angle is undefined throughout) and positions in [0, 1].
+        Radians (-inf where the angle is undefined throughout) and positions in [0, 1].
     """
     k = len(centres)
     ox, oy = centres[:, 0, None], centres[:, 1, None]
@@ -170,9 +249,9 @@ def _phases_max(design: CamDesign, centres: np.ndarray, phases: list[int],
     low = np.full((k, 1), -np.inf)
     peaks = []
     for q, i in enumerate(phases):
-        g = _angles(design, ox, oy, *_motion(design, i, u))  # the motion once for every centre
+        g = value(design, i, ox, oy, *_motion(design, i, u))  # the motion once for every centre
         left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
-        c, j = np.nonzero((g >= left) & (g >= right) & (g >= 0.0))
+        c, j = np.nonzero((g >= left) & (g >= right) & (g > -np.inf))
         peaks.append((c, j, np.full(len(c), q), g[c, j]))
     c, j, ph, best_g = (np.concatenate(a) for a in zip(*peaks, strict=True))
     best_u = u[j]
@@ -184,11 +263,12 @@ def _phases_max(design: CamDesign, centres: np.ndarray, phases: list[int],
     s, ds = np.empty((len(c), ZOOM_POINTS)), np.empty((len(c), ZOOM_POINTS))
     for _ in range(ZOOM_STEPS):
         x = lo[:, None] + (hi - lo)[:, None] * t
+        gx = np.empty_like(s)
         for q, i in enumerate(phases):
             a, b = cuts[q], cuts[q + 1]
             if b > a:
                 s[a:b], ds[a:b] = _motion(design, i, x[a:b])
-        gx = _angles(design, pox, poy, s, ds)
+                gx[a:b] = value(design, i, pox[a:b], poy[a:b], s[a:b], ds[a:b])
         jx = np.argmax(gx, axis=1)
         better = gx[rows, jx] > best_g
         best_g = np.where(better, gx[rows, jx], best_g)
@@ -198,10 +278,90 @@ def _phases_max(design: CamDesign, centres: np.ndarray, phases: list[int],
     for q in range(len(phases)):
         a, b = cuts[q], cuts[q + 1]
         # the best peak of each centre: sort by (centre, value), keep the last of each centre
-        out_g, out_u = np.full(k, -1.0), np.zeros(k)
+        out_g, out_u = np.full(k, -np.inf), np.zeros(k)
         order = np.lexsort((best_g[a:b], c[a:b]))
         out_g[c[a:b][order]], out_u[c[a:b][order]] = best_g[a:b][order], best_u[a:b][order]
         out.append((out_g, out_u))
+    return out
+
+
+def _safety(design: CamDesign, i: int, ox, oy, s: np.ndarray, ds: np.ndarray):
+    """:func:`cams.verify.safety.safety_terms` of phase ``i`` at the motion ``s, ds`` for the centres ``(ox, oy)``."""
+    f = design.follower
+    assert isinstance(f, Rocker)
+    nx, ny, ex, ey, _, _ = _normal(design, ox, oy, s, ds)
+    _, _, lev = f.frame(s)
+    pivot = f.pivot
+    return safety_terms(ox - pivot[0], oy - pivot[1], nx, ny, ex, ey, lev[..., 0], lev[..., 1], arm=f.arm,
+                        factor=design.limits.safety_factor, limit=dict(design.constrained_phases())[i])
+
+
+def _safety_excess(design: CamDesign, i: int, ox, oy, s: np.ndarray, ds: np.ndarray) -> np.ndarray:
+    """The larger of the two moved lines' ``outside / reach`` (:func:`_safety`); -inf where undefined."""
+    outside, reach, _ = _safety(design, i, ox, oy, s, ds)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        v = np.where(reach > 0.0, outside / np.where(reach > 0.0, reach, 1.0), outside).max(axis=-1)
+    return np.where(np.isnan(v), -np.inf, v)
+
+
+def _safety_outside(design: CamDesign, i: int, ox, oy, s: np.ndarray, ds: np.ndarray) -> np.ndarray:
+    """The larger of the two moved lines' distances outside (:func:`_safety`, length unit); -inf where undefined."""
+    v = _safety(design, i, ox, oy, s, ds)[0].max(axis=-1)
+    return np.where(np.isnan(v), -np.inf, v)
+
+
+def _safety_shortfall(design: CamDesign, i: int, ox, oy, s: np.ndarray, ds: np.ndarray) -> np.ndarray:
+    """Minus the smaller of the two lines' largest admitted K_C (:func:`_safety`); -inf where undefined."""
+    _, _, admits = _safety(design, i, ox, oy, s, ds)
+    v = -admits.min(axis=-1)
+    return np.where(np.isnan(v), -np.inf, v)
+
+
+def _check_safety(design: CamDesign, C: np.ndarray, grid: int, tol: float) -> list[SafetyReport | None]:
+    """The :class:`SafetyReport` of each centre of ``C`` (shape (k, 2)); None where K_C does not apply.
+
+    K_C applies to a rocker roller's constrained phases when it is above 1. The moved lines' excess, the
+    distance outside them and the K_C met are each searched over every constrained position as the pressure
+    angle is (:func:`_phases_max`).
+    """
+    f = design.follower
+    K = design.limits.safety_factor
+    phases = [i for i, _ in design.constrained_phases()]
+    k = len(C)
+    if not isinstance(f, Rocker) or not K > 1.0 or not phases:
+        return [None] * k
+    block = max(1, CHUNK // (grid + 1))
+    excess, met = np.full(k, -np.inf), np.full(k, np.inf)
+    outside, out_u, out_q = np.full(k, -np.inf), np.zeros(k), np.zeros(k, dtype=int)
+    for a in range(0, k, block):
+        cut = slice(a, a + block)
+        for g, _ in _phases_max(design, C[cut], phases, grid, _safety_excess):
+            excess[cut] = np.maximum(excess[cut], g)
+        for g, _ in _phases_max(design, C[cut], phases, grid, _safety_shortfall):
+            met[cut] = np.minimum(met[cut], -g)
+        for q, (g, u) in enumerate(_phases_max(design, C[cut], phases, grid, _safety_outside)):
+            higher = g > outside[cut]
+            outside[cut] = np.where(higher, g, outside[cut])
+            out_u[cut] = np.where(higher, u, out_u[cut])
+            out_q[cut] = np.where(higher, q, out_q[cut])
+    # which line is farthest out at each centre's farthest position, phase by phase
+    line = np.zeros(k, dtype=int)
+    for q, i in enumerate(phases):
+        on = np.flatnonzero(out_q == q)
+        if len(on):
+            line[on] = np.argmax(_safety(design, i, C[on, 0], C[on, 1], *_motion(design, i, out_u[on]))[0], axis=-1)
+    # the line leaning outwards (index 0) is t-t when its pressure angle, signed positive in the cam's sense,
+    # is +[γ]: when the cam's sense times that of e x lam is positive (e = T / |T|; cams.verify.safety)
+    _, T, lam = f.frame(np.float64(0.0))
+    names = ("t-t", "t1-t1") if design.cam_sense * (T[0] * lam[1] - T[1] * lam[0]) > 0 else ("t1-t1", "t-t")
+    prog = design.program
+    out: list[SafetyReport | None] = []
+    for a in range(k):
+        i = phases[out_q[a]]
+        out.append(SafetyReport(factor=float(K), met=float(met[a]), outside=float(outside[a]),
+                                at=float(prog.starts[i] + out_u[a] * prog.phases[i].angle), phase=int(i),
+                                kind=prog.phases[i].kind, line=names[line[a]], excess=float(excess[a]),
+                                ok=bool(excess[a] <= tol)))
     return out
 
 
@@ -269,6 +429,7 @@ def check_pressure_many(design: CamDesign, centres: np.ndarray, *, grid: int = 2
         worst[higher], where[higher] = g[higher], at[higher]
     lim = design.limits
     form = lim.closure == "form"
+    safety = _check_safety(design, C, grid, tol)
     out = []
     for a in range(k):
         r = None if np.isnan(rise[a]) else float(rise[a])
@@ -276,9 +437,10 @@ def check_pressure_many(design: CamDesign, centres: np.ndarray, *, grid: int = 2
         ok = r is None or r <= lim.pressure_angle + tol
         if form and b is not None:
             ok = ok and b <= lim.return_limit + tol
+        sf = safety[a]
         out.append(PressureReport(r, None if r is None else float(rise_at[a]), b,
                                   None if b is None else float(ret_at[a]), lim.pressure_angle,
-                                  lim.return_limit if form else None, bool(ok)))
+                                  lim.return_limit if form else None, bool(ok and (sf is None or sf.ok)), sf))
     return out
 
 
@@ -289,7 +451,10 @@ def check_pressure(design: CamDesign, centre: np.ndarray, *, grid: int = 2000, t
     local maximum of the samples (phase ends included) refined by zooming
     into its bracket of two steps (tenfold a step, :data:`ZOOM_STEPS` steps);
     the largest wins. ``ok`` is True when the constrained phases stay within
-    their limits plus ``tol`` radians. :func:`check_pressure_many` does the
+    their limits plus ``tol`` radians and, for a rocker with a safety factor
+    K_C above 1, the centre lies in the K_C zone: every constrained position's
+    two lines moved by seed formula 3.26 (:mod:`cams.verify.safety`, searched
+    the same way; its excess, the sine of an angle, within ``tol``). :func:`check_pressure_many` does the
     same for many centres at once, vectorized (this is
     ``check_pressure_many(design, [centre])[0]``).
 

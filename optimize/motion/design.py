@@ -9,6 +9,13 @@ not convex: sequential convex programming (:mod:`optimize.motion.rocker`, a
 flat face's :mod:`optimize.motion.flat_rocker`) gives a local optimum and its
 measure, no bound. The caller (:mod:`cams.motion_design`) then sizes and checks
 the cam of the laws found, which gives the upper bound.
+
+A translating follower's laws then go through a second stage
+(:mod:`optimize.motion.smooth`): the same conservative program with the
+objective held within ``(1 + smoothing_slack)`` of the value found, minimizing
+the integral of the squared derivative after the last continuous one; the
+first stage's laws are kept beside them (:attr:`LawDesign.first`) for the
+caller to check and compare. A rocker's laws are its iteration's, unsmoothed.
 """
 
 from __future__ import annotations
@@ -20,12 +27,21 @@ import numpy as np
 
 from cams.model.design import CamDesign, FlatFaceDesign
 from cams.model.follower import Translating
-from cams.model.motiondesign import CAP_KEYS, MAX_ROCKER_SPANS, MotionDesignSpec
+from cams.model.motiondesign import (
+    CAP_KEYS,
+    MAX_DEGREE,
+    MAX_ROCKER_SPANS,
+    MAX_SPANS,
+    MAX_VARIABLES,
+    MotionDesignSpec,
+)
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
 from optimize.motion.conic import ConicProgram, SolverFailure, lower_bound, solve
-from optimize.motion.space import Space
-from optimize.motion.translating import Request, build
+from optimize.motion.lawrows import check_lift
+from optimize.motion.smooth import allowance, pulled_back, smoothing_derivative, smoothing_program
+from optimize.motion.space import CONSISTENT, Space
+from optimize.motion.translating import Request, build, conservative_ratio
 
 __all__ = ["LawDesign", "design_laws", "free_phases", "resolve_caps", "BISECTION_STEPS"]
 
@@ -65,6 +81,13 @@ class LawDesign:
         Rocker: the sequential convex programming's iterations.
     history : tuple of float
         Rocker: the exact value after each accepted step, the start first.
+    first : Program or None
+        The first stage's laws when the second stage (:mod:`optimize.motion.smooth`) replaced them by the
+        smoothest within ``smoothing_slack``; None when no second stage ran (see ``smoothing_note``).
+    first_centre : (float, float) or None
+        The first stage's centre, as ``centre``.
+    smoothing_note : str or None
+        Why no second stage ran, or why its laws were not kept (None when they were, or for no free phase).
     """
 
     program: Program
@@ -80,6 +103,9 @@ class LawDesign:
     local_measure: float | None = None
     iterations: int | None = None
     history: tuple[float, ...] = ()
+    first: Program | None = None
+    first_centre: tuple[float, float] | None = None
+    smoothing_note: str | None = None
 
 
 def free_phases(spec: MotionDesignSpec, program: Program) -> tuple[int, ...]:
@@ -141,6 +167,9 @@ def _check_request(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec) -
     flat = isinstance(design, FlatFaceDesign)
     f = design.follower
     if f.kind == "rocker":
+        if spec.smoothing_slack > 0:
+            raise InputError("optimize.smoothing_slack", "applies to translating followers (one convex program): a "
+                             "rocker's laws are its sequential iteration's local optimum, not smoothed; remove it")
         if spec.spans > MAX_ROCKER_SPANS:
             raise InputError("optimize.spans", f"a rocker's motion design (sequential convex programming) takes "
                              f"from 1 to {MAX_ROCKER_SPANS} spans, got {spec.spans}: its time grows with their "
@@ -228,9 +257,17 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     if not free and spec.objective in ("Ca", "Cj", "jerk_squared", "snap_squared"):
         raise InputError("optimize.free", f"objective {spec.objective!r} is a property of the designed laws: name "
                          "the free phases (free = [] designs none)")
+    size = len(free) * spec.spans * (spec.degree + 1)
+    if size > MAX_VARIABLES:
+        most = MAX_VARIABLES // (len(free) * (spec.degree + 1))
+        raise InputError("optimize.spans", f"{spec.spans} spans of degree {spec.degree} for {len(free)} free "
+                         f"phase{'s' if len(free) > 1 else ''} are {size:,} variables, the programs take at most "
+                         f"{MAX_VARIABLES:,} (their memory grows with the square): at most {most} spans at this "
+                         "degree, or fewer free phases")
     caps = resolve_caps(spec, free)
     kw = {} if pieces is None else {"pieces": pieces}
     space = Space(program, free, spec.degree, spec.spans, spec.continuity, **kw)
+    _check_space(space)
     name = f"designed spline (degree {spec.degree}, {spec.spans} spans, C{spec.continuity})"
     if isinstance(design, FlatFaceDesign) and design.follower.kind == "rocker":
         from optimize.motion.flat_rocker import design_flat_rocker, design_flat_rocker_held
@@ -289,29 +326,111 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
     base = Request(space=space, follower="flat" if flat else "roller", cam_sense=design.cam_sense, limits=limits,
                    caps=caps, objective=spec.objective, bound=bound, centre=centre, x_fixed=x_fixed, hold=held,
                    min_radius=min_radius, length=design.scale)
+    squared = spec.objective in ("jerk_squared", "snap_squared")
     if spec.objective == "pressure_angle":
         result, lb = _bisect_pressure(base, limits)
+        # the second stage: the feasibility program at the ratio found times (1 + slack), its slack at most 0; the
+        # ratio found is the first stage's point's own in the conservative rows (the bisection's end is above it)
+        found = min(conservative_ratio(base, result.v), float(result.value))
+        ratio = min(allowance(found, spec.smoothing_slack), _top(limits))
+        stage, bound = build(replace(base, objective="feasibility", ratio=ratio), "conservative"), 0.0
     else:
-        result = _solve_or_explain(build(base, "conservative"), base)
+        stage = build(base, "conservative")
+        result = _solve_or_explain(stage, base)
+        bound = allowance(float(result.value), spec.smoothing_slack, root=squared)
         relaxed = build(base, "relaxed")
         lb = lower_bound(relaxed, solve(relaxed))
         value = result.value
         if spec.objective == "R0":                # the programs' lengths are in units of the design's scale
             lb, value = lb * design.scale, value * design.scale
-        if spec.objective in ("jerk_squared", "snap_squared"):
+        if squared:
             lb = max(lb, 0.0) ** 2
             value = value**2
         result = replace(result, value=value)
-    v = space.project(result.v)
     nc = space.size
+    ell = design.scale
+
+    def geometry(w: np.ndarray) -> tuple[float, float]:
+        geo = (float(w[nc]) * ell, 0.0) if flat else (float(w[nc]) * ell, float(w[nc + 1]) * ell)
+        if held is not None and not flat:
+            geo = _within(geo, held, x_fixed is not None)
+        return geo
+
+    v = space.project(result.v)
+    first, first_centre, note = None, None, None
+    if free:
+        smoothed, note = _second_stage(stage, space, bound, spec.objective)
+        if smoothed is not None:
+            first, first_centre = space.programme(v, name), geometry(v)
+            v = pulled_back(space, caps, v, space.project(smoothed))
     new_program = space.programme(v, name)
     box = space.bounds(caps)
     binds = bool(np.any((np.abs(v[:nc]) >= 0.999 * box) & space.declared(caps)))
-    ell = design.scale
-    geo = (float(v[nc]) * ell, 0.0) if flat else (float(v[nc]) * ell, float(v[nc + 1]) * ell)
     return LawDesign(program=new_program, free=free, objective=spec.objective, solver_value=float(result.value),
-                     lower_bound=float(lb), centre=geo, caps=caps, space=space, box_binds=binds,
-                     seconds=time.perf_counter() - t0)
+                     lower_bound=float(lb), centre=geometry(v), caps=caps, space=space, box_binds=binds,
+                     seconds=time.perf_counter() - t0, first=first, first_centre=first_centre, smoothing_note=note)
+
+
+def _second_stage(stage: ConicProgram, space: Space, bound: float,
+                  objective: str) -> tuple[np.ndarray | None, str | None]:
+    """The second stage's point (:mod:`optimize.motion.smooth`) on the first stage's program ``stage`` with
+    its objective at most ``bound``: ``(v, None)``, or ``(None, why not)``."""
+    r = smoothing_derivative(space)
+    if {"jerk_squared": 3, "snap_squared": 4}.get(objective) == r:
+        return None, (f"the objective is the smoothing integral itself (of the derivative {r}): its optimum is the "
+                      "smoothest law")
+    try:
+        sol = solve(smoothing_program(stage, space, bound))
+    except SolverFailure as e:
+        return None, f"the second stage's solver failed ({e.status}): the first stage's laws are returned"
+    if not sol.feasible:
+        return None, "the second stage's solver found no point: the first stage's laws are returned"
+    return sol.v[:-1], None
+
+
+def _within(centre: tuple[float, float], held: float, x_fixed: bool) -> tuple[float, float]:
+    """A translating roller's centre ``(x, d)`` (length) put within the size held, ``hypot(x, d) <= held``: the
+    conic solver meets the size's cone only to its tolerance (a centre 7e-8 of R0 outside was returned).
+    Radially, or, with the offset fixed (``x_fixed``), by ``d`` alone; unchanged when it is within."""
+    x, d = centre
+    if np.hypot(x, d) <= held:
+        return centre
+    if x_fixed:
+        d = float(np.sqrt(max(held * held - x * x, 0.0)))
+    else:
+        k = held / float(np.hypot(x, d))
+        x, d = x * k, d * k
+    while np.hypot(x, d) > held and d > 0:       # the rounding of the products
+        d = float(np.nextafter(d, 0.0))
+        if not x_fixed:
+            x = float(np.nextafter(x, 0.0))
+    return x, d
+
+
+def _check_space(space: Space) -> None:
+    """Refuse a space that holds no law meeting the ends and the joints (its equalities have no solution,
+    :meth:`optimize.motion.space.Space.inconsistency`), naming the spans or the degree that would hold one.
+
+    Raises
+    ------
+    InputError
+        Field ``"optimize"``: the space is empty, whatever the cam, the limits and the caps.
+    """
+    if space.inconsistency() <= CONSISTENT:
+        return
+    p, n, c = space.degree, space.spans, space.continuity
+
+    def holds(**change) -> bool:
+        return replace(space, **change).inconsistency() <= CONSISTENT
+
+    spans = next((m for m in range(n + 1, min(n + 2 * (c + 1), MAX_SPANS) + 1) if holds(spans=m)), None)
+    degree = next((q for q in range(p + 1, MAX_DEGREE + 1) if holds(degree=q)), None)
+    ways = [f"{spans} spans" if spans else "", f"degree {degree}" if degree else ""]
+    would = " or ".join(w for w in ways if w)
+    raise InputError("optimize", f"the space (degree {p}, continuity {c}, {n} span{'s' if n > 1 else ''} per free "
+                     f"phase) holds no law that meets the joints' conditions (S(0) = 0, S(1) = 1 and derivatives 1 "
+                     f"to {c} equal to the neighbouring phases' at both ends): "
+                     + (f"{would} would hold one, or a lower continuity" if would else "lower the continuity"))
 
 
 def _rocker_result(steps, spec: MotionDesignSpec, free: tuple[int, ...], caps: dict[tuple[int, int], float],
@@ -329,8 +448,10 @@ def _rocker_result(steps, spec: MotionDesignSpec, free: tuple[int, ...], caps: d
 
 
 def _explain_caps(req: Request) -> None:
-    """Raise naming a cap that no law of the space meets on its own (with the joints), proven by solving the
-    space with that cap alone; return when each alone is feasible."""
+    """Raise when the space alone has no law within the lift (:func:`optimize.motion.lawrows.check_lift`), or
+    naming a cap that no law of the space meets on its own (with the joints), proven by solving the space with
+    that cap alone; return when each alone is feasible."""
+    check_lift(req.space)
     names = {r: k for k, r in CAP_KEYS.items()}
     for (k, r), cap in req.caps.items():
         alone = replace(req, caps={(k, r): cap}, limits={}, objective="Ca",
@@ -346,6 +467,8 @@ def _solve_or_explain(prog: ConicProgram, req: Request):
     sol = solve(prog)
     if sol.feasible:
         return sol
+    if (req.hold is not None or req.centre is not None) and req.follower != "flat" and req.limits:
+        _no_law_at_size(req)
     _explain_caps(req)
     limit = "the convexity limit (limits.min_radius)" if req.follower == "flat" else "the pressure-angle limits"
     field = "limits.min_radius" if req.follower == "flat" else "optimize"
@@ -360,28 +483,87 @@ def _solve_or_explain(prog: ConicProgram, req: Request):
                           "lengthen the free phases, lower the continuity, or raise a cap")
 
 
+def _top(limits: dict[int, float]) -> float:
+    """The largest ratio that keeps every pressure-angle limit (radians) below 90 degrees."""
+    return (np.pi / 2) / max(limits.values()) * (1 - 1e-9)
+
+
+def _proven_above(base: Request, ratio: float) -> bool:
+    """Whether no law of the space meets the limits times ``ratio`` at ``base``'s cam: the relaxed program's
+    proven lower bound of the pressure rows' least slack is above 0 (weak duality; the samples a relaxation)."""
+    rel = build(replace(base, objective="feasibility", ratio=ratio), "relaxed")
+    return lower_bound(rel, solve(rel)) > 0
+
+
+def _least_ratio_proven(base: Request, lo: float, hi: float) -> float:
+    """The largest ratio in ``[lo, hi]`` at which :func:`_proven_above` holds, by bisection (``lo`` where it is
+    known to hold, else 0): no law of the space has a smaller ratio of pressure angle to limit."""
+    a, b = lo, hi
+    for _ in range(BISECTION_STEPS):
+        mid = 0.5 * (a + b)
+        if _proven_above(base, mid):
+            a = mid
+        else:
+            b = mid
+    return a
+
+
+def _down(x: float, digits: int = 6) -> str:
+    """``x`` with ``digits`` significant digits, rounded down (a lower bound printed stays one)."""
+    if x <= 0 or not np.isfinite(x):
+        return f"{x:.{digits}g}"
+    e = int(np.floor(np.log10(x))) - digits + 1
+    q = np.floor(x / 10.0**e) * 10.0**e
+    while q > x:
+        q -= 10.0**e
+    return f"{q:.{digits}g}"
+
+
+def _no_law_at_size(base: Request) -> None:
+    """Raise: no law of the space found meets the pressure-angle limits at the cam held (its size, or the chosen
+    centre), said the same way by every objective, with the least ratio of pressure angle to limit proven.
+
+    First a family infeasible on its own (the lift, a cap: :func:`_explain_caps`); then, when the relaxation
+    proves that no law meets the limits, the least ratio proven (bisection up to every limit at 90 degrees);
+    else that none was found and none is proven not to exist.
+
+    Raises
+    ------
+    InputError, InfeasibleError
+    """
+    _explain_caps(base)
+    where = ("at the chosen cam" if base.centre is not None or base.hold is None else
+             f"at the cam size held (R0 = {base.hold:.10g} mm)")
+    with_caps = " with the caps (each cap alone is feasible)" if base.caps else ""
+    top = _top(base.limits)
+    one = min(1.0, top)
+    if not _proven_above(base, one):
+        raise InfeasibleError("optimize", f"no law of the space found meets the pressure-angle limits at every cam "
+                              f"angle {where}{with_caps}, and none is proven not to (the relaxation at samples "
+                              "has laws that meet them): let the cam grow (objective 'R0'), choose a larger cam, or "
+                              "add spans")
+    if _proven_above(base, top):
+        raise InfeasibleError("optimize", f"no law of the space meets the caps {where} with any pressure angle "
+                              "below 90 degrees (each cap alone is feasible)")
+    least = _least_ratio_proven(base, one, top)
+    raise InfeasibleError("optimize", f"the pressure-angle limits admit no law of the space {where}{with_caps}: "
+                          f"the least ratio of pressure angle to limit there is at least {_down(least)} (proven); "
+                          "let the cam grow (objective 'R0') or choose a larger cam")
+
+
 def _bisect_pressure(base: Request, limits: dict[int, float]):
-    """The least ratio of pressure angle to limit: bisection on feasibility.
+    """The least ratio of pressure angle to limit, at most 1: bisection on feasibility.
 
     Upper end: the conservative program feasible (slack <= 0) at the ratio.
     Lower end: the relaxed program proven infeasible at the ratio (its proven
-    lower bound of the least slack is > 0).
+    lower bound of the least slack is > 0). When no law found meets the
+    limits themselves (ratio 1), :func:`_no_law_at_size` says so.
     """
-    top = (np.pi / 2) / max(limits.values()) * (1 - 1e-9)
-    lo, hi = 0.0, min(1.0, top)
-    feas = None
-    while True:
-        req = replace(base, objective="feasibility", ratio=hi)
-        sol = solve(build(req, "conservative"))
-        if sol.feasible and sol.value <= 0:
-            feas = sol
-            break
-        if hi >= top:
-            _explain_caps(base)
-            raise InfeasibleError("optimize", "no law of the space meets the caps at the cam size held with any "
-                                  "pressure angle below 90 degrees (each cap alone is feasible)")
-        lo, hi = hi, min(2 * hi, top)
-    up_lo = lo
+    hi = min(1.0, _top(limits))
+    feas = solve(build(replace(base, objective="feasibility", ratio=hi), "conservative"))
+    if not (feas.feasible and feas.value <= 0):
+        _no_law_at_size(base)
+    up_lo = 0.0
     for _ in range(BISECTION_STEPS):
         mid = 0.5 * (up_lo + hi)
         sol = solve(build(replace(base, objective="feasibility", ratio=mid), "conservative"))
@@ -389,14 +571,4 @@ def _bisect_pressure(base: Request, limits: dict[int, float]):
             hi, feas = mid, sol
         else:
             up_lo = mid
-    # the proven lower end: largest ratio at which the relaxation is proven infeasible
-    a, b = 0.0, hi
-    for _ in range(BISECTION_STEPS):
-        mid = 0.5 * (a + b)
-        rel = build(replace(base, objective="feasibility", ratio=mid), "relaxed")
-        if lower_bound(rel, solve(rel)) > 0:
-            a = mid
-        else:
-            b = mid
-    assert feas is not None
-    return replace(feas, value=hi), a
+    return replace(feas, value=hi), _least_ratio_proven(base, 0.0, hi)

@@ -12,13 +12,18 @@ from __future__ import annotations
 
 import numpy as np
 
-from laws.errors import InfeasibleError
+from laws.errors import InfeasibleError, InputError
 from optimize.motion.conic import Cone, ConicProgram, solve
 from optimize.motion.space import Space
 from optimize.motion.translating import S_MARGIN, SAMPLES_PER_SPAN, TIGHTEN
 
-__all__ = ["samples", "fit", "cap_rows", "trust_rows", "held_objective", "held_value", "within_caps",
-           "stepped_laws"]
+__all__ = ["HOLD_RTOL", "samples", "fit", "check_lift", "cap_rows", "trust_rows", "held_objective", "held_value",
+           "within_caps", "stepped_laws"]
+
+#: The held size is met within this (relative): the space's law nearest the original ones may need a cam
+#: larger by the rounding of their fit (a size held at the original laws' least R0 is then that law's). A
+#: designed cam larger than the size held by more is said so, and not certified (:mod:`cams.motion_design`).
+HOLD_RTOL = 1e-8
 
 
 def samples(space: Space) -> np.ndarray:
@@ -56,9 +61,38 @@ def fit(space: Space, caps: dict[tuple[int, int], float]) -> np.ndarray:
     enforce[-1] = True
     sol = solve(ConicProgram(cost, G, h, A, b, lo, hi, (Cone(a, 0.0, F, f),), enforce))
     if not sol.feasible:
+        check_lift(space)
         raise InfeasibleError("optimize", "the caps admit no law of the space with the joints' conditions: raise "
                               "a cap or lower the continuity")
     return space.project(sol.v[:-1])
+
+
+def check_lift(space: Space) -> None:
+    """Refuse a space none of whose laws meets the ends and the joints with the follower within its lift as
+    every program keeps it (``S`` within [0, 1], :data:`optimize.motion.translating.S_MARGIN` outside allowed,
+    on the Bernstein coefficients of every piece of every span): a linear program on the space alone. The
+    caller asks it once a program of the space is infeasible, before it blames the caps or the limits.
+
+    Raises
+    ------
+    InputError
+        Field ``"optimize"``: no law to search, whatever the cam, the limits and the caps.
+    """
+    n = space.size
+    rows = np.vstack([space.rows(k, 0, n) for k in range(len(space.free))])
+    G = np.vstack([rows, -rows])
+    h = np.concatenate([np.full(rows.shape[0], 1 + S_MARGIN), np.full(rows.shape[0], S_MARGIN)])
+    A, b = space.equalities(n)
+    hi = space.bounds()
+    if solve(ConicProgram(np.zeros(n), G, h, A, b, -hi, hi, (), np.zeros(n, bool))).feasible:
+        return
+    spans = space.spans
+    raise InputError("optimize", f"the space (degree {space.degree}, continuity {space.continuity}, {spans} "
+                     f"span{'s' if spans > 1 else ''} per free phase) holds no law that meets the joints' conditions "
+                     f"and keeps the follower within its lift (S between 0 and 1 on the Bernstein coefficients of "
+                     f"{space.pieces} pieces a span, as the programs keep it): a fixed neighbour meets a free phase "
+                     "moving out of the lift, or the space is too narrow; free the neighbour, or raise the spans or "
+                     "the degree")
 
 
 def cap_rows(space: Space, caps: dict[tuple[int, int], float], n: int) -> tuple[np.ndarray, np.ndarray]:

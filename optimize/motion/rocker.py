@@ -45,6 +45,7 @@ from laws.errors import InfeasibleError
 from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram
 from optimize.motion.lawrows import (
+    HOLD_RTOL,
     cap_rows,
     fit,
     held_objective,
@@ -310,11 +311,6 @@ def _zone_admits(design: CamDesign, program: Program, centre: np.ndarray) -> boo
     u = np.linspace(0.0, 1.0, RATIO_SAMPLES)
     worst = max(float(np.max(wedges(d, {i: u}).violation(centre))) for i, _ in d.constrained_phases())
     return worst <= 1e-9 * design.scale
-
-
-#: The held size is met within this (relative): the space's law nearest the original ones may need a cam
-#: larger by the rounding of their fit (a size held at the original laws' least R0 is then that law's).
-HOLD_RTOL = 1e-8
 
 
 def held_size(least: float, hold: float, caps: dict) -> float:

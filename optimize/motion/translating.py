@@ -35,7 +35,7 @@ from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram
 from optimize.motion.space import Space
 
-__all__ = ["Request", "build", "SAMPLES_PER_SPAN", "FIXED_SAMPLES", "TIGHTEN", "S_MARGIN"]
+__all__ = ["Request", "build", "conservative_ratio", "SAMPLES_PER_SPAN", "FIXED_SAMPLES", "TIGHTEN", "S_MARGIN"]
 #: Sample points per span of the relaxation (ends included).
 SAMPLES_PER_SPAN = 17
 #: Sample points of a fixed (not free) constrained phase.
@@ -261,3 +261,35 @@ def build(req: Request, form: str) -> ConicProgram:
     enforce[nc:] = True             # the geometry and t; the coefficients' box is declared, not handed over
     return ConicProgram(cost=cost, G=np.vstack(G) if G else np.zeros((0, n)), h=np.concatenate(h) if h else
                         np.zeros(0), A=A, b=b, lo=lo, hi=hi, cones=tuple(cones), enforce=enforce)
+
+
+def conservative_ratio(req: Request, v: np.ndarray) -> float:
+    """The least ratio of the pressure-angle limits at which ``v`` meets the rows of :func:`build`'s
+    ``"conservative"`` program (roller; the laws' variables, then ``x, d`` over ``req.length``).
+
+    A free phase's rows are ``sign (s' + eps x) <= T (d + s)`` on the Bernstein coefficients of every piece,
+    a fixed one's at its samples, with ``T = tan(ratio * limit)``: the least ``T`` of each row is the ratio of
+    its two sides. ``inf`` when some ``d + s`` is not positive where ``s' + eps x`` is not 0.
+    """
+    sp = req.space
+    nc = sp.size
+    ell = float(req.length)
+    index = {i: k for k, i in enumerate(sp.free)}
+    x, d = float(v[nc]), float(v[nc + 1])
+    eps = float(req.cam_sense)
+    worst = 0.0
+    for i, limit in req.limits.items():
+        if i in index:
+            sh, beta, lev = sp.phase_scale(i)
+            k = index[i]
+            ds = sh / ell / beta * (sp.rows(k, 1, v.size, elevate=True) @ v)
+            s = lev / ell + sh / ell * (sp.rows(k, 0, v.size) @ v)
+        else:
+            s, ds, _ = _fixed_motion(sp.program, i, FIXED_SAMPLES)
+            s, ds = s / ell, ds / ell
+        top, bottom = np.abs(ds + eps * x), d + s
+        if np.any((bottom <= 0) & (top > 0)):
+            return float("inf")
+        need = np.max(np.where(bottom > 0, top / np.where(bottom > 0, bottom, 1.0), 0.0))
+        worst = max(worst, float(np.arctan(need)) / limit)
+    return worst

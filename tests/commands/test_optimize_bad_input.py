@@ -91,6 +91,11 @@ def with_law(table: str) -> tuple[tuple[str, str], ...]:
     ("spans = 0", "optimize.spans"),
     ('objective = "snap_squared"\ndegree = 3\ncontinuity = 2', "optimize.degree|optimize.continuity"),
     ("foo = 1", "optimize"),
+    ("smoothing_slack = 1", "optimize.smoothing_slack"),          # the share given up: [0, 1)
+    ("smoothing_slack = -0.01", "optimize.smoothing_slack"),
+    ('smoothing_slack = "0.1"', "optimize.smoothing_slack"),
+    ("smoothing_slack = true", "optimize.smoothing_slack"),
+    ("smoothing_slack = nan", "optimize.smoothing_slack"),
 ])
 def test_optimize_key_refused(tmp_path, snippet, field):
     p = design(tmp_path, TF, f"[optimize]\n{snippet}\n")
@@ -120,6 +125,8 @@ def test_solve_objective_beside_optimize(tmp_path):
     ("rocker_flat", "continuity = 1\ndegree = 5", "optimize.continuity"),
     ("rocker_flat", "spans = 41", "optimize.spans"),
     ("rocker_force", "spans = 41", "optimize.spans"),
+    ("rocker_force", "smoothing_slack = 0.01", "optimize.smoothing_slack"),    # translating followers only
+    ("rocker_flat", "smoothing_slack = 0.01", "optimize.smoothing_slack"),
 ])
 def test_objective_or_space_that_does_not_apply(tmp_path, example, snippet, field):
     p = design(tmp_path, example, f"[optimize]\n{snippet}\n")

@@ -362,3 +362,51 @@ def test_not_verified_says_which_limit_and_by_how_much_once(tmp_path, capsys, co
     value, by = map(float, re.search(r"angle ([\d.]+) deg exceeds the limit [\d.]+ deg by ([\d.]+) deg", hits[0]).groups())
     ref, _ = _largest_rise_pressure_angle(small, solve(design_from_dict(small)).centre)
     assert value == pytest.approx(ref, abs=2e-4) and by == pytest.approx(ref - d["limits"]["pressure_angle"], abs=2e-4)
+
+
+# -- the safety factor K_C is a limit of the chosen cam too (issue 28, item 2) --------------------------------
+
+
+def _with_safety(K: float) -> dict:
+    d = read_toml(EXAMPLES / "rocker_force.toml")
+    d["limits"]["safety_factor"] = K
+    return d
+
+
+@pytest.mark.parametrize("command", ["solve", "check"])
+def test_a_chosen_centre_outside_the_safety_factors_zone_fails_by_how_much(tmp_path, capsys, command):
+    """rocker_force with K_C = 1.3 and centre (137.2, 26.6), inside the zone of the limit alone: before, "verified:
+    yes; usable: yes", exit 0. Now not verified, one FAIL line with the K_C met and the distance outside (13.259 mm,
+    the zone's own largest violation sampled at 20,000 steps a phase: 13.258966 mm; the K_C met is checked against
+    the seed's formula 3.26 in tests/validation/test_safety_factor.py)."""
+    d = _chosen(_with_safety(1.3), centre=(137.2, 26.6))
+    path = str(_file(tmp_path, d))
+    code, out, _ = _run(capsys, command, path)
+    assert code == 1
+    hits = [ln for ln in out.splitlines() if "safety factor" in ln]
+    assert len(hits) == 1 and hits[0].lstrip().startswith("FAIL: not verified: safety factor K_C = 1.3 not met"), out
+    m = re.search(r"meets is ([\d.]+); it lies ([\d.]+) mm outside the K_C zone's t-t line at cam angle ([\d.]+) deg "
+                  r"\(rise, \[\[motion\]\] 1\)", hits[0])
+    assert m, hits[0]
+    met, outside, at = map(float, m.groups())
+    assert met == pytest.approx(1.1302, abs=1e-4) and outside == pytest.approx(13.259, abs=1e-3)
+    assert at == pytest.approx(50.485, abs=1e-3)
+    assert "verified: NO" in out and "usable: NO" in out
+    if command == "solve":
+        code, out, _ = _run(capsys, "solve", path, "--json")
+        rep = json.loads(out)
+        assert code == 1 and rep["verified"] is False
+        sf = rep["safety_factor"]
+        assert sf["required"] == 1.3 and sf["ok"] is False and sf["line"] == "t-t" and sf["phase"] == 0
+        assert sf["met"] == pytest.approx(met, abs=1e-4) and sf["outside"] == pytest.approx(outside, abs=1e-3)
+
+
+def test_the_smallest_cam_for_the_safety_factor_chosen_by_its_centre_passes(tmp_path, capsys):
+    """The exact method's cam for K_C = 1.3 (R0 46.433 mm), chosen by its centre: every command's rule passes it;
+    the same centre with K_C = 1.4 fails (its K_C met is 1.3)."""
+    res = solve(design_from_dict(_with_safety(1.3)))
+    assert res.R0 == pytest.approx(46.43, abs=0.01) and res.verified
+    code, out, _ = _run(capsys, "check", str(_file(tmp_path, _chosen(_with_safety(1.3), centre=res.centre))))
+    assert code == 0, out
+    code, out, _ = _run(capsys, "solve", str(_file(tmp_path, _chosen(_with_safety(1.4), centre=res.centre))))
+    assert code == 1 and "safety factor K_C = 1.4 not met: the largest K_C the centre meets is 1.3;" in out, out

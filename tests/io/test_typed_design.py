@@ -59,7 +59,7 @@ BUILT = {
         Translating(8.0, stroke_scale=30.0), program(30.0, *_cycle("poly4567", 150, 30, "cycloidal", 120)),
         Limits(np.radians(30.0)), cam_sense=CCW, name="translating roller cam, rise designed",
         optimize=MotionDesignSpec(free=("rise",), objective="R0", max_Ca=("poly4567",), max_Cj=("poly4567",),
-                                  continuity=3, degree=7, spans=20)),
+                                  continuity=3, degree=7, spans=20, smoothing_slack=0.001)),
     "translating_form_centric": CamDesign(
         Translating(6.0, offset=0.0, stroke_scale=20.0), program(20.0, *_cycle("cycloidal", 120, 60, "poly345", 120)),
         Limits(np.radians(30.0), closure="form"), cam_sense=CW, name="centric translating groove cam"),

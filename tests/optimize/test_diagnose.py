@@ -24,7 +24,7 @@ import pytest
 from cams.cli import main
 from cams.io.designfile import design_from_dict
 from cams.solve import solve
-from cams.verify.pressure import check_pressure
+from cams.verify.pressure import check_pressure, check_pressure_many
 from laws.errors import CamsError, InfeasibleError, SolverError
 from optimize.diagnose import _attained, diagnosed, explain_infeasible, relaxations, zone_margin
 from tests.conftest import EXAMPLES, rocker_dict
@@ -60,14 +60,19 @@ def _grid_admissible(design, half: float = 3000.0, step: float = 15.0) -> np.nda
 
 
 def _brute_force_brackets(dct, key: str, value_deg: float, **grid):
-    """Nothing admissible 0.1 deg below the value; something 0.5 deg above, confirmed by check_pressure."""
+    """Nothing admissible 0.1 deg below the value; something 0.5 deg above, confirmed by check_pressure.
+
+    The reference knows no safety factor: its zone holds the K_C zone, so nothing there below the value means
+    nothing in the K_C zone either, and above it one of its centres (40 spread over them) must pass the check
+    with K_C held, as the diagnosis says ("the other limits held").
+    """
     d = design_from_dict(dct)
     below = d.with_(limits=replace(d.limits, **{key: np.radians(value_deg - 0.1)}))
     above = d.with_(limits=replace(d.limits, **{key: np.radians(value_deg + 0.5)}))
     assert len(_grid_admissible(below, **grid)) == 0
     found = _grid_admissible(above, **grid)
     assert len(found) > 0
-    assert check_pressure(above, found[len(found) // 2]).ok
+    assert any(r.ok for r in check_pressure_many(above, found[::max(1, len(found) // 40)]))
 
 
 def test_force_rocker_7_deg_names_the_rise_limit_and_its_infimum():

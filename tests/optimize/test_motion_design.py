@@ -206,7 +206,8 @@ def test_printed_peaks_are_the_laws_dense_peaks(designed):
     for k, key in ((1, "Cv"), (2, "Ca"), (3, "Cj")):
         assert p[key] == pytest.approx(np.max(np.abs(S[k])), rel=1e-6)
     assert p["original"] == {"law": "poly4567", "Cv": pytest.approx(2.1875, rel=1e-6),
-                             "Ca": pytest.approx(7.5132, rel=1e-4), "Cj": pytest.approx(52.5, rel=1e-6)}
+                             "Ca": pytest.approx(7.5132, rel=1e-4), "Cj": pytest.approx(52.5, rel=1e-6),
+                             "jerk_variation": pytest.approx(273.0, rel=1e-6)}
 
 
 def test_least_pressure_angle_at_todays_size():

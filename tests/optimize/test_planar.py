@@ -220,7 +220,7 @@ def test_lower_bound_never_exceeds_the_distance():
 from laws.errors import CamsError, SolverError  # noqa: E402
 
 #: The two cuts on which the exact method gave up ("did not settle in 108 steps") for
-#: ../shared/repro/answers/exact_nosettle_2178.toml: t-t lines 1.2e-3 rad apart, from the target T = A0.
+#: the reproducer exact_nosettle_2178 (an independent campaign's): t-t lines 1.2e-3 rad apart, from the target T = A0.
 PAIR_T = np.array([4.259996571466902, 0.0])
 PAIR_N = np.array([[0.4075486535907736, 0.9131834946802025], [0.40862162338718727, 0.9127038779913338]])
 PAIR_C = np.array([-4.002871822467924, -4.002871652183345]) + PAIR_N @ PAIR_T

@@ -69,3 +69,19 @@ def test_report_has_the_motion_design_table_and_picture(cam):
     assert rows["proven lower bound"].startswith(f"{o['lower_bound']:.6g} mm")
     assert rows["certified"] == "yes"
     assert any(name.startswith("Motion design") for name, _ in _figures(cam))
+
+
+def test_picture_draws_the_first_stage_law_beside_the_smoothed_one(cam):
+    """The second stage smoothed the law: the first stage's (from the report's law table) is drawn too."""
+    from laws.spline import SplineLaw
+
+    sm = cam.solution.optimization.smoothing
+    assert sm["smoothed"]
+    fig = plot_motion_design(cam)
+    jerk = fig.axes[3]
+    first = next(ln for ln in jerk.lines if ln.get_label().startswith("first stage"))
+    (table,) = sm["first_stage_laws"]
+    law = SplineLaw(tuple(table["breaks"]), tuple(tuple(r) for r in table["coefficients"]))
+    u = np.asarray(first.get_xdata())
+    assert np.allclose(first.get_ydata(), law.evaluate(u)[3])
+    assert "total variation of S'''" in fig.get_suptitle()

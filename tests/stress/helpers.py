@@ -173,7 +173,8 @@ def check_result(result, *, exact: bool) -> None:
         p = result.pressure
         assert p.ok, (f"exact result not verified: rise {np.degrees(p.rise)!r} deg "
                       f"(limit {np.degrees(p.rise_limit)!r}), return "
-                      f"{None if p.ret is None else np.degrees(p.ret)!r} deg")
+                      f"{None if p.ret is None else np.degrees(p.ret)!r} deg; "
+                      f"{None if p.safety is None else p.safety.failure()}")
         assert result.R0 > 0, "the cam centre coincides with the roller's start point (R0 = 0)"
         if result.mode in ("min_R0", "min_L", "fixed_offset"):
             assert result.error_bound is not None and math.isfinite(result.error_bound)

@@ -37,7 +37,7 @@ from .helpers import assert_minimal, guarded
 
 SCALES = (1e-2, 1.0, 1e3)
 
-#: ../shared/repro/answers/exact_nosettle_2178.toml: did not settle at x0.1, x1 and x10.
+#: the reproducer exact_nosettle_2178 (an independent campaign's): did not settle at x0.1, x1 and x10.
 REPRO_2178 = {
     "name": "fuzz 2178",
     "follower": {"kind": "rocker", "arm": 4.259996571466902, "swing": 17.584887365948955, "rise_direction": "ccw"},
