@@ -222,6 +222,47 @@ def _narrow(fam: _Family, lo: float, g_lo: float, hi: float, g_hi: float, best: 
     return hi, best[0], best[1]
 
 
+def _sampled_valid(fam: _Family, hi: float, base: SolveResult) -> tuple[float, SolveResult, str]:
+    """The family's smallest cam above ``hi`` whose sampled profile also passes (a valid closed curve round the
+    centre: :meth:`cams.faces.base.Face.profile_passes`), where the exact extrema pass but the polygon does not (a
+    cam just clear of its roller, its smallest radius near 0). The floor rises from ``hi`` by steps of ``BELOW``
+    doubling, then a bisection to 1e-9 of R0; returns ``(floor, cam, why)``.
+
+    Raises
+    ------
+    InfeasibleError
+        The family ends first (``follower.roller_radius``).
+    """
+    def ok(F: float):
+        try:
+            cand, v = fam.at(F)
+        except CamsError:
+            return None, False
+        return cand, v.passed and fam.face.profile_passes(cand)
+
+    lo, step, F = hi, BELOW, hi
+    for _ in range(60):
+        F = hi * (1 + step)
+        cand, good = ok(F)
+        if cand is None:
+            raise InfeasibleError("follower.roller_radius", f"no cam of this design meets it: its sampled working "
+                                  f"profile crosses itself from R0 = {hi:.6g} mm to the family's end")
+        if good:
+            break
+        lo, step = F, 2 * step
+    else:       # pragma: no cover - a crossing 2**60 times BELOW wide
+        raise InfeasibleError("follower.roller_radius", "no cam of this design meets it: its sampled working "
+                              f"profile crosses itself from R0 = {hi:.6g} mm up")
+    while F - lo > 1e-9 * F:
+        mid = 0.5 * (lo + F)
+        c2, good = ok(mid)
+        if good:
+            F, cand = mid, c2
+        else:
+            lo = mid
+    return F, cand, f" (below it the sampled working profile crosses itself; its exact extrema pass from {hi:.6g} mm)"
+
+
 def size_to_part(face: Face, design, base: SolveResult,
                  size_at: Callable[[float], SolveResult]) -> tuple[SolveResult, float | None]:
     """The smallest cam of ``design``'s floor family that meets every constraint of the part (see the module).
@@ -304,6 +345,9 @@ def size_to_part(face: Face, design, base: SolveResult,
     governs = vb.failing[0]
     c = vb.failed_check(governs)
     why = f" ({c.message})" if c is not None else ""
+    if not face.profile_passes(cand):       # the sampled profile crosses itself where exact extrema pass
+        hi, cand, why = _sampled_valid(fam, hi, base)
+        governs = "undercut"
     notes = [n for n in base.notes if not n.startswith(_STALE_NOTES)]
     notes.append(f"sized to the part: R0 raised from {base.R0:.6g} mm ({_start(base.governs)}) "
                  f"to {cand.R0:.6g} mm, the smallest cam of the floor family that meets every constraint; the "

@@ -239,6 +239,18 @@ def test_a_chosen_cam_that_fails_the_bore_says_the_least_R0_that_fits():
     assert fits.L == pytest.approx(134.688464, rel=1e-9)
 
 
+def test_a_chosen_cam_whose_bore_no_cam_of_its_L_clears_is_refused(tmp_path, capsys):
+    """A chosen cam (R0 at L = 140 mm) with a bore beyond every cam of that L: one line naming the bore, exit 2."""
+    from cams.io.tomlwrite import dumps
+
+    f = tmp_path / "chosen.toml"
+    f.write_text(dumps(rocker_dict(cam={"bore_radius": 200.0, "base_radius": 30.0},
+                                   limits={"centre_distance": 140.0})), encoding="utf-8")
+    assert main(["check", str(f)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("cams check: error: cam.bore_radius: the chosen cam's smallest radius")
+
+
 @pytest.mark.parametrize("cam, field", [
     ({"bore_radius": 200.0}, "cam.bore_radius"),                    # beyond every cam at this L
     ({"bore_radius": 100.0, "hub_wall": 60.0}, "cam.hub_wall"),     # the bore alone fits; the wall does not
