@@ -42,7 +42,7 @@ from cams.faces.result import SolveResult
 from cams.model.follower import Rocker, Translating
 from cams.model.motiondesign import MotionCertificate
 from laws.base import Law
-from laws.errors import InfeasibleError
+from laws.errors import CamsError, InfeasibleError
 from laws.program import Program
 
 if TYPE_CHECKING:
@@ -163,46 +163,18 @@ def _law_table(law: Law) -> dict:
             "coefficients": [[float(x) for x in row] for row in law.coefficients]}
 
 
-#: Relative accuracy of the smallest passing R0 when the optimum fails the profile's checks.
-FALLBACK_RTOL = 1e-4
-
-
 def _passing(new, sol, size_fixed: Callable[[Any], Any], face: Face):
-    """The designed laws' smallest cam that passes the profile's checks: R0 raised by a floor, bisected.
-
-    The bisection asks ``face.profile_passes(candidate, search=True)`` (a coarser chord for a very large cam, see
-    :meth:`cams.faces.base.Face.profile_passes`); the cam returned passes at the design's own tolerance (raised
-    by ``FALLBACK_RTOL`` steps until it does). Returns the passing solution and the floor (length) it was sized
-    with, or ``(None, None)`` when no cam up to 2**10 times the optimum's R0 passes.
+    """The designed laws' smallest cam that passes the part's constraints (the bore and its hub wall, undercut,
+    curvature): the sizing to the part's one search (:func:`cams.faces.part.size_to_part`) along the floor family
+    of ``new`` from the optimum ``sol``, each floor's cam sized by ``size_fixed``. Returns the passing solution and
+    the floor (length) it was sized with, or ``(None, None)`` when no cam of the family passes.
     """
-    def at(floor: float, search: bool):
-        try:
-            cand = size_fixed(new.with_floor(floor))
-        except InfeasibleError:
-            return None
-        return cand if face.profile_passes(cand, search=search) else None
+    from cams.faces.part import size_to_part
 
-    lo, hi, best = float(sol.R0), float(sol.R0), None
-    for _ in range(40):
-        hi *= 1.2
-        best = at(hi, True)
-        if best is not None:
-            break
-        lo = hi
-        if hi > 1024 * sol.R0:
-            return None, None
-    while hi - lo > FALLBACK_RTOL * hi:
-        mid = 0.5 * (lo + hi)
-        if at(mid, True) is None:
-            lo = mid
-        else:
-            hi = mid
-    for _ in range(100):        # the design's own tolerance
-        best = at(hi, False)
-        if best is not None:
-            return best, hi
-        hi *= 1 + FALLBACK_RTOL
-    return None, None
+    try:
+        return size_to_part(face, new, sol, lambda floor: size_fixed(new.with_floor(floor)))
+    except CamsError:
+        return None, None
 
 
 #: Bisection steps of :func:`_checked_stages` on the way from the first stage's laws to the second's.
@@ -316,9 +288,11 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
     -------
     cams.faces.result.SolveResult
         The cam of the designed laws, its ``optimization`` holding the certificate (a
-        :class:`cams.model.motiondesign.MotionCertificate`). When the optimum of ``"R0"`` fails its profile's
-        checks, the designed laws' smallest cam that passes is returned (R0 raised by a floor, to
-        :data:`FALLBACK_RTOL`), and a note gives the optimum that failed; the lower bound stays the optimum's.
+        :class:`cams.model.motiondesign.MotionCertificate`). The cams of fixed laws are sized by the pressure angle
+        alone (a flat face: convexity); when the optimum of ``"R0"`` fails the part's constraints and the design
+        asks for all (``constraints = "all"``), the designed laws' smallest cam that passes is returned (the
+        sizing to the part, :mod:`cams.faces.part`), and a note gives the optimum that failed; the lower bound
+        stays the optimum's.
     """
     from optimize.motion.design import design_laws
 
@@ -326,8 +300,8 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
     assert spec is not None
     face = face_of(design)
 
-    def size_fixed(d):
-        return face.size(d, method=method)
+    def size_fixed(d):     # by the face's own limit: the part's constraints are the fallback's below
+        return face.size(d.with_(constraints="pressure_angle"), method=method)
 
     base = design.with_(optimize=None)
     if spec.objective == "L" and isinstance(base.follower, Rocker):
@@ -383,7 +357,7 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
                            f"by {sol.R0 / hold - 1:.2g} (relative; "
                            + ("within the tolerance" if held_ok else "more than the tolerance") + f" {HOLD_RTOL:g})")
     floor = None
-    if spec.objective == "R0" and ld.free and not face.profile_passes(sol):
+    if spec.objective == "R0" and ld.free and design.constraints == "all" and not face.profile_passes(sol):
         better, better_floor = _passing(new, sol, size_fixed, face)
         if reference is not None and face.profile_passes(reference) and (better is None
                                                                          or reference.R0 < better.R0):

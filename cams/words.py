@@ -51,7 +51,7 @@ CHECK_WORDS = {
     "min_curvature_radius": "working profile's smallest radius of curvature",
     "profile_polygon": "working profile is one closed curve: self-crossings",
     "outer_polygon": "groove's outer wall is one closed curve: self-crossings",
-    "bore": "bore inside the cam: working profile's smallest radius, limit the bore radius",
+    "bore": "bore inside the cam: working profile's smallest radius, limit the bore radius plus the hub wall",
     "convexity": "convex profile: smallest radius of curvature, limit limits.min_radius",
 }
 

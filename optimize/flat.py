@@ -23,6 +23,7 @@ from cams.kinematics.flat import (
     curvature_radius,
     cusp_error,
     flat_parts,
+    flat_radii,
     near_dwell_angle,
     oscillating_cusps,
     oscillating_parts,
@@ -225,7 +226,8 @@ class FlatFaceSolution:
     R0_min : float or None
         Smallest base radius with ``rho >= min_radius`` everywhere (None when
         no base radius reaches it and ``cam.base_radius`` was given).
-    R0_source : {"convexity", "limits.min_base_radius", "cam.base_radius"}
+    R0_source : {"convexity", "limits.min_base_radius", "cam.base_radius", "part"}
+        What set R0; ``"part"``: the sizing to the part (:mod:`cams.faces.part`: the bore and its hub wall).
     binding_at : float or None
         Cam angle where rho is smallest at ``R0_min``.
     min_rho, min_rho_at : float
@@ -374,11 +376,16 @@ class FlatFaceSolution:
         fo = self.design.follower
         lo, hi = self.face_range
         deg = lambda x: None if x is None else float(np.degrees(x))  # noqa: E731
+        small, small_at, large, large_at = flat_radii(self.design, self.R0)
         return {
             "name": self.design.name,
             "follower": fo.kind,
             "face": "flat",
             "R0": float(self.R0),
+            "smallest_cam_radius": small,
+            "smallest_cam_radius_at_deg": _deg(small_at),
+            "largest_cam_radius": large,
+            "largest_cam_radius_at_deg": _deg(large_at),
             "R0_min": None if self.R0_min is None else float(self.R0_min),
             "R0_source": self.R0_source,
             "binding_deg": _deg(self.binding_at),

@@ -58,6 +58,7 @@ DOCTEST_MODULES = [
     "cams.kinematics.vectors",
     "cams.kinematics.extremum",
     "cams.kinematics.inversion",
+    "cams.kinematics.peaks",
     # profiles
     "cams.profile.flat",
     "cams.kinematics.flat",

@@ -126,15 +126,14 @@ def polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:
     return Check(name, valid and around, float(crossings), at, 0.0, "", msg)
 
 
-def bore_check(profile, bore: float, *, what: str = "working profile") -> Check:
-    """The ``bore`` check: the working profile's smallest radius exceeds the bore radius (lengths).
+def bore_check(smallest: float, at: float, bore: float, wall: float = 0.0, *, what: str = "working profile") -> Check:
+    """The ``bore`` check: the profile's smallest radius clears the bore by the hub wall (lengths).
 
-    ``profile`` is a sampled cam (:class:`cams.profile.roller.Profile` or
-    :class:`cams.profile.flat.FlatFaceProfile`): its ``min_work_radius`` is the
-    smallest radius, ``at`` the cam angle (radians) of the sample nearest the centre;
-    ``what`` names the curve in the message.
+    ``smallest`` is the cam's exact smallest radius (the kernel's: :func:`cams.kinematics.inversion.
+    smallest_cam_radius`, :func:`cams.kinematics.flat.flat_radii`; not the sampled polyline's) and ``at`` its cam
+    angle (radians); it passes when the wall achieved, ``smallest - bore``, is at least ``wall``; the limit is
+    ``bore + wall``. ``what`` names the curve in the message.
     """
-    k = int(np.argmin(np.linalg.norm(profile.work, axis=1)))
-    rmin = float(profile.min_work_radius)
-    return Check("bore", bool(rmin > bore), rmin, float(profile.phi[k]), float(bore), "mm",
-                 f"{what}'s smallest radius {rmin:.6g} mm vs bore radius {bore:.6g} mm")
+    wall_text = f" + hub wall {wall:.6g} mm" if wall > 0 else ""
+    return Check("bore", bool(smallest - bore >= wall), float(smallest), float(at), float(bore + wall), "mm",
+                 f"{what}'s smallest radius {smallest:.6g} mm vs bore radius {bore:.6g} mm{wall_text}")

@@ -24,7 +24,9 @@ Every check is recomputed from the profile (the pitch curve of
 * ``profile_polygon`` / ``outer_polygon``: the closed sampled curve is a valid,
   simple polygon (no self-intersection) around the cam centre (shapely).
 * ``bore`` (when ``[cam] bore_radius`` is given): the working profile's
-  smallest distance from the cam centre exceeds the bore radius.
+  smallest distance from the cam centre (exact, not the sampled polyline's:
+  :func:`cams.kinematics.inversion.smallest_cam_radius`) is at least the bore
+  radius plus the hub wall (``[cam] hub_wall``, default 0).
 
 Extremes are located on a dense grid per phase (``grid + 1`` positions, and
 both sides of a piecewise law's breakpoints) and refined between grid points
@@ -70,6 +72,7 @@ __all__ = [
     "curvature_extremes",
     "CurvatureExtremes",
     "check_profile",
+    "part_checks",
     "check_solution",
     "RECOMMENDED_ROLLER_FRACTION",
 ]
@@ -262,38 +265,27 @@ def _curvature(design: CamDesign, centre: np.ndarray, maxima: list[dict]) -> Cur
 # -- the checks ------------------------------------------------------------------------------
 
 
-def check_profile(
-    design: CamDesign,
-    centre: np.ndarray,
-    *,
-    options: ProfileOptions | None = None,
-    profile: Profile | None = None,
-    grid: int = 2000,
-) -> CheckReport:
-    """Run every check on the cam of ``design`` with its centre at ``centre``.
+def part_checks(design: CamDesign, centre: np.ndarray, options: ProfileOptions | None = None, *,
+                grid: int = 2000) -> tuple[list[Check], CurvatureExtremes]:
+    """The checks of the cam that need no sampled profile: every one but the polygons', on exact extrema.
 
-    Parameters
-    ----------
-    design : CamDesign
-    centre : array_like, shape (2,)
-        Cam centre in the fixed frame (``SolveResult.centre``), length unit.
-    options : ProfileOptions, optional
-        Tolerance, user minimum radius of curvature, bore radius; default from
-        the design file (:func:`cams.model.options.profile_options`).
-    profile : Profile, optional
-        An already built profile of the same design and centre.
-    grid : int
-        Positions per phase of the dense search for extremes.
+    The pressure angle over each limited phase (``jamming_rise``, ``jamming_return``), ``undercut`` (and
+    ``undercut_outer`` for a groove), ``min_curvature_radius`` (when asked for) and ``bore`` (when a bore is
+    given): the extrema are refined on the kernel's analytic rates (:func:`_phase_maxima`), the smallest radius
+    is :func:`cams.kinematics.inversion.smallest_cam_radius`'s, so the checks do not depend on a sampling. The
+    sizing to the part (:mod:`cams.faces.part`) judges its candidates by these.
 
     Returns
     -------
-    CheckReport
+    checks : list of Check
+        In the order of :func:`check_profile`'s report (the bore last).
+    extremes : CurvatureExtremes
+        The pitch curve's smallest convex and concave radii of curvature.
     """
     opts = options if options is not None else profile_options(design)
     centre = np.asarray(centre, dtype=float)
-    prof = profile if profile is not None else build_profile(design, centre, tolerance=opts.tolerance,
-                                                             field=opts.tolerance_field)
-    r = prof.roller_radius
+    r = float(design.follower.roller_radius)
+    groove = design.limits.closure == "form"
     checks: list[Check] = []
 
     # jamming
@@ -318,30 +310,69 @@ def check_profile(
     checks.append(Check("undercut", bool(ext.convex > r), ext.convex, ext.convex_at, r, "mm",
                         f"smallest convex radius of curvature of the pitch curve {ext.convex:.6g} mm "
                         f"vs roller radius {r:g} mm"))
-    largest = ext.convex
-    if prof.groove:
+    if groove:
         checks.append(Check("undercut_outer", bool(ext.concave > r), ext.concave, ext.concave_at, r, "mm",
                             f"smallest concave radius of curvature of the pitch curve {ext.concave:.6g} mm "
                             f"vs roller radius {r:g} mm (outer wall of the groove)"))
-        largest = min(largest, ext.concave)
     if opts.min_curvature_radius is not None:
         worst, at = ext.convex - r, ext.convex_at
-        if prof.groove and ext.concave - r < worst:
+        if groove and ext.concave - r < worst:
             worst, at = ext.concave - r, ext.concave_at
         checks.append(Check("min_curvature_radius", bool(worst >= opts.min_curvature_radius), worst, at,
                             float(opts.min_curvature_radius), "mm",
                             f"smallest convex radius of curvature of the working profile {worst:.6g}"))
 
+    # bore: checked only against a bore the user gave ([cam] bore_radius); the default bore
+    # is derived from the profile to fit inside it, so a check against it could not fail
+    if opts.bore_radius is not None:
+        checks.append(bore_check(*smallest_cam_radius(design, centre), float(opts.bore_radius), opts.wall))
+    return checks, ext
+
+
+def check_profile(
+    design: CamDesign,
+    centre: np.ndarray,
+    *,
+    options: ProfileOptions | None = None,
+    profile: Profile | None = None,
+    grid: int = 2000,
+) -> CheckReport:
+    """Run every check on the cam of ``design`` with its centre at ``centre``.
+
+    The checks of :func:`part_checks` (on exact extrema) and the polygons' of the sampled profile.
+
+    Parameters
+    ----------
+    design : CamDesign
+    centre : array_like, shape (2,)
+        Cam centre in the fixed frame (``SolveResult.centre``), length unit.
+    options : ProfileOptions, optional
+        Tolerance, user minimum radius of curvature, bore radius and hub wall; default from
+        the design file (:func:`cams.model.options.profile_options`).
+    profile : Profile, optional
+        An already built profile of the same design and centre.
+    grid : int
+        Positions per phase of the dense search for extremes.
+
+    Returns
+    -------
+    CheckReport
+    """
+    opts = options if options is not None else profile_options(design)
+    centre = np.asarray(centre, dtype=float)
+    prof = profile if profile is not None else build_profile(design, centre, tolerance=opts.tolerance,
+                                                             field=opts.tolerance_field)
+    exact, ext = part_checks(design, centre, opts, grid=grid)
+    bore_given = [c for c in exact if c.name == "bore"]
+    checks = [c for c in exact if c.name != "bore"]
+    largest = ext.convex if not prof.groove else min(ext.convex, ext.concave)
+
     # polygons
     checks.append(polygon_check("profile_polygon", prof.work, prof.phi))
     if prof.outer is not None:  # a groove
         checks.append(polygon_check("outer_polygon", prof.outer, prof.phi))
-
-    # bore: checked only against a bore the user gave ([cam] bore_radius); the default bore
-    # is derived from the profile to fit inside it, so a check against it could not fail
+    checks += bore_given
     bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
-    if opts.bore_radius is not None:
-        checks.append(bore_check(prof, bore))
     return CheckReport(
         name=design.name,
         checks=tuple(checks),
@@ -349,7 +380,7 @@ def check_profile(
         largest_roller_radius=float(largest),
         recommended_roller_radius=float(RECOMMENDED_ROLLER_FRACTION * largest),
         bore_radius=float(bore),
-        extra={"smallest_cam_radius": float(smallest_cam_radius(design, centre)[0])},
+        extra={"smallest_cam_radius": float(prof.min_work_radius)},
     )
 
 

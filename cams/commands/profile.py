@@ -5,32 +5,51 @@ from __future__ import annotations
 import argparse
 import json
 
+import numpy as np
+
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, face_cam
 from cams.words import length_format
 
 __all__ = ["register"]
 
 
+#: The outputs of ``cams profile``, by option name.
+OUTPUTS = ("csv", "dxf", "svg", "table")
+
+
 def _check_outputs(args) -> None:
-    """Refuse bad output paths before anything is computed: empty, unwritable, the design file, or one twice."""
+    """Refuse bad output paths and a bad ``--step`` before anything is computed: a path empty, unwritable, the
+    design file, or one twice; a step without ``--table``, not > 0 or not dividing 360."""
     from cams.io.files import check_output_paths
+    from cams.manufacture.table import table_angles
+    from laws.errors import InputError
 
-    check_output_paths([(f"--{opt}", getattr(args, opt)) for opt in ("csv", "dxf", "svg")],
-                       inputs=[("FILE", args.file)])
+    if args.step is not None and args.table is None:
+        raise InputError("--step", "is the lift table's step: give --table OUT too")
+    if args.table is not None:
+        table_angles(1.0 if args.step is None else args.step)
+    check_output_paths([(f"--{opt}", getattr(args, opt)) for opt in OUTPUTS], inputs=[("FILE", args.file)])
 
 
-def _write(args, prof, bore, failing: str = "") -> list[str]:
+def _write(args, cam, prof, bore, failing: str = "") -> list[str]:
     """Write the outputs asked for, all of them or none (each rendered to a temporary first).
 
-    ``failing`` (the reasons a failing cam fails) marks the DXF and SVG as failing; a CSV is never marked.
+    ``failing`` (the reasons a failing cam fails) marks the DXF and SVG as failing; a CSV (the profile's, the
+    lift table) is never marked.
     """
     from cams.io.files import STDOUT, all_or_nothing
     from cams.manufacture.dxf import write_dxf
     from cams.manufacture.points import write_csv
     from cams.manufacture.svg import write_svg
+    from cams.manufacture.table import table_angles, write_table
 
     written = []
     with all_or_nothing():
+        if args.table is not None:
+            deg = table_angles(1.0 if args.step is None else args.step)
+            cols = cam.face.table(cam.design, cam.solution, np.radians(deg))
+            cols[0] = ("phi_deg", deg)      # the datum's angles as given, not through radians
+            written.append(str(write_table(cols, args.table)))
         if args.csv is not None:
             written.append(str(write_csv(prof, args.csv)))
         if args.dxf is not None:
@@ -46,7 +65,7 @@ def _summary_stream(args):
 
     from cams.io.files import writes_stdout
 
-    return sys.stderr if any(writes_stdout(getattr(args, o)) for o in ("csv", "dxf", "svg")) else sys.stdout
+    return sys.stderr if any(writes_stdout(getattr(args, o)) for o in OUTPUTS) else sys.stdout
 
 
 def _report(cam, prof, bore, given) -> dict:
@@ -79,7 +98,7 @@ def run(args) -> int:
         bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
     rep = _report(cam, prof, bore, opts.bore_radius)
     rep.update(a.to_dict())
-    asked = any(getattr(args, o) is not None for o in ("csv", "dxf", "svg"))
+    asked = any(getattr(args, o) is not None for o in OUTPUTS)
     refused = ""
     written: list[str] = []
     if asked and prof is None:
@@ -88,7 +107,7 @@ def run(args) -> int:
         refused = "the cam fails (" + ", ".join(a.short) + "); --allow-failed writes them, marked as failing"
     elif asked:
         # a suggested bore is not drawn: only a given one
-        written = _write(args, prof, opts.bore_radius, failing="" if a.usable else "; ".join(a.failures))
+        written = _write(args, cam, prof, opts.bore_radius, failing="" if a.usable else "; ".join(a.failures))
     rep["written"] = written
     if args.json:
         print(json.dumps(rep, indent=2), file=out)
@@ -115,12 +134,11 @@ def register(sub) -> None:
         "profile",
         help="solve, then export the cam profile as CSV, DXF or SVG",
         description="Solve a design file and write its profile in the cam frame (mm): pitch curve, working "
-                    "profile (and outer groove wall), sampled within a chord tolerance. A flat-faced follower's cam "
-                    "has no pitch curve: CSV columns phi_deg,work_x,work_y. The files of a cam that fails a check "
-                    "(not verified, or not buildable: no working profile, undercut, an invalid profile, the bore, "
+                    "profile (and outer groove wall), within a chord tolerance; or its lift table. The files of a cam "
+                    "that fails a check (not verified, or not buildable: undercut, an invalid profile, the bore, "
                     "[dynamics]) are written only with --allow-failed. Exit code 0: usable, 1: a check fails, "
                     "2: bad input.",
-        epilog="example: cams profile examples/rocker_force.toml --csv cam.csv --dxf cam.dxf --svg cam.svg",
+        epilog="example: cams profile examples/rocker_force.toml --dxf cam.dxf --table lift.csv --step 1",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     q.add_argument("file", help="design file (TOML)")
@@ -130,6 +148,9 @@ def register(sub) -> None:
                    "(a groove's outer wall), PITCH (roller-centre path), BASE (circle of radius R0, the pitch curve's "
                    "base circle), BORE")
     q.add_argument("--svg", metavar="OUT", help="write an SVG drawing to scale")
+    q.add_argument("--table", metavar="OUT", help="write the lift table (CSV, units in the header) per --step from "
+                   "cam angle 0: lift, points (polar, x y), pressure angle, radius of curvature")
+    q.add_argument("--step", type=float, metavar="DEG", help="lift table step, degrees dividing 360 (default 1)")
     q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
                    help="override [solve] method (roller followers)")

@@ -11,9 +11,12 @@ from abc import ABC, abstractmethod
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any, ClassVar
 
+import numpy as np
+
 from laws.errors import InputError
 
 if TYPE_CHECKING:
+    from cams.checks.base import Check
     from cams.faces.result import SolveResult
     from cams.model.options import ProfileOptions
 
@@ -47,6 +50,27 @@ class Face(ABC):
         InfeasibleError
             No cam meets the limits.
         """
+
+    @abstractmethod
+    def part_checks(self, design, solution: SolveResult) -> list[Check]:
+        """The checks of the cam that need no sampled profile, on exact extrema (the pressure angle or convexity,
+        undercut, the least radius of curvature, the bore and its hub wall): what the sizing to the part
+        (:mod:`cams.faces.part`) judges its candidates by."""
+
+    @abstractmethod
+    def radii(self, design, solution: SolveResult) -> tuple[float, float, float, float]:
+        """The cam's exact smallest and largest radius and their cam angles: ``(smallest, at, largest, at)``
+        (lengths, radians); the largest is the blank's radius."""
+
+    @abstractmethod
+    def bore_R0(self, design) -> float | None:
+        """The least R0 whose cam can clear the bore by the hub wall (length; None without a bore): the working
+        profile's smallest radius is at most its value at the near dwell, so no smaller cam can."""
+
+    @abstractmethod
+    def table(self, design, solution: SolveResult, phi: np.ndarray) -> list[tuple[str, np.ndarray]]:
+        """The lift table at cam angles ``phi`` (radians from the first ``[[motion]]`` row's start): columns
+        ``(name with its unit, values)``, the cam angle first (``cams profile --table``)."""
 
     def check_method(self, method: str | None, field: str) -> None:
         """Refuse a zone solver's ``method`` the face does not take (``field``: the key or option that gave it)."""

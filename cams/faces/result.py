@@ -31,7 +31,9 @@ class SizingDetail(Protocol):
         ...
 
     def to_dict(self, result: SolveResult) -> dict:
-        """The result's JSON report (lengths in the design's unit, angles in degrees), in the face's key order."""
+        """The result's JSON report (lengths in the design's unit, angles in degrees), in the face's key order,
+        with the cam's exact ``smallest_cam_radius`` and ``largest_cam_radius`` and their ``*_at_deg`` (the same
+        numbers as :meth:`cams.faces.base.Face.radii`)."""
         ...
 
 
@@ -63,6 +65,14 @@ class SolveResult:
         disagree beyond the stated accuracy; None where no bound is stated.
     optimization : MotionCertificate or None
         The motion design's certificate (a design with ``[optimize]``), else None.
+    governs : str or None
+        What set the size: ``"pressure_angle"`` (a roller's limit), ``"convexity"`` (a flat face's),
+        ``"min_base_radius"`` (the user's floor), ``"bore"``, ``"undercut"`` or ``"curvature"`` (the part's
+        constraints, :mod:`cams.faces.part`), ``"chosen"`` (the designer's cam); None where not said.
+    pressure_angle_R0 : float or None
+        The R0 the pressure angle alone asks for (length; a roller's: the zone's minimum, or the least at a fixed
+        L or offset, with no floor), beside the answer so that the price of the other constraints shows; None for
+        a flat face (its pressure angle does not size it: ``R0_min`` is its convexity's) and a chosen cam.
     """
 
     design: Design
@@ -75,6 +85,8 @@ class SolveResult:
     notes: tuple[str, ...] = field(default_factory=tuple)
     certified: bool | None = None
     optimization: MotionCertificate | None = None
+    governs: str | None = None
+    pressure_angle_R0: float | None = None
 
     def __getattr__(self, name: str) -> Any:
         # the face's own attributes, read through the result (only called when the common ones have no such name)
@@ -93,9 +105,39 @@ class SolveResult:
         return self.design.face
 
     def to_dict(self) -> dict:
-        """JSON-ready report: lengths in the design's unit, angles in degrees (the face's keys, then ``optimize``
-        with a motion design)."""
-        d = self.detail.to_dict(self)
+        """JSON-ready report: lengths in the design's unit, angles in degrees (the face's keys, the part's, then
+        ``optimize`` with a motion design).
+
+        The part's keys, every face alike: ``governs``, ``pressure_angle_R0``; ``smallest_cam_radius`` and
+        ``largest_cam_radius`` (the cam's exact smallest and largest radius, the blank's radius, with
+        ``*_at_deg``); ``bore_radius`` (given, or None), ``hub_wall`` (the wall achieved: the smallest radius less
+        the bore, None without a bore) and ``hub_wall_required``; ``rpm`` (the cam speed, rev/min, or None);
+        ``peaks`` (the follower's velocity, acceleration and jerk, :func:`cams.kinematics.peaks.motion_peaks`: at
+        ``[cam] rpm``, else per radian of cam angle).
+        """
+        from cams.kinematics.peaks import motion_peaks
+
+        design = self.design
+        face = self.detail.to_dict(self)
+        small = face["smallest_cam_radius"]
+        bore = design.bore_radius
+        part = {
+            "governs": self.governs,
+            "pressure_angle_R0": None if self.pressure_angle_R0 is None else float(self.pressure_angle_R0),
+            **{k: face.pop(k) for k in ("smallest_cam_radius", "smallest_cam_radius_at_deg", "largest_cam_radius",
+                                        "largest_cam_radius_at_deg")},
+            "bore_radius": None if bore is None else float(bore),
+            "hub_wall": None if bore is None else float(small - bore),
+            "hub_wall_required": None if bore is None else float(design.hub_wall or 0.0),
+            "rpm": None if design.rpm is None else float(design.rpm),
+            "peaks": motion_peaks(design.program, rocker=design.follower.kind == "rocker",
+                                  rpm=design.rpm).to_dict(),
+        }
+        d: dict = {}
+        for k, v in face.items():   # the part's keys right after R0
+            d[k] = v
+            if k == "R0":
+                d.update(part)
         d["notes"] = list(self.notes)
         if self.optimization is not None:
             d["optimize"] = self.optimization.to_dict()

@@ -3,14 +3,17 @@
 Sizing: :func:`optimize.sizing.size` finds the smallest cam in the allowable-centre zone (or the designer's cam is
 taken, ``[cam] base_radius`` with L or the offset, or ``[cam] centre``: nothing is sized, mode ``"chosen"``), and
 :func:`cams.verify.pressure.check_pressure` verifies it, recomputing the pressure angle over the whole cycle by
-kinematic inversion without the zone's formulas. The profile is :func:`cams.profile.roller.build_profile`'s, its
-checks :func:`cams.checks.profile.check_profile`'s, the forces :func:`cams.dynamics.forces.design_forces`'.
+kinematic inversion without the zone's formulas; a cam that fails the part's constraints (the bore and its hub
+wall, undercut, the least radius of curvature) is raised along the floor family to the smallest that meets them
+(:mod:`cams.faces.part`). The profile is :func:`cams.profile.roller.build_profile`'s, its checks
+:func:`cams.checks.profile.check_profile`'s (on exact extrema: :func:`cams.checks.profile.part_checks`), the
+forces :func:`cams.dynamics.forces.design_forces`', the lift table :func:`cams.profile.table.roller_table`'s.
 """
 
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -75,25 +78,29 @@ class RollerSizing:
         Returns
         -------
         dict
-            ``R0`` (the pitch curve's base radius), ``smallest_cam_radius`` (the working profile's nearest point
-            to the cam centre, and ``smallest_cam_radius_at_deg`` where), ``L``, ``offset`` and ``centre`` (``x``,
-            ``y`` in the follower's fixed frame) in the design's length unit; the largest pressure angles, where
-            they occur (cam angle) and the limits, and the binding lines' cam angles, in degrees; the solver's
-            mode, method, samples, error bound, margin, time (s) and notes.
+            ``R0`` (the pitch curve's base radius), ``smallest_cam_radius`` and ``largest_cam_radius`` (the working
+            profile's nearest and farthest point from the cam centre, a groove's outer wall for the largest; where:
+            ``*_at_deg``), ``L``, ``offset`` and ``centre`` (``x``, ``y`` in the follower's fixed frame) in the
+            design's length unit (the part's other keys are :meth:`cams.faces.result.SolveResult.to_dict`'s); the
+            largest pressure angles, where they occur (cam angle) and the limits, and the binding lines' cam angles,
+            in degrees; the solver's mode, method, samples, error bound, margin, time (s) and notes.
         """
-        from cams.kinematics.inversion import smallest_cam_radius
+        from cams.kinematics.inversion import largest_cam_radius, smallest_cam_radius
 
         design, centre = result.design, result.centre
         assert isinstance(design, CamDesign)  # a roller's sizing is of a roller's design
         deg = lambda x: None if x is None else float(np.degrees(x))  # noqa: E731
         p = self.pressure
-        cam_r, cam_r_at = smallest_cam_radius(design, centre)
+        small, small_at = smallest_cam_radius(design, centre)
+        large, large_at = largest_cam_radius(design, centre)
         return {
             "name": design.name,
             "follower": design.follower.kind,
             "R0": float(result.R0),
-            "smallest_cam_radius": cam_r,
-            "smallest_cam_radius_at_deg": float(np.degrees(cam_r_at)),
+            "smallest_cam_radius": small,
+            "smallest_cam_radius_at_deg": float(np.degrees(small_at) % 360.0),
+            "largest_cam_radius": large,
+            "largest_cam_radius_at_deg": float(np.degrees(large_at) % 360.0),
             "L": None if result.L is None else float(result.L),
             "offset": None if result.offset is None else float(result.offset),
             "centre": {"x": float(centre[0]), "y": float(centre[1])},
@@ -221,8 +228,8 @@ def _solve_chosen(design: CamDesign) -> SolveResult:
                    seconds=time.perf_counter() - t0)
 
 
-def size_roller(design: CamDesign, *, method: str | None = None, objective: str | None = None) -> SolveResult:
-    """Size the roller cam of ``design`` (fixed laws) and verify it; see :meth:`RollerFace.size`."""
+def _size_alone(design: CamDesign, method: str | None, objective: str | None) -> SolveResult:
+    """The cam of ``design`` sized by the pressure angle alone (its floor honoured), or the chosen cam, verified."""
     if objective is None:
         objective = design.objective
     method = check_option("solve.method", method or design.method, METHODS)
@@ -246,6 +253,31 @@ def size_roller(design: CamDesign, *, method: str | None = None, objective: str 
                    certified=sized.certified)
 
 
+#: The sizing's modes in which a floor on R0 (the user's) set the size.
+FLOOR_MODES = ("floor_R0", "fixed_L_and_R0")
+
+
+def size_roller(design: CamDesign, *, method: str | None = None, objective: str | None = None) -> SolveResult:
+    """Size the roller cam of ``design`` (fixed laws) and verify it; see :meth:`RollerFace.size`."""
+    res = _size_alone(design, method, objective)
+    if design.chosen:
+        from cams.faces.part import chosen_bore_notes
+
+        return replace(res, governs="chosen", notes=(*res.notes, *chosen_bore_notes(ROLLER, design, res)))
+    detail = res.detail
+    assert isinstance(detail, RollerSizing)  # this pipeline's sizing
+    floored = detail.mode in FLOOR_MODES
+    pa_R0 = float(res.R0)
+    if floored:     # the pressure angle's own minimum, without the floor (L or the offset held)
+        m = detail.method
+        pa_R0 = float(np.linalg.norm(size(design.with_floor(None), method=m, objective=objective or design.objective)
+                                     .centre - design.follower.position(0.0)))
+    res = replace(res, governs="min_base_radius" if floored else "pressure_angle", pressure_angle_R0=pa_R0)
+    from cams.faces.part import sized_to_part
+
+    return sized_to_part(ROLLER, design, res, lambda d: _size_alone(d, method, objective))
+
+
 def knife_in_groove(design: CamDesign) -> bool:
     """True for form closure (a groove) with roller radius 0 (a knife edge): no profile can be built."""
     return design.limits.closure == "form" and not design.follower.roller_radius > 0
@@ -263,9 +295,35 @@ class RollerFace(Face):
         ``method`` (``"exact"``, ``"convex"``, ``"exhaustive"``) overrides ``[solve] method``; ``objective``
         (``"R0"``, ``"L"``) ``[solve] objective``. The cam centre is in the follower's fixed frame
         (:mod:`cams.model.follower`): ``R0 = |O - A0|`` (A0 the roller centre at the near dwell), ``L = |O|`` for
-        a rocker (pivot at the origin), the offset ``e = -x_O`` for a translating follower.
+        a rocker (pivot at the origin), the offset ``e = -x_O`` for a translating follower. With
+        ``design.constraints = "all"`` (the default) a cam that fails the part's constraints (the bore and its hub
+        wall, undercut, the least radius of curvature) is raised along the floor family to the smallest that meets
+        them (:mod:`cams.faces.part`); ``governs`` says what set the size.
         """
         return size_roller(design, method=method, objective=objective)
+
+    def part_checks(self, design, solution: SolveResult) -> list:
+        from cams.checks.profile import part_checks
+        from cams.model.options import profile_options
+
+        return part_checks(design, solution.centre, profile_options(design))[0]
+
+    def radii(self, design, solution: SolveResult) -> tuple[float, float, float, float]:
+        from cams.kinematics.inversion import largest_cam_radius, smallest_cam_radius
+
+        return (*smallest_cam_radius(design, solution.centre), *largest_cam_radius(design, solution.centre))
+
+    def bore_R0(self, design) -> float | None:
+        """The bore radius plus the hub wall plus the roller: the roller centre passes the base circle of R0, so
+        the working profile's smallest radius is at most ``R0 - r``."""
+        if design.bore_radius is None:
+            return None
+        return float(design.bore_radius + (design.hub_wall or 0.0) + design.follower.roller_radius)
+
+    def table(self, design, solution: SolveResult, phi):
+        from cams.profile.table import roller_table
+
+        return roller_table(design, solution.centre, phi)
 
     def no_profile(self, design) -> str | None:
         if knife_in_groove(design):

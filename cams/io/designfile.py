@@ -6,22 +6,23 @@ Schema (see ``examples/``)::
     units = "mm"  (the only length unit)
     [follower]   kind, face ("roller" default | "flat"), arm, swing (rocker) | stroke, offset
                  (translating), roller_radius, rise_direction ("cw" | "ccw", rocker)
-    [cam]        rotation ("cw" | "ccw"), rpm (optional), bore_radius (optional),
+    [cam]        rotation ("cw" | "ccw"), rpm (optional), bore_radius and hub_wall (optional),
                  base_radius (a chosen R0, with follower.offset or limits.centre_distance)
                  or centre ([x, y] in the follower's fixed frame): a chosen cam, checked not sized
     [[motion]]   phase ("rise" | "dwell" | "return"), law, angle (degrees),
                  height (optional, part of the lift); one dwell may omit angle
     [limits]     pressure_angle, return_pressure_angle, closure ("force" | "form"),
                  safety_factor, centre_distance, min_base_radius
-    [solve]      method ("exact" | "convex" | "exhaustive"), samples, objective ("R0" | "L", rocker)
+    [solve]      method ("exact" | "convex" | "exhaustive"), samples, objective ("R0" | "L", rocker),
+                 constraints ("all" | "pressure_angle")
     [profile]    tolerance (chord, mm; default 0.001), min_curvature_radius (optional)
     [dynamics]   optional, force closure: mass, load, spring_rate, preload, friction,
                  journal_radius, margin, max_spring_force (see :func:`dynamics_from_dict`);
                  mapped onto ``design.dynamics`` (a :class:`cams.model.dynamics.DynamicsSpec`)
 
 Every table maps onto a typed field of the design (``[solve] objective`` onto ``objective``,
-``[profile]`` onto ``tolerance`` and ``min_curvature_radius``, ``[cam] bore_radius`` onto
-``bore_radius``): the loader checks the file's shape (tables, known keys, numbers where numbers
+``[profile]`` onto ``tolerance`` and ``min_curvature_radius``, ``[cam] bore_radius`` and ``hub_wall`` onto
+``bore_radius`` and ``hub_wall``): the loader checks the file's shape (tables, known keys, numbers where numbers
 belong) and the model's ``__post_init__`` checks the values, with one message each.
 
 A flat-faced follower (``face = "flat"``) gives a :class:`cams.model.design.FlatFaceDesign`
@@ -31,7 +32,7 @@ instead: its size is limited by convexity, not by a pressure angle::
                  moves the contact); rocker: swing, rise_direction, centre_distance
                  (L, pivot to cam centre, required), face_offset (signed distance
                  pivot to face line, positive with the pivot on the cam's side; default 0)
-    [cam]        rotation, rpm, bore_radius, base_radius (optional: a chosen R0 to
+    [cam]        rotation, rpm, bore_radius, hub_wall, base_radius (optional: a chosen R0 to
                  check instead of the smallest)
     [[motion]]   as above
     [limits]     min_radius (smallest radius of curvature of the profile, default a
@@ -82,16 +83,16 @@ __all__ = ["load_design", "design_from_dict", "dynamics_from_dict", "designed_do
 _KEYS = {
     "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics", "optimize"},
     "follower": {"kind", "face", "arm", "swing", "stroke", "offset", "roller_radius", "rise_direction"},
-    "cam": {"rotation", "rpm", "bore_radius", "base_radius", "centre"},
+    "cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius", "centre"},
     "motion": {"phase", "law", "angle", "height"},
     "limits": {"pressure_angle", "return_pressure_angle", "closure", "safety_factor",
                "centre_distance", "min_base_radius"},
-    "solve": {"method", "samples", "objective"},
+    "solve": {"method", "samples", "objective", "constraints"},
     "profile": {"tolerance", "min_curvature_radius"},
     # flat-faced followers
     "flat_rocker": {"kind", "face", "swing", "rise_direction", "centre_distance", "face_offset"},
     "flat_translating": {"kind", "face", "stroke", "offset"},
-    "flat_cam": {"rotation", "rpm", "bore_radius", "base_radius"},
+    "flat_cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius"},
     "flat_limits": {"min_radius", "min_base_radius", "closure"},
     "flat_profile": {"tolerance"},
 }
@@ -148,7 +149,7 @@ LENGTH_RANGE = (1e-9, 1e9)
 _LENGTH_KEYS = {
     "follower": ("arm", "stroke", "offset", "roller_radius", "centre_distance", "face_offset"),
     "limits": ("centre_distance", "min_base_radius", "min_radius"),
-    "cam": ("bore_radius", "base_radius"),
+    "cam": ("bore_radius", "hub_wall", "base_radius"),
     "profile": ("tolerance", "min_curvature_radius"),
 }
 
@@ -272,6 +273,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         method=so.get("method", "exact"), samples=samples, base_radius=base_radius, centre=centre,
         objective=so.get("objective", "R0"), tolerance=_value(pt, "tolerance"),
         min_curvature_radius=_value(pt, "min_curvature_radius"), bore_radius=_value(cam, "bore_radius"),
+        hub_wall=_value(cam, "hub_wall"), constraints=so.get("constraints", "all"),
         dynamics=_dynamics(d, kind), optimize=_optimize(d, so),
     )
 
@@ -448,6 +450,7 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         min_base_radius=_num(li, "min_base_radius", "limits.min_base_radius", required=False),
         base_radius=_num(cam, "base_radius", "cam.base_radius", required=False),
         bore_radius=_num(cam, "bore_radius", "cam.bore_radius", required=False),
+        hub_wall=_num(cam, "hub_wall", "cam.hub_wall", required=False),
         tolerance=_num(pt, "tolerance", "profile.tolerance", required=False),
         optimize=_optimize(d, {}),
     )

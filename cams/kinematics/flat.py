@@ -78,17 +78,20 @@ __all__ = [
     "oscillating_pressure",
     "rocker_frame_turn",
     "flat_parts",
+    "flat_support",
+    "flat_radii",
 ]
 
 #: A quantity inside one phase: ``fun(phase index, u in [0, 1]) -> array`` (one-sided at the phase's ends).
 PhaseFunction = Callable[[int, np.ndarray], np.ndarray]
 
 
-def phase_minimum(fun: PhaseFunction, program: Program, grid: int = 2000) -> tuple[float, float]:
+def phase_minimum(fun: PhaseFunction, program: Program, grid: int = 2000, tie: float = 0.0) -> tuple[float, float]:
     """Smallest ``fun(i, u)`` over the cycle and its cam angle (radians).
 
     Each phase is sampled on ``grid + 1`` points; outside the dwells the best
-    one is refined by :func:`zoom_minimum`.
+    one is refined by :func:`zoom_minimum`. A later phase's minimum must be
+    smaller by more than ``tie`` (the function's unit) to replace an earlier one.
     """
     best, at = np.inf, 0.0
     for i, p in enumerate(program.phases):
@@ -98,7 +101,7 @@ def phase_minimum(fun: PhaseFunction, program: Program, grid: int = 2000) -> tup
         bu, bv = float(u[k]), float(v[k])
         if p.kind != "dwell":
             bu, bv = zoom_minimum(partial(fun, i), u[max(k - 1, 0)], u[min(k + 1, grid)], bu, bv)
-        if bv < best:
+        if bv < best - tie:
             best, at = bv, float(program.starts[i] + bu * p.angle)
     return best, at
 
@@ -368,3 +371,39 @@ def flat_parts(design: FlatFaceDesign, R0: float) -> tuple[PhaseFunction, PhaseF
         return rho, contact, lambda i, u: np.zeros_like(np.asarray(u, float))
     a0 = oscillating_setup(prog, fo.centre_distance, R0, fo.face_offset, fo.sense)
     return oscillating_parts(prog, fo.centre_distance, fo.face_offset, fo.sense, eps, a0)
+
+
+def flat_support(design: FlatFaceDesign, R0: float) -> PhaseFunction:
+    """The face's distance from the cam centre, ``p(i, u)`` (length), of a flat-face design at base radius R0.
+
+    The support function of the profile (module notes): ``R0 + s`` for a translating face, ``f - L cos a`` for
+    an oscillating one.
+    """
+    fo, prog, eps = design.follower, design.program, design.cam_sense
+    if isinstance(fo, FlatTranslating):
+        return lambda i, u: R0 + prog.evaluate_phase(i, u).s
+    L, f, sigma = fo.centre_distance, fo.face_offset, fo.sense
+    a0 = oscillating_setup(prog, L, R0, f, sigma)
+    return lambda i, u: oscillating_terms(prog, L, f, sigma, eps, a0, phase=i, u=u)[5]
+
+
+def flat_radii(design: FlatFaceDesign, R0: float) -> tuple[float, float, float, float]:
+    """The profile's smallest and largest distance from the cam centre and their cam angles.
+
+    Every point ``X`` of the envelope has ``|X| >= X . m = p`` (``m`` the face's unit normal) and where ``p`` is
+    smallest ``p_theta = 0``, so ``X = p m``: the profile's smallest radius is ``min p``, exactly. Where ``p`` is
+    largest ``X = p m`` too, and a convex profile (the only kind that passes) lies inside its support lines, so
+    its largest radius is ``max p``. Both are found per phase on a grid refined round the best point
+    (:func:`phase_minimum`; the first such angle in the program's order wins a tie within 1e-12 of the design's
+    scale).
+
+    Returns
+    -------
+    smallest, smallest_at, largest, largest_at : float
+        Lengths and cam angles (radians).
+    """
+    p = flat_support(design, R0)
+    tie = 1e-12 * design.scale
+    lo, lo_at = phase_minimum(p, design.program, tie=tie)
+    hi, hi_at = phase_minimum(lambda i, u: -p(i, u), design.program, tie=tie)
+    return float(lo), float(lo_at), float(-hi), float(hi_at)

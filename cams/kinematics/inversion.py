@@ -78,6 +78,7 @@ __all__ = [
     "offset_curvature",
     "to_fixed_frame",
     "smallest_cam_radius",
+    "largest_cam_radius",
 ]
 
 
@@ -473,6 +474,29 @@ def to_fixed_frame(points: np.ndarray, centre: np.ndarray, sense: int, phi: floa
     return np.asarray(centre, dtype=float) + rotate(np.asarray(points, dtype=float), sense * phi)
 
 
+def _pitch_radius_extreme(design: CamDesign, centre: np.ndarray, sign: float, grid: int) -> tuple[float, float]:
+    """The largest ``sign |P|`` over the cycle (``sign`` +1: the pitch curve's largest radius, -1: its smallest,
+    negated) and its cam angle (radians): per phase on ``grid`` steps, refined where the slope
+    ``d|P|/dphi = s' (r . T) / |r|`` changes sign; the first such angle in the program's order of phases wins a
+    tie within 1e-12 of the design's scale."""
+    prog = design.program
+    centre = np.asarray(centre, dtype=float)
+
+    def signed_radius(i: int, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        inv = invert_phase(design, centre, i, u)
+        d = norm(inv.r)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            slope = inv.ds * dot(inv.r, inv.t) / d
+        return sign * d[None], sign * np.nan_to_num(slope)[None]
+
+    best, best_phi = -np.inf, 0.0
+    for i, p in enumerate(prog.phases):
+        top, at = maximize(partial(signed_radius, i), phase_positions(prog, i, grid), refine=p.kind != "dwell")
+        if top[0] > best + 1e-12 * design.scale:  # a tie within rounding keeps the earlier phase
+            best, best_phi = float(top[0]), float(prog.starts[i] + at[0] * p.angle)
+    return best, best_phi
+
+
 def smallest_cam_radius(design: CamDesign, centre: np.ndarray, *, grid: int = 512) -> tuple[float, float]:
     """The cam's own smallest radius: the working profile's nearest point to the cam centre.
 
@@ -502,20 +526,24 @@ def smallest_cam_radius(design: CamDesign, centre: np.ndarray, *, grid: int = 51
         1e-12 of the design's scale included). A knife edge gives the pitch
         curve's smallest radius.
     """
-    prog = design.program
-    centre = np.asarray(centre, dtype=float)
+    best, at = _pitch_radius_extreme(design, centre, -1.0, grid)
+    return float(-best - design.follower.roller_radius), at
 
-    def minus_radius(i: int, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        inv = invert_phase(design, centre, i, u)
-        d = norm(inv.r)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            slope = inv.ds * dot(inv.r, inv.t) / d
-        return -d[None], -np.nan_to_num(slope)[None]
 
-    best, best_phi = np.inf, 0.0
-    for i, p in enumerate(prog.phases):
-        top, at = maximize(partial(minus_radius, i), phase_positions(prog, i, grid),
-                           refine=p.kind != "dwell")
-        if -top[0] < best - 1e-12 * design.scale:  # a tie within rounding keeps the earlier phase
-            best, best_phi = float(-top[0]), float(prog.starts[i] + at[0] * p.angle)
-    return float(best - design.follower.roller_radius), best_phi
+def largest_cam_radius(design: CamDesign, centre: np.ndarray, *, grid: int = 512) -> tuple[float, float]:
+    """The cam's largest radius: the least radius of its blank (length), and the cam angle where it is reached.
+
+    The working profile ``P - r n`` reaches ``max |P| - r`` where ``|P|`` is largest (the normal is radial
+    there), and no point of a cam body whose roller circles lie inside the pitch curve's region is farther out;
+    a groove's outer wall ``P + r n`` reaches ``max |P| + r``, the radius the blank must exceed. ``|P|`` is
+    searched as in :func:`smallest_cam_radius`.
+
+    Returns
+    -------
+    radius, phi : float
+        ``max |P| - roller_radius`` (force closure; a knife edge: ``max |P|``) or ``max |P| + roller_radius``
+        (a groove, form closure), length; the cam angle, radians.
+    """
+    best, at = _pitch_radius_extreme(design, centre, 1.0, grid)
+    r = design.follower.roller_radius
+    return float(best + (r if design.limits.closure == "form" else -r)), at

@@ -28,8 +28,8 @@ Schema (see ``examples/machines/``)::
                 crank: kind = "shaft" or equal gears meshing internally)
     [follower], [[motion]], [limits], [solve], [dynamics]   as in a design file (cams/io/designfile.py);
                 [dynamics] journal_radius for a rocker only
-    [cam]       bore_radius only (checked against the sized cam's working profile by
-                cams.machine.design.design_machine): rotation and rpm follow from the crank and the drive
+    [cam]       bore_radius and hub_wall only (the feed cam is sized to clear the bore by the wall, and
+                cams.machine.design.design_machine checks it): rotation and rpm follow from the crank and the drive
     [forces]    optional: masses, loads, friction and the flywheel's delta of the linkage
                 (:func:`force_spec_from_dict`); parsed into ``spec.forces`` and ``spec.force_options``
 """
@@ -96,7 +96,7 @@ _KEYS = {
     "cutting": {"approach", "overrun", "working"},
     "drive": {"kind", "z_crank", "z_cam", "mesh"},
     "timing": {"margin", "placement", "follower_direction"},
-    "cam": {"bore_radius"},
+    "cam": {"bore_radius", "hub_wall"},
 }
 _SIDES = {
     "bar_side": {"opposite": -1, "same": 1},

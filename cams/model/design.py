@@ -22,7 +22,7 @@ from cams.model.follower import (
     check_length,
 )
 from cams.model.motiondesign import MotionDesignSpec
-from cams.model.options import ProfileOptions, check_objective, check_tolerance
+from cams.model.options import ProfileOptions, check_constraints, check_hub_wall, check_objective, check_tolerance
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
@@ -110,7 +110,14 @@ class Design:
     tolerance : float or None
         Chord tolerance of the sampled profile (length); None: the default for the cam's size.
     bore_radius : float or None
-        Radius of the cam's bore (length), checked against the working profile; None: not checked.
+        Radius of the cam's bore (length): a constraint of the sizing and a check; None: neither.
+    hub_wall : float or None
+        The least material between the bore and the working profile (length, >= 0; only with ``bore_radius``);
+        None: the profile need only clear the bore.
+    constraints : {"all", "pressure_angle"}
+        What the sizing keeps: ``"all"`` (the smallest cam whose pressure angle is within its limits, whose working
+        profile clears the bore by the wall and passes the profile's checks) or ``"pressure_angle"`` (the face's
+        own limit alone: a roller's pressure angle, a flat face's convexity).
     dynamics : DynamicsSpec or None
         The follower's dynamics (a file's ``[dynamics]``); None: no forces.
     optimize : MotionDesignSpec or None
@@ -131,6 +138,8 @@ class Design:
     base_radius: float | None
     tolerance: float | None
     bore_radius: float | None
+    hub_wall: float | None
+    constraints: str
     dynamics: DynamicsSpec | None
     optimize: MotionDesignSpec | None
 
@@ -140,6 +149,7 @@ class Design:
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
             raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
+        check_constraints(self.constraints)
 
     @property
     def scale(self) -> float:
@@ -155,8 +165,14 @@ class Design:
         """A copy with some fields changed (the same type)."""
         return replace(self, **changes)  # type: ignore[type-var]
 
-    def with_floor(self, R0: float):
-        """A copy whose sizing is floored at base radius ``R0`` (length): ``limits.min_base_radius``."""
+    def with_floor(self, R0: float | None):
+        """A copy whose sizing is floored at base radius ``R0`` (length): ``limits.min_base_radius``; None: no
+        floor."""
+        raise NotImplementedError
+
+    def unchosen(self):
+        """A copy without the chosen cam (``[cam] base_radius``, a roller's ``centre``): sized, not checked. What
+        fixed the chosen cam's centre stays (a rocker's ``limits.centre_distance``, ``follower.offset``)."""
         raise NotImplementedError
 
 
@@ -247,8 +263,16 @@ class CamDesign(Design):
         Smallest radius of curvature the working profile may have (length);
         None: not checked.
     bore_radius : float or None
-        Radius of the cam's bore (length), checked against the working
-        profile; None: not checked.
+        Radius of the cam's bore (length): the sizing makes the working
+        profile clear it (by ``hub_wall``) and the checks check it; None:
+        neither.
+    hub_wall : float or None
+        The least material between the bore and the working profile
+        (length, >= 0; only with ``bore_radius``); None: 0.
+    constraints : {"all", "pressure_angle"}
+        ``"all"``: the smallest cam that meets the pressure angle, the bore
+        and the profile's checks (:mod:`cams.faces.part`);
+        ``"pressure_angle"``: the pressure angle alone.
     dynamics : DynamicsSpec or None
         The follower's dynamics (a file's ``[dynamics]``): forces, spring and
         jump speed of a force-closed cam; None: no forces.
@@ -271,6 +295,8 @@ class CamDesign(Design):
     tolerance: float | None = None
     min_curvature_radius: float | None = None
     bore_radius: float | None = None
+    hub_wall: float | None = None
+    constraints: str = "all"
     dynamics: DynamicsSpec | None = None
     optimize: MotionDesignSpec | None = None
 
@@ -302,7 +328,8 @@ class CamDesign(Design):
                 raise InputError("limits.centre_distance", "applies to rocker followers only; use follower.offset")
         elif not isinstance(self.follower, Rocker):  # pragma: no cover - guarded by the type
             raise InputError("follower.kind", "must be 'rocker' or 'translating'")
-        ProfileOptions(self.tolerance, self.min_curvature_radius, self.bore_radius)  # checks the three
+        ProfileOptions(self.tolerance, self.min_curvature_radius, self.bore_radius,  # checks the four
+                       hub_wall=self.hub_wall)
         check_optimize(self.optimize, self.objective, self.chosen)
 
     @property
@@ -414,9 +441,13 @@ class CamDesign(Design):
 
     face = "roller"
 
-    def with_floor(self, R0: float) -> CamDesign:
-        """A copy sized with the floor ``limits.min_base_radius = R0`` (length)."""
+    def with_floor(self, R0: float | None) -> CamDesign:
+        """A copy sized with the floor ``limits.min_base_radius = R0`` (length; None: no floor)."""
         return replace(self, limits=replace(self.limits, min_base_radius=R0))
+
+    def unchosen(self) -> CamDesign:
+        """A copy without ``base_radius`` and ``centre`` (L or the offset that fixed the chosen centre kept)."""
+        return replace(self, base_radius=None, centre=None)
 
 
 @dataclass(frozen=True)
@@ -443,7 +474,12 @@ class FlatFaceDesign(Design):
     base_radius : float or None
         A chosen R0 (length) instead of the smallest: checked, not sized.
     bore_radius : float or None
-        Bore radius (length) to check the profile against.
+        Bore radius (length): a constraint of the sizing and a check.
+    hub_wall : float or None
+        The least material between the bore and the profile (length, >= 0; only with ``bore_radius``).
+    constraints : {"all", "pressure_angle"}
+        ``"all"``: the smallest cam convex enough whose profile clears the bore by the wall;
+        ``"pressure_angle"``: convexity alone (a flat face's own limit; its pressure angle does not size it).
     tolerance : float or None
         Chord tolerance of the sampled profile (length); None: the default
         for the cam's size (:func:`cams.profile.roller.cap_tolerance`).
@@ -465,6 +501,8 @@ class FlatFaceDesign(Design):
     tolerance: float | None = None
     optimize: MotionDesignSpec | None = None
     dynamics: DynamicsSpec | None = None
+    hub_wall: float | None = None
+    constraints: str = "all"
 
     face = "flat"
 
@@ -477,6 +515,7 @@ class FlatFaceDesign(Design):
                           ("base_radius", "cam.base_radius"), ("bore_radius", "cam.bore_radius")):
             if getattr(self, name) is not None or name == "min_radius":
                 check_length(fld, getattr(self, name))
+        check_hub_wall(self.hub_wall, self.bore_radius)
         if self.tolerance is not None:
             check_tolerance(self.tolerance, "profile.tolerance")
         if self.base_radius is not None and self.min_base_radius is not None:  # as for a roller follower
@@ -484,6 +523,10 @@ class FlatFaceDesign(Design):
                              "to size; remove one of them")
         check_optimize(self.optimize, "R0", self.base_radius is not None)
 
-    def with_floor(self, R0: float) -> FlatFaceDesign:
-        """A copy sized with the floor ``min_base_radius = R0`` (length)."""
+    def with_floor(self, R0: float | None) -> FlatFaceDesign:
+        """A copy sized with the floor ``min_base_radius = R0`` (length; None: no floor)."""
         return replace(self, min_base_radius=R0)
+
+    def unchosen(self) -> FlatFaceDesign:
+        """A copy without ``base_radius``: sized, not checked."""
+        return replace(self, base_radius=None)

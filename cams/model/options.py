@@ -1,6 +1,7 @@
 """The design's options, typed: what is minimized and how the profile is sampled and checked.
 
-A design file's ``[solve] objective``, ``[profile]`` table and ``[cam] bore_radius`` land here
+A design file's ``[solve] objective`` and ``constraints``, ``[profile]`` table and ``[cam] bore_radius`` and
+``hub_wall`` land here
 (:func:`cams.io.designfile.design_from_dict` maps them); a design built in Python gives the same
 fields. Each field is checked once, here, with the message the file's key gets. Lengths in the
 design's unit (mm).
@@ -19,8 +20,11 @@ from laws.errors import InputError, check_option
 
 __all__ = [
     "OBJECTIVES",
+    "CONSTRAINTS",
     "ProfileOptions",
     "check_objective",
+    "check_constraints",
+    "check_hub_wall",
     "check_tolerance",
     "profile_options",
     "resolve_tolerance",
@@ -28,6 +32,9 @@ __all__ = [
 
 #: What the sizing minimizes: ``"R0"`` the base radius, ``"L"`` the centre distance (rocker only).
 OBJECTIVES = ("R0", "L")
+#: What the sizing keeps: ``"all"`` the pressure angle, the bore with its hub wall and the profile's checks (the
+#: smallest cam that can be made), ``"pressure_angle"`` the face's own limit alone (a flat face's: convexity).
+CONSTRAINTS = ("pressure_angle", "all")
 
 
 def check_tolerance(tol: object, field: str) -> float:
@@ -67,6 +74,9 @@ class ProfileOptions:
     bore_radius : float or None
         Bore radius of the cam (length); ``None``: not checked
         (:func:`cams.profile.roller.default_bore_radius` is suggested).
+    hub_wall : float or None
+        The least material between the bore and the working profile (length, >= 0); None: the profile need only
+        clear the bore (a wall of 0). Only with ``bore_radius``.
     tolerance_field : str
         Where the tolerance was given (``"profile.tolerance"`` or
         ``"--tolerance"``), for the messages.
@@ -76,6 +86,7 @@ class ProfileOptions:
     min_curvature_radius: float | None = None
     bore_radius: float | None = None
     tolerance_field: str = "profile.tolerance"
+    hub_wall: float | None = None
 
     def __post_init__(self) -> None:
         if self.tolerance is not None:
@@ -84,6 +95,12 @@ class ProfileOptions:
                              (self.bore_radius, "cam.bore_radius")):
             if value is not None:
                 check_length(field, value)
+        check_hub_wall(self.hub_wall, self.bore_radius)
+
+    @property
+    def wall(self) -> float:
+        """The hub wall the bore check asks for (length): ``hub_wall``, 0 when not given."""
+        return 0.0 if self.hub_wall is None else float(self.hub_wall)
 
 
 class _HasProfileFields(Protocol):
@@ -93,6 +110,28 @@ class _HasProfileFields(Protocol):
     @property
     def bore_radius(self) -> float | None: ...
 
+    @property
+    def hub_wall(self) -> float | None: ...
+
+
+def check_hub_wall(hub_wall: object, bore_radius: float | None) -> float | None:
+    """``hub_wall`` (length) if it is None or a number >= 0 given with a bore, else :class:`InputError` on
+    ``cam.hub_wall``."""
+    if hub_wall is None:
+        return None
+    if isinstance(hub_wall, bool) or not isinstance(hub_wall, (int, float, np.integer, np.floating)) \
+            or not math.isfinite(hub_wall) or hub_wall < 0:
+        raise InputError("cam.hub_wall", f"must be a number >= 0 (mm), got {hub_wall!r}")
+    if bore_radius is None:
+        raise InputError("cam.hub_wall", "is the wall between the bore and the working profile: give "
+                         "cam.bore_radius too")
+    return float(hub_wall)
+
+
+def check_constraints(constraints: object) -> str:
+    """``constraints`` if it is one of :data:`CONSTRAINTS`, else :class:`InputError` on ``solve.constraints``."""
+    return check_option("solve.constraints", constraints, CONSTRAINTS)
+
 
 def profile_options(design: _HasProfileFields, *, tolerance: float | None = None) -> ProfileOptions:
     """The profile settings of a design (roller or flat face), ``tolerance`` overriding its own.
@@ -100,7 +139,7 @@ def profile_options(design: _HasProfileFields, *, tolerance: float | None = None
     Parameters
     ----------
     design : CamDesign or FlatFaceDesign
-        Its ``tolerance``, ``bore_radius`` and (roller) ``min_curvature_radius``.
+        Its ``tolerance``, ``bore_radius``, ``hub_wall`` and (roller) ``min_curvature_radius``.
     tolerance : float, optional
         Overrides the design's tolerance (the command line's ``--tolerance``).
 
@@ -111,7 +150,7 @@ def profile_options(design: _HasProfileFields, *, tolerance: float | None = None
     """
     tol, field = resolve_tolerance(design.tolerance, tolerance)
     return ProfileOptions(tol, getattr(design, "min_curvature_radius", None), design.bore_radius,
-                          tolerance_field=field)
+                          tolerance_field=field, hub_wall=design.hub_wall)
 
 
 def check_objective(objective: object, rocker: bool) -> str:

@@ -50,7 +50,8 @@ def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     if d.base_radius is not None:
         inputs.append(("chosen base radius", f"{d.base_radius:g} mm"))
     r = cam.solution.to_dict()
-    results = [("sizing", f"convexity (R0 from {r['R0_source']})"), ("base radius R0", f"{r['R0']:.6f} mm")]
+    results = [("sizing", f"convexity (R0 from {r['R0_source']})"), ("base radius R0", f"{r['R0']:.6f} mm"),
+               *_part_rows(r, ".6f")]
     if r["R0_min"] is not None and r["R0_source"] != "convexity":
         results.append(("smallest convex enough R0", f"{r['R0_min']:.6f} mm"))
     fr = r["face_range"]
@@ -68,6 +69,27 @@ def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"]]
     return [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam)), *_motion_section(cam)]
+
+
+def _part_rows(r: dict, fl: str) -> list[tuple[str, str]]:
+    """What governs the size, the pressure angle's own R0, the blank, the bore and the peaks at speed (the part's
+    keys of a solve report, :meth:`cams.faces.result.SolveResult.to_dict`)."""
+    from cams.present.text import GOVERNS_WORDS
+
+    rows = [("governs", GOVERNS_WORDS.get(r["governs"], str(r["governs"])))]
+    if r["pressure_angle_R0"] is not None and r["governs"] != "pressure_angle":
+        rows.append(("R0 by the pressure angle alone", f"{r['pressure_angle_R0']:{fl}} mm"))
+    rows.append(("the cam's largest radius (blank diameter)",
+                 f"{r['largest_cam_radius']:{fl}} mm ({2 * r['largest_cam_radius']:{fl}} mm)"))
+    if r["bore_radius"] is not None:
+        rows.append(("bore radius, hub wall (at least)", f"{r['bore_radius']:{fl}} mm, {r['hub_wall']:{fl}} mm "
+                     f"({r['hub_wall_required']:{fl}} mm)"))
+    if r["rpm"] is not None:
+        for k in ("velocity", "acceleration", "jerk"):
+            p = r["peaks"][k]
+            v = "unbounded (a jump)" if p["value"] is None else f"{p['value']:.6g} {p['unit']}"
+            rows.append((f"peak {k} at {r['rpm']:g} rpm", f"{v} at {deg(p['at_deg'])}"))
+    return rows
 
 
 def _assessment_rows(cam) -> list[tuple[str, str]]:
@@ -129,7 +151,8 @@ def roller_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     fl = length_format(max(abs(r["R0"]), abs(r["L"] or 0.0), abs(r["offset"] or 0.0)))
     results = [("method", method),
                ("base radius R0 (pitch curve, to the roller centre)", f"{r['R0']:{fl}} mm"),
-               ("the cam's own smallest radius (working profile)", f"{r['smallest_cam_radius']:{fl}} mm")]
+               ("the cam's own smallest radius (working profile)", f"{r['smallest_cam_radius']:{fl}} mm"),
+               *_part_rows(r, fl)]
     if r["L"] is not None:
         results.append(("centre distance L", f"{r['L']:{fl}} mm"))
     if r["offset"] is not None:

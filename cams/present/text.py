@@ -19,7 +19,55 @@ from cams.words import (
 from cams.words import check_value as _fmt
 
 __all__ = ["print_summary", "print_flat_summary", "print_cam_forces", "print_assessment", "print_checks",
-           "pressure_text", "optimization_rows", "print_optimization"]
+           "pressure_text", "optimization_rows", "print_optimization", "governs_line", "part_lines", "peaks_lines",
+           "GOVERNS_WORDS"]
+
+#: What ``governs`` names, in words.
+GOVERNS_WORDS = {"pressure_angle": "the pressure angle", "convexity": "convexity (limits.min_radius)",
+                 "min_base_radius": "the floor limits.min_base_radius", "bore": "the bore and its hub wall",
+                 "undercut": "the roller (undercut)",
+                 "curvature": "the least radius of curvature (profile.min_curvature_radius)",
+                 "chosen": "the chosen cam"}
+
+
+def governs_line(rep: dict, f: str) -> str | None:
+    """``governs: ...`` of a solve report: what set R0, and the pressure angle's own minimum beside it."""
+    g = rep.get("governs")
+    if g is None:
+        return None
+    text = f"  governs: {GOVERNS_WORDS.get(g, g)}"
+    pa = rep.get("pressure_angle_R0")
+    if pa is not None and g != "pressure_angle":
+        text += f" (the pressure angle alone: R0 = {pa:{f}} mm)"
+    return text
+
+
+def part_lines(rep: dict, f: str) -> list[str]:
+    """The blank and the bore of a solve report: the cam's largest radius, the bore and the hub wall achieved."""
+    out = []
+    large = rep.get("largest_cam_radius")
+    if large is not None:
+        out.append(f"  Rmax    = {large:{f}} mm  (the cam's largest radius: a blank of diameter "
+                   f"{2 * large:{f}} mm at least)")
+    if rep.get("bore_radius") is not None:
+        need = rep.get("hub_wall_required") or 0.0
+        out.append(f"  bore    = {rep['bore_radius']:{f}} mm, hub wall {rep['hub_wall']:{f}} mm (at least "
+                   f"{need:{f}} mm)")
+    return out
+
+
+def peaks_lines(rep: dict, rpm: float | None) -> list[str]:
+    """The follower's peaks at speed, one line each (only with a speed: ``rpm``), from a report's ``peaks``."""
+    pk = rep.get("peaks")
+    if not pk or rpm is None:
+        return []
+    out = []
+    for i, k in enumerate(("velocity", "acceleration", "jerk")):
+        p = pk[k]
+        v = "unbounded (a jump)" if p["value"] is None else f"{p['value']:.6g} {p['unit']}"
+        head = f"  peaks at {rpm:g} rpm: " if i == 0 else " " * len(f"  peaks at {rpm:g} rpm: ")
+        out.append(f"{head}{k:<12} {v} at {deg(p['at_deg'])}")
+    return out
 
 
 def print_summary(rep: dict) -> None:
@@ -31,12 +79,17 @@ def print_summary(rep: dict) -> None:
     else:
         print(f"{rep['name']}: {rep['follower']} follower, method {rep['method']}, {rep['mode']}")
     print(f"  R0      = {rep['R0']:{f}} {unit}  (pitch curve's base radius: cam centre to roller centre)")
+    gl = governs_line(rep, f)
+    if gl:
+        print(gl)
     cr = rep.get("smallest_cam_radius")
     if cr is not None and cr > 0:
         print(f"  Rmin    = {cr:{f}} {unit}  (the cam's own smallest radius, on the working profile)")
     elif cr is not None:  # the roller reaches the cam centre: there is no cam body to measure
         print(f"  Rmin    = none: the roller reaches past the cam centre (smallest pitch radius - roller radius "
               f"= {cr:{f}} {unit})")
+    for line in part_lines(rep, f) if cr is not None and cr > 0 else ():
+        print(line)
     if rep["L"] is not None:
         print(f"  L       = {rep['L']:{f}} {unit}")
     if rep["offset"] is not None:
@@ -52,6 +105,8 @@ def print_summary(rep: dict) -> None:
     bound = "" if rep["mode"] == "chosen" else \
         f"error bound: {'not stated by this method' if eb is None else f'{eb:.3g} {unit}'}; "
     print(f"  {bound}verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    for line in peaks_lines(rep, rep.get("rpm")):
+        print(line)
     if rep.get("optimize"):
         print_optimization(rep["optimize"], rep.get("R0"))
     fo = rep.get("forces")
@@ -181,8 +236,16 @@ def print_flat_summary(rep: dict) -> None:
     print(f"{rep['name']}: {rep['follower']} follower, flat face, sized by convexity")
     src = {"convexity": "the smallest with radius of curvature >= limits.min_radius",
            "limits.min_base_radius": "raised to limits.min_base_radius",
-           "cam.base_radius": "given by cam.base_radius"}[rep["R0_source"]]
+           "cam.base_radius": "given by cam.base_radius",
+           "part": "the smallest that meets the part's constraints"}[rep["R0_source"]]
     print(f"  R0      = {rep['R0']:{f}} {unit}  ({src})")
+    gl = governs_line(rep, f)
+    if gl and rep.get("governs") not in ("convexity", "min_base_radius", "chosen"):     # else said by the R0 line
+        print(gl)
+    if rep.get("smallest_cam_radius") is not None:
+        print(f"  Rmin    = {rep['smallest_cam_radius']:{f}} {unit}  (the cam's own smallest radius)")
+    for line in part_lines(rep, f):
+        print(line)
     if rep["R0_source"] != "convexity" and rep["R0_min"] is not None:
         print(f"  R0 min  = {rep['R0_min']:{f}} {unit}  (convexity, binding at {rep['binding_deg']:.4f} deg)")
     elif rep["binding_deg"] is not None and rep["R0_source"] == "convexity":
@@ -203,6 +266,8 @@ def print_flat_summary(rep: dict) -> None:
         print(f"        a face centred on the axis needs {rep['face_width_centred']:{f}} {unit} (no margins)")
     print(f"  pressure angle: {pressure_text(rep)}")
     print(f"  verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    for line in peaks_lines(rep, rep.get("rpm")):
+        print(line)
     if rep.get("optimize"):
         print_optimization(rep["optimize"], rep.get("R0"))
     for n in rep["notes"]:

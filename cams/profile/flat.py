@@ -124,8 +124,14 @@ class FlatFaceProfile:
 
     @property
     def min_work_radius(self) -> float:
-        """Smallest distance of the sampled profile from the cam centre (length)."""
-        return float(np.min(np.linalg.norm(self.point, axis=1)))
+        """The profile's smallest distance from the cam centre (length), exactly: R0.
+
+        The face's distance from the centre, the support function ``p``, grows with the lift (``R0 + s`` for a
+        translating face; ``f - L cos a`` with ``a`` turning away from the line of centres for a rocker), so it is
+        smallest at the near dwell, ``p = R0``; and the profile's nearest point to the centre is where ``p`` is
+        smallest, at distance ``p`` (:func:`cams.kinematics.flat.flat_radii`). Not the sampled polyline's.
+        """
+        return float(self.base_radius)
 
     @property
     def face_range(self) -> tuple[float, float]:
@@ -156,7 +162,7 @@ def _grid(program: Program, samples: int) -> np.ndarray:
 
 
 def translating_flat_face(program: Program, *, base_radius: float, cam_sense: int = 1, offset: float = 0.0,
-                          samples: int = 1440) -> FlatFaceProfile:
+                          samples: int = 1440, phi: np.ndarray | None = None) -> FlatFaceProfile:
     """Cam of a translating flat-faced follower (face perpendicular to the axis).
 
     Parameters
@@ -172,6 +178,8 @@ def translating_flat_face(program: Program, *, base_radius: float, cam_sense: in
         shifts the contact positions on the face, not the profile.
     samples : int
         Uniform steps per turn (phase starts are added).
+    phi : ndarray, optional
+        The cam angles (radians) to evaluate at instead of ``samples``' (at a phase joint the later phase's).
 
     Returns
     -------
@@ -193,7 +201,7 @@ def translating_flat_face(program: Program, *, base_radius: float, cam_sense: in
     R0 = check_length("base_radius", base_radius)
     eps = check_cam_sense(cam_sense)
     e = check_length("follower.offset", offset, positive=False)
-    phi = _grid(program, samples)
+    phi = _grid(program, samples) if phi is None else np.asarray(phi, dtype=float)
     m = program.evaluate(phi)
     theta = np.pi / 2 - eps * phi
     X, rho, p_t = envelope(theta, np.full_like(phi, -eps), np.zeros_like(phi), R0 + m.s, m.ds, m.d2s)
@@ -207,7 +215,8 @@ def translating_flat_face(program: Program, *, base_radius: float, cam_sense: in
 
 
 def oscillating_flat_face(program: Program, *, centre_distance: float, base_radius: float, face_offset: float = 0.0,
-                          rise_sense: int = -1, cam_sense: int = 1, samples: int = 1440) -> FlatFaceProfile:
+                          rise_sense: int = -1, cam_sense: int = 1, samples: int = 1440,
+                          phi: np.ndarray | None = None) -> FlatFaceProfile:
     """Cam of an oscillating (rocker) flat-faced follower.
 
     Parameters
@@ -228,6 +237,8 @@ def oscillating_flat_face(program: Program, *, centre_distance: float, base_radi
         Cam's sense of rotation.
     samples : int
         Uniform steps per turn (phase starts are added).
+    phi : ndarray, optional
+        The cam angles (radians) to evaluate at instead of ``samples``' (at a phase joint the later phase's).
 
     Returns
     -------
@@ -247,7 +258,7 @@ def oscillating_flat_face(program: Program, *, centre_distance: float, base_radi
     f = check_length("face_offset", face_offset, positive=False)
     eps = check_cam_sense(cam_sense)
     a0 = oscillating_setup(program, L, R0, f, rise_sense)
-    phi = _grid(program, samples)
+    phi = _grid(program, samples) if phi is None else np.asarray(phi, dtype=float)
     phi, a, theta, dth, d2th, p, dp, d2p = oscillating_terms(program, L, f, rise_sense, eps, a0, phi=phi)
     X, rho, p_t = envelope(theta, dth, d2th, p, dp, d2p)
     contact = oscillating_contact(L, rise_sense, a, p_t)
@@ -260,16 +271,18 @@ def oscillating_flat_face(program: Program, *, centre_distance: float, base_radi
 
 
 
-def flat_face_cam(design: FlatFaceDesign, base_radius: float, *, samples: int = 1440) -> FlatFaceProfile:
-    """The sampled cam of a flat-face design (:class:`cams.model.design.FlatFaceDesign`) at a base radius."""
+def flat_face_cam(design: FlatFaceDesign, base_radius: float, *, samples: int = 1440,
+                  phi: np.ndarray | None = None) -> FlatFaceProfile:
+    """The sampled cam of a flat-face design (:class:`cams.model.design.FlatFaceDesign`) at a base radius (at the
+    cam angles ``phi``, radians, when given)."""
     fo = design.follower
     if isinstance(fo, FlatTranslating):
         cam = translating_flat_face(design.program, base_radius=base_radius, cam_sense=design.cam_sense,
-                                    offset=fo.offset, samples=samples)
+                                    offset=fo.offset, samples=samples, phi=phi)
     else:
         cam = oscillating_flat_face(design.program, centre_distance=fo.centre_distance, base_radius=base_radius,
                                     face_offset=fo.face_offset, rise_sense=fo.sense, cam_sense=design.cam_sense,
-                                    samples=samples)
+                                    samples=samples, phi=phi)
     return replace(cam, name=design.name)
 
 

@@ -38,6 +38,7 @@ from cams.kinematics.inversion import (
     offset_radius,
     outward_normal,
     pitch_phase,
+    smallest_cam_radius,
 )
 from cams.kinematics.vectors import cross, xy
 from cams.model.design import CamDesign
@@ -64,7 +65,7 @@ __all__ = [
 DEFAULT_TOLERANCE = 1e-3
 #: Largest chord tolerance accepted, as a fraction of the cam's smallest radius (:func:`cap_tolerance`).
 MAX_TOLERANCE_FRACTION = 0.05
-#: The default tolerance is at most this fraction of the cam's smallest radius (below 1 mm: finer than 1 um).
+#: The default tolerance is at most this fraction of the cam's size (below 1 mm: finer than 1 um).
 DEFAULT_TOLERANCE_FRACTION = 1e-3
 #: Keys the ``[profile]`` table of a design file may hold (:mod:`cams.io.designfile` maps them onto the design).
 PROFILE_KEYS = ("tolerance", "min_curvature_radius")
@@ -95,19 +96,23 @@ def smallest_radius(R0: float, roller_radius: float = 0.0) -> float:
     return R0 - roller_radius if R0 > roller_radius else max(R0, roller_radius)
 
 
-def cap_tolerance(tolerance: float | None, smallest: float, field: str) -> float:
+def cap_tolerance(tolerance: float | None, smallest: float, field: str, *, size: float | None = None) -> float:
     """The chord tolerance for a cam whose smallest radius is ``smallest``, refusing one too coarse for it.
 
     Parameters
     ----------
     tolerance : float or None
         The tolerance given (length); None: ``min(DEFAULT_TOLERANCE,
-        DEFAULT_TOLERANCE_FRACTION * smallest)``, so a cam whose smallest
-        radius is under a millimetre is sampled as finely for its size.
+        DEFAULT_TOLERANCE_FRACTION * size)``, so a cam under a millimetre is
+        sampled as finely for its size.
     smallest : float
         The cam's smallest radius (:func:`smallest_radius`), length.
     field : str
         Where the tolerance was given, for the message.
+    size : float, optional
+        The cam's size for the default (length): a roller's R0 (the pitch curve's base radius: a cam whose own
+        smallest radius tends to 0, sized just clear of its roller, is not sampled ever finer for it); default
+        ``smallest``.
 
     Returns
     -------
@@ -122,7 +127,8 @@ def cap_tolerance(tolerance: float | None, smallest: float, field: str) -> float
     """
     cap = MAX_TOLERANCE_FRACTION * smallest
     if tolerance is None:
-        return float(min(DEFAULT_TOLERANCE, DEFAULT_TOLERANCE_FRACTION * smallest)) if smallest > 0 \
+        scale = smallest if size is None else size
+        return float(min(DEFAULT_TOLERANCE, DEFAULT_TOLERANCE_FRACTION * scale)) if scale > 0 \
             else DEFAULT_TOLERANCE
     tol = check_tolerance(tolerance, field)
     if cap > 0 and tol > cap:
@@ -162,6 +168,10 @@ class Profile:
     cam_sense : int
     R0 : float
         Base radius of the pitch curve, ``|P(0)|`` at the near dwell.
+    min_work_radius : float
+        The working profile's smallest distance from the cam centre (length): the exact one of the kernel
+        (:func:`cams.kinematics.inversion.smallest_cam_radius`, ``min |P| - r``), not the sampled polyline's, so
+        that the cam's smallest radius is one number in every report, check and drawing; NaN when not given.
     """
 
     phi: np.ndarray
@@ -177,6 +187,7 @@ class Profile:
     cam_sense: int
     R0: float
     name: str = "cam"
+    min_work_radius: float = float("nan")
 
     def __post_init__(self):
         for k in ("phi", "phase", "pitch", "work", "outer", "normal", "rho", "centre"):
@@ -201,22 +212,6 @@ class Profile:
     def rho_outer(self) -> np.ndarray | None:
         """Radius of curvature of the outer wall, ``rho + r_roller``, or ``None``."""
         return None if self.outer is None else offset_radius(self.rho, self.roller_radius)
-
-    @property
-    def min_work_radius(self) -> float:
-        """Smallest distance of the sampled working profile from the cam centre (length)."""
-        return float(_polyline_min_radius(self.work))
-
-
-def _polyline_min_radius(pts: np.ndarray) -> float:
-    """Distance from the origin to a closed polyline (its segments, not only vertices)."""
-    a = pts
-    b = np.roll(pts, -1, axis=0)
-    d = b - a
-    L2 = np.sum(d * d, axis=1)
-    t = np.clip(np.divide(-np.sum(a * d, axis=1), L2, out=np.zeros_like(L2), where=L2 > 0), 0.0, 1.0)
-    q = a + t[:, None] * d
-    return float(np.min(np.linalg.norm(q, axis=1)))
 
 
 
@@ -372,7 +367,7 @@ def build_profile(
     tolerance : float, optional
         Chord tolerance, length unit, at most 5 % of the cam's smallest radius
         (:func:`cap_tolerance`); default 1e-3 (1 micrometre in mm), 0.1 % of
-        the smallest radius when that is under 1 mm.
+        R0 when that is under 1 mm.
     groove : bool, optional
         Add the outer wall of a groove; default: ``True`` for form closure.
     field : str, optional
@@ -392,7 +387,8 @@ def build_profile(
     r = float(f.roller_radius)
     centre = np.asarray(centre, dtype=float)
     R0 = float(np.linalg.norm(f.position(0.0) - centre))
-    tol = cap_tolerance(tolerance, smallest_radius(R0, r), field)
+    smallest = smallest_cam_radius(design, centre)[0]
+    tol = cap_tolerance(tolerance, smallest if smallest > 0 else smallest_radius(R0, r), field, size=R0)
     if groove is None:
         groove = design.limits.closure == "form"
     if groove and r <= 0:
@@ -422,6 +418,7 @@ def build_profile(
         cam_sense=design.cam_sense,
         R0=R0,
         name=design.name,
+        min_work_radius=float(smallest),
     )
 
 

@@ -142,6 +142,10 @@ SLOTTING = {
 }
 SLOTTING_LENGTHS = {**SLOTTING, "linkage": {"type": "slotting", "crank": 75.0, "centre_distance": 150.0,
                                             "bar": 100.0, "rod": 100.0, "guide_x": -243.3}}
+# the hub wall goes with a bore
+ROCKER_WALL = {**ROCKER_FORM, "cam": {**ROCKER_FORM["cam"], "hub_wall": 2.0}}
+FLAT_WALL = {**FLAT_ROCKER, "cam": {**FLAT_ROCKER["cam"], "hub_wall": 2.0}}
+SLOTTING_WALL = {**SLOTTING, "cam": {"bore_radius": 10.0, "hub_wall": 2.0}}
 CRANK_SLIDER = {
     "linkage": {"type": "crank_slider", "stroke": 100.0, "rod": 300.0, "offset": 0.0, "rod_cg": 100.0, "rpm": 60},
     "cutting": {"working": "forward"},
@@ -167,6 +171,7 @@ HOMES = {
     ("`[follower]`", "", "roller_radius"): (ROCKER_FORM, "follower.roller_radius"),
     ("`[cam]`", "", "rpm"): (ROCKER_FORM, "cam.rpm"),
     ("`[cam]`", "", "bore_radius"): (ROCKER_FORM, "cam.bore_radius"),
+    ("`[cam]`", "", "hub_wall"): (ROCKER_WALL, "cam.hub_wall"),
     ("`[cam]`", "", "base_radius"): (ROCKER_CHOSEN_R0, "cam.base_radius"),
     ("`[cam]`", "", "centre"): (ROCKER_CHOSEN_CENTRE, "cam.centre[0]"),
     ("`[[motion]]`", "", "angle"): (ROCKER_FORM, "motion[2].angle"),
@@ -186,6 +191,7 @@ HOMES = {
        for k in ("stroke", "offset")},
     **{("Flat-faced followers (`face = \"flat\"`)", "`[cam]`", k): (FLAT_ROCKER, f"cam.{k}")
        for k in ("rpm", "bore_radius", "base_radius")},
+    ("Flat-faced followers (`face = \"flat\"`)", "`[cam]`", "hub_wall"): (FLAT_WALL, "cam.hub_wall"),
     **{("Flat-faced followers (`face = \"flat\"`)", "`[limits]`", k): (FLAT_ROCKER_FLOOR, f"limits.{k}")
        for k in ("min_radius", "min_base_radius")},
     ("Flat-faced followers (`face = \"flat\"`)", "`[profile]`", "tolerance"): (FLAT_ROCKER, "profile.tolerance"),
@@ -204,6 +210,7 @@ HOMES = {
     **{("`[drive]`", "", k): (SLOTTING, f"drive.{k}") for k in ("z_crank", "z_cam")},
     **{("`[timing]`", "", k): (SLOTTING, f"timing.{k}") for k in ("margin", "follower_direction")},
     ("`[cam]`", "", "bore_radius", "machine"): (SLOTTING, "cam.bore_radius"),
+    ("`[cam]`", "", "hub_wall", "machine"): (SLOTTING_WALL, "cam.hub_wall"),
     **{("`[forces]`", "", k): (SLOTTING, f"forces.{k}") for k in ("gravity", "samples", "passes", "delta")},
     **{("`[forces.links.NAME]`", "", k): (SLOTTING, f"forces.links.bar.{k}") for k in ("mass", "inertia", "cg")},
     ("`[forces.friction]`", "", "coefficient"): (SLOTTING, "forces.friction.prismatic.coefficient"),

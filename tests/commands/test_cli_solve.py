@@ -84,17 +84,27 @@ def test_tiny_design_prints_its_digits(tmp_path, capsys):
 
 
 def test_unbuildable_minimum_fails_with_exit_1(tmp_path, capsys):
-    """A minimum R0 below the roller radius is reported (it is the answer) but the command fails: no cam to make."""
+    """The pressure angle's minimum R0 below the roller radius (``constraints = "pressure_angle"``) is reported
+    (it is the answer asked for) but the command fails: no cam to make. Sized to the part (the default), the roller
+    governs and the cam passes."""
     path = tmp_path / "nodwell.toml"
-    path.write_text('[follower]\nkind = "rocker"\narm = 125.0\nswing = 15.0\nroller_radius = 10.0\n'
-                    '[[motion]]\nphase = "rise"\nlaw = "cycloidal"\nangle = 180\n'
-                    '[[motion]]\nphase = "return"\nlaw = "cycloidal"\nangle = 180\n'
-                    '[limits]\npressure_angle = 45\n', encoding="utf-8")
+    text = ('[follower]\nkind = "rocker"\narm = 125.0\nswing = 15.0\nroller_radius = 10.0\n'
+            '[[motion]]\nphase = "rise"\nlaw = "cycloidal"\nangle = 180\n'
+            '[[motion]]\nphase = "return"\nlaw = "cycloidal"\nangle = 180\n'
+            '[limits]\npressure_angle = 45\n')
+    path.write_text(text + '[solve]\nconstraints = "pressure_angle"\n', encoding="utf-8")
     assert main(["solve", str(path), "--json"]) == 1
     rep = json.loads(capsys.readouterr().out)
-    assert rep["R0"] < 10.0 and rep["verified"] and rep["buildable"] is False
+    assert rep["R0"] < 10.0 and rep["verified"] and rep["buildable"] is False and rep["governs"] == "pressure_angle"
     assert any(n.startswith("not buildable") for n in rep["notes"])
-    # with a floor above the roller it is buildable and passes
-    path.write_text(path.read_text(encoding="utf-8") + "min_base_radius = 20.0\n", encoding="utf-8")
+    # sized to the part: the roller governs, buildable
+    path.write_text(text, encoding="utf-8")
     assert main(["solve", str(path), "--json"]) == 0
-    assert json.loads(capsys.readouterr().out)["buildable"] is True
+    part = json.loads(capsys.readouterr().out)
+    assert part["buildable"] is True and part["governs"] == "undercut" and part["R0"] > 10.0
+    assert part["pressure_angle_R0"] == rep["R0"]
+    # with a floor above the roller it is buildable and passes, the floor governs
+    path.write_text(text + "min_base_radius = 20.0\n", encoding="utf-8")
+    assert main(["solve", str(path), "--json"]) == 0
+    floor = json.loads(capsys.readouterr().out)
+    assert floor["buildable"] is True and floor["governs"] == "min_base_radius" and floor["R0"] == 20.0

@@ -18,7 +18,11 @@ ROCKER = EXAMPLES / "rocker_flat.toml"
 
 SOLVE_KEYS = {"name", "follower", "face", "R0", "R0_min", "R0_source", "binding_deg", "min_radius", "min_rho",
               "min_rho_at_deg", "L", "face_offset", "offset", "centre", "face_range", "face_width",
-              "face_width_centred", "pressure_angle", "verified", "buildable", "failures", "seconds", "notes"}
+              "face_width_centred", "pressure_angle", "verified", "buildable", "failures", "seconds", "notes",
+              # the part's keys, every face alike
+              "governs", "pressure_angle_R0", "smallest_cam_radius", "smallest_cam_radius_at_deg",
+              "largest_cam_radius", "largest_cam_radius_at_deg", "bore_radius", "hub_wall", "hub_wall_required",
+              "rpm", "peaks"}
 
 
 def _flat(kind="translating", **over) -> dict:
@@ -169,12 +173,20 @@ def test_plot_only_zone_is_a_note(tmp_path, capsys):
     assert err.startswith("cams plot: note: zone:") and err.count("\n") == 1
 
 
-def test_check_fails_on_a_bore_too_large(tmp_path, capsys):
-    f = _file(tmp_path, _flat(cam={"bore_radius": 30.0}))
+def test_check_fails_on_a_bore_too_large_for_a_chosen_cam_and_sizing_clears_it(tmp_path, capsys):
+    """A chosen R0 of 25 mm cannot take a bore of 30 mm: the bore check fails and a note gives the least R0 that
+    fits; sized (no chosen R0) the cam grows to clear it: its smallest radius R0 is the bore, exactly."""
+    f = _file(tmp_path, _flat(cam={"bore_radius": 30.0, "base_radius": 25.0}))
     rc, out, _ = _run(capsys, "check", f, "--json")
     rep = json.loads(out)
     assert rc == 1 and not rep["passed"]
     assert [c["name"] for c in rep["checks"] if not c["passed"]] == ["bore"]
+    assert any("the least R0 that fits is 30 mm" in n for n in rep["notes"])
+    f = _file(tmp_path, _flat(cam={"bore_radius": 30.0}))
+    rc, out, _ = _run(capsys, "solve", f, "--json")
+    rep = json.loads(out)
+    assert rc == 0 and rep["governs"] == "bore" and rep["R0"] == pytest.approx(30.0, rel=1e-12)
+    assert rep["smallest_cam_radius"] == pytest.approx(30.0, rel=1e-12) and rep["hub_wall"] >= 0.0
 
 
 @pytest.mark.parametrize("over, field, words", [

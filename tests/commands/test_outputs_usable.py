@@ -5,6 +5,8 @@ numerical radius of curvature of the exported pitch curve, the exported profile'
 the jamming limit written out), go through solve, check, profile, plot and sweep: every one reports
 ``buildable`` false beside ``verified`` and exits 1; the manufacturing files are written only with
 ``--allow-failed`` and then marked as failing (never the CSV's columns); the pictures are drawn, titled as failing.
+The undercut, the roller above R0 and the bore are sized by the pressure angle alone (``[solve] constraints =
+"pressure_angle"``): sized to the part (the default) they would grow until they pass.
 """
 
 import csv
@@ -42,11 +44,16 @@ phase = "dwell"
 [limits]
 pressure_angle = 60
 closure = "force"
+[solve]
+constraints = "pressure_angle"
 """
+
+#: The pressure angle alone sizes it: a cam that fails its profile's checks is kept, to be judged.
+ALONE = '[solve]\nconstraints = "pressure_angle"\n'
 
 
 def _designs(tmp_path) -> dict[str, Path]:
-    rf = (EXAMPLES / "rocker_force.toml").read_text()
+    rf = (EXAMPLES / "rocker_force.toml").read_text().replace("[solve]\n", ALONE)
     feed = (EXAMPLES / "slotting_feed_cam.toml").read_text()
     texts = {
         "undercut": UNDERCUT,
@@ -202,7 +209,8 @@ def test_sweep_counts_unbuildable_rows_and_exits_1(capsys, tmp_path):
     """Rows whose R0 is below the 20 mm roller are verified but not buildable: counted as infeasible, exit 1."""
     out = tmp_path / "s.csv"
     f = tmp_path / "d.toml"
-    f.write_text((EXAMPLES / "rocker_force.toml").read_text().replace("roller_radius = 10.0", "roller_radius = 20.0"))
+    f.write_text((EXAMPLES / "rocker_force.toml").read_text().replace("roller_radius = 10.0", "roller_radius = 20.0")
+                 .replace("[solve]\n", ALONE))
     rc = main(["sweep", str(f), "--vary", "limits.pressure_angle=40,45", "--out", str(out), "--jobs", "1",
                "--quiet"])
     err = capsys.readouterr().err
@@ -315,7 +323,8 @@ def test_sweep_counts_a_not_certified_row_as_failing(capsys, tmp_path, monkeypat
 def test_a_roller_past_the_centre_has_no_smallest_radius_and_is_said_once(capsys, tmp_path):
     """A roller larger than R0: Rmin is 'none' (no negative radius), the missing base circle one FAIL line."""
     f = tmp_path / "d.toml"
-    f.write_text((EXAMPLES / "rocker_force.toml").read_text().replace("roller_radius = 10.0", "roller_radius = 20.0"))
+    f.write_text((EXAMPLES / "rocker_force.toml").read_text().replace("roller_radius = 10.0", "roller_radius = 20.0")
+                 .replace("[solve]\n", ALONE))
     rc = main(["solve", str(f)])
     out = capsys.readouterr().out
     rc_json = main(["solve", str(f), "--json"])

@@ -58,10 +58,9 @@ def test_svg_of_a_micrometre_cam_has_a_view_box(tmp_path, capsys):
 
 
 def test_default_tolerance_follows_a_micrometre_cam(tmp_path, capsys):
-    """Without a tolerance a cam 20 micrometres across is sampled for its size (0.1 % of its smallest radius),
-    not at 1 micrometre."""
+    """Without a tolerance a cam 20 micrometres across is sampled for its size (0.1 % of R0), not at 1 micrometre."""
     rc, rep = _json(capsys, "profile", _scaled(tmp_path, 1e-6))
-    assert rc == 0 and rep["tolerance"] <= 1e-3 * (rep["R0"] - rep["roller_radius"]) * (1 + 1e-9) and rep["points"] > 100
+    assert rc == 0 and rep["tolerance"] == pytest.approx(1e-3 * rep["R0"], rel=1e-12) and rep["points"] > 100
 
 
 def _json(capsys, *argv):

@@ -60,8 +60,15 @@ def test_bore_is_checked_against_the_profile(capsys):
     assert res.bore["min_work_radius"] > 10.0
     assert any("bore radius 10 mm" in n and "clears it" in n for n in res.notes)
     assert res.to_dict()["bore"] == res.bore
-    # a bore larger than the profile's smallest radius fails the run
-    d["cam"] = {"bore_radius": float(np.ceil(res.bore["min_work_radius"])) + 1.0}
+    # a bore larger than the profile's smallest radius: the feed cam is sized to clear it (by the hub wall)...
+    bore = float(np.ceil(res.bore["min_work_radius"])) + 1.0
+    d["cam"] = {"bore_radius": bore, "hub_wall": 2.0}
+    grown = design_machine(machine_from_dict(d))
+    assert grown.bore["clear"] and grown.ok and grown.solve.governs == "bore"
+    assert grown.bore["min_work_radius"] == pytest.approx(bore + 2.0, rel=1e-9)
+    # ... unless the pressure angle alone sizes it: then it fails the run
+    d["cam"] = {"bore_radius": bore}
+    d["solve"] = {**d.get("solve", {}), "constraints": "pressure_angle"}
     big = design_machine(machine_from_dict(d))
     assert not big.bore["clear"] and not big.ok
     assert any("NOT clear" in n for n in big.notes)
@@ -69,7 +76,8 @@ def test_bore_is_checked_against_the_profile(capsys):
 
 def test_bore_fails_the_command(tmp_path, capsys):
     f = tmp_path / "bore.toml"
-    f.write_text(SLOTTING.read_text(encoding="utf-8") + "\n[cam]\nbore_radius = 200.0\n", encoding="utf-8")
+    text = SLOTTING.read_text(encoding="utf-8").replace("[solve]\n", '[solve]\nconstraints = "pressure_angle"\n')
+    f.write_text(text + "\n[cam]\nbore_radius = 200.0\n", encoding="utf-8")
     assert main(["machine", str(f), "--json"]) == 1
     rep = json.loads(capsys.readouterr().out)
     assert rep["bore"]["clear"] is False and rep["bore"]["bore_radius"] == 200.0
@@ -258,7 +266,7 @@ def test_bore_figure_against_the_pitch_curve():
     """The profile's smallest radius the bore check prints, against the mechanism: the working profile's nearest
     point to the cam centre lies on the radius through the pitch curve's nearest point, one roller radius in, so
     min |work| = min |pitch| - r, the pitch curve by kinematic inversion from the motion program on a dense grid.
-    The check measures the exported polyline, whose chords lie inside the curve by at most the chord tolerance."""
+    The check reads the exact smallest radius (the kernel's, refined), not the exported polyline's."""
     d = raw(SLOTTING)
     d["cam"] = {"bore_radius": 10.0}
     res = design_machine(machine_from_dict(d))
@@ -270,5 +278,5 @@ def test_bore_figure_against_the_pitch_curve():
     A = f.arm * np.stack([np.cos(th), np.sin(th)], axis=-1)
     pitch_radius = np.hypot(A[:, 0] - O[0], A[:, 1] - O[1])   # a rotation about O keeps the distance
     expected = pitch_radius.min() - f.roller_radius
-    tol = 1e-3  # the default chord tolerance, mm
-    assert expected - tol <= res.bore["min_work_radius"] <= expected + 1e-9 * f.arm
+    assert res.bore["min_work_radius"] == pytest.approx(expected, abs=1e-8 * f.arm)
+    assert res.bore["min_work_radius"] == res.solve.to_dict()["smallest_cam_radius"]   # one number everywhere

@@ -10,14 +10,18 @@ from cams.cli import main
 SLOTTING = Path(__file__).resolve().parents[2] / "examples" / "machines" / "slotting_machine.toml"
 
 
-def _files(tmp_path, roller: str, closure: str = "force"):
+def _files(tmp_path, roller: str, closure: str = "force", constraints: str = "pressure_angle"):
     """The slotting machine with another roller (and closure), and the same feed cam as a design file.
 
     The machine turns its cam counter-clockwise on the crank's shaft at the crank's 60 rpm: the design file says
-    so in its [cam] table and copies the machine file's cam tables ([follower] to the end) unchanged.
+    so in its [cam] table and copies the machine file's cam tables ([follower] to the end) unchanged. The cam is
+    sized by ``[solve] constraints`` (``"pressure_angle"``: the pressure angle alone, so that a cam that fails its
+    profile's checks is kept and judged).
     """
     text = SLOTTING.read_text(encoding="utf-8").replace("roller_radius = 15.0", f"roller_radius = {roller}")
     text = text.replace('closure = "force"', f'closure = "{closure}"')
+    assert "[solve]\n" in text
+    text = text.replace("[solve]\n", f'[solve]\nconstraints = "{constraints}"\n')
     machine = tmp_path / "machine.toml"
     machine.write_text(text, encoding="utf-8")
     cam_tables = text[text.index("[follower]"):]
@@ -31,19 +35,23 @@ def _json(capsys, argv) -> tuple[int, dict]:
     return code, json.loads(capsys.readouterr().out)
 
 
-@pytest.mark.parametrize("roller, closure, usable", [
-    ("15.0", "force", True),   # the example: R0 = 40.06 mm, no undercut
-    ("25.0", "force", False),  # R0 = 40.06 mm > 25 mm, but the pitch curve's radius of curvature 19.7 mm < 25 mm: undercut
-    ("0.0", "form", False),    # a knife edge in a groove
+@pytest.mark.parametrize("roller, closure, constraints, usable", [
+    ("15.0", "force", "pressure_angle", True),   # the example: R0 = 40.06 mm, no undercut
+    ("25.0", "force", "pressure_angle", False),  # R0 = 40.06 mm > 25 mm, but the pitch curve's radius of
+                                                 # curvature 19.7 mm < 25 mm: undercut
+    ("25.0", "force", "all", True),              # sized to the part: the roller governs, no undercut
+    ("0.0", "form", "all", False),               # a knife edge in a groove
 ])
-def test_machine_assesses_its_cam_as_check_does(tmp_path, capsys, roller, closure, usable):
-    machine, design = _files(tmp_path, roller, closure)
+def test_machine_assesses_its_cam_as_check_does(tmp_path, capsys, roller, closure, constraints, usable):
+    machine, design = _files(tmp_path, roller, closure, constraints)
     mcode, mrep = _json(capsys, ["machine", str(machine)])
     ccode, crep = _json(capsys, ["check", str(design)])
     for key in ("verified", "buildable", "failures"):
         assert mrep[key] == crep[key], key
     assert (mcode, ccode) == ((0, 0) if usable else (1, 1))
     assert mrep["buildable"] is usable and (usable or mrep["failures"])
+    if "R0" in crep:    # the same cam, sized the same way (a knife edge in a groove has no profile to check)
+        assert mrep["cam"]["R0"] == pytest.approx(crep["R0"], rel=1e-12)
 
 
 def test_undercut_feed_cam_is_reported_in_words_and_fails(tmp_path, capsys):

@@ -82,14 +82,16 @@ def test_plot_into_an_existing_file_names_the_option(tmp_path, capsys):
 
 
 def test_machine_with_an_unbuildable_cam_fails(tmp_path, capsys):
-    """The same rule as cams solve: a minimum R0 not larger than the roller radius is a failed check (exit 1)."""
+    """The same rule as cams solve: a minimum R0 not larger than the roller radius is a failed check (exit 1)
+    (the pressure angle alone sizing it: sized to the part it would grow past the roller)."""
     from pathlib import Path
 
     from cams.cli import main
 
     src = Path(__file__).resolve().parents[2] / "examples" / "machines" / "slotting_machine.toml"
     path = tmp_path / "big_roller.toml"
-    path.write_text(src.read_text(encoding="utf-8").replace("roller_radius = 15.0", "roller_radius = 45.0"), encoding="utf-8")
+    path.write_text(src.read_text(encoding="utf-8").replace("roller_radius = 15.0", "roller_radius = 45.0")
+                    .replace("[solve]\n", '[solve]\nconstraints = "pressure_angle"\n'), encoding="utf-8")
     assert main(["machine", str(path), "--json"]) == 1
     import json
 

@@ -37,7 +37,7 @@ EDGE_OPTIMUM = {
     ],
     "limits": {"pressure_angle": 82.98621614038251, "closure": "form", "return_pressure_angle": 69.09419517308123,
                "safety_factor": 1.0536259954492786},
-    "solve": {"method": "exhaustive", "samples": 120},
+    "solve": {"method": "exhaustive", "samples": 120, "constraints": "pressure_angle"},   # the solver's answer
 }
 
 

@@ -257,7 +257,8 @@ def test_sweep_csv_headers_carry_units_and_no_round_off_tails(capsys, tmp_path, 
 
 @pytest.mark.parametrize("name", EXAMPLES_ROLLER)
 def test_every_length_in_the_solve_and_check_text_carries_mm(capsys, examples_dir, name):
-    """Each number printed is followed by its unit (mm, deg, N, N m, rpm, ms), or is a count or a flag."""
+    """Each number printed is followed by its unit (mm, deg, N, N m, rpm, ms; a peak's mm/s or rad/s...), or is a
+    count or a flag."""
     import re
 
     f = str(examples_dir / f"{name}.toml")
@@ -269,7 +270,7 @@ def test_every_length_in_the_solve_and_check_text_carries_mm(capsys, examples_di
             line = re.sub(r"^\s*(error bound: [0-9.e+-]+ mm)", "", line)
             for m in re.finditer(r"(?<![\w.])(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?)(?![\w.])(\s*[^\s,;)]*)", line):
                 num, unit = m.group(1), m.group(2).strip()
-                if unit.startswith(("mm", "deg", "N", "rpm", "ms", "points", "(limit")) or num in ("0", "1"):
+                if unit.startswith(("mm", "deg", "N", "rpm", "ms", "rad/", "points", "(limit")) or num in ("0", "1"):
                     continue
                 raise AssertionError(f"{cmd}: a number without a unit: {num!r} in {line!r}")
 

@@ -31,7 +31,9 @@ def test_check_text_output(capsys):
 
 
 def test_check_fails_with_exit_1_for_undercut(tmp_path, capsys):
+    """The pressure angle's cam alone (``constraints = "pressure_angle"``) with a 28 mm roller undercuts."""
     text = (EXAMPLES / "rocker_form.toml").read_text().replace("roller_radius = 10.0", "roller_radius = 28.0")
+    text = text.replace("[solve]\n", '[solve]\nconstraints = "pressure_angle"\n')
     f = tmp_path / "big_roller.toml"
     f.write_text(text)
     assert main(["check", str(f), "--json"]) == 1

@@ -80,10 +80,10 @@ def _program(kind: str, name: str) -> list[dict]:
 
 
 def _check_sampled_below_exact(d, exact):
-    conv = check_outcome({**d, "solve": {"samples": 60}}, method="convex")
+    conv = check_outcome({**d, "solve": {**d["solve"], "samples": 60}}, method="convex")
     assert not isinstance(conv, CamsError), conv
     assert conv.R0 <= exact.R0 + 1e-9 * exact.design.scale
-    exh = check_outcome({**d, "solve": {"samples": 24}}, method="exhaustive")
+    exh = check_outcome({**d, "solve": {**d["solve"], "samples": 24}}, method="exhaustive")
     assert not isinstance(exh, CamsError), exh
 
 
@@ -128,9 +128,9 @@ def _table_design(law, kind, closure):
     r = np.radians
     ph = (Phase("rise", r(120), law), Phase("dwell", r(30)), Phase("return", r(120), "cycloidal"), Phase("dwell", r(90)))
     lim = Limits(r(45), closure=closure)
-    if kind == "rocker":
-        return CamDesign(Rocker(125.0, 10.0, -1), Program(ph, r(15)), lim, 1, samples=60)
-    return CamDesign(Translating(8.0, None, 30.0), Program(ph, 30.0), lim, 1, samples=60)
+    if kind == "rocker":   # the solvers under stress: the pressure angle alone sizes the cam
+        return CamDesign(Rocker(125.0, 10.0, -1), Program(ph, r(15)), lim, 1, samples=60, constraints="pressure_angle")
+    return CamDesign(Translating(8.0, None, 30.0), Program(ph, 30.0), lim, 1, samples=60, constraints="pressure_angle")
 
 
 @pytest.mark.parametrize("kind", ["rocker", "translating"])

@@ -32,7 +32,7 @@ def rocker_dict(*, arm=125.0, swing=15.0, rise_direction="cw", rotation="ccw",
         "cam": {"rotation": rotation},
         "motion": _motion(rise, dwell, ret),
         "limits": limits,
-        "solve": {"samples": samples},
+        "solve": {"samples": samples, "constraints": "pressure_angle"},   # the solvers' answer, validated
     }
 
 
@@ -52,7 +52,7 @@ def translating_dict(*, stroke=30.0, offset=None, rotation="ccw", rise=("poly456
         "cam": {"rotation": rotation},
         "motion": _motion(rise, dwell, ret),
         "limits": limits,
-        "solve": {"samples": samples},
+        "solve": {"samples": samples, "constraints": "pressure_angle"},   # the solvers' answer, validated
     }
 
 
