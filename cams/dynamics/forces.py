@@ -65,7 +65,7 @@ from cams.dynamics.jump import JumpSpeed, jump_dict, jump_speed
 from cams.dynamics.motion import cam_speed, dynamics_grid, follower_kinematics
 from cams.kinematics.inversion import contact_normal, invert, pressure_angle
 from cams.kinematics.vectors import cross
-from cams.model.design import CamDesign
+from cams.model.design import CamDesign, Design
 from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring
 from cams.model.follower import Rocker
 from laws.errors import InputError
@@ -356,7 +356,7 @@ def cam_forces(
 
 
 def spring_for_contact(
-    design: CamDesign,
+    design: Design,
     dyn: FollowerDynamics,
     *,
     rpm: float | None = None,
@@ -440,7 +440,7 @@ def spring_for_contact(
     return Spring(rate=k, preload=F0)
 
 
-def chosen_spring(spec: DynamicsSpec, design: CamDesign, *, rpm: float | None = None) -> Spring:
+def chosen_spring(spec: DynamicsSpec, design: Design, *, rpm: float | None = None) -> Spring:
     """The spring of ``spec``: the given one, or the one :func:`spring_for_contact` chooses at ``rpm``.
 
     Parameters

@@ -27,8 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cams.model.design import CamDesign
-from cams.model.follower import Rocker
+from cams.model.design import Design
 
 __all__ = ["RigidImpact", "rigid_impacts"]
 
@@ -87,8 +86,10 @@ class RigidImpact:
                 "unit": self.unit, "effect": self.effect}
 
 
-def rigid_impacts(design: CamDesign) -> tuple[RigidImpact, ...]:
+def rigid_impacts(design: Design) -> tuple[RigidImpact, ...]:
     """The program's velocity jumps (:func:`laws.diagnostics.find_impacts`, hard ones), sorted by cam angle.
+
+    Any follower, roller or flat face: a rocker's (``kind == "rocker"``) jumps are in rad/s.
 
     Examples
     --------
@@ -102,6 +103,6 @@ def rigid_impacts(design: CamDesign) -> tuple[RigidImpact, ...]:
     """
     from laws.diagnostics import find_impacts
 
-    rocker = isinstance(design.follower, Rocker)
+    rocker = design.follower.kind == "rocker"
     return tuple(RigidImpact(float(i.phi), float(i.size), rocker)
                  for i in find_impacts(design.program) if i.kind == "hard")

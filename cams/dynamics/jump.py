@@ -14,7 +14,7 @@ import numpy as np
 from cams.dynamics.impacts import rigid_impacts
 from cams.dynamics.motion import dynamics_grid, follower_kinematics, si_per_unit
 from cams.kinematics.extremum import maximize, phase_positions
-from cams.model.design import CamDesign
+from cams.model.design import Design
 from cams.model.dynamics import FollowerDynamics
 from laws.errors import InputError
 from laws.units import TWO_PI, omega_to_rpm
@@ -49,7 +49,7 @@ class JumpSpeed:
     between_impacts_rpm: float | None = None
 
 
-def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200) -> JumpSpeed:
+def jump_speed(design: Design, dyn: FollowerDynamics, *, samples: int = 7200) -> JumpSpeed:
     """The cam speed above which the follower jumps, for the given spring.
 
     Contact is lost where ``m omega^2 d2q/dphi^2 + F0 + k q + P`` turns
@@ -65,7 +65,8 @@ def jump_speed(design: CamDesign, dyn: FollowerDynamics, *, samples: int = 7200)
 
     Parameters
     ----------
-    design : CamDesign
+    design : cams.model.design.Design
+        A roller's or a flat face's (the jump speed needs only the motion, the spring and the load).
     dyn : FollowerDynamics
         With its ``spring``.
     samples : int

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from cams.model.design import CamDesign
+from cams.model.design import Design
 from cams.model.dynamics import FollowerDynamics
 from cams.model.follower import Rocker
 from laws.errors import InputError, show_value
@@ -18,7 +18,7 @@ from laws.units import TWO_PI, rpm_to_omega
 __all__ = ["cam_speed", "dynamics_grid", "si_per_unit", "follower_kinematics"]
 
 
-def cam_speed(design: CamDesign, rpm: float | None) -> float:
+def cam_speed(design: Design, rpm: float | None) -> float:
     """The cam's angular speed (rad/s) at ``rpm`` (rev/min), or at the design's ``cam.rpm`` when ``rpm`` is None."""
     n = design.rpm if rpm is None else rpm
     if n is None:
@@ -34,16 +34,17 @@ def dynamics_grid(samples: int) -> np.ndarray:
     return np.linspace(0.0, TWO_PI, int(samples), endpoint=False)
 
 
-def si_per_unit(design: CamDesign, dyn: FollowerDynamics) -> float:
+def si_per_unit(design: Design, dyn: FollowerDynamics) -> float:
     """SI units of the follower coordinate ``q`` per unit of the program's ``s``.
 
-    1 for a rocker (rad), else metres per length unit.
+    1 for a rocker (rad), roller or flat face, else metres per length unit.
     """
-    return 1.0 if isinstance(design.follower, Rocker) else dyn.length_unit
+    return 1.0 if design.follower.kind == "rocker" else dyn.length_unit
 
 
-def follower_kinematics(design: CamDesign, phi: np.ndarray, dyn: FollowerDynamics):
-    """q, dq/dphi, d2q/dphi2 in SI and the arm |dA/dq| (m)."""
+def follower_kinematics(design: Design, phi: np.ndarray, dyn: FollowerDynamics):
+    """q, dq/dphi, d2q/dphi2 in SI and the arm |dA/dq| (m): a roller rocker's; 1 otherwise (a translating
+    follower's, and a flat rocker's, whose lever arm moves along the face: :mod:`cams.dynamics.flat_forces`)."""
     mo = design.program.evaluate(phi)
     u = si_per_unit(design, dyn)
     arm = design.follower.arm * dyn.length_unit if isinstance(design.follower, Rocker) else 1.0

@@ -4,8 +4,8 @@ Sizing: :func:`optimize.flat.size_flat_face` (the smallest base radius whose pro
 at least ``min_radius``; the pressure angle is fixed by the geometry), raised to clear the bore by its hub wall
 (:mod:`cams.faces.part`). The profile is
 :func:`cams.profile.flat.flat_face_profile`'s, its checks :func:`cams.checks.flat.check_flat_face`'s (convexity,
-a closed profile, the bore). A flat face has no zone, no R0-L trade-off, and (today) no forces: :meth:`FlatFace.forces`
-refuses a ``[dynamics]`` table here, the one place.
+a closed profile, the bore), its forces :func:`cams.dynamics.flat_forces.flat_design_forces`' (spring, contact
+force with the face's sliding friction, camshaft torque, jump speed). A flat face has no zone and no R0-L trade-off.
 """
 
 from __future__ import annotations
@@ -15,7 +15,6 @@ from typing import TYPE_CHECKING
 
 from cams.faces.base import Face
 from cams.faces.result import SolveResult
-from cams.model.design import FLAT_NO_FORCES
 from cams.model.follower import FlatRocker, FlatTranslating
 from laws.errors import InputError
 from optimize.flat import FlatFaceSolution
@@ -44,6 +43,7 @@ class FlatFace(Face):
     """The pipeline of a flat-faced follower's cam (translating or rocker)."""
 
     name = "flat"
+    forces_computed = True
 
     def size(self, design, *, method=None, objective=None) -> SolveResult:
         """The smallest base radius the convexity allows (or the floor, or the chosen ``[cam] base_radius``).
@@ -116,9 +116,9 @@ class FlatFace(Face):
         return check_flat_face(design, solution.detail, profile)
 
     def forces(self, design, solution: SolveResult):
-        if design.dynamics is not None:
-            raise InputError("dynamics", FLAT_NO_FORCES)
-        return None, None
+        from cams.dynamics.flat_forces import flat_design_forces
+
+        return flat_design_forces(design, float(solution.R0))
 
 
 #: The flat-faced follower's pipeline.

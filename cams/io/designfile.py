@@ -39,8 +39,10 @@ instead: its size is limited by convexity, not by a pressure angle::
                  tenth of the stroke, or of L times the swing in radians), min_base_radius,
                  closure = "force" (the only one)
     [profile]    tolerance
+    [dynamics]   as above, with face_friction (the face's sliding friction); a
+                 translating face takes no journal_radius
 
-No roller_radius, arm, pressure-angle limits, safety_factor, [solve] or [dynamics]
+No roller_radius, arm, pressure-angle limits, safety_factor or [solve]
 for a flat face: each is refused with a one-line error naming it.
 """
 
@@ -56,7 +58,6 @@ from cams.io.document import toml_number as _num
 from cams.io.document import toml_table as _table
 from cams.io.lawtable import law_from_table
 from cams.model.design import (
-    FLAT_NO_FORCES,
     MAX_SAMPLES,
     OBJECTIVE_SUPERSEDED,
     CamDesign,
@@ -64,7 +65,7 @@ from cams.model.design import (
     Limits,
     check_lift,
 )
-from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, journal_error
+from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, face_friction_error, journal_error
 from cams.model.follower import (
     FlatRocker,
     FlatTranslating,
@@ -123,7 +124,7 @@ _ONLY_FLAT = {
 }
 
 #: The keys of a design file's [dynamics] table, in their documented order.
-DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "journal_radius", "margin",
+DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "face_friction", "journal_radius", "margin",
                  "max_spring_force")
 
 
@@ -441,8 +442,7 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
     for k in so:
         raise InputError(f"solve.{k}", "does not apply to a flat-faced follower: its base radius follows from "
                          "convexity directly; remove the [solve] table")
-    if "dynamics" in d:
-        raise InputError("dynamics", FLAT_NO_FORCES)
+    dynamics = _dynamics(d, kind, flat=True)
     return FlatFaceDesign(
         follower=follower, program=program,
         min_radius=_num(li, "min_radius", "limits.min_radius", default=default_min_radius),
@@ -452,26 +452,27 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         bore_radius=_num(cam, "bore_radius", "cam.bore_radius", required=False),
         hub_wall=_num(cam, "hub_wall", "cam.hub_wall", required=False),
         tolerance=_num(pt, "tolerance", "profile.tolerance", required=False),
-        optimize=_optimize(d, {}),
+        optimize=_optimize(d, {}), dynamics=dynamics,
     )
 
 
-def _dynamics(d: dict, kind: str) -> DynamicsSpec | None:
-    """The optional [dynamics] table (None without one); ``kind``: the follower's."""
+def _dynamics(d: dict, kind: str, *, flat: bool = False) -> DynamicsSpec | None:
+    """The optional [dynamics] table (None without one); ``kind``: the follower's; ``flat``: a flat face's."""
     if "dynamics" not in d:
         return None
     units = d.get("units", "mm")
-    return dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm", follower=kind)
+    return dynamics_from_dict(d["dynamics"], units if isinstance(units, str) else "mm", follower=kind, flat=flat)
 
 
-def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None = None) -> DynamicsSpec:
+def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None = None,
+                       flat: bool | None = None) -> DynamicsSpec:
     """A design file's ``[dynamics]`` table, mapped onto a :class:`cams.model.dynamics.DynamicsSpec`.
 
     Keys (SI units except ``journal_radius``, in mm):
     ``mass`` (kg; kg m^2 for a rocker), ``load`` (N; N m), ``spring_rate``
-    (N/m; N m/rad), ``preload`` (N; N m), ``friction``, ``journal_radius``
-    (rocker only), ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N;
-    N m). A spring is set when ``spring_rate`` and ``preload`` are both
+    (N/m; N m/rad), ``preload`` (N; N m), ``friction``, ``face_friction``
+    (flat face only; dimensionless), ``journal_radius`` (rocker only),
+    ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N; N m). A spring is set when ``spring_rate`` and ``preload`` are both
     given; with only the rate, the preload is left to
     :func:`cams.dynamics.forces.spring_for_contact`.
 
@@ -486,6 +487,9 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
         the design refuses a journal radius other than 0 with the same
         message, :func:`cams.model.dynamics.check_dynamics_follower`). None:
         not checked.
+    flat : bool or None
+        True for a flat-faced follower; False refuses the key
+        ``face_friction`` (a roller turns freely). None: not checked.
 
     Returns
     -------
@@ -512,6 +516,8 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
                          "journal_radius too; its other values are SI)")
     if follower == "translating" and "journal_radius" in table:
         raise journal_error()
+    if flat is False and "face_friction" in table:
+        raise face_friction_error()
     if "mass" not in table:
         raise InputError("dynamics.mass", "is required (kg, or kg m^2 about the pivot for a rocker)")
     v = {k: check_number(f"dynamics.{k}", table[k]) for k in table}
@@ -527,6 +533,7 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
             journal_radius=v.get("journal_radius", 0.0),
             length_unit=LENGTH_UNITS[units],
             max_spring_force=v.get("max_spring_force"),
+            face_friction=v.get("face_friction", 0.0),
         ),
         margin=v.get("margin", 1.2),
         rate=None if both else v.get("spring_rate"),

@@ -26,7 +26,7 @@ from cams.model.options import ProfileOptions, check_constraints, check_hub_wall
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
-__all__ = ["Design", "FLAT_NO_FORCES", "Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES",
+__all__ = ["Design", "Limits", "CamDesign", "FlatFaceDesign", "METHODS", "CLOSURES", "MAX_SAMPLES",
            "check_lift", "check_optimize", "OBJECTIVE_SUPERSEDED"]
 
 METHODS = ("exact", "convex", "exhaustive")
@@ -57,9 +57,6 @@ def check_lift(lift: float, rocker: bool) -> None:
     elif not (np.isfinite(lift) and lift > 0):
         raise InputError("follower.stroke", f"must be > 0, got {show_value(lift)}")
 
-
-#: Why a flat face's design takes no ``[dynamics]`` table (said by the loader and by the flat face's pipeline).
-FLAT_NO_FORCES = "forces are computed for roller followers only; remove the [dynamics] table for a flat face"
 
 #: Why ``[solve] objective`` (or ``solve(objective=...)``) is refused beside ``[optimize]``.
 OBJECTIVE_SUPERSEDED = "[optimize] objective supersedes it: give the objective in [optimize] only"
@@ -486,7 +483,9 @@ class FlatFaceDesign(Design):
     optimize : MotionDesignSpec or None
         Design the free phases' laws with the cam (a file's ``[optimize]``).
     dynamics : DynamicsSpec or None
-        Refused by the face's pipeline (:mod:`cams.faces.flat`): forces are computed for roller followers only.
+        The follower's dynamics (a file's ``[dynamics]``): spring, contact force, camshaft torque (with the face's
+        sliding friction, ``face_friction``) and jump speed of the force-closed follower
+        (:mod:`cams.dynamics.flat_forces`); None: no forces. A translating face takes no ``journal_radius``.
     """
 
     follower: FlatFollower
@@ -522,6 +521,10 @@ class FlatFaceDesign(Design):
             raise InputError("cam.base_radius", "fixes the cam: a floor on R0 (limits.min_base_radius) has nothing "
                              "to size; remove one of them")
         check_optimize(self.optimize, "R0", self.base_radius is not None)
+        if self.dynamics is not None:
+            if not isinstance(self.dynamics, DynamicsSpec):
+                raise InputError("dynamics", f"must be a DynamicsSpec, got {type(self.dynamics).__name__}")
+            check_dynamics_follower(self.dynamics, isinstance(self.follower, FlatRocker), flat=True)
 
     def with_floor(self, R0: float | None) -> FlatFaceDesign:
         """A copy sized with the floor ``min_base_radius = R0`` (length; None: no floor)."""

@@ -15,7 +15,8 @@ import numpy as np
 from laws.errors import InputError
 from laws.errors import check_number as _num
 
-__all__ = ["DynamicsSpec", "FollowerDynamics", "Spring", "check_dynamics_follower", "journal_error"]
+__all__ = ["DynamicsSpec", "FollowerDynamics", "Spring", "check_dynamics_follower", "journal_error",
+           "face_friction_error"]
 
 
 @dataclass(frozen=True)
@@ -73,6 +74,11 @@ class FollowerDynamics:
     max_spring_force : float or None
         Largest force (N or N m) the spring may exert (solid or allowable
         stress); a spring that would need more is rejected.
+    face_friction : float, optional
+        mu_f >= 0 (dimensionless): sliding (Coulomb) friction between a flat
+        face and the cam, ``mu_f N`` along the face opposing the sliding
+        (:mod:`cams.dynamics.flat_forces`); a roller turns freely and a roller
+        design refuses it (:func:`check_dynamics_follower`).
     """
 
     mass: float
@@ -82,6 +88,7 @@ class FollowerDynamics:
     journal_radius: float = 0.0
     length_unit: float = 1e-3
     max_spring_force: float | None = None
+    face_friction: float = 0.0
 
     def __post_init__(self) -> None:
         _num("dynamics.mass", self.mass, lo=0.0, strict=True)
@@ -90,6 +97,7 @@ class FollowerDynamics:
         _num("dynamics.journal_radius", self.journal_radius, lo=0.0)
         _num("dynamics.length_unit", self.length_unit, lo=0.0, strict=True)
         _num("dynamics.max_spring_force", self.max_spring_force, lo=0.0, strict=True, allow_none=True)
+        _num("dynamics.face_friction", self.face_friction, lo=0.0)
         if self.spring is not None and not isinstance(self.spring, Spring):
             raise InputError("dynamics.spring", f"must be a Spring, got {type(self.spring).__name__}")
 
@@ -125,19 +133,29 @@ class DynamicsSpec:
         _num("dynamics.spring_rate", self.rate, lo=0.0, allow_none=True)
 
 
-def check_dynamics_follower(spec: DynamicsSpec, rocker: bool) -> None:
-    """Refuse what a follower's kind does not take: a translating follower has no pivot journal.
+def check_dynamics_follower(spec: DynamicsSpec, rocker: bool, *, flat: bool = False) -> None:
+    """Refuse what a follower's kind does not take: a translating follower has no pivot journal, a roller no
+    sliding face.
 
     Raises
     ------
     InputError
-        ``dynamics.journal_radius`` other than 0 for a translating follower (``rocker`` False).
+        ``dynamics.journal_radius`` other than 0 for a translating follower (``rocker`` False), roller or flat
+        face alike; ``dynamics.face_friction`` other than 0 for a roller follower (``flat`` False).
     """
     if not rocker and spec.dynamics.journal_radius != 0:
         raise journal_error()
+    if not flat and spec.dynamics.face_friction != 0:
+        raise face_friction_error()
 
 
 def journal_error() -> InputError:
     """The error of a journal radius given for a translating follower (a design file refuses the key itself)."""
     return InputError("dynamics.journal_radius", "applies to a rocker's pivot journal (friction moment mu r N); a "
                       "translating follower's friction is in its guide (dynamics.friction alone): remove it")
+
+
+def face_friction_error() -> InputError:
+    """The error of a face friction given for a roller follower (a design file refuses the key itself)."""
+    return InputError("dynamics.face_friction", "applies to a flat-faced follower (sliding friction at the face); a "
+                      "roller turns freely on its pin: remove it")

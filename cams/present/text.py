@@ -214,6 +214,12 @@ def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translati
         jump = f"follower leaves the cam at any speed (velocity drop at {deg(fo['jump_at_deg'])})"
     else:
         jump = f"follower jumps above {jump_text(fo['jump_rpm'])}"
+    if fo["jammed"] is None:  # a flat face: no pressure-angle jamming; its friction slides at the face
+        print(f"{indent}{jump}; contact lost: {'YES' if fo['contact_lost'] else 'no'}; jammed: cannot (a flat face)")
+        loss = fo.get("mean_sliding_loss")
+        print(f"{indent}sliding at the face: up to {fo['max_sliding_speed']:.6g} m/s"
+              + ("" if loss is None else f", mean friction loss {loss:.6g} W"))
+        return
     print(f"{indent}{jump}; contact lost: {'YES' if fo['contact_lost'] else 'no'}; "
           f"jammed: {'YES' if fo['jammed'] else 'no'} (jamming limit {deg(fo['jamming_limit_deg'])})")
 
@@ -270,6 +276,9 @@ def print_flat_summary(rep: dict) -> None:
         print(line)
     if rep.get("optimize"):
         print_optimization(rep["optimize"], rep.get("R0"))
+    fo = rep.get("forces")
+    if fo:
+        print_cam_forces(fo, follower=rep["follower"])
     for n in rep["notes"]:
         print(f"  note: {n}")
 
