@@ -23,6 +23,8 @@ SOLVE_KEYS = {"name", "follower", "face", "R0", "R0_min", "R0_source", "binding_
               "governs", "pressure_angle_R0", "smallest_cam_radius", "smallest_cam_radius_at_deg",
               "largest_cam_radius", "largest_cam_radius_at_deg", "bore_radius", "hub_wall", "hub_wall_required",
               "rpm", "peaks"}
+#: the examples have a [dynamics] table: their forces (spring, contact force, torque, jump speed)
+EXAMPLE_KEYS = SOLVE_KEYS | {"forces"}
 
 
 def _flat(kind="translating", **over) -> dict:
@@ -44,7 +46,7 @@ def _flat(kind="translating", **over) -> dict:
 
 def _toml(d: dict) -> str:
     def val(v):
-        return json.dumps(v) if isinstance(v, str) else repr(v)
+        return json.dumps(v) if isinstance(v, (str, bool)) else repr(v)
 
     lines = [f"name = {val(d['name'])}"]
     for table in ("follower", "cam", "limits", "solve", "profile", "dynamics"):
@@ -74,7 +76,7 @@ def test_solve_json_keys_and_values(capsys, file, kind):
     rc, out, err = _run(capsys, "solve", str(file), "--json")
     assert rc == 0 and err == ""
     rep = json.loads(out)
-    assert set(rep) == SOLVE_KEYS
+    assert set(rep) == EXAMPLE_KEYS
     assert rep["follower"] == kind and rep["face"] == "flat" and rep["verified"] is True
     assert set(rep["face_range"]) == {"from", "to", "from_at_deg", "to_at_deg"}
     assert set(rep["pressure_angle"]) == {"min", "max", "max_at_deg"} and rep["pressure_angle"]["max"] == 0.0
@@ -209,7 +211,11 @@ def test_check_fails_on_a_bore_too_large_for_a_chosen_cam_and_sizing_clears_it(t
      "a floor on R0 (limits.min_base_radius) has nothing to size"),
     ({"solve": {"method": "exact"}}, "solve.method", "does not apply to a flat-faced follower"),
     ({"profile": {"min_curvature_radius": 2.0}}, "profile.min_curvature_radius", "limits.min_radius"),
-    ({"dynamics": {"mass": 1.0}}, "dynamics", "roller followers only"),
+    ({"dynamics": {"mass": 1.0, "face_friction": -0.1}}, "dynamics.face_friction", "must be >= 0"),
+    ({"dynamics": {"mass": 1.0, "face_friction": "oily"}}, "dynamics.face_friction", "must be a"),
+    ({"dynamics": {"mass": 1.0, "face_friction": True}}, "dynamics.face_friction", "must be a"),
+    ({"dynamics": {"mass": 1.0, "journal_radius": 5.0}}, "dynamics.journal_radius", "applies to a rocker's pivot"),
+    ({"dynamics": {"mass": 1.0, "journal_radius": 0.0}}, "dynamics.journal_radius", "applies to a rocker's pivot"),
     ({"motion": [{"phase": "rise", "law": "linear", "angle": 180}, {"phase": "return", "law": "cycloidal",
                                                                     "angle": 180}]}, "motion[1]", "cusp"),
 ])
@@ -230,6 +236,10 @@ def test_bad_translating_input_is_one_line(tmp_path, capsys, over, field, words)
     ({"limits": {"centre_distance": 120.0}}, "limits.centre_distance", "follower.centre_distance"),
     ({"limits": {"min_radius": 500.0}}, "limits.min_radius", "no base radius below"),
     ({"cam": {"base_radius": 200.0}}, "cam.base_radius", "cannot touch a base circle"),
+    ({"cam": {"rpm": 60}, "dynamics": {"mass": 0.01, "face_friction": -1e-9}}, "dynamics.face_friction",
+     "must be >= 0"),
+    ({"cam": {"rpm": 60}, "dynamics": {"mass": 0.01, "face_friction": float("nan")}}, "dynamics.face_friction",
+     "must be"),
 ])
 def test_bad_rocker_input_is_one_line(tmp_path, capsys, over, field, words):
     rc, out, err = _run(capsys, "solve", _file(tmp_path, _flat("rocker", **over)))
@@ -240,6 +250,7 @@ def test_bad_rocker_input_is_one_line(tmp_path, capsys, over, field, words):
 
 @pytest.mark.parametrize("key, table, value", [
     ("centre_distance", "follower", 120.0), ("face_offset", "follower", 0.0), ("min_radius", "limits", 5.0),
+    ("face_friction", "dynamics", 0.1),
 ])
 def test_flat_only_keys_on_a_roller_design_say_so(tmp_path, capsys, key, table, value):
     from tests.conftest import rocker_dict
