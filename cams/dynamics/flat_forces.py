@@ -151,8 +151,17 @@ def flat_contact(design: FlatFaceDesign, R0: float, phi: np.ndarray) -> FlatCont
         point = np.stack([x, mo.s], axis=-1)
         ones, zeros = np.ones_like(phi), np.zeros_like(phi)
         normal = np.stack([zeros, ones], axis=-1)
-        return FlatContact(point=point, normal=normal, along=np.stack([ones, zeros], axis=-1), lever=normal.copy(),
-                           position=x, gamma=zeros, centre=np.array([-e, -float(R0)]), ds=mo.ds, frame_turn=0.0)
+        return FlatContact(
+            point=point,
+            normal=normal,
+            along=np.stack([ones, zeros], axis=-1),
+            lever=normal.copy(),
+            position=x,
+            gamma=zeros,
+            centre=np.array([-e, -float(R0)]),
+            ds=mo.ds,
+            frame_turn=0.0,
+        )
     L, f, sigma = float(fo.centre_distance), float(fo.face_offset), fo.sense
     a0 = oscillating_setup(prog, L, float(R0), f, sigma)
     _, a, _, dth, _, _, dp, _ = oscillating_terms(prog, L, f, sigma, eps, a0, phi=phi)
@@ -160,9 +169,17 @@ def flat_contact(design: FlatFaceDesign, R0: float, phi: np.ndarray) -> FlatCont
     m = np.stack([np.cos(a), np.sin(a)], axis=-1)
     u = -sigma * _perp(m)
     point = f * m + c[:, None] * u
-    return FlatContact(point=point, normal=m, along=u, lever=sigma * _perp(point), position=c,
-                       gamma=oscillating_pressure(f, c), centre=np.array([L, 0.0]), ds=prog.evaluate(phi).ds,
-                       frame_turn=-rocker_frame_turn(a0, sigma))
+    return FlatContact(
+        point=point,
+        normal=m,
+        along=u,
+        lever=sigma * _perp(point),
+        position=c,
+        gamma=oscillating_pressure(f, c),
+        centre=np.array([L, 0.0]),
+        ds=prog.evaluate(phi).ds,
+        frame_turn=-rocker_frame_turn(a0, sigma),
+    )
 
 
 @dataclass(frozen=True, eq=False)
@@ -211,13 +228,17 @@ class FlatCamForces(CamForces):
 def _lock_error(dyn: FollowerDynamics, phi: float) -> InputError:
     """The error of a follower the friction locks (the push's generalized force <= 0) at cam angle ``phi``."""
     field = "dynamics.face_friction" if dyn.face_friction > 0 else "dynamics.friction"
-    return InputError(field, f"the follower locks at cam angle {np.degrees(phi) % 360:.4g} deg: with friction "
-                      f"{dyn.friction:g} and face_friction {dyn.face_friction:g} the cam's push has no component "
-                      "along the follower's motion; lower the friction")
+    return InputError(
+        field,
+        f"the follower locks at cam angle {np.degrees(phi) % 360:.4g} deg: with friction "
+        f"{dyn.friction:g} and face_friction {dyn.face_friction:g} the cam's push has no component "
+        "along the follower's motion; lower the friction",
+    )
 
 
-def flat_cam_forces(design: FlatFaceDesign, R0: float, dyn: FollowerDynamics, *, rpm: float | None = None,
-                    samples: int = 720, phi=None) -> FlatCamForces:
+def flat_cam_forces(
+    design: FlatFaceDesign, R0: float, dyn: FollowerDynamics, *, rpm: float | None = None, samples: int = 720, phi=None
+) -> FlatCamForces:
     """Contact force, face friction and camshaft torque of a flat-faced follower over one cam turn.
 
     Parameters

@@ -472,8 +472,8 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
     ``mass`` (kg; kg m^2 for a rocker), ``load`` (N; N m), ``spring_rate``
     (N/m; N m/rad), ``preload`` (N; N m), ``friction``, ``face_friction``
     (flat face only; dimensionless), ``journal_radius`` (rocker only),
-    ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N; N m). A spring is set when ``spring_rate`` and ``preload`` are both
-    given; with only the rate, the preload is left to
+    ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N; N m). A spring
+    is set when ``spring_rate`` and ``preload`` are both given; with only the rate, the preload is left to
     :func:`cams.dynamics.forces.spring_for_contact`.
 
     Parameters

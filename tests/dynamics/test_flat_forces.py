@@ -74,8 +74,9 @@ class Mechanics:
         # line-of-centres frame with the pivot at the origin)
         self.rocker = not isinstance(fo, FlatTranslating)
         self.O = np.array([fo.centre_distance, 0.0]) if self.rocker else np.array([-fo.offset, -R0])
-        Xm, X, Xp = (self.O + _rot(eps * (phi + d), flat_face_cam(design, R0, phi=phi + d).point)
-                     for d in (-H, 0.0, H))                   # the cam turned by eps phi: the fixed frame
+        Xm, X, Xp = (
+            self.O + _rot(eps * (phi + d), flat_face_cam(design, R0, phi=phi + d).point) for d in (-H, 0.0, H)
+        )  # the cam turned by eps phi: the fixed frame
         self.X = X
         # the profile's tangent at the contact, turned into the fixed frame: the face's direction
         dP = (flat_face_cam(design, R0, phi=phi + H).point - flat_face_cam(design, R0, phi=phi - H).point) / (2 * H)
@@ -90,11 +91,11 @@ class Mechanics:
             sigma = fo.sense
             self.v_face = sigma * self.dq[:, None] * np.stack([-X[:, 1], X[:, 0]], axis=-1)
         else:
-            self.q = X[:, 1] * MM                             # the face's height: the contact's y, m
+            self.q = X[:, 1] * MM  # the face's height: the contact's y, m
             self.dq = (Xp[:, 1] - Xm[:, 1]) / (2 * H) * MM
             self.d2q = (Xp[:, 1] - 2 * X[:, 1] + Xm[:, 1]) / H**2 * MM
             self.v_face = np.stack([np.zeros_like(phi), self.dq / MM], axis=-1)
-        self.v_sl = self.v_cam - self.v_face                   # mm per rad of cam angle
+        self.v_sl = self.v_cam - self.v_face  # mm per rad of cam angle
         # contact holds: the sliding is along the face
         assert np.max(np.abs(np.sum(self.v_sl * self.m, axis=-1))) < 1e-6 * np.max(np.abs(self.v_sl))
 
@@ -125,16 +126,31 @@ class Mechanics:
 
 
 CASES = [
-    ("translating_flat.toml", {}, dict(mass=0.5, load=1.0, spring=Spring(800.0, 12.0), friction=0.1,
-                                       face_friction=0.08)),
-    ("translating_flat.toml", {"cam": {"rotation": "cw"}, "follower": {"offset": 6.0}},
-     dict(mass=0.3, load=-2.0, spring=Spring(1500.0, 20.0), friction=0.2, face_friction=0.15)),
-    ("rocker_flat.toml", {}, dict(mass=0.004, load=0.05, spring=Spring(2.0, 0.3), friction=0.1, journal_radius=6.0,
-                                  face_friction=0.08)),
-    ("rocker_flat.toml", {"follower": {"face_offset": 12.0, "rise_direction": "ccw"}, "cam": {"rotation": "cw"}},
-     dict(mass=0.01, load=0.2, spring=Spring(5.0, 0.5), friction=0.15, journal_radius=8.0, face_friction=0.2)),
-    ("rocker_flat.toml", {"follower": {"face_offset": -10.0}},
-     dict(mass=0.01, load=0.0, spring=Spring(1.0, 0.8), friction=0.0, face_friction=0.1)),
+    (
+        "translating_flat.toml",
+        {},
+        dict(mass=0.5, load=1.0, spring=Spring(800.0, 12.0), friction=0.1, face_friction=0.08),
+    ),
+    (
+        "translating_flat.toml",
+        {"cam": {"rotation": "cw"}, "follower": {"offset": 6.0}},
+        dict(mass=0.3, load=-2.0, spring=Spring(1500.0, 20.0), friction=0.2, face_friction=0.15),
+    ),
+    (
+        "rocker_flat.toml",
+        {},
+        dict(mass=0.004, load=0.05, spring=Spring(2.0, 0.3), friction=0.1, journal_radius=6.0, face_friction=0.08),
+    ),
+    (
+        "rocker_flat.toml",
+        {"follower": {"face_offset": 12.0, "rise_direction": "ccw"}, "cam": {"rotation": "cw"}},
+        dict(mass=0.01, load=0.2, spring=Spring(5.0, 0.5), friction=0.15, journal_radius=8.0, face_friction=0.2),
+    ),
+    (
+        "rocker_flat.toml",
+        {"follower": {"face_offset": -10.0}},
+        dict(mass=0.01, load=0.0, spring=Spring(1.0, 0.8), friction=0.0, face_friction=0.1),
+    ),
 ]
 
 
@@ -153,9 +169,9 @@ def test_camshaft_torque_by_the_power_balance(case):
     N = cf.contact
     assert np.all(N > 0)
     push = mech.push(N, dyn.face_friction)
-    follower_power = np.sum(push * mech.v_face, axis=-1)                     # N mm per rad of cam
+    follower_power = np.sum(push * mech.v_face, axis=-1)  # N mm per rad of cam
     loss = dyn.face_friction * N * np.linalg.norm(mech.v_sl, axis=-1)
-    T = (follower_power + loss) * MM                                         # T omega = power, per omega
+    T = (follower_power + loss) * MM  # T omega = power, per omega
     assert cf.torque == pytest.approx(T, rel=1e-5, abs=1e-8 * np.max(np.abs(T)))
     # the sliding loss is the difference of the shaft's and the follower's power: the torque includes it
     if dyn.face_friction > 0:
@@ -175,11 +191,12 @@ def test_moment_or_force_balance_of_the_follower(case):
     design, R0, phi, dyn, mech, cf = case
     push = mech.push(cf.contact, dyn.face_friction)
     resist = mech.resisting(dyn, cf.omega)
-    assert mech.driving(push) - mech.rubbing(push, dyn) == pytest.approx(resist, rel=1e-6,
-                                                                        abs=1e-7 * np.max(np.abs(resist)))
+    assert mech.driving(push) - mech.rubbing(push, dyn) == pytest.approx(
+        resist, rel=1e-6, abs=1e-7 * np.max(np.abs(resist))
+    )
     assert np.abs(cf.force) == pytest.approx(np.linalg.norm(push, axis=-1), rel=1e-6)
     if not mech.rocker:
-        assert cf.lateral == pytest.approx(np.abs(push[:, 0]), rel=1e-6)   # what the guide takes
+        assert cf.lateral == pytest.approx(np.abs(push[:, 0]), rel=1e-6)  # what the guide takes
 
 
 def _independent_contact(rpm: float, dyn: FollowerDynamics, mech: Mechanics) -> np.ndarray:
@@ -196,8 +213,13 @@ def test_the_examples_print_spring_contact_force_torque_and_jump_speed(capsys, n
     fo = json.loads(capsys.readouterr().out)["forces"]
     assert main(["solve", str(EXAMPLES / name)]) == 0
     text = capsys.readouterr().out
-    for words in ("spring: rate", "contact force: max", "camshaft torque max", "follower jumps above",
-                  "sliding at the face"):
+    for words in (
+        "spring: rate",
+        "contact force: max",
+        "camshaft torque max",
+        "follower jumps above",
+        "sliding at the face",
+    ):
         assert words in text
     cam = Cam.from_file(EXAMPLES / name)
     design, R0 = cam.design, float(cam.solution.R0)
@@ -255,11 +277,14 @@ def test_friction_that_locks_the_follower_is_refused():
         flat_cam_forces(design, R0, dyn)
 
 
-@pytest.mark.parametrize("kw, field", [
-    (dict(face_friction=-0.01), "dynamics.face_friction"),
-    (dict(face_friction=float("inf")), "dynamics.face_friction"),
-    (dict(face_friction="0.1"), "dynamics.face_friction"),
-])
+@pytest.mark.parametrize(
+    "kw, field",
+    [
+        (dict(face_friction=-0.01), "dynamics.face_friction"),
+        (dict(face_friction=float("inf")), "dynamics.face_friction"),
+        (dict(face_friction="0.1"), "dynamics.face_friction"),
+    ],
+)
 def test_bad_face_friction_in_the_api(kw, field):
     with pytest.raises(InputError, match=rf"^{field}: "):
         FollowerDynamics(0.5, **kw)
