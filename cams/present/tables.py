@@ -68,7 +68,11 @@ def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
                 ("verified (radius of curvature >= limit)", "yes" if r["verified"] else "NO")]
     results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"]]
-    return [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam)), *_motion_section(cam)]
+    sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam)), *_motion_section(cam)]
+    df = cam.forces if d.dynamics is not None else None
+    if df is not None:
+        sections.append(("Forces at the cam", _force_rows(df, f.kind)))
+    return sections
 
 
 def _part_rows(r: dict, fl: str) -> list[tuple[str, str]]:
@@ -214,8 +218,14 @@ def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
                      f"contact force max {force(bi['max_contact_force'])} at {deg(bi['max_contact_at_deg'])}, min "
                      f"{force(bi['min_contact_force'])}; camshaft torque max {torque_text(bi['max_torque'])} at "
                      f"{deg(bi['max_torque_at_deg'])}; jump speed {jump_text(bi['jump_rpm'])}"))
-    lost, jammed = ('yes' if fo[k] else 'no' for k in ('contact_lost', 'jammed'))
-    rows.append(("contact lost / jammed", f"{lost} / {jammed}"))
+    if fo["jammed"] is None:  # a flat face: no pressure-angle jamming; sliding friction at the face
+        rows.append(("contact lost", "yes" if fo["contact_lost"] else "no"))
+        loss = fo["mean_sliding_loss"]
+        rows.append(("sliding at the face", f"up to {fo['max_sliding_speed']:.6g} m/s"
+                     + ("" if loss is None else f", mean friction loss {loss:.6g} W")))
+    else:
+        lost, jammed = ('yes' if fo[k] else 'no' for k in ('contact_lost', 'jammed'))
+        rows.append(("contact lost / jammed", f"{lost} / {jammed}"))
     note = impact_note(df.forces)
     if note:
         rows.append(("note", note))
