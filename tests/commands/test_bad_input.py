@@ -109,6 +109,8 @@ FLAT_ROCKER = {
     "limits": {"min_radius": 5.0},
     "profile": {"tolerance": 0.001},
 }
+#: a flat-faced rocker with every [dynamics] key a flat face takes (face_friction: a flat face's only)
+FLAT_ROCKER_FORCE = {**FLAT_ROCKER, "dynamics": {**ROCKER_FORCE["dynamics"], "face_friction": 0.1}}
 FLAT_ROCKER_FLOOR = {  # a floor on R0 sizes the cam: it goes without a chosen [cam] base_radius
     **FLAT_ROCKER, "cam": {"rpm": 60, "bore_radius": 5.0}, "limits": {"min_radius": 5.0, "min_base_radius": 10.0},
 }
@@ -185,6 +187,7 @@ HOMES = {
     ("`[profile]`", "", "tolerance"): (ROCKER_FORM, "profile.tolerance"),
     ("`[profile]`", "", "min_curvature_radius"): (ROCKER_FORM, "profile.min_curvature_radius"),
     **{("`[dynamics]`", "", k): (ROCKER_FORCE, f"dynamics.{k}") for k in ROCKER_FORCE["dynamics"]},
+    ("`[dynamics]`", "", "face_friction"): (FLAT_ROCKER_FORCE, "dynamics.face_friction"),
     **{("Flat-faced followers (`face = \"flat\"`)", "`[follower]`", k): (FLAT_ROCKER, f"follower.{k}")
        for k in ("swing", "centre_distance", "face_offset")},
     **{("Flat-faced followers (`face = \"flat\"`)", "`[follower]`", k): (FLAT_TRANSLATING, f"follower.{k}")

@@ -70,10 +70,13 @@ BUILT = {
                               rate=3.0)),
     "translating_flat": FlatFaceDesign(
         FlatTranslating(0.0, stroke_scale=20.0), program(20.0, *_cycle("cycloidal", 120, 60, "poly345", 120)),
-        min_radius=10.0, cam_sense=CCW, rpm=120.0, name="translating flat-face cam"),
+        min_radius=10.0, cam_sense=CCW, rpm=120.0, name="translating flat-face cam",
+        dynamics=DynamicsSpec(FollowerDynamics(0.5, load=1.0, friction=0.1, face_friction=0.08))),
     "rocker_flat": FlatFaceDesign(
         FlatRocker(120.0, 0.0, sense=CW), program(np.radians(15.0), *_cycle("cycloidal", 120, 40, "poly345", 120)),
-        min_radius=5.0, cam_sense=CCW, rpm=60.0, name="rocker flat-face cam"),
+        min_radius=5.0, cam_sense=CCW, rpm=60.0, name="rocker flat-face cam",
+        dynamics=DynamicsSpec(FollowerDynamics(0.004, load=0.05, friction=0.1, journal_radius=6.0,
+                                               face_friction=0.08))),
 }
 
 
@@ -91,7 +94,7 @@ def test_an_example_built_in_python_is_the_file_s_design(name):
     assert built == loaded
 
 
-@pytest.mark.parametrize("name", ["rocker_force", "slotting_feed_cam", "translating_flat",
+@pytest.mark.parametrize("name", ["rocker_force", "slotting_feed_cam", "translating_flat", "rocker_flat",
                                   "translating_designed_rise"])
 def test_an_example_built_in_python_gives_the_file_s_outputs(name):
     a, b = Cam(BUILT[name]), Cam(load_design(EXAMPLES / f"{name}.toml"))
