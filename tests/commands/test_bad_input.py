@@ -198,6 +198,8 @@ HOMES = {
     **{("Flat-faced followers (`face = \"flat\"`)", "`[limits]`", k): (FLAT_ROCKER_FLOOR, f"limits.{k}")
        for k in ("min_radius", "min_base_radius")},
     ("Flat-faced followers (`face = \"flat\"`)", "`[profile]`", "tolerance"): (FLAT_ROCKER, "profile.tolerance"),
+    ("Flat-faced followers (`face = \"flat\"`)", "`[dynamics]`", "face_friction"):
+        (FLAT_ROCKER_FORCE, "dynamics.face_friction"),
     ("`[linkage]`", "", "rpm"): (SLOTTING, "linkage.rpm"),
     **{("`type = \"slotting\"`", "", k): (SLOTTING, f"linkage.{k}")
        for k in ("time_ratio", "stroke", "centre_distance", "rod_ratio")},

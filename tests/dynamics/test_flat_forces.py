@@ -314,3 +314,23 @@ def test_the_flat_face_needs_cam_rpm_for_its_forces(capsys):
     del d["cam"]["rpm"]
     cam = Cam(design_from_dict(d))
     assert cam.forces is None and cam.forces_note == "[dynamics] needs cam.rpm for the forces"
+
+
+@pytest.mark.parametrize("name", ["translating_flat.toml", "rocker_flat.toml"])
+def test_the_report_and_the_text_say_the_flat_forces_with_units(capsys, name):
+    from cams.dynamics.jump import jump_text
+    from cams.present.report import report_sections
+
+    assert main(["solve", str(EXAMPLES / name), "--json"]) == 0
+    fo = json.loads(capsys.readouterr().out)["forces"]
+    assert main(["solve", str(EXAMPLES / name)]) == 0
+    text = capsys.readouterr().out
+    sliding = f"up to {fo['max_sliding_speed']:.6g} m/s, mean friction loss {fo['mean_sliding_loss']:.6g} W"
+    assert f"sliding at the face: {sliding}" in text and "jammed: cannot (a flat face)" in text
+    sections = dict(report_sections(Cam.from_file(EXAMPLES / name)))
+    rows = dict(sections["Forces at the cam"])
+    assert rows["sliding at the face"] == sliding
+    assert rows["jump speed"].startswith(jump_text(fo["jump_rpm"]))
+    assert rows["contact lost"] == "no" and "contact lost / jammed" not in rows
+    unit = "N m/rad" if "rocker" in name else "N/m"
+    assert f" {unit}, preload " in rows["closing spring"]
