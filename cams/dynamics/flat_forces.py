@@ -226,13 +226,14 @@ class FlatCamForces(CamForces):
 
 
 def _lock_error(dyn: FollowerDynamics, phi: float) -> InputError:
-    """The error of a follower the friction locks (the push's generalized force <= 0) at cam angle ``phi``."""
+    """The error of a follower the friction locks (the push's generalized force, less the guide's or pivot's
+    friction, <= 0) at cam angle ``phi`` (radians)."""
     field = "dynamics.face_friction" if dyn.face_friction > 0 else "dynamics.friction"
     return InputError(
         field,
         f"the follower locks at cam angle {np.degrees(phi) % 360:.4g} deg: with friction "
-        f"{dyn.friction:g} and face_friction {dyn.face_friction:g} the cam's push has no component "
-        "along the follower's motion; lower the friction",
+        f"{dyn.friction:g} and face_friction {dyn.face_friction:g} the friction outweighs the cam's push along "
+        "the follower's motion; lower the friction",
     )
 
 
