@@ -508,9 +508,13 @@ def spring_for_contact(
         raise InputError(hi_key, f"must be >= {lo_key.split('.')[1]}, got {max_installed:g} < {min_installed:g}")
     w = cam_speed(design, rpm)
     phi = dynamics_grid(samples)
-    q, _, d2q, _ = follower_kinematics(design, phi, dyn)
     si = si_per_unit(design, dyn)
-    need = m * (-dyn.mass * w**2 * d2q - dyn.load)
+
+    def needs(at: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # q and the spring force contact needs, at angles
+        q, _, d2q, _ = follower_kinematics(design, at, dyn)
+        return q, m * (-dyn.mass * w**2 * d2q - dyn.load)
+
+    q, need = needs(phi)
     h = max(float(np.max(q)), float(design.program.lift) * si)  # the travel, m or rad
 
     def shown(d: float) -> str:  # an installed compression (m or rad) in the file's unit
@@ -527,6 +531,8 @@ def spring_for_contact(
         if k == 0 and (lo is not None or hi is not None):
             raise InputError(lo_key if lo is not None else hi_key, f"a spring_rate of 0 (a constant-force spring) "
                              f"has no installed {what}: remove the bound or give a positive spring_rate")
+        # the least preload, its binding angles refined between the samples
+        q, need = _refined(needs, phi, q, need, [need - k * q])
         F0 = max(0.0, float(np.max(need - k * q)))
         if k > 0:
             least = F0 / k
@@ -544,20 +550,17 @@ def spring_for_contact(
         return Spring(0.0, 0.0, travel=h, torsional=torsional,
                       note=f"the load alone keeps the follower on the cam at {speed}: no spring is needed")
     else:
-        pos = need > 0
-        qp, npos = q[pos], need[pos]
-        if np.any(hi_d + qp <= 0):
+        if np.any((hi_d + q <= 0) & (need > 0)):
             raise InputError(hi_key, f"an installed {what} of {shown(hi_d)} leaves no spring force at the near dwell, "
-                             f"where contact at {speed} needs {float(np.max(npos[hi_d + qp <= 0])):.6g} "
+                             f"where contact at {speed} needs {float(np.max(need[hi_d + q <= 0])):.6g} "
                              f"{'N m' if torsional else 'N'}: allow more")
-        top = float(np.max(npos * (hi_d + h) / (hi_d + qp)))  # F* = F(hi), steps 1-2
-        below = npos < top
-        with np.errstate(divide="ignore", invalid="ignore"):
-            bounds = (npos[below] * h - top * qp[below]) / (top - npos[below])
-        d0 = float(min(hi_d, max(lo_d, float(np.max(bounds, initial=-np.inf)))))  # step 3
-        if not float(np.max(npos * (d0 + h) / (d0 + qp))) <= top * (1 + 1e-9):  # round-off near a tie
-            d0 = hi_d
-        k = float(np.max(npos / (d0 + qp)))
+        d0 = _least_largest(q, need, h, lo_d, hi_d)
+        # refine between the samples where the spring binds (at d0 and at hi, which sets the least largest force)
+        with np.errstate(divide="ignore"):
+            q, need = _refined(needs, phi, q, need, [np.where(need > 0, need / (d + q), -np.inf) for d in (d0, hi_d)])
+        d0 = _least_largest(q, need, h, lo_d, hi_d)
+        pos = need > 0
+        k = float(np.max(need[pos] / (d0 + q[pos])))
         F0 = max(k * d0, float(np.max(need - k * q)))  # round-off: the constraints hold exactly
     top = F0 + k * h
     if dyn.max_spring_force is not None and top > dyn.max_spring_force * (1 + 1e-12):
@@ -580,6 +583,38 @@ def spring_for_contact(
             f"{hint}",
         )
     return Spring(rate=k, preload=F0, travel=h, torsional=torsional, note=note)
+
+
+def _least_largest(q: np.ndarray, need: np.ndarray, h: float, lo: float, hi: float) -> float:
+    """The installed compression ``d0`` of the stiffest spring of least largest force (:func:`spring_for_contact`,
+    steps 1-3): ``q`` the follower's coordinate, ``need`` the force contact needs there (some > 0), ``h`` the
+    travel, ``[lo, hi]`` the bounds on ``d0`` (``hi + q > 0`` where ``need > 0``)."""
+    pos = need > 0
+    qp, npos = q[pos], need[pos]
+    top = float(np.max(npos * (hi + h) / (hi + qp)))  # F* = F(hi), steps 1-2
+    below = npos < top
+    bounds = (npos[below] * h - top * qp[below]) / (top - npos[below])
+    d0 = float(min(hi, max(lo, float(np.max(bounds, initial=-np.inf)))))  # step 3
+    if not float(np.max(npos * (d0 + h) / (d0 + qp))) <= top * (1 + 1e-9):  # round-off near a tie
+        d0 = hi
+    return d0
+
+
+def _refined(needs, phi: np.ndarray, q: np.ndarray, need: np.ndarray, scores, count: int = 8):
+    """``q`` and ``need`` with, added, 201 angles across the two sample steps around each of the ``count`` largest
+    local maxima of every score in ``scores`` (arrays over ``phi``, a uniform grid over one turn): the spring's
+    binding angles lie between the samples, and a peak of a smooth function is then found to about 1e-10 of its
+    relative size (the sampled one, to about ``(step / 2)^2`` times its curvature)."""
+    step = float(phi[1] - phi[0])
+    extra = []
+    for sc in scores:
+        peak = (sc >= np.roll(sc, 1)) & (sc >= np.roll(sc, -1)) & np.isfinite(sc)
+        idx = np.flatnonzero(peak)
+        idx = idx[np.argsort(-sc[idx], kind="stable")][:count]
+        extra.append((phi[idx][:, None] + step * np.linspace(-1.0, 1.0, 201)[None, :]).ravel())
+    at = np.mod(np.concatenate(extra), 2 * np.pi)
+    qa, na = needs(at)
+    return np.concatenate([q, qa]), np.concatenate([need, na])
 
 
 def chosen_spring(spec: DynamicsSpec, design: CamDesign, *, rpm: float | None = None) -> Spring:
