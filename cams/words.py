@@ -219,11 +219,15 @@ def torque_words(value: float | None, at_deg: float | None, kind: str, digits: i
     'largest braking torque 3.14729 N·m at 254.0000 deg'
     >>> torque_words(0.0, None, "driving")
     'no driving torque'
+    >>> torque_words(float("inf"), 0.0, "driving")
+    'largest driving torque unbounded (rigid impact at 0.0000 deg)'
     """
     if at_deg is None:
         return f"no {kind} torque"
-    size = "UNBOUNDED" if value is None or math.isinf(value) else f"{abs(value):.{digits}g} N·m"
-    return f"largest {kind} torque {size} at {deg(at_deg) if where is None else where}"
+    at = deg(at_deg) if where is None else where
+    if value is None or math.isinf(value):
+        return f"largest {kind} torque unbounded (rigid impact at {at})"
+    return f"largest {kind} torque {abs(value):.{digits}g} N·m at {at}"
 
 
 def phase_words(kind: str, index: int) -> str:

@@ -37,7 +37,11 @@ class Spring:
         A rocker's torsional spring (``q`` an angle: N m/rad, N m, rad).
     note : str or None
         What the choice of the spring has to say (outside the usual range of
-        installed compression, no spring needed); not part of its identity.
+        installed compression, no spring needed).
+
+    ``travel``, ``torsional`` and ``note`` describe the spring's use (set by
+    :func:`cams.dynamics.forces.chosen_spring`); they are not part of its
+    identity, which is its rate and preload (equality, repr).
 
     The spring's *installed compression* (a torsional spring's installed
     twist) is ``F0 / k`` (:attr:`installed`): how far it is compressed from
@@ -55,9 +59,9 @@ class Spring:
 
     rate: float
     preload: float
-    travel: float | None = field(default=None, compare=False)
-    torsional: bool = False
-    note: str | None = field(default=None, compare=False)
+    travel: float | None = field(default=None, compare=False, repr=False)
+    torsional: bool = field(default=False, compare=False, repr=False)
+    note: str | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         _num("dynamics.spring_rate", self.rate, lo=0.0)

@@ -25,20 +25,28 @@ from laws.units import rpm_to_omega
 from tests.conftest import EXAMPLES, rocker_dict
 
 TRANS = load_design(EXAMPLES / "translating_force.toml")
-ROCKER = design_from_dict(rocker_dict(motion=[
-    {"phase": "rise", "law": "cycloidal", "angle": 100},
-    {"phase": "dwell", "angle": 40},
-    {"phase": "return", "law": "poly345", "angle": 140},
-    {"phase": "dwell"},
-]))
+ROCKER = design_from_dict(
+    rocker_dict(
+        motion=[
+            {"phase": "rise", "law": "cycloidal", "angle": 100},
+            {"phase": "dwell", "angle": 40},
+            {"phase": "return", "law": "poly345", "angle": 140},
+            {"phase": "dwell"},
+        ]
+    )
+)
 # a harmonic rise decelerates hardest at its very end, the far dwell: the largest need sits at the full lift, where
 # the least largest force no longer fixes the installed compression (step 3 of the proof: the stiffest is taken)
-HARMONIC = design_from_dict(rocker_dict(motion=[
-    {"phase": "rise", "law": "harmonic", "angle": 120},
-    {"phase": "dwell", "angle": 30},
-    {"phase": "return", "law": "cycloidal", "angle": 150},
-    {"phase": "dwell"},
-]))
+HARMONIC = design_from_dict(
+    rocker_dict(
+        motion=[
+            {"phase": "rise", "law": "harmonic", "angle": 120},
+            {"phase": "dwell", "angle": 30},
+            {"phase": "return", "law": "cycloidal", "angle": 150},
+            {"phase": "dwell"},
+        ]
+    )
+)
 CASES = {
     "translating": (TRANS, FollowerDynamics(0.5, load=5.0), 1e-3),  # m per mm
     "rocker": (ROCKER, FollowerDynamics(0.004, load=0.5), 1.0),  # rad per rad
@@ -97,8 +105,13 @@ def test_least_largest_force_against_lp_and_brute_force(name, rpm, bounds):
     assert top == pytest.approx(lp.fun, rel=1e-6)
     # the stiffest spring of that largest force (to the differences' 1e-7: where the largest need sits at the full
     # lift, the harmonic rise, springs of many rates come within 1e-9 of it and only the stiffest is asked for)
-    stiff = linprog([0.0, -1.0], A_ub=np.vstack([A, [[1.0, h]]]), b_ub=np.append(b, lp.fun * (1 + 1e-6)),
-                    bounds=[(0, None), (0, None)], method="highs")
+    stiff = linprog(
+        [0.0, -1.0],
+        A_ub=np.vstack([A, [[1.0, h]]]),
+        b_ub=np.append(b, lp.fun * (1 + 1e-6)),
+        bounds=[(0, None), (0, None)],
+        method="highs",
+    )
     assert stiff.success
     assert sp.rate == pytest.approx(stiff.x[1], rel=1e-3)
     # and a stiffer spring within the bounds needs a larger largest force (the definition, by brute force)
@@ -193,8 +206,11 @@ def test_max_spring_force_hint_holds():
 
 
 def test_rocker_spring_is_torsional_in_degrees():
-    d = design_from_dict(rocker_dict(cam={"rpm": 300}, dynamics={"mass": 0.004, "load": 0.5, "min_installed_twist": 2,
-                                                                  "max_installed_twist": 6}))
+    d = design_from_dict(
+        rocker_dict(
+            cam={"rpm": 300}, dynamics={"mass": 0.004, "load": 0.5, "min_installed_twist": 2, "max_installed_twist": 6}
+        )
+    )
     sp = chosen_spring(d.dynamics, d)
     assert sp.torsional and sp.rate > 0
     out = sp.to_dict()

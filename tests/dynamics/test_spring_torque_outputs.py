@@ -145,8 +145,11 @@ def test_driving_and_braking_torque_by_power_balance(kind, at600, tmp_path, caps
     capsys.readouterr()
     assert main(["solve", str(f)]) == 0
     out = capsys.readouterr().out
-    m = re.search(r"largest driving torque ([\d.e+-]+) N·m at ([\d.]+) deg; largest braking torque ([\d.e+-]+) N·m "
-                  r"at ([\d.]+) deg", out)
+    m = re.search(
+        r"largest driving torque ([\d.e+-]+) N·m at ([\d.]+) deg; largest braking torque ([\d.e+-]+) N·m "
+        r"at ([\d.]+) deg",
+        out,
+    )
     assert m, out
     assert float(m.group(1)) == pytest.approx(np.max(T), rel=1e-5)
     assert float(m.group(3)) == pytest.approx(-np.min(T), rel=1e-5)
@@ -156,8 +159,9 @@ def test_driving_and_braking_torque_by_power_balance(kind, at600, tmp_path, caps
     # the spring's words carry its units
     sp = fo["spring"]
     if kind == "translating":
-        assert f"installed compression {sp['installed_compression']:.6g} mm, largest force {sp['max_force']:.6g} N" \
-            in out
+        assert (
+            f"installed compression {sp['installed_compression']:.6g} mm, largest force {sp['max_force']:.6g} N" in out
+        )
     else:
         assert f"installed twist {sp['installed_twist']:.6g} deg, largest force {sp['max_force']:.6g} N m" in out
 
