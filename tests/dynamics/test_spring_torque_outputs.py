@@ -193,3 +193,39 @@ def test_an_impulse_is_driving_where_the_follower_speeds_up(tmp_path, capsys):
         assert fo[f"max_{finite}_torque"] is not None and np.isfinite(fo[f"max_{finite}_torque"])
         bi = fo["between_impacts"]
         assert bi["max_driving_torque"] > 0 > bi["max_braking_torque"]
+
+
+@pytest.mark.parametrize(
+    "kind, table, field",
+    [
+        (
+            "translating",
+            "min_installed_compression = 20\nmax_installed_compression = 10\n",
+            "dynamics.max_installed_compression",
+        ),
+        ("translating", "max_installed_compression = -1\n", "dynamics.max_installed_compression"),
+        ("translating", 'min_installed_compression = "short"\n', "dynamics.min_installed_compression"),
+        ("translating", "max_installed_twist = 10\n", "dynamics.max_installed_twist"),
+        (
+            "translating",
+            "spring_rate = 2000\npreload = 20\nmin_installed_compression = 5\n",
+            "dynamics.min_installed_compression",
+        ),
+        ("translating", "spring_rate = 100\nmax_installed_compression = 40\n", "dynamics.max_installed_compression"),
+        ("rocker", "min_installed_compression = 5\n", "dynamics.min_installed_compression"),
+        ("rocker", "min_installed_twist = 9\nmax_installed_twist = 3\n", "dynamics.max_installed_twist"),
+    ],
+)
+def test_bad_spring_bounds_exit_2_naming_the_field(kind, table, field, at600, tmp_path, capsys):
+    """Bounds reversed, negative, not numbers, of the other follower's kind, beside a given spring, or too tight for
+    a given rate: one line naming the field, exit 2."""
+    if kind == "translating":
+        text = at600.read_text(encoding="utf-8")
+    else:
+        text = (EXAMPLES / "rocker_force.toml").read_text(encoding="utf-8") + "[dynamics]\nmass = 0.004\nload = 0.5\n"
+    f = tmp_path / "bad.toml"
+    f.write_text(text + table, encoding="utf-8")
+    capsys.readouterr()
+    assert main(["solve", str(f)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "Traceback" not in err and f" {field}" in err, err
