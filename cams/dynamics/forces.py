@@ -504,8 +504,6 @@ def spring_for_contact(
     lo_key, hi_key = f"dynamics.min_installed_{what}", f"dynamics.max_installed_{what}"
     _num(lo_key, min_installed, lo=0.0, allow_none=True)
     _num(hi_key, max_installed, lo=0.0, allow_none=True)
-    if min_installed is not None and max_installed is not None and min_installed > max_installed:
-        raise InputError(hi_key, f"must be >= {lo_key.split('.')[1]}, got {max_installed:g} < {min_installed:g}")
     w = cam_speed(design, rpm)
     phi = dynamics_grid(samples)
     si = si_per_unit(design, dyn)
@@ -522,6 +520,8 @@ def spring_for_contact(
 
     lo = None if min_installed is None else min_installed * si
     hi = None if max_installed is None else max_installed * si
+    if lo is not None and hi is not None and lo > hi:
+        raise InputError(hi_key, f"must be >= {lo_key.split('.')[1]} ({shown(lo)}), got {shown(hi)}")
     lo_d = min(h / 4, np.inf if hi is None else hi) if lo is None else lo
     hi_d = max(h, lo_d) if hi is None else hi
     speed = f"{omega_to_rpm(w):.6g} rpm with margin {m:g}"
