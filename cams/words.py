@@ -28,6 +28,8 @@ __all__ = [
     "torque",
     "spring_units",
     "spring_text",
+    "spring_words",
+    "torque_words",
     "binding_text",
     "check_words",
     "FAULT_WORDS",
@@ -179,6 +181,53 @@ def spring_text(rate: float, preload: float, follower: str, digits: int = 6) -> 
     """
     ru, pu = spring_units(follower)
     return f"rate {rate:.{digits}g} {ru}, preload {preload:.{digits}g} {pu}"
+
+
+def spring_words(sp: dict, follower: str, digits: int = 6) -> str:
+    """A chosen or given spring for print (from ``Spring.to_dict``): rate, preload, installed compression (a
+    rocker's torsional spring: installed twist) and largest force, each with its unit.
+
+    >>> spring_words({"rate": 2000.0, "preload": 15.0, "installed_compression": 7.5, "max_force": 75.0},
+    ...              "translating")
+    'rate 2000 N/m, preload 15 N, installed compression 7.5 mm, largest force 75 N'
+    >>> spring_words({"rate": 0.0, "preload": 9.0, "installed_compression": None, "max_force": 9.0},
+    ...              "translating")
+    'rate 0 N/m, preload 9 N, installed compression - (a constant-force spring), largest force 9 N'
+    """
+    _, pu = spring_units(follower)
+    key, unit = ("installed_twist", "deg") if follower == "rocker" else ("installed_compression", "mm")
+    inst = sp.get(key)
+    if inst is None:
+        installed = "- (no spring)" if sp["rate"] == 0 and sp["preload"] == 0 else "- (a constant-force spring)"
+    else:
+        installed = f"{inst:.{digits}g} {unit}"
+    out = f"{spring_text(sp['rate'], sp['preload'], follower, digits)}, installed {key[10:]} {installed}"
+    if sp.get("max_force") is not None:
+        out += f", largest force {sp['max_force']:.{digits}g} {pu}"
+    return out
+
+
+def torque_words(value: float | None, at_deg: float | None, kind: str, digits: int = 6, *,
+                 where: str | None = None) -> str:
+    """The largest ``kind`` ("driving" or "braking") camshaft torque for print, its size in N·m and its cam angle.
+
+    A braking torque is negative in the JSON (the sign convention: positive in the cam's sense of rotation, where
+    the camshaft delivers work); its words give its size. ``inf`` or None: unbounded (a rigid impact).
+    ``where`` replaces the cam angle's words (e.g. a machine's cycle angles beside it).
+
+    >>> torque_words(-3.14729, 254.0, "braking")
+    'largest braking torque 3.14729 N·m at 254.0000 deg'
+    >>> torque_words(0.0, None, "driving")
+    'no driving torque'
+    >>> torque_words(float("inf"), 0.0, "driving")
+    'largest driving torque unbounded (rigid impact at 0.0000 deg)'
+    """
+    if at_deg is None:
+        return f"no {kind} torque"
+    at = deg(at_deg) if where is None else where
+    if value is None or math.isinf(value):
+        return f"largest {kind} torque unbounded (rigid impact at {at})"
+    return f"largest {kind} torque {abs(value):.{digits}g} N·m at {at}"
 
 
 def phase_words(kind: str, index: int) -> str:

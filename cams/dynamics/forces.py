@@ -55,14 +55,14 @@ time in s.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from cams.dynamics.impacts import rigid_impacts
 from cams.dynamics.jump import JumpSpeed, jump_dict, jump_speed
-from cams.dynamics.motion import cam_speed, dynamics_grid, follower_kinematics
+from cams.dynamics.motion import cam_speed, dynamics_grid, follower_kinematics, si_per_unit
 from cams.kinematics.inversion import contact_normal, invert, pressure_angle
 from cams.kinematics.vectors import cross
 from cams.model.design import CamDesign, Design
@@ -229,8 +229,39 @@ class CamForces:
         """Cam speed, rev/min."""
         return omega_to_rpm(self.omega)
 
+    def _driving_braking(self) -> tuple[tuple[float, float | None], tuple[float, float | None]]:
+        """((largest driving torque, its cam angle in degrees), (largest braking torque, its angle)), sampled.
+
+        Driving: ``torque > 0`` (the camshaft delivers work); braking: ``torque < 0``, given as the most
+        negative value. 0 and None when the torque never has that sign.
+        """
+        t = np.where(np.isfinite(self.torque), self.torque, 0.0)
+        kd, kb = int(np.argmax(t)), int(np.argmin(t))
+        drive = (float(t[kd]), float(np.degrees(self.phi[kd]))) if t[kd] > 0 else (0.0, None)
+        brake = (float(t[kb]), float(np.degrees(self.phi[kb]))) if t[kb] < 0 else (0.0, None)
+        return drive, brake
+
+    def _speeds_up(self, at: float) -> bool:
+        """At a velocity jump up at cam angle ``at`` (rad): True when the follower's speed grows across it.
+
+        The cam's impulse does the work ``m (v+^2 - v-^2) / 2``, positive (driving) when ``|v+| > |v-|``;
+        ``v-`` and ``v+`` are the velocities at the nearest samples before and at or after ``at``.
+        """
+        d = np.angle(np.exp(1j * (self.phi - at)))
+        before = np.where(d < 0, d, -np.inf)
+        after = np.where(d >= -1e-12, d, np.inf)
+        v0, v1 = self.dq[int(np.argmax(before))], self.dq[int(np.argmin(after))]
+        return bool(abs(v1) >= abs(v0))
+
     def to_dict(self) -> dict:
         """JSON-ready extremes (N, N m, degrees).
+
+        The camshaft torque is positive where it drives (the camshaft
+        delivers work, a torque in the cam's sense of rotation) and negative
+        where it brakes (the follower gives work back): ``max_torque`` is the
+        largest absolute value with its sign, ``max_driving_torque`` the
+        largest positive one (0 with ``max_driving_torque_at_deg`` None when
+        there is none), ``max_braking_torque`` the most negative one (<= 0).
 
         With rigid impacts (:attr:`impacts`) the extremes are the true ones:
         ``max_contact_force`` (and ``max_torque``, and ``max_lateral_force``)
@@ -242,6 +273,7 @@ class CamForces:
         finite = np.isfinite(self.contact)
         k = int(np.argmax(np.where(finite, self.contact, -np.inf)))
         kt = int(np.argmax(np.abs(self.torque)))
+        drive, brake = self._driving_braking()
         out: dict[str, Any] = {
             "rpm": self.rpm,
             "max_contact_force": float(self.contact[k]),
@@ -250,6 +282,10 @@ class CamForces:
             "max_lateral_force": float(np.max(np.abs(self.lateral[finite]))) if np.any(finite) else None,
             "max_torque": float(self.torque[kt]),
             "max_torque_at_deg": float(np.degrees(self.phi[kt])),
+            "max_driving_torque": drive[0],
+            "max_driving_torque_at_deg": drive[1],
+            "max_braking_torque": brake[0],
+            "max_braking_torque_at_deg": brake[1],
             "mean_torque": float(np.mean(self.torque[finite])) if np.any(finite) else None,
             "contact_lost": self.contact_lost,
             "jammed": bool(np.any(self.jammed)),
@@ -259,7 +295,8 @@ class CamForces:
         }
         if self.impacts:
             keys = ("max_contact_force", "max_contact_at_deg", "min_contact_force", "max_lateral_force", "max_torque",
-                    "max_torque_at_deg", "mean_torque")
+                    "max_torque_at_deg", "max_driving_torque", "max_driving_torque_at_deg", "max_braking_torque",
+                    "max_braking_torque_at_deg", "mean_torque")
             out["between_impacts"] = {key: out[key] for key in keys}
             up = [i for i in self.impacts if not i.separation]
             down = [i for i in self.impacts if i.separation]
@@ -267,6 +304,11 @@ class CamForces:
                 at = float(np.degrees(up[0].phi))
                 out.update(max_contact_force=np.inf, max_contact_at_deg=at, max_lateral_force=np.inf,
                            max_torque=np.inf, max_torque_at_deg=at)
+                for i in up:  # the impulse's work: driving where the follower gains kinetic energy, else braking
+                    sign = "driving" if self._speeds_up(i.phi) else "braking"
+                    if not np.isinf(out[f"max_{sign}_torque"]):
+                        out[f"max_{sign}_torque"] = np.inf if sign == "driving" else -np.inf
+                        out[f"max_{sign}_torque_at_deg"] = float(np.degrees(i.phi))
             if down:
                 out["min_contact_force"] = -np.inf
             out["mean_torque"] = None  # the impacts' work is not in the samples
@@ -363,14 +405,57 @@ def spring_for_contact(
     margin: float = 1.2,
     rate: float | None = None,
     samples: int = 3600,
+    min_installed: float | None = None,
+    max_installed: float | None = None,
 ) -> Spring:
     """The closing spring that keeps the roller on the cam with a margin at a speed.
 
-    Contact needs ``F0 + k q >= margin * (-m q'' - P)`` at every cam angle:
-    the spring exceeds, by the factor ``margin``, the force that would pull
-    the follower off the cam (its inertia in deceleration, less the load
+    Contact needs ``F0 + k q >= need = margin * (-m q'' - P)`` at every cam
+    angle: the spring exceeds, by the factor ``margin``, the force that would
+    pull the follower off the cam (its inertia in deceleration, less the load
     that presses it on). Friction does not enter: it changes the contact
     force's size, not its sign (see the module).
+
+    The spring is one that can be bought: its installed compression
+    ``d0 = F0 / k`` (a torsional spring's installed twist) lies within
+    ``[min_installed, max_installed]``, by default between a quarter of the
+    follower's travel ``h`` and ``h`` -- a preload of 20 % to 50 % of the
+    spring's largest force ``F0 + k h``, as the SEED unit design guide
+    *Cam Mechanisms* (section 15, "Force closure") advises for cam follower
+    springs (``F0 / (F0 + k h) = d0 / (d0 + h)``). Without such a bound the
+    least largest force is approached only by a constant-force spring
+    (``k -> 0``, ``d0 -> infinity``), which nobody stocks.
+
+    The chosen spring (no ``rate``)
+    -------------------------------
+    It minimizes the largest force ``F0 + k h`` over ``k >= 0`` and
+    ``d0 in [lo, hi]`` subject to ``k (d0 + q_i) >= need_i`` at every sampled
+    angle ``i`` -- a linear programme in ``(k, F0)``, since ``lo k <= F0 <=
+    hi k`` is linear -- and among the springs of that least largest force it
+    is the stiffest. Closed form:
+
+    1. For a fixed ``d0`` (with ``d0 + q_i > 0``; ``q_i >= 0``) every
+       constraint is a lower bound on ``k``, and the largest force
+       ``k (d0 + h)`` grows with ``k``: the best rate is the least,
+       ``k(d0) = max_i need_i / (d0 + q_i)``, and the largest force is
+       ``F(d0) = max_i need_i (d0 + h) / (d0 + q_i)`` (over ``need_i > 0``).
+    2. Each term ``need_i (1 + (h - q_i) / (d0 + q_i))`` with ``need_i > 0``
+       does not increase with ``d0`` (``h >= q_i``), so neither does ``F``:
+       its least value ``F* = F(hi)`` is taken at ``d0 = hi``.
+    3. ``k(d0)`` does not increase with ``d0`` either, so the stiffest spring
+       of largest force ``F*`` has the least ``d0 >= lo`` with ``F(d0) <=
+       F*``: term by term ``need_i (d0 + h) <= F* (d0 + q_i)``, i.e.
+       ``d0 >= (need_i h - F* q_i) / (F* - need_i)`` for ``need_i < F*``
+       (a term with ``need_i = F*`` has ``q_i = h`` and holds for every
+       ``d0``), so ``d0 = max(lo, max_i (need_i h - F* q_i) / (F* - need_i))``,
+       which is ``<= hi`` since ``F* >= need_i (hi + h) / (hi + q_i)``. It
+       differs from ``hi`` only when the term at ``q = h`` sets ``F*``, and
+       then its spring exerts less force at every ``q < h`` than the one at
+       ``hi`` for the same largest force.
+
+    When no angle needs a pull (``need <= 0`` everywhere: the load alone
+    keeps the follower on the cam) no spring is needed: rate and preload 0,
+    said in the spring's ``note``.
 
     Parameters
     ----------
@@ -383,77 +468,177 @@ def spring_for_contact(
         >= 1.
     rate : float, optional
         A given spring rate (N/m or N m/rad): only the preload is chosen, the
-        smallest that holds. Without it the rate and preload minimize the
-        spring's largest force ``F0 + k q_max`` (a linear programme), and
-        among those springs the stiffest is taken (the least preload).
+        least that holds and gives an installed compression of at least
+        ``min_installed``. A rate of 0 (a constant-force spring) takes no
+        bounds.
     samples : int
         Cam angles per turn checked.
+    min_installed, max_installed : float, optional
+        Bounds on the installed compression ``F0 / k``: design length unit
+        (mm) for a translating follower, radians (the installed twist) for a
+        rocker; >= 0. Defaults: a quarter of the travel and the travel (the
+        default of one never crosses the other given).
 
     Returns
     -------
     Spring
+        With its ``travel`` (the follower's stroke, m or rad), ``torsional``
+        for a rocker, and a ``note`` when the given rate needs an installed
+        compression above the default range, or no spring is needed.
 
     Raises
     ------
     InputError
-        ``margin < 1``, a negative rate, or a spring whose largest force
-        would exceed ``dyn.max_spring_force`` at any preload.
+        ``margin < 1``, a negative rate or bound, bounds reversed or given
+        with a rate of 0; a given ``max_installed`` below the installed
+        compression that a given rate needs (field
+        ``dynamics.max_installed_compression`` / ``max_installed_twist``), or
+        that leaves no force at an angle that needs one; a spring whose
+        largest force would exceed ``dyn.max_spring_force`` (field
+        ``dynamics.spring_rate`` with a given rate, else
+        ``dynamics.max_spring_force``).
     """
     m = _num("dynamics.margin", margin, lo=1.0)
+    torsional = design.follower.kind == "rocker"
+    what = "twist" if torsional else "compression"
+    lo_key, hi_key = f"dynamics.min_installed_{what}", f"dynamics.max_installed_{what}"
+    _num(lo_key, min_installed, lo=0.0, allow_none=True)
+    _num(hi_key, max_installed, lo=0.0, allow_none=True)
     w = cam_speed(design, rpm)
     phi = dynamics_grid(samples)
-    q, _, d2q, _ = follower_kinematics(design, phi, dyn)
-    need = m * (-dyn.mass * w**2 * d2q - dyn.load)
-    qmax = float(np.max(q))
+    si = si_per_unit(design, dyn)
+
+    def needs(at: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # q and the spring force contact needs, at angles
+        q, _, d2q, _ = follower_kinematics(design, at, dyn)
+        return q, m * (-dyn.mass * w**2 * d2q - dyn.load)
+
+    q, need = needs(phi)
+    h = max(float(np.max(q)), float(design.program.lift) * si)  # the travel, m or rad
+
+    def shown(d: float) -> str:  # an installed compression (m or rad) in the file's unit
+        return f"{np.degrees(d):.6g} deg" if torsional else f"{d / dyn.length_unit:.6g} mm"
+
+    lo = None if min_installed is None else min_installed * si
+    hi = None if max_installed is None else max_installed * si
+    if lo is not None and hi is not None and lo > hi:
+        raise InputError(hi_key, f"must be >= {lo_key.split('.')[1]} ({shown(lo)}), got {shown(hi)}")
+    lo_d = min(h / 4, np.inf if hi is None else hi) if lo is None else lo
+    hi_d = max(h, lo_d) if hi is None else hi
+    speed = f"{omega_to_rpm(w):.6g} rpm with margin {m:g}"
+    note = None
     if rate is not None:
         k = _num("dynamics.spring_rate", rate, lo=0.0)
+        if k == 0 and (lo is not None or hi is not None):
+            raise InputError(lo_key if lo is not None else hi_key, f"a spring_rate of 0 (a constant-force spring) "
+                             f"has no installed {what}: remove the bound or give a positive spring_rate")
+        # the least preload, its binding angles refined between the samples
+        q, need = _refined(needs, phi, q, need, [need - k * q])
         F0 = max(0.0, float(np.max(need - k * q)))
+        if k > 0:
+            least = F0 / k
+            F0 = max(F0, k * lo_d)
+            if least > hi_d * (1 + 1e-12):
+                said = (f"a spring of rate {k:.6g} {'N m/rad' if torsional else 'N/m'} keeps contact at {speed} only "
+                        f"with an installed {what} of at least {shown(least)} (preload {F0:.6g} "
+                        f"{'N m' if torsional else 'N'})")
+                if hi is not None:
+                    raise InputError(hi_key, f"{said}, above the largest allowed, {shown(hi)}: allow more or give a "
+                                     "stiffer spring_rate")
+                note = (f"{said}, above the usual range (up to the travel, {shown(h)}: a preload of at most half the "
+                        "spring's largest force); a stiffer spring would need less")
+    elif not np.any(need > 0):
+        return Spring(0.0, 0.0, travel=h, torsional=torsional,
+                      note=f"the load alone keeps the follower on the cam at {speed}: no spring is needed")
     else:
-        # The largest force F0 + k q_max over the springs that hold is least at k = 0: with
-        # F0 = max_i(need_i - k q_i), F0 + k q_max = max_i(need_i + k (q_max - q_i)) and every
-        # slope q_max - q_i is >= 0. So the least largest force is N = max(0, max need), and the
-        # stiffest spring that keeps it has the largest k with need_i + k (q_max - q_i) <= N at
-        # every i and F0 = N - k q_max >= 0 (the linear programme solved in closed form).
-        N = max(0.0, float(np.max(need)))
-        gap = qmax - q
-        below = gap > 0
-        bounds = (N - need[below]) / gap[below]
-        k = float(np.min(bounds, initial=np.inf))
-        if qmax > 0:
-            k = min(k, N / qmax)
-        k = 0.0 if not np.isfinite(k) else max(k, 0.0)
-        # round-off: make the constraint hold exactly
-        F0 = max(float(np.max(need - k * q)), 0.0)
-    top = F0 + k * qmax
+        if np.any((hi_d + q <= 0) & (need > 0)):
+            raise InputError(hi_key, f"an installed {what} of {shown(hi_d)} leaves no spring force at the near dwell, "
+                             f"where contact at {speed} needs {float(np.max(need[hi_d + q <= 0])):.6g} "
+                             f"{'N m' if torsional else 'N'}: allow more")
+        d0 = _least_largest(q, need, h, lo_d, hi_d)
+        # refine between the samples where the spring binds (at d0 and at hi, which sets the least largest force)
+        with np.errstate(divide="ignore"):
+            q, need = _refined(needs, phi, q, need, [np.where(need > 0, need / (d + q), -np.inf) for d in (d0, hi_d)])
+        d0 = _least_largest(q, need, h, lo_d, hi_d)
+        pos = need > 0
+        k = float(np.max(need[pos] / (d0 + q[pos])))
+        F0 = max(k * d0, float(np.max(need - k * q)))  # round-off: the constraints hold exactly
+    top = F0 + k * h
     if dyn.max_spring_force is not None and top > dyn.max_spring_force * (1 + 1e-12):
-        hint = ""
+        cap = dyn.max_spring_force
         if rate is not None:
             unsprung = FollowerDynamics(dyn.mass, dyn.load, None, dyn.friction, dyn.journal_radius, dyn.length_unit)
-            free = spring_for_contact(design, unsprung, rpm=rpm, margin=margin, samples=samples)
-            hint = f"; a free rate ({free.rate:.6g}) would need {free.preload + free.rate * qmax:.6g}"
+            free = spring_for_contact(design, unsprung, rpm=rpm, margin=margin, samples=samples,
+                                      min_installed=min_installed, max_installed=max_installed)
+            hint = f"; a free rate ({free.rate:.6g}) would need {free.preload + free.rate * h:.6g}"
+        elif float(np.max(need)) < cap:
+            pos = need > 0
+            d_req = float(np.max((need[pos] * h - cap * q[pos]) / (cap - need[pos])))
+            hint = f"; a larger max_installed_{what}, {shown(d_req)} or more, would keep it within"
+        else:
+            hint = f"; no spring can: contact needs {float(np.max(need)):.6g} at some angle"
         raise InputError(
             "dynamics.spring_rate" if rate is not None else "dynamics.max_spring_force",
-            f"a spring of rate {k:.6g} cannot keep contact at {omega_to_rpm(w):.6g} rpm with margin {m:g} "
-            "at any preload "
-            f"within the spring's largest force {dyn.max_spring_force:.6g}: it needs {top:.6g}{hint}",
+            f"a spring of rate {k:.6g} cannot keep contact at {speed} at any preload within the installed {what}'s "
+            f"range ({shown(lo_d)} to {shown(hi_d)}) and the spring's largest force {cap:.6g}: it needs {top:.6g}"
+            f"{hint}",
         )
-    return Spring(rate=k, preload=F0)
+    return Spring(rate=k, preload=F0, travel=h, torsional=torsional, note=note)
+
+
+def _least_largest(q: np.ndarray, need: np.ndarray, h: float, lo: float, hi: float) -> float:
+    """The installed compression ``d0`` of the stiffest spring of least largest force (:func:`spring_for_contact`,
+    steps 1-3): ``q`` the follower's coordinate, ``need`` the force contact needs there (some > 0), ``h`` the
+    travel, ``[lo, hi]`` the bounds on ``d0`` (``hi + q > 0`` where ``need > 0``)."""
+    pos = need > 0
+    qp, npos = q[pos], need[pos]
+    top = float(np.max(npos * (hi + h) / (hi + qp)))  # F* = F(hi), steps 1-2
+    below = npos < top
+    bounds = (npos[below] * h - top * qp[below]) / (top - npos[below])
+    d0 = float(min(hi, max(lo, float(np.max(bounds, initial=-np.inf)))))  # step 3
+    if not float(np.max(npos * (d0 + h) / (d0 + qp))) <= top * (1 + 1e-9):  # round-off near a tie
+        d0 = hi
+    return d0
+
+
+def _refined(needs, phi: np.ndarray, q: np.ndarray, need: np.ndarray, scores, count: int = 8):
+    """``q`` and ``need`` with, added, 201 angles across the two sample steps around each of the ``count`` largest
+    local maxima of every score in ``scores`` (arrays over ``phi``, a uniform grid over one turn): the spring's
+    binding angles lie between the samples, and a peak of a smooth function is then found to about 1e-10 of its
+    relative size (the sampled one, to about ``(step / 2)^2`` times its curvature)."""
+    step = float(phi[1] - phi[0])
+    extra = []
+    for sc in scores:
+        peak = (sc >= np.roll(sc, 1)) & (sc >= np.roll(sc, -1)) & np.isfinite(sc)
+        idx = np.flatnonzero(peak)
+        idx = idx[np.argsort(-sc[idx], kind="stable")][:count]
+        extra.append((phi[idx][:, None] + step * np.linspace(-1.0, 1.0, 201)[None, :]).ravel())
+    at = np.mod(np.concatenate(extra), 2 * np.pi)
+    qa, na = needs(at)
+    return np.concatenate([q, qa]), np.concatenate([need, na])
 
 
 def chosen_spring(spec: DynamicsSpec, design: Design, *, rpm: float | None = None) -> Spring:
     """The spring of ``spec``: the given one, or the one :func:`spring_for_contact` chooses at ``rpm``.
 
+    The given spring is returned with its ``travel`` (the follower's stroke)
+    and ``torsional`` set from ``design``, so that its installed compression
+    and largest force can be reported.
+
     Parameters
     ----------
     spec : DynamicsSpec
-        The design's ``[dynamics]`` (:attr:`cams.model.design.CamDesign.dynamics`).
+        The design's ``[dynamics]`` (:attr:`cams.model.design.CamDesign.dynamics`), with its bounds on the
+        installed compression or twist.
     design : CamDesign
     rpm : float, optional
         Speed at which contact must hold, rev/min; default ``design.rpm``.
     """
     if spec.dynamics.spring is not None:
-        return spec.dynamics.spring
-    return spring_for_contact(design, spec.dynamics, rpm=rpm, margin=spec.margin, rate=spec.rate)
+        travel = float(design.program.lift) * si_per_unit(design, spec.dynamics)
+        return replace(spec.dynamics.spring, travel=travel, torsional=design.follower.kind == "rocker")
+    lo, hi = spec.installed_bounds
+    return spring_for_contact(design, spec.dynamics, rpm=rpm, margin=spec.margin, rate=spec.rate,
+                              min_installed=lo, max_installed=hi)
 
 
 @dataclass(frozen=True)
@@ -470,14 +655,17 @@ class DesignForces:
     jump: JumpSpeed
 
     def to_dict(self) -> dict:
-        """JSON-ready: the spring (N/m and N, or N m/rad and N m), force extremes, jump speed.
+        """JSON-ready: the spring, force extremes, jump speed.
+
+        ``spring``: :meth:`cams.model.dynamics.Spring.to_dict` -- rate (N/m;
+        N m/rad), preload (N; N m), installed compression (mm) or installed
+        twist (deg), largest force (N; N m), note.
 
         With rigid impacts (see :meth:`CamForces.to_dict`) ``jump_rpm`` is 0
         at a velocity jump down (``jump_at_impact``) and ``between_impacts``
         also holds the jump speed of the motion between the impacts.
         """
-        out = {"spring": {"rate": self.spring.rate, "preload": self.spring.preload},
-               **self.forces.to_dict(), **jump_dict(self.jump)}
+        out = {"spring": self.spring.to_dict(self.forces.length_unit), **self.forces.to_dict(), **jump_dict(self.jump)}
         if "between_impacts" in out:
             out["between_impacts"]["jump_rpm"] = self.jump.between_impacts_rpm
         return out

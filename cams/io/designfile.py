@@ -17,7 +17,8 @@ Schema (see ``examples/``)::
                  constraints ("all" | "pressure_angle")
     [profile]    tolerance (chord, mm; default 0.001), min_curvature_radius (optional)
     [dynamics]   optional, force closure: mass, load, spring_rate, preload, friction,
-                 journal_radius, margin, max_spring_force (see :func:`dynamics_from_dict`);
+                 journal_radius, margin, max_spring_force, the bounds on the spring's
+                 installed compression or twist (see :func:`dynamics_from_dict`);
                  mapped onto ``design.dynamics`` (a :class:`cams.model.dynamics.DynamicsSpec`)
 
 Every table maps onto a typed field of the design (``[solve] objective`` onto ``objective``,
@@ -65,7 +66,14 @@ from cams.model.design import (
     Limits,
     check_lift,
 )
-from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring, face_friction_error, journal_error
+from cams.model.dynamics import (
+    DynamicsSpec,
+    FollowerDynamics,
+    Spring,
+    face_friction_error,
+    installed_error,
+    journal_error,
+)
 from cams.model.follower import (
     FlatRocker,
     FlatTranslating,
@@ -125,7 +133,8 @@ _ONLY_FLAT = {
 
 #: The keys of a design file's [dynamics] table, in their documented order.
 DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "face_friction", "journal_radius", "margin",
-                 "max_spring_force")
+                 "max_spring_force",
+                 "min_installed_compression", "max_installed_compression", "min_installed_twist", "max_installed_twist")
 
 
 def _refuse(table: dict, where: str, reasons: dict) -> None:
@@ -472,8 +481,12 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
     ``mass`` (kg; kg m^2 for a rocker), ``load`` (N; N m), ``spring_rate``
     (N/m; N m/rad), ``preload`` (N; N m), ``friction``, ``face_friction``
     (flat face only; dimensionless), ``journal_radius`` (rocker only),
-    ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N; N m). A spring
-    is set when ``spring_rate`` and ``preload`` are both given; with only the rate, the preload is left to
+    ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N; N m),
+    ``min_installed_compression`` and ``max_installed_compression``
+    (mm; translating only), ``min_installed_twist`` and
+    ``max_installed_twist`` (degrees; rocker only: radians in the spec).
+    A spring is set when ``spring_rate`` and ``preload`` are both
+    given; with only the rate, the preload is left to
     :func:`cams.dynamics.forces.spring_for_contact`.
 
     Parameters
@@ -485,8 +498,8 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
         The follower's kind; ``"translating"`` refuses the key
         ``journal_radius`` (a translating follower's friction is in its guide;
         the design refuses a journal radius other than 0 with the same
-        message, :func:`cams.model.dynamics.check_dynamics_follower`). None:
-        not checked.
+        message, :func:`cams.model.dynamics.check_dynamics_follower`) and
+        the twist's bounds, ``"rocker"`` the compression's. None: not checked.
     flat : bool or None
         True for a flat-faced follower; False refuses the key
         ``face_friction`` (a roller turns freely). None: not checked.
@@ -518,6 +531,10 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
         raise journal_error()
     if flat is False and "face_friction" in table:
         raise face_friction_error()
+    for key in table:
+        if follower is not None and key.endswith(("_installed_twist", "_installed_compression")) and \
+                key.endswith("twist") != (follower == "rocker"):
+            raise installed_error(key, rocker=follower == "rocker")
     if "mass" not in table:
         raise InputError("dynamics.mass", "is required (kg, or kg m^2 about the pivot for a rocker)")
     v = {k: check_number(f"dynamics.{k}", table[k]) for k in table}
@@ -537,8 +554,17 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
         ),
         margin=v.get("margin", 1.2),
         rate=None if both else v.get("spring_rate"),
+        min_installed_compression=v.get("min_installed_compression"),
+        max_installed_compression=v.get("max_installed_compression"),
+        min_installed_twist=_radians(v.get("min_installed_twist")),
+        max_installed_twist=_radians(v.get("max_installed_twist")),
     )
     return spec
+
+
+def _radians(deg: float | None) -> float | None:
+    """A file's angle (degrees) in radians; None stays None."""
+    return None if deg is None else float(np.radians(deg))
 
 
 def load_design(path: str | Path) -> CamDesign | FlatFaceDesign:

@@ -3,12 +3,13 @@
 Plain data, checked once here with the message the file's key gets; the forces they cause are
 computed by :mod:`cams.dynamics.forces`, and :func:`cams.io.designfile.dynamics_from_dict` maps a
 file's table onto :class:`DynamicsSpec`. Units are SI (N, kg, N/m; N m, kg m^2, N m/rad for a
-rocker) except ``journal_radius``, in the design's length unit (mm).
+rocker) except ``journal_radius`` and the bounds on a spring's installed compression, in the design's length
+unit (mm), and the bounds on a torsional spring's installed twist, in radians.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -16,7 +17,7 @@ from laws.errors import InputError
 from laws.errors import check_number as _num
 
 __all__ = ["DynamicsSpec", "FollowerDynamics", "Spring", "check_dynamics_follower", "journal_error",
-           "face_friction_error"]
+           "face_friction_error", "installed_error"]
 
 
 @dataclass(frozen=True)
@@ -29,23 +30,69 @@ class Spring:
         k >= 0: N/m (translating) or N m/rad (rocker, torsional).
     preload : float
         F0 >= 0: spring force at the near dwell, N or N m.
+    travel : float or None
+        The follower's working travel from the near dwell (its stroke: m, or
+        rad for a rocker), over which the spring works; None when not known.
+        Gives :attr:`max_force`.
+    torsional : bool
+        A rocker's torsional spring (``q`` an angle: N m/rad, N m, rad).
+    note : str or None
+        What the choice of the spring has to say (outside the usual range of
+        installed compression, no spring needed).
+
+    ``travel``, ``torsional`` and ``note`` describe the spring's use (set by
+    :func:`cams.dynamics.forces.chosen_spring`); they are not part of its
+    identity, which is its rate and preload (equality, repr).
+
+    The spring's *installed compression* (a torsional spring's installed
+    twist) is ``F0 / k`` (:attr:`installed`): how far it is compressed from
+    its free length when the follower sits at the near dwell; at the far
+    dwell it is compressed by ``F0 / k + travel`` and exerts :attr:`max_force`.
 
     Examples
     --------
     >>> Spring(2000.0, 15.0).force(np.array([0.0, 0.01]))
     array([15., 35.])
+    >>> s = Spring(2000.0, 15.0, travel=0.03)
+    >>> round(s.installed, 6), round(s.max_force, 6)
+    (0.0075, 75.0)
     """
 
     rate: float
     preload: float
+    travel: float | None = field(default=None, compare=False, repr=False)
+    torsional: bool = field(default=False, compare=False, repr=False)
+    note: str | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         _num("dynamics.spring_rate", self.rate, lo=0.0)
         _num("dynamics.preload", self.preload, lo=0.0)
+        _num("dynamics.travel", self.travel, lo=0.0, allow_none=True)
 
     def force(self, q: np.ndarray) -> np.ndarray:
         """Spring force F0 + k q at the follower coordinate ``q`` (m or rad)."""
         return self.preload + self.rate * np.asarray(q, dtype=float)
+
+    @property
+    def installed(self) -> float | None:
+        """Installed compression ``F0 / k`` (m; a torsional spring's installed twist, rad); None when k = 0."""
+        return self.preload / self.rate if self.rate > 0 else None
+
+    @property
+    def max_force(self) -> float | None:
+        """The largest force ``F0 + k travel`` (N or N m), at the far dwell; None without :attr:`travel`."""
+        return None if self.travel is None else self.preload + self.rate * self.travel
+
+    def to_dict(self, length_unit: float = 1e-3) -> dict:
+        """JSON-ready: ``rate`` (N/m; N m/rad), ``preload`` (N; N m), ``installed_compression`` (mm) or, for a
+        torsional spring, ``installed_twist`` (deg) -- null for a rate of 0 --, ``max_force`` (N; N m) and
+        ``note``; ``length_unit``: metres per design length unit (1e-3: mm)."""
+        inst = self.installed
+        if self.torsional:
+            shown = {"installed_twist": None if inst is None else float(np.degrees(inst))}
+        else:
+            shown = {"installed_compression": None if inst is None else inst / length_unit}
+        return {"rate": self.rate, "preload": self.preload, **shown, "max_force": self.max_force, "note": self.note}
 
 
 @dataclass(frozen=True)
@@ -118,6 +165,12 @@ class DynamicsSpec:
         Contact margin for :func:`cams.dynamics.forces.spring_for_contact` (>= 1).
     rate : float or None
         A given spring rate whose preload is to be chosen (with no spring in ``dynamics``).
+    min_installed_compression, max_installed_compression : float or None
+        Bounds on a chosen translating follower's spring's installed compression
+        ``F0 / k``, design length unit (mm), >= 0; None: the default
+        (:func:`cams.dynamics.forces.spring_for_contact`).
+    min_installed_twist, max_installed_twist : float or None
+        The same for a rocker's torsional spring's installed twist, radians.
 
     The spring to use is :func:`cams.dynamics.forces.chosen_spring`.
     """
@@ -125,28 +178,76 @@ class DynamicsSpec:
     dynamics: FollowerDynamics
     margin: float = 1.2
     rate: float | None = None
+    min_installed_compression: float | None = None
+    max_installed_compression: float | None = None
+    min_installed_twist: float | None = None
+    max_installed_twist: float | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.dynamics, FollowerDynamics):
             raise InputError("dynamics", f"must be a FollowerDynamics, got {type(self.dynamics).__name__}")
         _num("dynamics.margin", self.margin, lo=1.0)
         _num("dynamics.spring_rate", self.rate, lo=0.0, allow_none=True)
+        for what, unit, scale in (("compression", "mm", 1.0), ("twist", "deg", 180 / np.pi)):
+            lo, hi = (getattr(self, f"{end}_installed_{what}") for end in ("min", "max"))
+            _num(f"dynamics.min_installed_{what}", lo, lo=0.0, allow_none=True)
+            _num(f"dynamics.max_installed_{what}", hi, lo=0.0, allow_none=True)
+            if lo is not None and hi is not None and lo > hi:
+                raise InputError(f"dynamics.max_installed_{what}", f"must be >= min_installed_{what} "
+                                 f"({lo * scale:g} {unit}), got {hi * scale:g} {unit}")
+            if (lo is not None or hi is not None) and self.dynamics.spring is not None:
+                raise InputError(f"dynamics.{'min' if lo is not None else 'max'}_installed_{what}",
+                                 "bounds a chosen spring's installed " + what + "; spring_rate and preload are both "
+                                 "given (a spring to check): remove the bound or the preload")
+            if (lo is not None or hi is not None) and self.rate == 0:
+                raise InputError(f"dynamics.{'min' if lo is not None else 'max'}_installed_{what}",
+                                 "a spring_rate of 0 (a constant-force spring) has no installed " + what +
+                                 ": remove the bound or give a positive spring_rate")
+
+    @property
+    def installed_bounds(self) -> tuple[float | None, float | None]:
+        """The given bounds on the installed compression (mm) or twist (rad), whichever are set; (None, None)."""
+        if self.min_installed_twist is not None or self.max_installed_twist is not None:
+            return self.min_installed_twist, self.max_installed_twist
+        return self.min_installed_compression, self.max_installed_compression
 
 
 def check_dynamics_follower(spec: DynamicsSpec, rocker: bool, *, flat: bool = False) -> None:
-    """Refuse what a follower's kind does not take: a translating follower has no pivot journal, a roller no
-    sliding face.
+    """Refuse what a follower's kind does not take.
+
+    A translating follower has no pivot journal and a linear spring (installed
+    compression, mm); a rocker a torsional spring (installed twist); a roller
+    no sliding face.
 
     Raises
     ------
     InputError
-        ``dynamics.journal_radius`` other than 0 for a translating follower (``rocker`` False), roller or flat
-        face alike; ``dynamics.face_friction`` other than 0 for a roller follower (``flat`` False).
+        ``dynamics.journal_radius`` other than 0, or ``min_installed_twist`` /
+        ``max_installed_twist``, for a translating follower (``rocker`` False), roller or flat face alike;
+        ``min_installed_compression`` / ``max_installed_compression`` for a rocker; ``dynamics.face_friction``
+        other than 0 for a roller follower (``flat`` False).
     """
     if not rocker and spec.dynamics.journal_radius != 0:
         raise journal_error()
     if not flat and spec.dynamics.face_friction != 0:
         raise face_friction_error()
+    for end in ("min", "max"):
+        if not rocker and getattr(spec, f"{end}_installed_twist") is not None:
+            raise installed_error(f"{end}_installed_twist", rocker=False)
+        if rocker and getattr(spec, f"{end}_installed_compression") is not None:
+            raise installed_error(f"{end}_installed_compression", rocker=True)
+
+
+def installed_error(key: str, *, rocker: bool) -> InputError:
+    """The error of a bound on the installed compression given for a rocker, or on the twist for a translating
+    follower (a design file refuses the key itself)."""
+    if rocker:
+        why = ("bounds a translating follower's spring (mm); a rocker's spring is torsional: use "
+               f"{key.replace('compression', 'twist')} (deg)")
+    else:
+        why = ("bounds a rocker's torsional spring (deg); a translating follower's spring is linear: use "
+               f"{key.replace('twist', 'compression')} (mm)")
+    return InputError(f"dynamics.{key}", why)
 
 
 def journal_error() -> InputError:

@@ -69,7 +69,7 @@ def print_forces(rep: dict, *, follower: str = "rocker") -> None:
     """
 
     from cams.dynamics.jump import jump_text
-    from cams.words import deg, force, spring_text, torque
+    from cams.words import deg, force, spring_words, torque_words
 
     lk = rep.get("linkage")
     if lk is not None:
@@ -106,13 +106,19 @@ def print_forces(rep: dict, *, follower: str = "rocker") -> None:
                 where += f" = cycle angle {', '.join(deg(c) for c in cyc)}"
             return where
 
-        print(f"  cam forces at {cam['rpm']:.6g} rpm: spring {spring_text(sp['rate'], sp['preload'], follower)}; "
-              f"max contact force {force(cam['max_contact_force'])} at {at('max_contact_at')}; "
-              f"max camshaft torque {torque(cam['max_torque'])} at {at('max_torque_at')}")
+        def torques(c: dict, where) -> str:
+            return "; ".join(torque_words(c[f"max_{k}_torque"], c[f"max_{k}_torque_at_deg"], k,
+                                          where=where(f"max_{k}_torque_at")) for k in ("driving", "braking"))
+
+        print(f"  cam forces at {cam['rpm']:.6g} rpm: spring {spring_words(sp, follower)}; "
+              f"max contact force {force(cam['max_contact_force'])} at {at('max_contact_at')}")
+        if sp.get("note"):
+            print(f"    note: {sp['note']}")
+        print(f"    camshaft: {torques(cam, at)}")
         bi = cam.get("between_impacts")
         if bi:
-            print(f"    between the rigid impacts: max contact force {force(bi['max_contact_force'])}, max camshaft "
-                  f"torque {torque(bi['max_torque'])}, jump speed {jump_text(bi['jump_rpm'])}")
+            print(f"    between the rigid impacts: max contact force {force(bi['max_contact_force'])}, camshaft "
+                  f"{torques(bi, lambda key: deg(bi[key + '_deg']))}, jump speed {jump_text(bi['jump_rpm'])}")
         if cam["jump_rpm"] is None or not math.isfinite(cam["jump_rpm"]):
             jump = jump_text(None)
         elif cam.get("jump_at_impact"):

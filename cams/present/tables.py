@@ -8,8 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from cams.words import binding_text, bore_text, deg, force, length_format, spring_text
-from cams.words import torque as torque_text
+from cams.words import binding_text, bore_text, deg, force, length_format, spring_words, torque_words
 
 __all__ = ["roller_sections", "flat_sections"]
 
@@ -198,26 +197,30 @@ def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
 
     largest = at_impact(up) if up else f"{force(fo['max_contact_force'])} at {deg(fo['max_contact_at_deg'])}"
     smallest = at_impact(down, " negative: contact lost") if down else force(fo['min_contact_force'])
-    torque = at_impact(up) if up else f"{torque_text(fo['max_torque'])} at {deg(fo['max_torque_at_deg'])}"
+    torque = "; ".join(torque_words(fo[f"max_{k}_torque"], fo[f"max_{k}_torque_at_deg"], k)
+                       for k in ("driving", "braking"))
     if fo["jump_at_impact"]:
         jump = f"any speed: the follower leaves the cam at its velocity drop (rigid impact at {deg(fo['jump_at_deg'])})"
     else:
         jump = jump_text(fo["jump_rpm"]) if fo["jump_at_deg"] is None or fo["jump_rpm"] is None or not np.isfinite(
             fo["jump_rpm"]) else f"{jump_text(fo['jump_rpm'])} (first at {deg(fo['jump_at_deg'])})"
     rows = [
-        ("closing spring", spring_text(fo["spring"]["rate"], fo["spring"]["preload"], df_kind)),
+        ("closing spring", spring_words(fo["spring"], df_kind)),
+        *([("spring note", fo["spring"]["note"])] if fo["spring"].get("note") else []),
         ("cam speed", f"{fo['rpm']:.6g} rpm"),
         ("largest contact force", largest),
         ("smallest contact force", smallest),
-        ("largest camshaft torque", torque),
+        ("camshaft torque", torque),
         ("jump speed", jump),
     ]
     bi = fo.get("between_impacts")
     if bi:
         rows.append(("between the rigid impacts",
                      f"contact force max {force(bi['max_contact_force'])} at {deg(bi['max_contact_at_deg'])}, min "
-                     f"{force(bi['min_contact_force'])}; camshaft torque max {torque_text(bi['max_torque'])} at "
-                     f"{deg(bi['max_torque_at_deg'])}; jump speed {jump_text(bi['jump_rpm'])}"))
+                     f"{force(bi['min_contact_force'])}; camshaft "
+                     + "; ".join(torque_words(bi[f"max_{k}_torque"], bi[f"max_{k}_torque_at_deg"], k)
+                                 for k in ("driving", "braking"))
+                     + f"; jump speed {jump_text(bi['jump_rpm'])}"))
     if fo["jammed"] is None:  # a flat face: no pressure-angle jamming; sliding friction at the face
         rows.append(("contact lost", "yes" if fo["contact_lost"] else "no"))
         loss = fo["mean_sliding_loss"]

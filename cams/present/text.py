@@ -14,7 +14,6 @@ from cams.words import (
     deg,
     length_format,
     off_by,
-    spring_text,
 )
 from cams.words import check_value as _fmt
 
@@ -195,21 +194,29 @@ def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translati
     With rigid impacts the unbounded values are said so, the finite ones
     between the impacts follow, and the jump speed is "any speed". The
     spring's units follow the ``follower`` kind: N/m and N, or N m/rad and
-    N m for a rocker's torsional spring (:func:`cams.words.spring_text`).
+    N m for a rocker's torsional spring, its installed compression in mm or
+    its installed twist in deg (:func:`cams.words.spring_words`); the torques in words
+    (:func:`cams.words.torque_words`).
     """
     from cams.dynamics.jump import jump_text
-    from cams.words import force, torque
+    from cams.words import force, spring_words, torque_words
+
+    def torques(f: dict) -> str:
+        return "; ".join(torque_words(f[f"max_{k}_torque"], f[f"max_{k}_torque_at_deg"], k)
+                         for k in ("driving", "braking"))
 
     sp = fo["spring"]
-    print(f"{indent}spring: {spring_text(sp['rate'], sp['preload'], follower)}")
+    print(f"{indent}spring: {spring_words(sp, follower)}")
+    if sp.get("note"):
+        print(f"{indent}  note: {sp['note']}")
     print(f"{indent}contact force: max {force(fo['max_contact_force'])} at {deg(fo['max_contact_at_deg'])}, "
-          f"min {force(fo['min_contact_force'])}; camshaft torque max {torque(fo['max_torque'])} "
-          f"at {deg(fo['max_torque_at_deg'])}")
+          f"min {force(fo['min_contact_force'])}")
+    print(f"{indent}camshaft: {torques(fo)}")
     bi = fo.get("between_impacts")
     if bi:
         print(f"{indent}  between the rigid impacts: contact force max {force(bi['max_contact_force'])} at "
-              f"{deg(bi['max_contact_at_deg'])}, min {force(bi['min_contact_force'])}; camshaft torque max "
-              f"{torque(bi['max_torque'])} at {deg(bi['max_torque_at_deg'])}; jump speed {jump_text(bi['jump_rpm'])}")
+              f"{deg(bi['max_contact_at_deg'])}, min {force(bi['min_contact_force'])}; camshaft {torques(bi)}; "
+              f"jump speed {jump_text(bi['jump_rpm'])}")
     if fo.get("jump_at_impact"):
         jump = f"follower leaves the cam at any speed (velocity drop at {deg(fo['jump_at_deg'])})"
     else:

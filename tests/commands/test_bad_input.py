@@ -88,6 +88,9 @@ ROCKER_FORCE = {
     "dynamics": {"mass": 0.003, "load": 0.5, "spring_rate": 3.0, "preload": 1.0, "friction": 0.1,
                  "journal_radius": 8.0, "margin": 1.5, "max_spring_force": 100.0},
 }
+#: a spring to choose within bounds on its installed twist (rocker) or compression (translating)
+ROCKER_SPRING = {**ROCKER_FORCE, "dynamics": {"mass": 0.003, "load": 0.5, "margin": 1.5, "min_installed_twist": 2.0,
+                                              "max_installed_twist": 10.0}}
 #: a chosen cam ([cam] base_radius with L, or [cam] centre), checked instead of sized
 ROCKER_CHOSEN_R0 = {
     "follower": {"kind": "rocker", "arm": 125.0, "swing": 15.0, "roller_radius": 10.0},
@@ -102,6 +105,9 @@ TRANSLATING = {
     "motion": [dict(m, height=20.0) if m["phase"] == "rise" else m for m in MOTION],
     "limits": {"pressure_angle": 30},
 }
+TRANSLATING_SPRING = {**TRANSLATING, "cam": {"rpm": 300},
+                      "dynamics": {"mass": 0.5, "load": 5.0, "min_installed_compression": 5.0,
+                                   "max_installed_compression": 25.0}}
 FLAT_ROCKER = {
     "follower": {"kind": "rocker", "face": "flat", "swing": 15.0, "centre_distance": 120.0, "face_offset": 0.0},
     "cam": {"rpm": 60, "bore_radius": 5.0, "base_radius": 80.0},
@@ -188,6 +194,9 @@ HOMES = {
     ("`[profile]`", "", "min_curvature_radius"): (ROCKER_FORM, "profile.min_curvature_radius"),
     **{("`[dynamics]`", "", k): (ROCKER_FORCE, f"dynamics.{k}") for k in ROCKER_FORCE["dynamics"]},
     ("`[dynamics]`", "", "face_friction"): (FLAT_ROCKER_FORCE, "dynamics.face_friction"),
+    **{("`[dynamics]`", "", k): (ROCKER_SPRING, f"dynamics.{k}") for k in ("min_installed_twist", "max_installed_twist")},
+    **{("`[dynamics]`", "", k): (TRANSLATING_SPRING, f"dynamics.{k}")
+       for k in ("min_installed_compression", "max_installed_compression")},
     **{("Flat-faced followers (`face = \"flat\"`)", "`[follower]`", k): (FLAT_ROCKER, f"follower.{k}")
        for k in ("swing", "centre_distance", "face_offset")},
     **{("Flat-faced followers (`face = \"flat\"`)", "`[follower]`", k): (FLAT_TRANSLATING, f"follower.{k}")

@@ -102,50 +102,6 @@ def test_jump_speed_scales_with_margin():
             assert j.rpm == pytest.approx(400 * 1.2, rel=1e-6)
 
 
-def test_spring_least_largest_force():
-    """Without a rate the spring's largest force is the least over all rates (brute force)."""
-    design, dyn = CASES["translating"]
-    sp = spring_for_contact(design, dyn, rpm=500, margin=1.2)
-    qmax = 30e-3
-    top = sp.preload + sp.rate * qmax
-    for k in np.linspace(0, 5000, 26):
-        other = spring_for_contact(design, dyn, rpm=500, margin=1.2, rate=float(k))
-        assert other.preload + other.rate * qmax >= top * (1 - 1e-9)
-
-
-@pytest.mark.parametrize("name", sorted(CASES))
-@pytest.mark.parametrize("rpm", [150.0, 500.0])
-def test_free_spring_is_the_linear_programmes_optimum(name, rpm):
-    """The closed-form spring against scipy's LP solver (HiGHS) on the same sampled constraints."""
-    from scipy.optimize import linprog
-
-    from cams.dynamics.motion import cam_speed, dynamics_grid, follower_kinematics
-
-    design, dyn = CASES[name]
-    sp = spring_for_contact(design, dyn, rpm=rpm, margin=1.25)
-    q, _, d2q, _ = follower_kinematics(design, dynamics_grid(3600), dyn)
-    need = 1.25 * (-dyn.mass * cam_speed(design, rpm) ** 2 * d2q - dyn.load)
-    qmax = float(q.max())
-    # it holds at every sample
-    assert np.all(sp.preload + sp.rate * q >= need - 1e-12 * abs(need).max())
-    A = -np.stack([np.ones_like(q), q], axis=1)
-    lp = linprog([1.0, qmax], A_ub=A, b_ub=-need, bounds=[(0, None), (0, None)], method="highs")
-    assert lp.success
-    top = sp.preload + sp.rate * qmax
-    assert top == pytest.approx(lp.fun, rel=1e-7, abs=1e-9)
-    # and it is the stiffest with that largest force
-    stiff = linprog([0.0, -1.0], A_ub=np.vstack([A, [[1.0, qmax]]]), b_ub=np.append(-need, lp.fun * (1 + 1e-9) + 1e-12),
-                    bounds=[(0, None), (0, None)], method="highs")
-    assert stiff.success
-    # (the LP's slack of 1e-9 in the force lets its rate run on by about 1e-9 top / q_max)
-    kscale = top / qmax + 1e-3  # N/m: the free-running case needs no spring (top = 0)
-    assert abs(sp.rate - stiff.x[1]) <= 1e-6 * kscale
-    # and any stiffer spring needs a larger largest force (the definition, by brute force)
-    def largest(k):
-        return max(0.0, float(np.max(need - k * q))) + k * qmax
-    assert largest(sp.rate + 1e-6 * kscale) > top
-
-
 @pytest.mark.parametrize("name", sorted(CASES))
 def test_jump_speed_confirmed_by_simulation(name):
     design, dyn = CASES[name]

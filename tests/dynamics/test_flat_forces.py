@@ -216,7 +216,8 @@ def test_the_examples_print_spring_contact_force_torque_and_jump_speed(capsys, n
     for words in (
         "spring: rate",
         "contact force: max",
-        "camshaft torque max",
+        "largest driving torque",
+        "largest braking torque",
         "follower jumps above",
         "sliding at the face",
     ):
@@ -241,6 +242,12 @@ def test_the_examples_print_spring_contact_force_torque_and_jump_speed(capsys, n
     assert fo["max_torque"] == pytest.approx(T[k], rel=1e-5)
     assert fo["max_torque_at_deg"] == pytest.approx(np.degrees(grid[k]), abs=1e-5)
     assert fo["mean_torque"] == pytest.approx(np.mean(T), rel=1e-4)
+    # the largest driving (T > 0) and braking (T < 0) torques and their cam angles
+    kd, kb = int(np.argmax(T)), int(np.argmin(T))
+    assert fo["max_driving_torque"] == pytest.approx(T[kd], rel=1e-5)
+    assert fo["max_driving_torque_at_deg"] == pytest.approx(np.degrees(grid[kd]), abs=1e-5)
+    assert fo["max_braking_torque"] == pytest.approx(T[kb], rel=1e-5) and T[kb] < 0
+    assert fo["max_braking_torque_at_deg"] == pytest.approx(np.degrees(grid[kb]), abs=1e-5)
     assert fo["jammed"] is None and fo["jamming_limit_deg"] is None and fo["contact_lost"] is False
     # the jump speed: the speed at which the independent contact force first touches 0, by bisection
     dense = _grid(7200)

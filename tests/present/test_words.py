@@ -229,12 +229,17 @@ def test_spring_units_follow_the_follower(capsys, examples_dir, tmp_path):
     """A rocker's closing spring is torsional (N m/rad, N m), a translating follower's linear (N/m, N)."""
     rc, out = _main(capsys, "solve", str(examples_dir / "slotting_feed_cam.toml"))
     assert rc == 0
-    assert "spring: rate 3 N m/rad, preload 0 N m" in out
-    assert "contact force: max 12.0948 N at 101.5000 deg, min 5.22163 N" in out
-    assert "camshaft torque max 0.492217 N m at 29.5000 deg" in out
+    # the given rate's least preload for the margin is 0; the least installed twist, a quarter of the 15 deg swing,
+    # makes it 3 N m/rad x 3.75 deg = 0.19635 N m, and the largest force 3 x (3.75 + 15) deg = 0.981748 N m
+    assert ("spring: rate 3 N m/rad, preload 0.19635 N m, installed twist 3.75 deg, largest force 0.981748 N m"
+            in out)
+    assert "contact force: max 14.863 N at 104.0000 deg, min 6.93182 N" in out
+    assert "camshaft: largest driving torque 0.589563 N·m at 29.5000 deg; largest braking torque 0.434114 N·m at " \
+           "96.0000 deg" in out
     assert "jamming limit 89.6333 deg" in out
     rc, out = _main(capsys, "machine", str(examples_dir / "machines" / "slotting_machine_forces.toml"), "--forces")
-    assert "spring rate 3 N m/rad, preload 0 N m" in out and "max contact force 12.0948 N at cam angle 101.5000 deg" in out
+    assert "spring rate 3 N m/rad, preload 0.19635 N m, installed twist 3.75 deg" in out
+    assert "max contact force 14.863 N at cam angle 104.0000 deg" in out
 
 
 def test_sweep_csv_headers_carry_units_and_no_round_off_tails(capsys, tmp_path, examples_dir):

@@ -87,7 +87,7 @@ class MachineForces:
 
             spring = self.spring
             assert spring is not None  # found with the cam's forces (cams.dynamics.forces.design_forces)
-            cam = {**self.cam.to_dict(), "spring": {"rate": spring.rate, "preload": spring.preload},
+            cam = {**self.cam.to_dict(), "spring": spring.to_dict(self.cam.length_unit),
                    **jump_dict(self.jump), "ok": bool(self.cam.ok)}
             if "between_impacts" in cam and self.jump is not None:
                 cam["between_impacts"]["jump_rpm"] = self.jump.between_impacts_rpm
@@ -99,7 +99,8 @@ class MachineForces:
                 def cyc(a):
                     return None if a is None else [float(np.degrees(c)) for c in self.cycle_angles(np.radians(a))]
 
-                for key in ("max_contact_at", "max_torque_at", "jump_at"):
+                for key in ("max_contact_at", "max_torque_at", "max_driving_torque_at", "max_braking_torque_at",
+                            "jump_at"):
                     cam[key + "_cycle_deg"] = cyc(cam.get(key + "_deg"))
                 for imp in cam["impacts"]:
                     imp["cycle_deg"] = cyc(imp["cam_angle_deg"])
