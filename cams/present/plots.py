@@ -378,7 +378,7 @@ def plot_forces(cam):
     fig = _figure(h=7.5 if rocker else 6.0)
     axes = fig.subplots(3 if rocker else 2, 1, sharex=True)
     ax_n, ax_t = axes[0], axes[-1]
-    ax_n.plot(x, finite(cf.contact), color="#2b6cb0", lw=1.4, label="contact force N")
+    ax_n.plot(x, finite(cf.contact), color="#2b6cb0", lw=1.4, label="contact force")
     ax_s = axes[1] if rocker else ax_n
     what = "moment about the pivot" if rocker else "force"
     unit = "N·m" if rocker else "N"

@@ -36,13 +36,13 @@ import io
 import json
 from pathlib import Path
 
-__all__ = ["report_sections", "report_data", "render_pdf", "write_report", "PAGE_MM", "MARGIN_MM"]
+__all__ = ["report_sections", "report_data", "render_pdf", "write_report", "PAGE_MM", "MARGIN_MM", "PICTURE_MAX_H_MM"]
 
 #: The page (A4 portrait) and its margins, mm.
 PAGE_MM = (210.0, 297.0)
 MARGIN_MM = 18.0
-#: The height a picture may take (mm): the text area less the header, the footer and the picture's caption.
-_PICTURE_MAX_H_MM = PAGE_MM[1] - 2 * MARGIN_MM - 30.0
+#: The height a picture may take (mm): the page's body (22 mm from the top, 20 mm from the bottom) less its title.
+PICTURE_MAX_H_MM = 238.0
 
 
 def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
@@ -175,11 +175,21 @@ TEMPLATE = r"""
 """
 
 
-def _svg(fig) -> bytes:
-    """``fig`` as SVG, its text drawn as paths (the picture looks the same wherever it is shown)."""
+def _svg(fig) -> tuple[bytes, float, float]:
+    """``fig`` as SVG, its text drawn as paths (the picture looks the same wherever it is shown), and its width and
+    height (pt).
+
+    Saved to the bounding box of everything drawn (``bbox_inches="tight"``): a legend that reaches past the
+    figure's edge is in the picture, not drawn over the page's margin (an SVG image is not clipped to its box).
+    """
+    import re
+
     buf = io.BytesIO()
-    fig.savefig(buf, format="svg")
-    return buf.getvalue()
+    fig.savefig(buf, format="svg", bbox_inches="tight", pad_inches=0.04)
+    svg = buf.getvalue()
+    head = svg[:svg.index(b"<svg") + 400].decode("utf-8", "replace")
+    w, h = (float(re.search(rf'{k}="([0-9.]+)pt"', head).group(1)) for k in ("width", "height"))  # type: ignore[union-attr]
+    return svg, w, h
 
 
 def render_pdf(data: dict, pictures: list[tuple[str, object]]) -> bytes:
@@ -199,9 +209,9 @@ def render_pdf(data: dict, pictures: list[tuple[str, object]]) -> bytes:
         pics = []
         for k, (title, fig) in enumerate(pictures):
             name = f"picture{k}.svg"
-            (root / name).write_bytes(_svg(fig))
-            w_in, h_in = fig.get_size_inches()
-            width = min(text_w, _PICTURE_MAX_H_MM * w_in / h_in)
+            svg, w_pt, h_pt = _svg(fig)
+            (root / name).write_bytes(svg)
+            width = min(text_w, PICTURE_MAX_H_MM * w_pt / h_pt)
             pics.append({"title": title, "file": name, "width": round(width, 3)})
         source = (TEMPLATE.replace("PAGE_W", f"{PAGE_MM[0]}mm").replace("PAGE_H", f"{PAGE_MM[1]}mm")
                   .replace("MARGIN", f"{MARGIN_MM}mm").replace("PICTURES", "json(bytes(sys.inputs.pictures))"))

@@ -44,12 +44,12 @@ def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     else:
         inputs += [("stroke h", f"{d.program.lift:g} mm"), ("offset", f"{f.offset:g} mm")]
     inputs += _cam_inputs(d)
-    inputs += _dynamics_inputs(d)
     inputs.append(("smallest radius of curvature allowed", f"{d.min_radius:g} mm"))
     if d.min_base_radius is not None:
         inputs.append(("constructive floor on R0", f"{d.min_base_radius:g} mm"))
     if d.base_radius is not None:
         inputs.append(("chosen base radius", f"{d.base_radius:g} mm"))
+    inputs += _dynamics_inputs(d)
     r = cam.solution.to_dict()
     results = [("sizing", f"convexity (R0 from {r['R0_source']})"), ("base radius R0", f"{r['R0']:.6f} mm"),
                *_part_rows(r, ".6f")]
@@ -135,7 +135,6 @@ def roller_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     if lim.closure == "form":
         inputs.append(("allowable pressure angle, return", _deg(lim.return_limit)))
     inputs.append(("safety factor K_C", f"{lim.safety_factor:g}"))
-    inputs += _dynamics_inputs(d)
     if lim.centre_distance is not None:
         inputs.append(("fixed centre distance L", f"{lim.centre_distance:g} mm"))
     if lim.min_base_radius is not None:
@@ -144,6 +143,7 @@ def roller_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         inputs.append(("chosen base radius R0", f"{d.base_radius:g} mm"))
     if d.centre is not None:
         inputs.append(("chosen cam centre (x, y)", f"({d.centre[0]:g}, {d.centre[1]:g}) mm"))
+    inputs += _dynamics_inputs(d)
     r = cam.solution.to_dict()
     method = "none: the chosen cam is checked, not sized" if r["mode"] == "chosen" else f"{r['method']} ({r['mode']})"
     fl = length_format(max(abs(r["R0"]), abs(r["L"] or 0.0), abs(r["offset"] or 0.0)))
