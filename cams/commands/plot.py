@@ -69,7 +69,6 @@ def run(args) -> int:
 
     which = _only(args.only)
     from cams.present.faces import presenter
-
     from cams.present.plots import no_forces
 
     cam = Cam.from_file(args.file)

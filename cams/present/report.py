@@ -129,14 +129,16 @@ TEMPLATE = r"""
     cams #d.version #h(1fr) page #counter(page).display() of #counter(page).final().first()
   ],
 )
-#show heading.where(level: 1): it => block(above: 5mm, below: 2.5mm, sticky: true, text(size: 12pt, weight: "bold", it.body))
+#show heading.where(level: 1): it => block(above: 5mm, below: 2.5mm, sticky: true,
+  text(size: 12pt, weight: "bold", it.body))
 
 // the banner: what the cam is, before anything else
 #block(width: 100%, inset: 4mm, radius: 1.5mm, fill: if failing { rgb("#fde8ea") } else { rgb("#e6f4ea") },
   stroke: 1.2pt + if failing { red } else { green })[
   #if failing [
     #text(size: 15pt, weight: "bold", fill: red)[FAIL]
-    #h(3mm) #text(size: 10pt, weight: "bold")[this cam fails #d.failures.len() #if d.failures.len() == 1 [condition] else [conditions]:]
+    #let n = d.failures.len()
+    #h(3mm) #text(size: 10pt, weight: "bold")[this cam fails #n #if n == 1 [condition] else [conditions]:]
     #v(1mm)
     #for f in d.failures [- #f
     ]

@@ -85,7 +85,7 @@ def test_translating_curves_are_the_forces_computed_another_way(translating_dyna
     # units on every axis
     assert ax_f.get_ylabel() == "force, N" and ax_t.get_ylabel() == "camshaft torque, N·m"
     assert ax_t.get_xlabel() == "cam angle φ from the timing datum, deg"
-    assert "k = " in [ln.get_label() for ln in ax_f.get_lines() if ln.get_label().startswith("spring")][0]
+    assert "k = " in next(ln.get_label() for ln in ax_f.get_lines() if ln.get_label().startswith("spring"))
 
 
 def test_rocker_moments_have_their_own_axes():
