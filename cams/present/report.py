@@ -76,9 +76,13 @@ def _figures(cam):
 
 
 def _version() -> str:
-    import cams
+    """The installed ``cams``'s version (its distribution's metadata, as ``pip show cams`` says it)."""
+    from importlib.metadata import PackageNotFoundError, version
 
-    return cams.__version__
+    try:
+        return version("cams")
+    except PackageNotFoundError:  # run from a source tree that was never installed
+        return "unknown (not installed)"
 
 
 def report_data(cam, *, source: str | Path | None = None, sections=None, today: datetime.date | None = None) -> dict:

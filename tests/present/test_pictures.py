@@ -73,7 +73,8 @@ def _figures(cam):
     """Every picture of the cam's face (its pipeline's names), drawn as cams plot draws them."""
     from cams.present.faces import presenter
 
-    return {name: plots.picture(presenter(cam).pictures[name], cam) for name in presenter(cam).pictures}
+    return {name: plots.picture(kind, cam) for name, kind in presenter(cam).pictures.items()
+            if kind != "forces" or plots.no_forces(cam) is None}  # the forces: only a cam with [dynamics]
 
 
 @pytest.mark.parametrize("name", ALL_EXAMPLES)
