@@ -20,8 +20,9 @@ file, date, version of ``cams``); then each of the face's tables (its presenter'
 <cams.present.faces.Presenter.report_sections>`: the inputs with the ``[dynamics]`` table, the results, the
 blank, the lift table's summary, the checks, the forces) flows over the pages; then the face's pictures
 (:attr:`report_pictures <cams.present.faces.Presenter.report_pictures>`, the forces when there are any), each
-scaled to the text width (or, if taller, to the text height) and never split across pages. A failing cam's
-pages carry FAIL in their header too.
+as SVG scaled to the text width (or, for a tall one, to :data:`PICTURE_MAX_H_MM`), shrunk to the room left on a
+page when it keeps :data:`PICTURE_SHRINK` of that size there, and never split across pages. A failing cam's pages
+carry FAIL in their header too.
 
 The HTML file is self-contained (pictures embedded as PNG data). Both are written to a temporary file first and
 renamed, so a failed run leaves no partial report. ``typst`` is imported only when the PDF is written.
@@ -36,13 +37,16 @@ import io
 import json
 from pathlib import Path
 
-__all__ = ["report_sections", "report_data", "render_pdf", "write_report", "PAGE_MM", "MARGIN_MM", "PICTURE_MAX_H_MM"]
+__all__ = ["report_sections", "report_data", "render_pdf", "write_report", "PAGE_MM", "MARGIN_MM",
+           "PICTURE_MAX_H_MM", "PICTURE_SHRINK"]
 
 #: The page (A4 portrait) and its margins, mm.
 PAGE_MM = (210.0, 297.0)
 MARGIN_MM = 18.0
 #: The height a picture may take (mm): the page's body (22 mm from the top, 20 mm from the bottom) less its title.
 PICTURE_MAX_H_MM = 238.0
+#: The least a picture is shrunk to (of its width) to fill the room left on a page rather than start the next one.
+PICTURE_SHRINK = 0.6
 
 
 def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
@@ -172,11 +176,19 @@ TEMPLATE = r"""
   )
 ]
 
+// each picture as wide as the text (or as tall as the body allows); shrunk to the room left on the page when it
+// keeps SHRINK of its size there, else on the next page
 #for p in PICTURES [
-  #block(breakable: false, above: 6mm)[
-    #heading(level: 1, p.title)
-    #align(center, image(p.file, width: p.width * 1mm))
-  ]
+  #context {
+    let room = PAGE_H - MARGIN - 2mm - here().position().y - 16mm
+    let w = p.width * 1mm
+    let fit = room / p.aspect
+    let w = if w * p.aspect <= room { w } else if fit >= SHRINK * w { fit } else { w }
+    block(breakable: false, above: 6mm)[
+      #heading(level: 1, p.title)
+      #align(center, image(p.file, width: w))
+    ]
+  }
 ]
 """
 
@@ -218,9 +230,11 @@ def render_pdf(data: dict, pictures: list[tuple[str, object]]) -> bytes:
             svg, w_pt, h_pt = _svg(fig)
             (root / name).write_bytes(svg)
             width = min(text_w, PICTURE_MAX_H_MM * w_pt / h_pt)
-            pics.append({"title": title, "file": name, "width": round(width, 3)})
-        source = (TEMPLATE.replace("PAGE_W", f"{PAGE_MM[0]}mm").replace("PAGE_H", f"{PAGE_MM[1]}mm")
-                  .replace("MARGIN", f"{MARGIN_MM}mm").replace("PICTURES", "json(bytes(sys.inputs.pictures))"))
+            pics.append({"title": title, "file": name, "width": round(width, 3), "aspect": h_pt / w_pt})
+        source = TEMPLATE
+        for key, value in (("PAGE_W", f"{PAGE_MM[0]}mm"), ("PAGE_H", f"{PAGE_MM[1]}mm"), ("MARGIN", f"{MARGIN_MM}mm"),
+                           ("SHRINK", f"{PICTURE_SHRINK:g}"), ("PICTURES", "json(bytes(sys.inputs.pictures))")):
+            source = source.replace(key, value)
         (root / "report.typ").write_text(source, encoding="utf-8")
         fonts = Path(matplotlib.get_data_path()) / "fonts" / "ttf"  # DejaVu Sans, the pictures' own face
         pdf = typst.compile(str(root / "report.typ"), root=str(root), font_paths=[str(fonts)],
