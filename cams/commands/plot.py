@@ -18,7 +18,7 @@ PICTURES = tuple(RollerPresenter.pictures)
 #: A flat-faced follower's pictures: no zone; the radius of curvature with the contact's travel instead.
 FLAT_PICTURES = tuple(FlatPresenter.pictures)
 #: Every picture name ``--only`` takes ("optimized": a design with an [optimize] table, drawn for it by default).
-NAMES = ("motion", "zone", "pressure", "curvature", "profile", "optimized")
+NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "optimized")
 
 def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Path]:
     """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.
@@ -69,11 +69,16 @@ def run(args) -> int:
 
     which = _only(args.only)
     from cams.present.faces import presenter
+    from cams.present.plots import no_forces
 
     cam = Cam.from_file(args.file)
     designed = cam.given.optimize is not None
     if which is None:  # everything that applies: no note for what the user did not ask for
         which = (*presenter(cam).pictures, *(("optimized",) if designed else ()))
+        if no_forces(cam) is not None:
+            which = tuple(w for w in which if w != "forces")
+    elif "forces" in which and (why := no_forces(cam)) is not None:
+        raise InputError("--only", f"forces: {why}")
     elif "optimized" in which and not designed:
         which = tuple(w for w in which if w != "optimized")
         print("cams plot: note: optimized: the design has no [optimize] table, no motion was designed; skipped",
@@ -117,7 +122,7 @@ def register(sub) -> None:
     """Add the ``plot`` subcommand."""
     q = sub.add_parser(
         "plot",
-        help="pictures: zone, motion diagrams, pressure angle, profile (PNG and SVG)",
+        help="pictures: zone, motion diagrams, pressure angle, profile, forces (PNG and SVG)",
         description="Draw the pictures of a design file; only what is asked for is computed. A flat-faced "
                     "follower has no zone (skipped with a note) and a curvature picture instead: the radius of "
                     "curvature against its limit and the contact's travel on the face. A cam that fails a check "
@@ -128,7 +133,8 @@ def register(sub) -> None:
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--out", default=".", help="output folder (default: current)")
     q.add_argument("--only", help=f"comma-separated subset of {','.join(PICTURES)} (flat face: "
-                   f"{','.join(FLAT_PICTURES)}); a design with [optimize] adds optimized (the designed laws, pressure "
+                   f"{','.join(FLAT_PICTURES)}); forces needs a [dynamics] table (contact force, spring and load, "
+                   "camshaft torque); a design with [optimize] adds optimized (the designed laws, pressure "
                    "angles and cam beside the original ones)")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
     q.set_defaults(func=run)

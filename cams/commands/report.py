@@ -23,7 +23,7 @@ def run(args) -> int:
         check_output_paths([("--out", Path(args.out) / name) for name in ("report.html", "report.pdf")],
                            inputs=[("FILE", args.file)])
     with all_or_nothing():  # report.html and report.pdf appear together or not at all
-        written = write_report(cam, args.out)
+        written = write_report(cam, args.out, source=args.file)
         a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
     for p in written:
         print(p)

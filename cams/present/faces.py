@@ -31,7 +31,8 @@ class Presenter(ABC):
         """Print the readable summary of a solve report (:meth:`cams.faces.result.SolveResult.to_dict`)."""
 
     #: The pictures ``cams plot`` draws of the face's cam, in order (the names ``--only`` takes), each with the
-    #: kind of picture (:data:`cams.present.plots.PICTURES`) drawn under it.
+    #: kind of picture (:data:`cams.present.plots.PICTURES`) drawn under it; ``forces`` only for a cam with
+    #: forces (a ``[dynamics]`` table, force closure and a speed: :func:`cams.present.plots.no_forces`).
     pictures: ClassVar[dict[str, str]]
     #: The report's pictures: (title, picture kind), in order, before the motion design's.
     report_pictures: ClassVar[tuple[tuple[str, str], ...]]
@@ -83,10 +84,10 @@ class RollerPresenter(Presenter):
         print_summary(rep)
 
     pictures: ClassVar[dict[str, str]] = {"motion": "motion", "zone": "zone", "pressure": "pressure",
-                                          "profile": "profile"}
+                                          "profile": "profile", "forces": "forces"}
     report_pictures: ClassVar[tuple[tuple[str, str], ...]] = (
         ("Allowable-centre zone", "zone"), ("Motion diagrams", "motion"), ("Pressure angle", "pressure"),
-        ("Cam profile", "profile"))
+        ("Cam profile", "profile"), ("Forces at the cam", "forces"))
 
     def report_sections(self, cam):
         from cams.present.tables import roller_sections
@@ -156,10 +157,11 @@ class FlatPresenter(Presenter):
         print_flat_summary(rep)
 
     pictures: ClassVar[dict[str, str]] = {"motion": "motion", "pressure": "flat_pressure",
-                                          "curvature": "curvature", "profile": "profile"}
+                                          "curvature": "curvature", "profile": "profile", "forces": "forces"}
     report_pictures: ClassVar[tuple[tuple[str, str], ...]] = (
         ("Motion diagrams", "motion"), ("Pressure angle", "flat_pressure"),
-        ("Radius of curvature and contact on the face", "curvature"), ("Cam profile", "profile"))
+        ("Radius of curvature and contact on the face", "curvature"), ("Cam profile", "profile"),
+        ("Forces at the cam", "forces"))
 
     def report_sections(self, cam):
         from cams.present.tables import flat_sections

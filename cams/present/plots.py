@@ -1,4 +1,4 @@
-"""Pictures: the allowable-centre zone, motion diagrams, pressure angle.
+"""Pictures: the allowable-centre zone, motion diagrams, pressure angle, the forces at the cam.
 
 A flat-faced follower's cam has no zone; its pictures are the
 motion diagrams, the pressure angle (:func:`plot_flat_pressure`, fixed by the
@@ -28,7 +28,7 @@ from cams.words import binding_text, phase_words
 from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
-           "picture", "PICTURES",
+           "plot_forces", "picture", "PICTURES", "no_forces",
            "animate_profile", "save", "mark_failing", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
@@ -332,6 +332,83 @@ def plot_curvature(solution, *, n: int = 721):
     return fig
 
 
+def no_forces(cam) -> str | None:
+    """Why ``cam`` (a :class:`cams.cam.Cam`) has no forces to draw, or None when it has (:func:`plot_forces`)."""
+    if cam.design.dynamics is None:
+        return ("the design has no [dynamics] table (the follower's mass, load and spring); add one, with cam.rpm, "
+                "to draw the forces")
+    if cam.forces is None:
+        return f"no forces to draw: {cam.forces_note}"
+    return None
+
+
+def plot_forces(cam):
+    """The forces at a force-closed cam over one turn: contact force, spring and load, camshaft torque.
+
+    Read through the face's pipeline (:attr:`cams.cam.Cam.forces`, a
+    :class:`cams.dynamics.forces.DesignForces`): the contact force ``N`` (N);
+    the closing spring ``F0 + k q`` and the constant load ``P`` (N, on the
+    same axes; a rocker's are moments about its pivot, N m, on axes of their
+    own); the camshaft torque (N m, positive: the shaft drives the cam). The
+    abscissa is the cam angle from the timing datum (the start of the first
+    ``[[motion]]`` row), degrees. At a rigid impact (a velocity jump) the
+    force is unbounded: the curves break there and a dotted line marks it.
+
+    Raises
+    ------
+    ValueError
+        ``cam`` has no forces (:func:`no_forces` says why).
+    """
+    why = no_forces(cam)
+    if why is not None:
+        raise ValueError(why)
+    df = cam.forces
+    cf = df.forces
+    d = cam.design
+    rocker = d.follower.kind == "rocker"
+    x = np.degrees(cf.phi)
+    o = np.argsort(x)
+    x = x[o]
+
+    def finite(v):
+        v = np.asarray(v, dtype=float)[o]
+        return np.where(np.isfinite(v), v, np.nan)
+
+    load = float(d.dynamics.dynamics.load)
+    fig = _figure(h=7.5 if rocker else 6.0)
+    axes = fig.subplots(3 if rocker else 2, 1, sharex=True)
+    ax_n, ax_t = axes[0], axes[-1]
+    ax_n.plot(x, finite(cf.contact), color="#2b6cb0", lw=1.4, label="contact force")
+    ax_s = axes[1] if rocker else ax_n
+    what = "moment about the pivot" if rocker else "force"
+    unit = "N·m" if rocker else "N"
+    ax_s.plot(x, finite(cf.spring), color="#2f855a", lw=1.2, ls="--",
+              label=f"spring {what} F0 + k q (k = {df.spring.rate:.4g} {'N·m/rad' if rocker else 'N/m'}, "
+                    f"F0 = {df.spring.preload:.4g} {unit})")
+    ax_s.plot(x, np.full_like(x, load), color="#b7791f", lw=1.2, ls="-.", label=f"load P = {load:.4g} {unit}")
+    ax_t.plot(x, finite(cf.torque), color="#c53030", lw=1.3, label="camshaft torque (+: the shaft drives)")
+    ax_t.axhline(0.0, color="0.3", lw=0.6)
+    ax_n.set_ylabel("contact force, N")
+    if rocker:
+        ax_s.set_ylabel("moment about the pivot, N·m")
+    else:
+        ax_n.set_ylabel("force, N")
+    ax_t.set_ylabel("camshaft torque, N·m")
+    ax_t.set_xlabel("cam angle φ from the timing datum, deg")
+    for k, imp in enumerate(cf.impacts):
+        for ax in axes:
+            ax.axvline(np.degrees(imp.phi) % 360, color="#c53030", lw=1.0, ls=":",
+                       label="rigid impact (force unbounded or contact lost)" if k == 0 else None)
+    for ax in axes:
+        for s in d.program.starts:
+            ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
+        ax.grid(True, lw=0.3)
+        ax.set_xlim(0, 360)
+        _legend(ax, fontsize=7, loc="best")
+    _title(ax_n, f"{d.name}: forces at the cam at {cf.rpm:.4g} rpm")
+    return fig
+
+
 def _draw(ax, cam, profile, phi: float):
     """The cam turned to ``phi`` with its follower, as its face draws it (:mod:`cams.present.faces`)."""
     from cams.present.faces import presenter
@@ -414,6 +491,7 @@ PICTURES = {
     "flat_pressure": lambda cam: plot_flat_pressure(cam.solution),
     "curvature": lambda cam: plot_curvature(cam.solution),
     "profile": lambda cam: plot_profile(cam),
+    "forces": lambda cam: plot_forces(cam),
 }
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from cams.words import binding_text, bore_text, deg, force, length_format, spring_words, torque_words
+from cams.words import binding_text, bore_text, deg, force, length_format, spring_text, spring_words, torque_words
 
 __all__ = ["roller_sections", "flat_sections"]
 
@@ -48,6 +48,7 @@ def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         inputs.append(("constructive floor on R0", f"{d.min_base_radius:g} mm"))
     if d.base_radius is not None:
         inputs.append(("chosen base radius", f"{d.base_radius:g} mm"))
+    inputs += _dynamics_inputs(d, sliding_face=True)
     r = cam.solution.to_dict()
     results = [("sizing", f"convexity (R0 from {r['R0_source']})"), ("base radius R0", f"{r['R0']:.6f} mm"),
                *_part_rows(r, ".6f")]
@@ -67,26 +68,18 @@ def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
                 ("verified (radius of curvature >= limit)", "yes" if r["verified"] else "NO")]
     results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"]]
-    sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam)), *_motion_section(cam)]
-    df = cam.forces if d.dynamics is not None else None
-    if df is not None:
-        sections.append(("Forces at the cam", _force_rows(df, f.kind)))
-    return sections
+    return [("Inputs", inputs), ("Results", results), _blank_section(r, ".6f"), *_lift_table_section(cam),
+            ("Checks", _check_rows(cam)), *_motion_section(cam), *_forces_section(cam)]
 
 
 def _part_rows(r: dict, fl: str) -> list[tuple[str, str]]:
-    """What governs the size, the pressure angle's own R0, the blank, the bore and the peaks at speed (the part's
-    keys of a solve report, :meth:`cams.faces.result.SolveResult.to_dict`)."""
+    """What governs the size, the pressure angle's own R0 and the peaks at speed (the part's keys of a solve
+    report, :meth:`cams.faces.result.SolveResult.to_dict`; the blank and the bore are :func:`_blank_section`'s)."""
     from cams.present.text import GOVERNS_WORDS
 
     rows = [("governs", GOVERNS_WORDS.get(r["governs"], str(r["governs"])))]
     if r["pressure_angle_R0"] is not None and r["governs"] != "pressure_angle":
         rows.append(("R0 by the pressure angle alone", f"{r['pressure_angle_R0']:{fl}} mm"))
-    rows.append(("the cam's largest radius (blank diameter)",
-                 f"{r['largest_cam_radius']:{fl}} mm ({2 * r['largest_cam_radius']:{fl}} mm)"))
-    if r["bore_radius"] is not None:
-        rows.append(("bore radius, hub wall (at least)", f"{r['bore_radius']:{fl}} mm, {r['hub_wall']:{fl}} mm "
-                     f"({r['hub_wall_required']:{fl}} mm)"))
     if r["rpm"] is not None:
         for k in ("velocity", "acceleration", "jerk"):
             p = r["peaks"][k]
@@ -149,6 +142,7 @@ def roller_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
         inputs.append(("chosen base radius R0", f"{d.base_radius:g} mm"))
     if d.centre is not None:
         inputs.append(("chosen cam centre (x, y)", f"({d.centre[0]:g}, {d.centre[1]:g}) mm"))
+    inputs += _dynamics_inputs(d)
     r = cam.solution.to_dict()
     method = "none: the chosen cam is checked, not sized" if r["mode"] == "chosen" else f"{r['method']} ({r['mode']})"
     fl = length_format(max(abs(r["R0"]), abs(r["L"] or 0.0), abs(r["offset"] or 0.0)))
@@ -170,12 +164,97 @@ def roller_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     ]
     results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"] if not any(n in f for f in cam.assessment.failures)]  # said once
-    sections = [("Inputs", inputs), ("Results", results), ("Checks", _check_rows(cam))]
-    sections += _motion_section(cam)
-    df = cam.forces if d.dynamics is not None else None
-    if df is not None:
-        sections.append(("Forces at the cam", _force_rows(df, f.kind)))
-    return sections
+    return [("Inputs", inputs), ("Results", results), _blank_section(r, fl), *_lift_table_section(cam),
+            ("Checks", _check_rows(cam)), *_motion_section(cam), *_forces_section(cam)]
+
+
+def _dynamics_inputs(d, *, sliding_face: bool = False) -> list[tuple[str, str]]:
+    """The ``[dynamics]`` table's rows (SI units; a rocker's moments and inertia about its pivot), none without it;
+    ``sliding_face`` adds the friction at a flat face."""
+    from cams.words import spring_units
+
+    spec = d.dynamics
+    if spec is None:
+        return []
+    dyn = spec.dynamics
+    kind = d.follower.kind
+    rocker = kind == "rocker"
+    _, pu = spring_units(kind)
+    rows = [("[dynamics] " + ("moment of inertia about the pivot" if rocker else "reduced mass"),
+             f"{dyn.mass:g} {'kg m²' if rocker else 'kg'}"),
+            ("[dynamics] load opposing the rise", f"{dyn.load:g} {pu}")]
+    if dyn.spring is not None:
+        spring = spring_text(dyn.spring.rate, dyn.spring.preload, kind)
+    elif spec.rate is not None:
+        spring = f"rate {spec.rate:g} {spring_units(kind)[0]}, preload chosen for the contact margin"
+    else:
+        spring = "rate and preload chosen for the contact margin"
+    rows += [("[dynamics] closing spring", spring), ("[dynamics] contact margin", f"{spec.margin:g}"),
+             ("[dynamics] friction μ " + ("in the pivot" if rocker else "in the guide"), f"{dyn.friction:g}")]
+    if sliding_face:
+        rows.append(("[dynamics] friction μ at the face (sliding)", f"{dyn.face_friction:g}"))
+    if rocker:
+        rows.append(("[dynamics] pivot journal radius", f"{dyn.journal_radius:g} mm"))
+    lo, hi = spec.installed_bounds
+    if lo is not None or hi is not None:
+        scale, unit, what = (180 / np.pi, "deg", "twist") if rocker else (1.0, "mm", "compression")
+        shown = (f"{v * scale:g} {unit}" if v is not None else "default" for v in (lo, hi))
+        rows.append((f"[dynamics] installed {what} (least, most)", ", ".join(shown)))
+    if dyn.max_spring_force is not None:
+        rows.append(("[dynamics] largest spring force allowed", f"{dyn.max_spring_force:g} {pu}"))
+    return rows
+
+
+def _blank_section(r: dict, fl: str) -> tuple[str, list[tuple[str, str]]]:
+    """The blank the cam is cut from: its largest and smallest radius, the bore and the hub wall (the keys of a
+    solve report, :meth:`cams.faces.result.SolveResult.to_dict`; lengths mm, angles from the timing datum)."""
+    big, small = r["largest_cam_radius"], r["smallest_cam_radius"]
+    rows = [("the cam's largest radius (blank diameter)",
+             f"{big:{fl}} mm ({2 * big:{fl}} mm) at {deg(r['largest_cam_radius_at_deg'])}"),
+            ("the cam's smallest radius", f"{small:{fl}} mm at {deg(r['smallest_cam_radius_at_deg'])}")]
+    if r["bore_radius"] is not None:
+        rows.append(("bore radius, hub wall (at least)", f"{r['bore_radius']:{fl}} mm, {r['hub_wall']:{fl}} mm "
+                     f"({r['hub_wall_required']:{fl}} mm)"))
+    else:
+        rows.append(("bore", "none given ([cam] bore_radius)"))
+    return ("Blank", rows)
+
+
+#: Step of the lift table summarized in the report, degrees (``cams profile --table`` writes it at any step).
+TABLE_STEP_DEG = 1.0
+
+
+def _lift_table_section(cam) -> list[tuple[str, list[tuple[str, str]]]]:
+    """The lift table's summary (:mod:`cams.manufacture.table`, the face's columns at :data:`TABLE_STEP_DEG`): its
+    rows, its columns and each quantity's range; none where no profile can be built."""
+    if cam.face.no_profile(cam.design) is not None:
+        return []
+    phi_deg = np.arange(0.0, 360.0, TABLE_STEP_DEG)
+    cols = cam.face.table(cam.design, cam.solution, np.radians(phi_deg))
+    rows = [("rows", f"{phi_deg.size}, one every {TABLE_STEP_DEG:g} deg of cam angle from the timing datum "
+                     "(cams profile FILE --table OUT.csv [--step DEG] writes it)"),
+            ("columns", ", ".join(k for k, _ in cols))]
+    units = {"_mm": "mm", "_deg": "deg"}
+    for name, v in cols[1:]:
+        if name.endswith(("_theta_deg", "_x_mm", "_y_mm")):
+            continue  # the points' directions and coordinates: their radius is the row that says the size
+        v = np.asarray(v, dtype=float)
+        ok = np.isfinite(v)
+        unit = next(u for suffix, u in units.items() if name.endswith(suffix))
+        if name.startswith("rho_"):  # signed (negative: concave): the size that matters is the smallest |rho|
+            k = int(np.argmin(np.where(ok, np.abs(v), np.inf)))
+            rows.append((f"{name} smallest |ρ|", f"{abs(v[k]):.6g} {unit} at {deg(phi_deg[k])} "
+                         f"({'concave' if v[k] < 0 else 'convex'} there)"))
+            continue
+        text = "no finite value" if not ok.any() else f"{v[ok].min():.6g} to {v[ok].max():.6g} {unit}"
+        rows.append((f"{name} range", text))
+    return [("Lift table", rows)]
+
+
+def _forces_section(cam) -> list[tuple[str, list[tuple[str, str]]]]:
+    """The forces' table (a design with ``[dynamics]`` and forces), else nothing."""
+    df = cam.forces if cam.design.dynamics is not None else None
+    return [] if df is None else [("Forces at the cam", _force_rows(df, cam.design.follower.kind))]
 
 
 def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:

@@ -160,7 +160,8 @@ def test_check_profile_plot_report_run(tmp_path, capsys, file):
     assert rc == 0
     names = sorted(p.name for p in (tmp_path / "pics").iterdir())
     stem = "translating_flat_face_cam" if file == TRANSLATING else "rocker_flat_face_cam"
-    assert names == sorted(f"{stem}_{k}.{e}" for k in ("motion", "pressure", "curvature", "profile")
+    # the flat examples carry [dynamics] and a speed: their forces are drawn too (issue 22)
+    assert names == sorted(f"{stem}_{k}.{e}" for k in ("motion", "pressure", "curvature", "profile", "forces")
                            for e in ("png", "svg"))
     assert err == ""  # the zone is not drawn and, not asked for, not mentioned
     rc, out, err = _run(capsys, "report", str(file), "--out", str(tmp_path / "rep"))
