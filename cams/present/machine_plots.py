@@ -138,12 +138,12 @@ def hodograph_figure(result: ForceResult, *, title: str = "hodographs", marks: i
     # numbered once the layout is final: the labels are placed where they neither cover each other nor a point
     for ax, j in zip(axes.ravel(), joints, strict=False):
         R = result.reactions[j.name][at]
-        number_points(ax, np.column_stack([np.real(R), np.imag(R)]), fontsize=7)
+        number_points(ax, np.column_stack([np.real(R), np.imag(R)]), fontsize=7, avoid=np.zeros((1, 2)))
     return fig
 
 
 #: Where a point's number may go: offsets (points, radians) in growing rings, the first one up and to the right.
-_RINGS = [(r, np.radians(a)) for r in (7, 12, 18, 26, 36, 50, 70) for a in range(45, 405, 45 if r < 20 else 30)]
+_RINGS = [(r, np.radians(a)) for r in (9, 14, 20, 28, 38, 52, 70) for a in range(45, 405, 45 if r < 20 else 30)]
 
 
 def _runs(numbers: list[int]) -> str:
@@ -158,13 +158,15 @@ def _runs(numbers: list[int]) -> str:
     return ", ".join(parts)
 
 
-def number_points(ax, points: np.ndarray, *, fontsize: float = 7, near: float = 5.0) -> list:
+def number_points(ax, points: np.ndarray, *, fontsize: float = 7, near: float = 5.0,
+                  avoid: np.ndarray | None = None) -> list:
     """Number ``points`` (data coordinates, shape (n, 2)) 1..n on ``ax``, each label clear of the others.
 
     Points within ``near`` pixels of each other (as drawn) share one label (``"6-12"``). Each label takes the
     first place, in growing rings around its point, whose box lies inside the axes and meets no label placed
-    before nor any numbered point; a label set off from its point gets a leader line. Call it once the
-    figure's layout and the axes' limits are final. Returns the annotations.
+    before, no numbered point and none of the points ``avoid`` (data coordinates, e.g. a marked origin); a
+    label set off from its point gets a leader line. Call it once the figure's layout and the axes' limits
+    are final. Returns the annotations.
     """
     fig = ax.get_figure()
     fig.draw_without_rendering()  # the limits (aspect applied) and the layout as they will be drawn
@@ -178,7 +180,8 @@ def number_points(ax, points: np.ndarray, *, fontsize: float = 7, near: float = 
         else:
             groups.append([k])
     frame = ax.get_window_extent()
-    dots = [(x - 3, y - 3, x + 3, y + 3) for x, y in pix]
+    marks = pix if avoid is None else np.concatenate([pix, ax.transData.transform(avoid)])
+    dots = [(x - 4, y - 4, x + 4, y + 4) for x, y in marks]
     taken: list[tuple[float, float, float, float]] = []
 
     def clear(b) -> bool:

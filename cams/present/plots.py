@@ -321,7 +321,8 @@ def draw_limits(ax, design) -> None:
     """The allowable pressure angle drawn over each phase it limits, and nowhere else (degrees on ``ax``).
 
     The rise's limit over every rise; the return's over every return under form closure (force closure does
-    not limit the return: nothing is drawn there). Each kind is named once in the legend.
+    not limit the return: nothing is drawn there, and the legend says so). Each kind is named once in the
+    legend.
     """
     prog = design.program
     for i, lim in design.constrained_phases():
@@ -330,6 +331,9 @@ def draw_limits(ax, design) -> None:
         style = (dict(color="#c53030", ls="--") if kind == "rise" else dict(color="#c05621", ls="-."))
         ax.plot([a, a + np.degrees(prog.phases[i].angle)], [np.degrees(lim)] * 2, lw=1, **style,
                 label=f"limit, {kind}")
+    limited = {i for i, _ in design.constrained_phases()}
+    if any(p.kind == "return" and i not in limited for i, p in enumerate(prog.phases)):
+        ax.plot([], [], ls="none", label=f"return: no limit ({design.limits.closure} closure)")  # a note, no sample
 
 
 def plot_flat_pressure(solution, *, n: int = 721):
