@@ -284,7 +284,7 @@ def test_cam_forces_put_newtons_and_newton_metres_on_axes_of_their_own(machine):
     assert not any("spring" in ln.get_label() for ln in newtons.get_lines())
     # the spring moment drawn is the rocker's torsional spring F0 + k psi (N m), psi the swing (rad)
     sp = forces.spring
-    assert np.allclose(np.sort(spring.get_ydata()), np.sort(np.tile(sp.preload + sp.rate * forces.cam.q, 1)))
+    assert np.allclose(np.sort(spring.get_ydata()), np.sort(sp.preload + sp.rate * forces.cam.q))
     torque = next(ax for ax in fig.axes if ax not in top)
     assert torque.get_ylabel().endswith("N m")
 
