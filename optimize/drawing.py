@@ -112,6 +112,7 @@ def zone_drawing(
     samples: int = 180,
     n_lines: int = 6,
     extra_points: tuple[np.ndarray, ...] = (),
+    margin: float = 0.06,
 ) -> ZoneDrawing:
     """Everything a zone picture needs, for a solved centre.
 
@@ -128,6 +129,9 @@ def zone_drawing(
         Evenly spaced positions per constrained phase whose lines are drawn.
     extra_points : tuple of ndarray
         Further points the view must hold (e.g. a trade-off curve's ends).
+    margin : float
+        The view's margin on each side, a fraction of the points' span that way (at least a quarter of
+        the larger span, so that a flat drawing keeps some room).
 
     Returns
     -------
@@ -135,7 +139,7 @@ def zone_drawing(
         In the follower's fixed frame (:mod:`cams.model.follower`), length unit: the
         view box holds ``centre``, the frame's origin (the rocker pivot, or
         A0 of a translating follower), the analogue curves and
-        ``extra_points`` with 15 % of their span as margin; ``lines`` holds,
+        ``extra_points`` with ``margin``; ``lines`` holds,
         per constrained phase, the side nearer to binding at ``n_lines``
         positions and each ``binding`` line of the phase (flagged True).
     """
@@ -146,8 +150,8 @@ def zone_drawing(
     P = np.concatenate(pts)
     lo, hi = P.min(axis=0), P.max(axis=0)
     span = max(hi - lo) or design.scale
-    pad = 0.15 * span
-    box = (lo[0] - pad, lo[1] - pad, hi[0] + pad, hi[1] + pad)
+    pad = margin * np.maximum(hi - lo, 0.25 * span)
+    box = (lo[0] - pad[0], lo[1] - pad[1], hi[0] + pad[0], hi[1] + pad[1])
     N, c = sample_wedges(design, samples).lines()
     poly = clip_polygon(N, c, box)
     poly_k1 = None

@@ -47,7 +47,8 @@ def run(args) -> int:
 
         with all_or_nothing():  # every picture written whole, all of them or none
             out = ensure_folder(args.plot, "--plot")
-            paths = write_machine_plots(out, Path(args.file).stem, res.diagram, forces, title=spec.name)
+            paths = write_machine_plots(out, Path(args.file).stem, res.diagram, forces, title=spec.name,
+                                        follower=rep["cam"]["follower"])
         rep["plots"] = [str(p) for p in paths]
     if args.json:
         from cams.dynamics.forces import json_safe

@@ -122,10 +122,7 @@ def hodograph_figure(result: ForceResult, *, title: str = "hodographs", marks: i
         R = result.reactions[j.name]
         ax.plot(np.real(R)[o], np.imag(R)[o], lw=1.2)
         ax.plot([0.0], [0.0], "k+", ms=8)
-        for k, i in enumerate(at):
-            ax.plot(np.real(R[i]), np.imag(R[i]), "o", ms=3, color="C3")
-            ax.annotate(str(k + 1), (np.real(R[i]), np.imag(R[i])), fontsize=7, xytext=(3, 3),
-                        textcoords="offset points")
+        ax.plot(np.real(R[at]), np.imag(R[at]), "o", ms=3, color="C3")
         ax.set_title(f"{j.name} ({j.kind})", fontsize=9)
         ax.set_aspect("equal", adjustable="datalim")
         ax.grid(True, alpha=0.3)
@@ -138,11 +135,94 @@ def hodograph_figure(result: ForceResult, *, title: str = "hodographs", marks: i
                  "point 1 at 0 deg",
                  fontsize=10)
     fig.tight_layout()
+    # numbered once the layout is final: the labels are placed where they neither cover each other nor a point
+    for ax, j in zip(axes.ravel(), joints, strict=False):
+        R = result.reactions[j.name][at]
+        number_points(ax, np.column_stack([np.real(R), np.imag(R)]), fontsize=7, avoid=np.zeros((1, 2)))
     return fig
 
 
+#: Where a point's number may go: offsets (points, radians) in growing rings, the first one up and to the right.
+_RINGS = [(r, np.radians(a)) for r in (9, 14, 20, 28, 38, 52, 70) for a in range(45, 405, 45 if r < 20 else 30)]
+
+
+def _runs(numbers: list[int]) -> str:
+    """``[4, 6, 7, 8]`` as ``"4, 6-8"``: consecutive numbers as a range."""
+    parts, start = [], None
+    for k, n in enumerate(numbers):
+        if start is None:
+            start = n
+        if k + 1 == len(numbers) or numbers[k + 1] != n + 1:
+            parts.append(str(n) if n == start else f"{start}-{n}" if n > start + 1 else f"{start}, {n}")
+            start = None
+    return ", ".join(parts)
+
+
+def number_points(ax, points: np.ndarray, *, fontsize: float = 7, near: float = 5.0,
+                  avoid: np.ndarray | None = None) -> list:
+    """Number ``points`` (data coordinates, shape (n, 2)) 1..n on ``ax``, each label clear of the others.
+
+    Points within ``near`` pixels of each other (as drawn) share one label (``"6-12"``). Each label takes the
+    first place, in growing rings around its point, whose box lies inside the axes and meets no label placed
+    before, no numbered point and none of the points ``avoid`` (data coordinates, e.g. a marked origin); a
+    label set off from its point gets a leader line. Call it once the figure's layout and the axes' limits
+    are final. Returns the annotations.
+    """
+    fig = ax.get_figure()
+    fig.draw_without_rendering()  # the limits (aspect applied) and the layout as they will be drawn
+    pix = ax.transData.transform(points)
+    groups: list[list[int]] = []
+    for k in range(len(points)):
+        for g in groups:
+            if np.min(np.hypot(*(pix[g] - pix[k]).T)) <= near:
+                g.append(k)
+                break
+        else:
+            groups.append([k])
+    frame = ax.get_window_extent()
+    marks = pix if avoid is None else np.concatenate([pix, ax.transData.transform(avoid)])
+    dots = [(x - 4, y - 4, x + 4, y + 4) for x, y in marks]
+    taken: list[tuple[float, float, float, float]] = []
+
+    def clear(b) -> bool:
+        inside = b.x0 >= frame.x0 + 1 and b.y0 >= frame.y0 + 1 and b.x1 <= frame.x1 - 1 and b.y1 <= frame.y1 - 1
+        return inside and not any(b.x0 < q[2] + 1 and b.x1 > q[0] - 1 and b.y0 < q[3] + 1 and b.y1 > q[1] - 1
+                                  for q in (*taken, *dots))
+
+    out = []
+    for g in groups:
+        label = _runs([k + 1 for k in g])
+        centre = pix[g].mean(axis=0)
+        anchor = points[g[int(np.argmin(np.hypot(*(pix[g] - centre).T)))]]
+        text = ax.annotate(label, anchor, fontsize=fontsize, xytext=(0, 0), textcoords="offset points",
+                           ha="center", va="center")
+        for r, a in _RINGS:
+            text.xyann = (r * np.cos(a), r * np.sin(a))
+            box = text.get_window_extent()
+            if clear(box):
+                break
+        else:  # nowhere clear: beside the point, over whatever is there
+            text.xyann = (_RINGS[0][0] * np.cos(_RINGS[0][1]), _RINGS[0][0] * np.sin(_RINGS[0][1]))
+            box = text.get_window_extent()
+        if np.hypot(*text.xyann) > _RINGS[0][0] + 1:  # set off: a leader line to its point
+            xy = text.xyann
+            text.remove()
+            text = ax.annotate(label, anchor, fontsize=fontsize, xytext=xy, textcoords="offset points",
+                               ha="center", va="center",
+                               arrowprops=dict(arrowstyle="-", lw=0.5, color="0.45", shrinkA=0, shrinkB=2))
+        taken.append((box.x0, box.y0, box.x1, box.y1))
+        out.append(text)
+    return out
+
+
 def flywheel_figure(fw: FlywheelResult, *, title: str = "flywheel") -> Figure:
-    """Reduced moments, works, energy and the crank's speed over the cycle (seed 004's energy curves).
+    """Reduced moments, works, the energy with the construction of the excess work, and the crank's speed.
+
+    The third panel draws the energy change ``dE = Ad - Ar`` and, when the linkage has an inertia ``J`` of
+    its own, the energy the flywheel itself must take, ``dE - 1/2 J omega^2`` at the largest and the
+    smallest speed: the excess work ``dA`` is the height between the largest of the first and the smallest
+    of the second (the Wittenbauer construction's segment; for ``J = 0``, between the largest and the
+    smallest ``dE``), marked with both points and ``J_F = dA / (omega_m^2 delta)``.
 
     Parameters
     ----------
@@ -150,26 +230,53 @@ def flywheel_figure(fw: FlywheelResult, *, title: str = "flywheel") -> Figure:
     title : str
     """
     deg = np.degrees(fw.phi)
-    fig = _figure((8, 9))
-    axes = fig.subplots(4, 1, sharex=True)
+    fig = _figure((8, 10))
+    axes = fig.subplots(4, 1, sharex=True, height_ratios=(1, 1, 1.6, 1))
     axes[0].plot(deg, fw.resisting, label="Mr")
     axes[0].plot(deg, fw.driving, label="Md")
     axes[0].set_ylabel("reduced moment, N m")
     axes[1].plot(deg, fw.work_resisting, label="Ar")
     axes[1].plot(deg, fw.work_driving, label="Ad")
     axes[1].set_ylabel("work, J")
-    axes[2].plot(deg, fw.energy, color="C2", label="dE = Ad - Ar")
-    axes[2].set_ylabel("energy change, J")
+    _excess_work_panel(axes[2], fw, deg)
     axes[3].plot(deg, fw.omega, color="C3", label=f"omega, J_F = {fw.flywheel_inertia:.4g} kg m^2")
-    axes[3].axhline(fw.omega_mean, color="0.5", lw=0.8)
+    axes[3].axhline(fw.omega_mean, color="0.5", lw=0.8, label=f"omega_m = {fw.omega_mean:.4g} rad/s")
     axes[3].set_ylabel("omega, rad/s")
     axes[3].set_xlabel(f"{fw.reference}, deg")
     for ax in axes:
         ax.grid(True, alpha=0.3)
-        ax.legend(loc="upper right")
+    for ax in (axes[0], axes[1], axes[3]):
+        ax.legend(loc="upper right", fontsize="small")
     axes[0].set_title(f"{title}: delta = {fw.delta:g}, n = {fw.rpm:.4g} rpm")
     fig.tight_layout()
     return fig
+
+
+def _excess_work_panel(ax, fw: FlywheelResult, deg: np.ndarray) -> None:
+    """The energy change and the construction of the excess work (see :func:`flywheel_figure`)."""
+    w_hi, w_lo = fw.omega_mean * (1 + fw.delta / 2), fw.omega_mean * (1 - fw.delta / 2)
+    ax.plot(deg, fw.energy, color="C2", label="dE = Ad - Ar")
+    if np.any(fw.inertia != 0):
+        hi_curve, lo_curve = fw.energy - 0.5 * fw.inertia * w_hi**2, fw.energy - 0.5 * fw.inertia * w_lo**2
+        ax.plot(deg, hi_curve, color="C0", lw=1.0, ls="--", label="dE - J omega_max^2 / 2")
+        ax.plot(deg, lo_curve, color="C1", lw=1.0, ls="-.", label="dE - J omega_min^2 / 2")
+    else:
+        hi_curve = lo_curve = fw.energy
+    i, k = int(np.argmax(hi_curve)), int(np.argmin(lo_curve))
+    top, bottom = float(hi_curve[i]), float(lo_curve[k])
+    ax.plot(deg[i], top, "^", color="C3", ms=6, label=f"largest, at {deg[i]:.1f} deg (omega_max)")
+    ax.plot(deg[k], bottom, "v", color="C4", ms=6, label=f"smallest, at {deg[k]:.1f} deg (omega_min)")
+    for y in (top, bottom):
+        ax.axhline(y, color="0.45", lw=0.7, ls=":")
+    # the excess work between the two levels, at the angle midway between the two points
+    x = 0.5 * (deg[i] + deg[k])
+    ax.annotate("", xy=(x, top), xytext=(x, bottom), arrowprops=dict(arrowstyle="<->", color="k", lw=1.0))
+    ax.annotate("ΔE", (x, 0.5 * (top + bottom)), xytext=(4, 0), textcoords="offset points", va="center")
+    ax.set_ylabel("energy, J")
+    # the value where the legend goes, clear of the curves
+    ax.legend(loc="best", fontsize="x-small", ncol=2, title_fontsize="small",
+              title=f"excess work ΔE = {fw.excess_work:.4g} J: J_F = ΔE / (omega_m^2 delta) = "
+                    f"{fw.flywheel_inertia:.4g} kg m^2")
 
 
 class _Picked:
@@ -183,13 +290,19 @@ class _Picked:
         return v[self._o] if isinstance(v, np.ndarray) and v.shape == self._cf.phi.shape else v
 
 
-def cam_forces_figure(cf: CamForces, *, title: str = "cam forces", timing: CamTiming | None = None) -> Figure:
+def cam_forces_figure(cf: CamForces, *, title: str = "cam forces", timing: CamTiming | None = None,
+                      follower: str = "rocker") -> Figure:
     """The cam's contact, lateral and spring forces and the camshaft torque, rigid impacts marked.
+
+    Forces (N) and moments (N m) are on axes of their own: a rocker's torsional spring on a second scale
+    beside the contact force's, the camshaft torque on the panel below.
 
     Parameters
     ----------
     cf : cams.dynamics.forces.CamForces
     title : str
+    follower : {"rocker", "translating"}
+        The cam's follower: a rocker's spring is a moment about its pivot (N m), a translating one's a force.
     timing : cams.machine.timing.CamTiming or None
         With the cam's timing the axis is the cycle angle from position 1
         (every cam sample at each cycle angle where it occurs over the
@@ -213,11 +326,19 @@ def cam_forces_figure(cf: CamForces, *, title: str = "cam forces", timing: CamTi
     ax1, ax2 = fig.subplots(2, 1, sharex=True)
     ax1.plot(deg, N, label="contact force N")
     ax1.plot(deg, np.where(np.isfinite(picked.contact), picked.lateral, np.nan), label="lateral N sin(gamma)")
-    ax1.plot(deg, picked.spring, "--", label="spring")
-    ax1.set_ylabel("force, N (N m rocker)")
-    ax1.legend(loc="upper right")
+    ax1.set_ylabel("force, N")
+    if follower == "rocker":  # a moment: its own scale, on the right
+        twin = ax1.twinx()
+        twin.plot(deg, picked.spring, "--", color="C2", label="spring moment (right scale)")
+        twin.set_ylabel("spring moment about the pivot, N m")
+        twin.set_ylim(bottom=min(0.0, float(np.nanmin(picked.spring)) * 1.1),
+                      top=max(1e-9, float(np.nanmax(picked.spring))) * 1.1)
+        spring_handles = twin.get_legend_handles_labels()
+    else:
+        ax1.plot(deg, picked.spring, "--", color="C2", label="spring force")
+        spring_handles = ([], [])
     ax2.plot(deg, np.where(np.isfinite(picked.torque), picked.torque, np.nan), color="C3", label="camshaft torque")
-    ax2.set_ylabel("torque, N m")
+    ax2.set_ylabel("camshaft torque, N m")
     ax2.set_xlabel(xlabel)
     impacts = getattr(cf, "impacts", ())
     for n, imp in enumerate(impacts):  # rigid impacts: unbounded force (or contact lost) there
@@ -229,8 +350,8 @@ def cam_forces_figure(cf: CamForces, *, title: str = "cam forces", timing: CamTi
                 ax.axvline(x, color="C3", lw=1.0, ls=":",
                            label=("rigid impact (unbounded / contact lost)"
                                   if ax is ax1 and n == 0 and x == xs[0] else None))
-    if impacts:
-        ax1.legend(loc="upper right")
+    h, lab = ax1.get_legend_handles_labels()
+    ax1.legend(h + spring_handles[0], lab + spring_handles[1], loc="upper right", fontsize="small")
     for ax in (ax1, ax2):
         ax.grid(True, alpha=0.3)
     ax1.set_title(f"{title} at {cf.rpm:.4g} rpm")
@@ -238,7 +359,8 @@ def cam_forces_figure(cf: CamForces, *, title: str = "cam forces", timing: CamTi
     return fig
 
 
-def machine_figures(diagram: CycleDiagram | None, forces: MachineForces | None, *, title: str = "") -> dict:
+def machine_figures(diagram: CycleDiagram | None, forces: MachineForces | None, *, title: str = "",
+                    follower: str = "rocker") -> dict:
     """Every picture of a machine, by the name its file ends with (``cycle``, ``forces``, ``hodographs``...).
 
     Parameters
@@ -248,6 +370,8 @@ def machine_figures(diagram: CycleDiagram | None, forces: MachineForces | None, 
         The linkage's forces, its flywheel and the cam's forces, each drawn when present.
     title : str
         The machine's name.
+    follower : {"rocker", "translating"}
+        The cam's follower (:func:`cam_forces_figure`).
 
     Returns
     -------
@@ -264,22 +388,24 @@ def machine_figures(diagram: CycleDiagram | None, forces: MachineForces | None, 
         if forces.flywheel is not None:
             out["flywheel"] = flywheel_figure(forces.flywheel, title=f"{title}: energy")
         if forces.cam is not None:
-            out["cam_forces"] = cam_forces_figure(forces.cam, title=f"{title}: cam forces", timing=forces.cam_timing)
+            out["cam_forces"] = cam_forces_figure(forces.cam, title=f"{title}: cam forces", timing=forces.cam_timing,
+                                                  follower=follower)
     return out
 
 
 def write_machine_plots(folder: str | Path, stem: str, diagram: CycleDiagram | None, forces: MachineForces | None, *,
-                        title: str = "", field: str = "--plot") -> list[Path]:
+                        title: str = "", field: str = "--plot", follower: str = "rocker") -> list[Path]:
     """Write the machine's pictures (:func:`machine_figures`) into ``folder``, each whole or not at all.
 
     Each is a PNG named ``stem`` + ``_`` + its name (``cycle``, ``forces``...).
 
-    ``field`` names the option in an error. Returns the paths written, in order.
+    ``field`` names the option in an error; ``follower`` is the cam's (:func:`cam_forces_figure`). Returns the
+    paths written, in order.
     """
     from cams.io.files import atomic_write
 
     d = Path(folder)
     paths = []
-    for name, fig in machine_figures(diagram, forces, title=title).items():
+    for name, fig in machine_figures(diagram, forces, title=title, follower=follower).items():
         paths.append(atomic_write(d / f"{stem}_{name}.png", field, partial(fig.savefig, format="png")))
     return paths

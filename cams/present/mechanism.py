@@ -17,11 +17,11 @@ __all__ = ["draw_roller_mechanism", "draw_flat_mechanism", "add_polygon", "radii
 
 
 def radii_label(R0: float, cam_radius: float | None) -> str:
-    """The legend of the base circle: R0 (pitch curve) and, for a roller, the cam's own smallest radius."""
-    text = f"base circle R0 = {R0:.3f} mm (pitch curve)"
-    if cam_radius is not None:
-        text += f"\ncam's smallest radius {cam_radius:.3f} mm"
-    return text
+    """The legend of the base circle: a roller's R0 (of its pitch curve) with the cam's own smallest radius
+    ``cam_radius``; with ``cam_radius`` None, a flat face's R0 (the cam's own: a flat face has no pitch curve)."""
+    if cam_radius is None:
+        return f"base circle R0 = {R0:.3f} mm"
+    return f"base circle R0 = {R0:.3f} mm (pitch curve)\ncam's smallest radius {cam_radius:.3f} mm"
 
 
 def add_polygon(ax, points: np.ndarray, **style) -> None:
@@ -56,18 +56,20 @@ def draw_flat_mechanism(ax, cam, profile, phi: float):
     lo, hi = sol.face_range
     margin = 0.1 * max(hi - lo, 1e-9)
     ends = origin + np.outer([lo - margin, hi + margin], direction)
-    ax.plot(ends[:, 0], ends[:, 1], color="#c53030", lw=3, solid_capstyle="butt", label="flat face")
+    # the face and its stem or arm: one body, one legend entry
+    body = "follower (flat face and stem)" if d.follower.kind == "translating" else "rocker (flat face and arm)"
+    ax.plot(ends[:, 0], ends[:, 1], color="#c53030", lw=3, solid_capstyle="butt", label=body)
     k = int(np.argmin(np.abs((profile.phi - phi + np.pi) % TWO_PI - np.pi)))
     contact = to_fixed_frame(profile.work[k:k + 1], centre, d.cam_sense, profile.phi[k])[0]
     ax.plot(*contact, "o", color="#c53030", ms=3)
     if d.follower.kind == "translating":
         top = origin + np.array([0.0, 0.6 * d.scale])
-        ax.plot([origin[0], top[0]], [origin[1], top[1]], color="#c53030", lw=3, label="follower")
+        ax.plot([origin[0], top[0]], [origin[1], top[1]], color="#c53030", lw=3, label=body)
         ax.axvline(0.0, color="k", lw=0.6, ls="-.")
     else:
         near = origin + (lo - margin) * direction
-        ax.plot([0, origin[0], near[0]], [0, origin[1], near[1]], color="#c53030", lw=2.5,
-                solid_capstyle="round", label="rocker")
+        ax.plot([0, origin[0], near[0]], [0, origin[1], near[1]], color="#c53030", lw=3,
+                solid_capstyle="round", label=body)
         ax.plot(0, 0, "ko", ms=5)
     ax.plot(*centre, "k+", ms=10)
     ax.set_aspect("equal")

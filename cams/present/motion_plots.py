@@ -22,6 +22,7 @@ import numpy as np
 
 from cams.kinematics.inversion import invert_phase, pressure_angle
 from cams.present.faces import presenter_of_face
+from cams.present.plots import draw_limits, legend_once
 from laws.units import TWO_PI
 
 __all__ = ["plot_motion_design"]
@@ -78,26 +79,27 @@ def _pressure_panel(ax, given, designed, centres, n: int = 721) -> None:
             ax.plot(np.degrees(design.program.starts[i] + u * p.angle), np.degrees(np.abs(g)), color=colour,
                     lw=1.6 if colour == _OLD else 1.1, label=label if first else None)
             first = False
-    lim = designed.limits
-    ax.axhline(np.degrees(lim.pressure_angle), color="#c53030", ls="--", lw=1, label="limit, rise")
-    if lim.closure == "form":
-        ax.axhline(np.degrees(lim.return_limit), color="#c05621", ls="-.", lw=1, label="limit, return")
+    draw_limits(ax, designed)
     ax.set_xlim(0, 360)
     ax.set_xlabel("cam angle φ, deg", fontsize=8)
     ax.set_ylabel("|pressure angle|, deg", fontsize=8)
     ax.grid(True, lw=0.3)
     ax.tick_params(labelsize=7)
-    ax.legend(fontsize=7, loc="upper right")
+    legend_once(ax, fontsize=7, loc="upper right")
 
 
 def _cams_panel(ax, given, designed, sizes) -> None:
+    pitched = False
     for design, size, colour, label in ((given, sizes[0], _OLD, "original"), (designed, sizes[1], _NEW,
                                                                                 "designed")):
         work, pitch, R0 = presenter_of_face(design.face).outline(design, size)
         if pitch is not None:
             ax.plot(pitch[:, 0], pitch[:, 1], color=colour, lw=0.8, ls="--")
+            pitched = True
         ax.plot(work[:, 0], work[:, 1], color=colour, lw=1.6 if colour == _OLD else 1.1,
                 label=f"{label}: R0 = {R0:.3f} mm")
+    if pitched:  # each cam's colour, dashed
+        ax.plot([], [], color="0.4", lw=0.8, ls="--", label="pitch curves (dashed)")
     ax.plot(0, 0, "k+", ms=10)
     ax.set_aspect("equal")
     ax.grid(True, lw=0.3)

@@ -29,7 +29,7 @@ from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
            "plot_forces", "picture", "PICTURES", "no_forces",
-           "animate_profile", "save", "mark_failing", "A4_WIDTH_IN"]
+           "animate_profile", "save", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
 A4_WIDTH_IN = 7.5
@@ -68,7 +68,7 @@ def _unique_handles(ax) -> tuple[list, list[str]]:
     return list(first.values()), list(first)
 
 
-def _legend(ax, **kw):
+def legend_once(ax, **kw):
     """A legend with each label once."""
     return ax.legend(*_unique_handles(ax), **kw)
 
@@ -77,6 +77,40 @@ def _legend_below(fig, ax, ncol: int = 2):
     """The legend of ``ax`` under the figure's axes, each label once: it neither covers the drawing nor
     squeezes it sideways (constrained layout makes room for it)."""
     return fig.legend(*_unique_handles(ax), loc="outside lower center", ncol=ncol, fontsize=7)
+
+
+def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0, rounds: int = 6):
+    """Set the height of ``fig`` (its width kept) so that what it draws fills it: no band of empty figure
+    above and below a wide drawing of a fixed aspect (``ax``), nor beside a tall one.
+
+    The height stays within ``[min_h, max_h]`` inches and above what the legend ``beside`` the axes needs.
+    Each round draws the figure without rendering it and takes up the difference between the figure and the
+    box around everything drawn (the layout is constrained). Returns ``fig``, which keeps the fitting as
+    ``fig.refit`` for a caller that adds a title afterwards (:func:`mark_failing`).
+    """
+
+    def refit():
+        for _ in range(rounds):
+            fig.draw_without_rendering()
+            w, h = fig.get_size_inches()
+            drawn = fig.get_tightbbox()  # inches
+            spare_h, spare_w = h - drawn.height - 0.1, w - drawn.width - 0.1
+            if spare_h > 0.05:  # the axes span the width: the spare height goes
+                new = h - spare_h
+            elif spare_w > 0.05:  # the axes span the height: taller until they span the width
+                box = ax.get_position()
+                new = h + spare_w * (box.height * h) / (box.width * w)
+            else:
+                break
+            floor = min_h if beside is None else max(min_h, beside.get_window_extent().height / fig.dpi + 1.0)
+            new = float(np.clip(new, floor, max_h))
+            if abs(new - h) < 0.02:
+                break
+            fig.set_size_inches(w, new)
+        return fig
+
+    fig.refit = refit
+    return refit()
 
 
 def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
@@ -94,12 +128,16 @@ def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> li
 def mark_failing(fig, title: str):
     """Title ``fig`` as a failing cam's picture (``title`` from :meth:`cams.assess.Assessment.title`); "" leaves it.
 
-    The title goes above the figure's own titles, in red; returns ``fig``.
+    The title goes above the figure's own titles, in red (a figure title already there follows it on the next
+    line); returns ``fig``, refitted to its drawing when it was fitted (:func:`_fit_height`).
     """
     if title:
-        fig.suptitle(title, color="#c00000", fontsize="medium", weight="bold")
+        below = fig._suptitle.get_text() if fig._suptitle is not None else ""
+        fig.suptitle(title + (f"\n{below}" if below else ""), color="#c00000", fontsize="medium", weight="bold")
+        refit = getattr(fig, "refit", None)
+        if refit is not None:
+            refit()
     return fig
-
 
 
 def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
@@ -124,7 +162,10 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
 
     d = result.design
     f = d.follower
-    extra = () if tradeoff is None else (tradeoff.centres,)
+    # the view holds what is drawn to scale: the centre with its base circle, the analogue diagram, the pivot
+    # and the trade-off curve (the lines and the zone are unbounded: they are cut at the view's edge)
+    circle = np.asarray(result.centre, float) + result.R0 * np.array([[-1.0, -1.0], [1.0, 1.0]])
+    extra = (circle,) if tradeoff is None else (circle, tradeoff.centres)
     zd = zone_drawing(d, result.centre, binding=tuple((b.phi, b.side) for b in result.binding),
                       samples=samples, n_lines=n_lines, extra_points=extra)
     fig = _figure()
@@ -139,13 +180,21 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
         ax.plot([p0[0], p1[0]], [p0[1], p1[1]], ls="-" if side == 0 else "--", **style)
     ax.plot([], [], color="0.55", lw=0.5, label="t-t lines")
     ax.plot([], [], color="0.55", lw=0.5, ls="--", label="t1-t1 lines")
-    named = [binding_text({"line": b.line, "phi": float(np.degrees(b.phi)), "phase": b.phase,
-                           "phase_kind": d.program.phases[b.phase].kind}) for b in result.binding]
-    ax.plot([], [], color="#c53030", lw=1.4, label="\n".join(["binding lines", *named]))
-    for c in zd.curves:
-        col = "#2f855a" if c.kind == "rise" else "#b7791f"
-        ax.plot(c.A[:, 0], c.A[:, 1], color="k", lw=1.0)
-        ax.plot(c.D[:, 0], c.D[:, 1], color=col, lw=1.2, label=f"analogue diagram, {phase_words(c.kind, c.phase)}")
+    # one legend sample per style: the binding t-t lines solid, the t1-t1 dashed, each named
+    for side, ls in ((0, "-"), (1, "--")):
+        named = [binding_text({"line": b.line, "phi": float(np.degrees(b.phi)), "phase": b.phase,
+                               "phase_kind": d.program.phases[b.phase].kind})
+                 for b in result.binding if b.side == side]
+        if named:
+            ax.plot([], [], color="#c53030", lw=1.4, ls=ls, label="\n".join(f"binding {n}" for n in named))
+    for kind in dict.fromkeys(c.kind for c in zd.curves):
+        col = "#2f855a" if kind == "rise" else "#b7791f"
+        mine = [c for c in zd.curves if c.kind == kind]
+        for c in mine:
+            ax.plot(c.A[:, 0], c.A[:, 1], color="k", lw=1.0)
+            ax.plot(c.D[:, 0], c.D[:, 1], color=col, lw=1.2)
+        ax.plot([], [], color=col, lw=1.2,
+                label="analogue diagram, " + "; ".join(phase_words(c.kind, c.phase) for c in mine))
     A0 = f.position(0.0)
     if f.kind == "rocker":
         ax.plot([0, A0[0]], [0, A0[1]], color="k", lw=2)
@@ -174,11 +223,15 @@ def plot_zone(result, *, tradeoff=None, n_lines: int = 6, samples: int = 180):
     ax.set_aspect("equal")
     ax.set_xlabel("x, mm")
     ax.set_ylabel("y, mm")
-    _suptitle(fig, f"{d.name}: allowable-centre zone")
-    # beside the drawing, not over it: the zone and the centre can lie anywhere in the box
-    _legend(ax, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     ax.grid(True, lw=0.3)
-    return fig
+    _suptitle(fig, f"{d.name}: allowable-centre zone")
+    # outside the drawing (the zone and the centre can lie anywhere in the view), inside the figure: beside a
+    # tall view, below a wide one; the figure's height then fits the view
+    if (y1 - y0) >= 0.9 * (x1 - x0):
+        legend = fig.legend(*_unique_handles(ax), loc="outside right center", fontsize=7)
+        return _fit_height(fig, ax, beside=legend)
+    fig.legend(*_unique_handles(ax), loc="outside lower center", ncol=2, fontsize=7)
+    return _fit_height(fig, ax)
 
 
 def plot_motion(design, *, n: int = 721):
@@ -232,7 +285,7 @@ def plot_motion(design, *, n: int = 721):
         axes[k].axvline(np.degrees(imp.phi), color="#c53030", lw=1.0, label=what)
     for k in (1, 2):
         if axes[k].get_legend_handles_labels()[1]:
-            _legend(axes[k], fontsize=7, loc="upper right")
+            legend_once(axes[k], fontsize=7, loc="upper right")
     axes[-1].set_xlabel("cam angle φ, deg")
     axes[-1].set_xlim(0, 360)
     _title(axes[0], f"{design.name}: motion diagrams" + (f" at {design.rpm:g} rpm" if design.rpm else " (analogues)"))
@@ -252,10 +305,7 @@ def plot_pressure(result, *, n: int = 721):
         g = pressure_angle(invert_phase(d, result.centre, i, u))
         ax.plot(np.degrees(prog.starts[i] + u * p.angle), np.degrees(g),
                 color="#2f855a" if p.kind == "rise" else "#b7791f", lw=1.3, label=p.kind)
-    lim = d.limits
-    ax.axhline(np.degrees(lim.pressure_angle), color="#c53030", ls="--", lw=1, label="limit, rise")
-    if lim.closure == "form":
-        ax.axhline(np.degrees(lim.return_limit), color="#c05621", ls="-.", lw=1, label="limit, return")
+    draw_limits(ax, d)
     for s in prog.starts:
         ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
     ax.set_xlim(0, 360)
@@ -263,8 +313,27 @@ def plot_pressure(result, *, n: int = 721):
     ax.set_ylabel("pressure angle γ, deg")
     _title(ax, f"{d.name}: pressure angle")
     ax.grid(True, lw=0.3)
-    _legend(ax, fontsize=8)
+    legend_once(ax, fontsize=8)
     return fig
+
+
+def draw_limits(ax, design) -> None:
+    """The allowable pressure angle drawn over each phase it limits, and nowhere else (degrees on ``ax``).
+
+    The rise's limit over every rise; the return's over every return under form closure (force closure does
+    not limit the return: nothing is drawn there, and the legend says so). Each kind is named once in the
+    legend.
+    """
+    prog = design.program
+    for i, lim in design.constrained_phases():
+        kind = prog.phases[i].kind
+        a = np.degrees(prog.starts[i])
+        style = (dict(color="#c53030", ls="--") if kind == "rise" else dict(color="#c05621", ls="-."))
+        ax.plot([a, a + np.degrees(prog.phases[i].angle)], [np.degrees(lim)] * 2, lw=1, **style,
+                label=f"limit, {kind}")
+    limited = {i for i, _ in design.constrained_phases()}
+    if any(p.kind == "return" and i not in limited for i, p in enumerate(prog.phases)):
+        ax.plot([], [], ls="none", label=f"return: no limit ({design.limits.closure} closure)")  # a note, no sample
 
 
 def plot_flat_pressure(solution, *, n: int = 721):
@@ -291,7 +360,7 @@ def plot_flat_pressure(solution, *, n: int = 721):
     ax.set_ylabel("pressure angle γ, deg")
     _title(ax, f"{d.name}: pressure angle, fixed by the geometry ({why})")
     ax.grid(True, lw=0.3)
-    _legend(ax, fontsize=8)
+    legend_once(ax, fontsize=8)
     return fig
 
 
@@ -327,7 +396,7 @@ def plot_curvature(solution, *, n: int = 721):
         for s in d.program.starts:
             ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
         ax.grid(True, lw=0.3)
-        _legend(ax, fontsize=7, loc="best")
+        legend_once(ax, fontsize=7, loc="best")
         ax.set_xlim(0, 360)
     return fig
 
@@ -404,7 +473,7 @@ def plot_forces(cam):
             ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
         ax.grid(True, lw=0.3)
         ax.set_xlim(0, 360)
-        _legend(ax, fontsize=7, loc="best")
+        legend_once(ax, fontsize=7, loc="best")
     _title(ax_n, f"{d.name}: forces at the cam at {cf.rpm:.4g} rpm")
     return fig
 
@@ -437,7 +506,7 @@ def plot_profile(cam, *, phi: float | None = None):
     _draw(ax, cam, profile, phi)
     _title(ax, f"{d.name}: cam at φ = {np.degrees(phi):.1f}°")
     _legend_below(fig, ax)
-    return fig
+    return _fit_height(fig, ax, max_h=8.5)
 
 
 def _animation_box(cam, profile) -> tuple[np.ndarray, np.ndarray]:
