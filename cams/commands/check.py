@@ -13,7 +13,7 @@ __all__ = ["register"]
 
 def run(args) -> int:
     from cams.io.designfile import load_design
-    from cams.present.text import print_assessment
+    from cams.present.text import print_assessment, verified_words
 
     design = load_design(args.file)
     cam = face_cam(design, args)
@@ -36,11 +36,29 @@ def run(args) -> int:
             print_checks(rep)
         else:
             print(f"{design.name}: no profile to check")
-        print(f"  verified: {'yes' if a.verified else 'NO'}")
+        _print_dynamics(cam)
+        print(f"  {verified_words(rep)}")
         print_assessment(rep)
         for n in notes:
             print(f"  note: {n}")
     return EXIT_OK if passed else EXIT_CHECK_FAILED
+
+
+def _print_dynamics(cam) -> None:
+    """The ``[dynamics]`` table's results, as ``cams solve`` prints them: spring, contact force, torque, jump speed
+    (nothing without the table; why not, when the table is given but no force is computed)."""
+    from cams.present.text import print_cam_forces
+
+    d = cam.design
+    if d.dynamics is None:
+        return
+    speed = "" if d.rpm is None else f" at {d.rpm:g} rpm"
+    df, note = cam.forces, cam.forces_note
+    if df is None:
+        print(f"  dynamics{speed}: {note or 'no forces computed'}")
+        return
+    print(f"  dynamics{speed}:")
+    print_cam_forces(df.to_dict(), indent="    ", follower=d.follower.kind)
 
 
 def register(sub) -> None:

@@ -120,9 +120,9 @@ def run(args) -> int:
     for p in written:
         print(p)
     if a is not None and not a.usable:
-        from cams.present.text import print_assessment
+        from cams.present.text import print_assessment, verified_words
 
-        print(f"verified: {'yes' if a.verified else 'NO'}")
+        print(verified_words(a.to_dict()))
         print_assessment(a.to_dict(), indent="")
         return EXIT_CHECK_FAILED
     return EXIT_OK

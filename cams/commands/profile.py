@@ -15,6 +15,9 @@ __all__ = ["register"]
 
 #: The outputs of ``cams profile``, by option name.
 OUTPUTS = ("csv", "dxf", "svg", "table")
+#: Said when no output option is given: what the command can write.
+NOTHING_ASKED = ("no file written: give --dxf OUT (a drawing), --svg OUT (a drawing to scale), --csv OUT (the "
+                 "profile's points) or --table OUT (the lift table, --step DEG) to write one")
 
 
 def _check_outputs(args) -> None:
@@ -83,7 +86,7 @@ def run(args) -> int:
     import sys
 
     from cams.io.designfile import load_design
-    from cams.present.text import print_assessment
+    from cams.present.text import print_assessment, verified_words
     from cams.profile.roller import default_bore_radius
 
     design = load_design(args.file)
@@ -119,10 +122,12 @@ def run(args) -> int:
             from cams.present.faces import presenter
 
             print(presenter(cam).profile_line(rep, bore, f), file=out)
-        print(f"  verified: {'yes' if a.verified else 'NO'}", file=out)
+        print(f"  {verified_words(rep)}", file=out)
         print_assessment(rep, file=out)
         for w in written:
             print(f"  wrote {w}{'' if a.usable else ' (marked as failing where the format allows)'}", file=out)
+        if not asked:
+            print(f"  {NOTHING_ASKED}", file=out)
     if refused:
         print(f"cams profile: no file written: {refused}", file=sys.stderr)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED

@@ -32,9 +32,9 @@ def run(args) -> int:
     for p in written:
         print(p)
     if not a.usable:
-        from cams.present.text import print_assessment
+        from cams.present.text import print_assessment, verified_words
 
-        print(f"verified: {'yes' if a.verified else 'NO'}")
+        print(verified_words(a.to_dict()))
         print_assessment(a.to_dict(), indent="")
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 

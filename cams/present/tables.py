@@ -26,7 +26,7 @@ def _cam_inputs(d) -> list[tuple[str, str]]:
         rows.append(("cam speed", f"{d.rpm:g} rpm"))
     for i, p in enumerate(d.program.phases):
         law = "" if p.law is None else f", {p.law.name}"
-        rows.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.6g} deg"))
+        rows.append((f"phase {i}", f"{p.kind}{law}, {np.degrees(p.angle):.6g} deg"))
     return rows
 
 
