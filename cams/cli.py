@@ -51,6 +51,9 @@ def build_parser() -> argparse.ArgumentParser:
         epilog="example: cams solve examples/rocker_force.toml",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    from cams import __version__
+
+    p.add_argument("--version", action="version", version=f"cams {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for name in COMMANDS:
         importlib.import_module(f"cams.commands.{name}").register(sub)
