@@ -301,3 +301,18 @@ def test_version_is_the_packages(capsys):
     out = capsys.readouterr().out
     version = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["version"]
     assert e.value.code == 0 and out == f"cams {version}\n"
+
+
+# -- the README: the user's guide first, the developer's material after -------------------------------------------
+
+
+def test_the_readme_separates_the_users_guide_from_the_developers_material():
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    parts = [ln for ln in text.splitlines() if ln.startswith("## ")]
+    assert parts == ["## User's guide", "## Developer's material"]
+    user, dev = text.split("## Developer's material")
+    for section in ("### Set-up and the main job", "### Using it", "### Motion design", "### Examples"):
+        assert section in user and section not in dev
+    for section in ("### Tests", "### For developers", "### Layout", "### Speed and accuracy"):
+        assert section in dev and section not in user
+    assert "pytest" not in user.split("### Using it")[0]  # installing for use asks for no test tools
