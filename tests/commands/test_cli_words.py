@@ -86,8 +86,11 @@ def test_not_verified_is_worded_as_the_limit_exceeded(tmp_path, capsys):
     f.write_text(text)
     rc, out, _ = _run(capsys, "solve", f)
     assert rc == 1 and "verified: NO;" not in out
-    m = re.search(r"verified: NO, the cam exceeds its limit: rise pressure angle ([\d.]+) deg exceeds the limit "
-                  r"([\d.]+) deg by ([\d.]+) deg", out)
+    m = re.search(
+        r"verified: NO, the cam exceeds its limit: rise pressure angle ([\d.]+) deg exceeds the limit "
+        r"([\d.]+) deg by ([\d.]+) deg",
+        out,
+    )
     assert m, out
     value, limit, by = map(float, m.groups())
     rc, js, _ = _run(capsys, "solve", f, "--json")
@@ -104,7 +107,9 @@ def test_not_verified_is_worded_as_the_limit_exceeded(tmp_path, capsys):
 
 
 def _roller_past_the_centre(tmp_path):
-    text = (EXAMPLES / "rocker_force.toml").read_text().replace("[solve]\n", '[solve]\nconstraints = "pressure_angle"\n')
+    text = (
+        (EXAMPLES / "rocker_force.toml").read_text().replace("[solve]\n", '[solve]\nconstraints = "pressure_angle"\n')
+    )
     f = tmp_path / "big_roller.toml"
     f.write_text(text.replace("roller_radius = 10.0", "roller_radius = 20.0"))
     return f
@@ -120,8 +125,11 @@ def test_a_cam_with_no_working_profile_is_said_so_and_gets_no_bore(tmp_path, cap
         rc, out, _ = _run(capsys, cmd, f)
         head = out.splitlines()[0]
         assert rc == 1 and "smallest radius -" not in out and "bore radius -" not in out, out
-        m = re.search(r"no working profile: the roller reaches past the cam centre \(smallest pitch radius - roller "
-                      r"radius = (-[\d.]+) mm\)", head)
+        m = re.search(
+            r"no working profile: the roller reaches past the cam centre \(smallest pitch radius - roller "
+            r"radius = (-[\d.]+) mm\)",
+            head,
+        )
         assert m, head
         assert float(m.group(1)) == pytest.approx(R0 - 20.0, abs=1e-6)
         assert "no bore suggested" in out
@@ -178,8 +186,11 @@ def test_a_ringing_jerk_is_noted_with_its_turns(capsys):
     from cams.cam import Cam
 
     rc, out, _ = _run(capsys, "solve", DESIGNED)
-    m = re.search(r"note: phase 0 \(rise\): the designed law's jerk rings: it turns (\d+) times where the original "
-                  r"poly4567's turns (\d+) times", out)
+    m = re.search(
+        r"note: phase 0 \(rise\): the designed law's jerk rings: it turns (\d+) times where the original "
+        r"poly4567's turns (\d+) times",
+        out,
+    )
     assert rc == 0 and m, out
     new, old = map(int, m.groups())
     roots = np.roots([-20, 30, -12, 1])
@@ -211,8 +222,9 @@ def test_check_prints_the_dynamics_as_solve_does(capsys):
     assert rc == 0 and "  dynamics at 60 rpm:" in out
     rc, js, _ = _run(capsys, "solve", f, "--json")
     fo = json.loads(js)["forces"]
-    m = re.search(r"contact force: max ([\d.]+) N at ([\d.]+) deg, min ([\d.]+) N; camshaft torque max ([\d.]+) N m",
-                  out)
+    m = re.search(
+        r"contact force: max ([\d.]+) N at ([\d.]+) deg, min ([\d.]+) N; camshaft torque max ([\d.]+) N m", out
+    )
     assert m, out
     got = list(map(float, m.groups()))
     want = [fo["max_contact_force"], fo["max_contact_at_deg"], fo["min_contact_force"], fo["max_torque"]]

@@ -21,8 +21,11 @@ from tests.conftest import EXAMPLES, ROOT
 
 DESIGNED = EXAMPLES / "translating_designed_rise.toml"  # its motion design runs 2 to 6 s, as the machine is loaded
 #: ``cams ARGS`` with the bar drawn at once (no two seconds' delay: the test does not hang on the machine's speed)
-_CAMS_AT_ONCE = ("-c", "import sys; import cams.commands.progress as p; p.DELAY_S = 0.0; from cams.cli import main; "
-                 "sys.exit(main(sys.argv[1:]))")
+_CAMS_AT_ONCE = (
+    "-c",
+    "import sys; import cams.commands.progress as p; p.DELAY_S = 0.0; from cams.cli import main; "
+    "sys.exit(main(sys.argv[1:]))",
+)
 
 
 def _env() -> dict[str, str]:
@@ -34,8 +37,9 @@ def _on_a_terminal(*argv: str, sized: bool = True) -> tuple[int, str]:
     master, slave = pty.openpty()
     if sized:
         fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 80, 0, 0))
-    p = subprocess.Popen([sys.executable, *argv], stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                         stderr=slave, cwd=ROOT, env=_env())
+    p = subprocess.Popen(
+        [sys.executable, *argv], stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=slave, cwd=ROOT, env=_env()
+    )
     os.close(slave)
     seen = b""
     while True:
@@ -124,8 +128,12 @@ def test_the_animation_counts_its_frames(tmp_path):
     from cams.present.plots import animate_profile
 
     calls: list[tuple[int, int]] = []
-    p = animate_profile(Cam.from_file(EXAMPLES / "translating_force.toml"), tmp_path / "a.gif", frames=5,
-                        progress=lambda k, n: calls.append((k, n)))
+    p = animate_profile(
+        Cam.from_file(EXAMPLES / "translating_force.toml"),
+        tmp_path / "a.gif",
+        frames=5,
+        progress=lambda k, n: calls.append((k, n)),
+    )
     with Image.open(p) as im:
         frames = im.n_frames
     assert frames == 5 and calls == [(k, frames) for k in range(1, frames + 1)]
