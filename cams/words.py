@@ -37,6 +37,8 @@ __all__ = [
     "check_value",
     "off_by",
     "duration",
+    "COUNT_UNITS",
+    "check_unit",
 ]
 
 #: Decimals of an angle in degrees, everywhere.
@@ -69,6 +71,21 @@ FAULT_WORDS = {
     "bore": "bore",
     "convexity": "profile not convex (radius of curvature below limits.min_radius)",
 }
+
+
+#: The checks whose values are counts (no unit in their record), and what they count.
+COUNT_UNITS = {"profile_polygon": "self-crossing(s)", "outer_polygon": "self-crossing(s)"}
+
+
+def check_unit(name: str, unit: str) -> str:
+    """The unit printed beside the check ``name``'s values: its own, or what its count counts.
+
+    >>> check_unit("profile_polygon", "")
+    'self-crossing(s)'
+    >>> check_unit("bore", "mm")
+    'mm'
+    """
+    return unit or COUNT_UNITS.get(name, "")
 
 
 def fault_words(name: str) -> str:

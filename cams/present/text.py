@@ -10,6 +10,7 @@ from __future__ import annotations
 from cams.words import (
     binding_text,
     bore_text,
+    check_unit,
     check_words,
     deg,
     duration,
@@ -312,8 +313,6 @@ def print_assessment(a: dict, indent: str = "  ", file=None) -> None:
             print(f"{indent}FAIL: {f}", file=file)
 
 
-#: The checks whose values are counts (no unit in the report), and what they count.
-_COUNTS = {"profile_polygon": "self-crossing(s)", "outer_polygon": "self-crossing(s)"}
 
 
 def no_working_profile(rep: dict) -> str | None:
@@ -352,7 +351,7 @@ def print_checks(rep: dict) -> None:
     print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, {head}")
     for c in rep["checks"]:
         at = "" if c["at_deg"] is None else f" at {deg(c['at_deg'])}"
-        c = {**c, "unit": c["unit"] or _COUNTS.get(c["name"], "")}  # a count with what it counts
+        c = {**c, "unit": check_unit(c["name"], c["unit"])}  # a count with what it counts
         lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'], f)})"
         worst = _fmt(c['worst'], c['unit'], f)
         print(f"  {'pass' if c['passed'] else 'FAIL'}  {check_words(c['name'])}: {worst}{at}{lim}{_by(c)}")

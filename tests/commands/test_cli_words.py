@@ -142,6 +142,10 @@ def test_an_undercut_cam_gets_no_bore_either(tmp_path, capsys):
     f.write_text(UNDERCUT)
     rc, out, _ = _run(capsys, "check", f)
     assert rc == 1 and "no working profile: the roller undercuts it" in out and "suggested bore" not in out
+    rc, js, _ = _run(capsys, "check", f, "--json")
+    crossings = next(c["worst"] for c in json.loads(js)["checks"] if c["name"] == "profile_polygon")
+    assert crossings >= 1 and f"FAIL: working profile crosses itself: {crossings:g} self-crossing(s), " in out
+    assert out.count(f"off by {crossings:g} self-crossing(s)") == 2  # its check's line and its FAIL line
     rc, out, _ = _run(capsys, "check", EXAMPLES / "rocker_force.toml")  # a working profile keeps its suggestion
     assert rc == 0 and "suggested bore radius" in out and "cam's smallest radius 3.240793 mm" in out
 
