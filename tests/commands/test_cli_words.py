@@ -315,8 +315,10 @@ def test_version_is_the_packages(capsys):
     with pytest.raises(SystemExit) as e:
         main(["--version"])
     out = capsys.readouterr().out
+    import cams
+
     version = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["version"]
-    assert e.value.code == 0 and out == f"cams {version}\n"
+    assert e.value.code == 0 and out == f"cams {version}\n" and cams.__version__ == version
 
 
 # -- the README: the user's guide first, the developer's material after -------------------------------------------
