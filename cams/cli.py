@@ -53,7 +53,8 @@ class _Version(argparse.Action):
     """``--version``: looked up only when asked (the distribution's metadata costs every other command nothing)."""
 
     def __call__(self, parser, namespace, values, option_string=None):
-        parser.exit(message=f"cams {_version()}\n")
+        print(f"cams {_version()}")  # on standard output, as argparse's own version action
+        parser.exit()
 
 
 def build_parser() -> argparse.ArgumentParser:
