@@ -18,8 +18,13 @@ def run(args) -> int:
     design = load_design(args.file)
     cam = face_cam(design, args)
     _ = cam.options  # bad options fail before solving
-    a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
-    report = cam.computed("checks")  # None: a knife edge in a groove, or no profile at the tolerance
+    from cams.commands.progress import progress, wanted
+
+    # the motion design of [optimize] runs for seconds: its progress on a terminal
+    with progress(wanted(args) and design.optimize is not None, "designing the motion"):
+        a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
+        report = cam.computed("checks")  # None: a knife edge in a groove, or no profile at the tolerance
+        _ = cam.forces  # the [dynamics] line's, computed before the bar is erased
     rep = {"name": design.name, "passed": False, "checks": []} if report is None else report.to_dict()
     rep.update(a.to_dict())
     passed = a.usable and report is not None and report.passed
@@ -79,4 +84,6 @@ def register(sub) -> None:
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
                    help="override [solve] method (roller followers)")
     q.add_argument("--json", action="store_true", help="print the checks as JSON")
+    q.add_argument("--quiet", action="store_true",
+                   help="no progress (drawn on a terminal's stderr while the motion design of [optimize] runs)")
     q.set_defaults(func=run)

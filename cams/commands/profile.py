@@ -94,8 +94,12 @@ def run(args) -> int:
     opts = cam.options  # bad options fail before solving
     _check_outputs(args)  # fail before solving, and before writing any file
     out = _summary_stream(args)
-    a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
-    prof = None if cam.face.no_profile(design) is not None else cam.profile
+    from cams.commands.progress import progress, wanted
+
+    # the motion design of [optimize] runs for seconds: its progress on a terminal
+    with progress(wanted(args) and design.optimize is not None, "designing the motion"):
+        a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
+        prof = None if cam.face.no_profile(design) is not None else cam.profile
     bore = None
     if prof is not None:
         bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
@@ -162,4 +166,6 @@ def register(sub) -> None:
     q.add_argument("--allow-failed", action="store_true", help="write the files even when the cam fails a check "
                    "(not verified or not buildable); the DXF and SVG are then marked as failing (exit code 1)")
     q.add_argument("--json", action="store_true", help="print the summary as JSON")
+    q.add_argument("--quiet", action="store_true",
+                   help="no progress (drawn on a terminal's stderr while the motion design of [optimize] runs)")
     q.set_defaults(func=run)

@@ -45,6 +45,7 @@ def verified_words(rep: dict) -> str:
     why = [f.removeprefix(NOT_VERIFIED) for f in rep.get("failures", ()) if f.startswith(NOT_VERIFIED)]
     return "verified: NO, the cam exceeds its limit: " + ("; ".join(why) or "the independent check finds it so")
 
+
 #: What ``governs`` names, in words.
 GOVERNS_WORDS = {"pressure_angle": "the pressure angle", "convexity": "convexity (limits.min_radius)",
                  "min_base_radius": "the floor limits.min_base_radius", "bore": "the bore and its hub wall",
@@ -311,8 +312,6 @@ def print_assessment(a: dict, indent: str = "  ", file=None) -> None:
     for f in a["failures"]:
         if not f.startswith(NOT_VERIFIED):  # said on the verified line (verified_words)
             print(f"{indent}FAIL: {f}", file=file)
-
-
 
 
 def no_working_profile(rep: dict) -> str | None:

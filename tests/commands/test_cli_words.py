@@ -241,6 +241,11 @@ def test_check_gives_a_count_what_it_counts(capsys):
     rc, out, _ = _run(capsys, "check", EXAMPLES / "rocker_form.toml")
     assert rc == 0 and "working profile is one closed curve: 0 self-crossing(s) (limit 0 self-crossing(s))" in out
     assert "self-crossings: 0 at" not in out
+    from cams.cam import Cam
+    from cams.present.tables import _check_rows
+
+    rows = dict(_check_rows(Cam.from_file(EXAMPLES / "rocker_form.toml")))  # the report's table says the same
+    assert rows["working profile is one closed curve"] == "pass: 0 self-crossing(s) (limit 0 self-crossing(s))"
 
 
 # -- cams profile without an output option --------------------------------------------------------------------

@@ -120,6 +120,14 @@ def test_the_motion_design_shows_its_progress_on_a_terminal_only():
     assert rc == 0 and seen == ""
 
 
+@pytest.mark.parametrize("command", ["check", "profile"])
+def test_check_and_profile_show_the_motion_designs_progress_too(command):
+    rc, seen = _on_a_terminal(*_CAMS_AT_ONCE, command, str(DESIGNED))
+    assert rc == 0 and "designing the motion: 00:0" in seen
+    rc, seen = _on_a_terminal(*_CAMS_AT_ONCE, command, str(DESIGNED), "--quiet")
+    assert rc == 0 and seen == ""
+
+
 def test_the_animation_counts_its_frames(tmp_path):
     """animate_profile calls its progress once a frame written, up to the GIF's own frame count (read by Pillow)."""
     from PIL import Image
