@@ -166,7 +166,10 @@ def sweep_designs(size: int) -> dict:
     else:
         vary = [("limits.pressure_angle", np.linspace(30.0, 60.0, size))]
     workers = os.cpu_count() or 1
-    res = sweep(base, vary, workers=workers, progress=sys.stderr.isatty())
+    from cams.commands.progress import progress
+
+    with progress(sys.stderr.isatty(), "solving the designs", unit="design") as bar:
+        res = sweep(base, vary, workers=workers, progress=bar.to)
     errors = sum(1 for r in res.rows if r["error"])
     verified = sum(1 for r in res.rows if r["verified"])
     out = {"base": "examples/rocker_force.toml", "vary": {k: [float(v[0]), float(v[-1]), len(v)] for k, v in vary},

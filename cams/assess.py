@@ -149,7 +149,7 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     for short, line in face.unbuildable(design, solution):
         fail(short, line)
     if checks is not None:
-        from cams.words import fault_words, off_by
+        from cams.words import check_unit, fault_words, off_by
 
         for c in checks.checks:
             if c.passed:
@@ -161,7 +161,8 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
                     failures.insert(0, ("not verified", f"not verified: {words}: {c.message}"))
             else:
                 line = f"{words}: {c.message}" if c.message else words
-                fail(words, line + off_by(c.worst, c.limit, c.unit))  # by how much, as cams check says it
+                # by how much, as cams check says it (a count with what it counts)
+                fail(words, line + off_by(c.worst, c.limit, check_unit(c.name, c.unit)))
     elif no_profile is not None:
         fail("no profile", f"no profile: {no_profile}")
     elif face.no_profile(design) is None:

@@ -39,6 +39,24 @@ class _Parser(argparse.ArgumentParser):
         self.exit(EXIT_BAD_INPUT, f"{self.prog}: error: {message}\n")
 
 
+def _version() -> str:
+    """The installed distribution's version (the package's own ``cams.__version__`` is above this layer)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("cams")
+    except PackageNotFoundError:  # run from a checkout that was never installed
+        return "(not installed: see pyproject.toml)"
+
+
+class _Version(argparse.Action):
+    """``--version``: looked up only when asked (the distribution's metadata costs every other command nothing)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        print(f"cams {_version()}")  # on standard output, as argparse's own version action
+        parser.exit()
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The full parser with every subcommand registered."""
     import importlib
@@ -51,6 +69,7 @@ def build_parser() -> argparse.ArgumentParser:
         epilog="example: cams solve examples/rocker_force.toml",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    p.add_argument("--version", action=_Version, nargs=0, help="print the version of cams and exit")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for name in COMMANDS:
         importlib.import_module(f"cams.commands.{name}").register(sub)

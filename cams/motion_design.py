@@ -30,6 +30,7 @@ the cam can be built and used (profile, bore, ``[dynamics]``) is the commands' o
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable
 from dataclasses import replace
 from itertools import pairwise
@@ -41,6 +42,7 @@ from cams.faces import face_of
 from cams.faces.result import SolveResult
 from cams.model.follower import Rocker, Translating
 from cams.model.motiondesign import MotionCertificate
+from cams.words import phase_words
 from laws.base import Law
 from laws.errors import CamsError, InfeasibleError
 from laws.program import Program
@@ -115,6 +117,55 @@ def jerk_variation(law: Law, breaks: np.ndarray | None = None) -> float | None:
     if breaks is not None:
         u = np.unique(np.concatenate([u, np.asarray(breaks, float)]))
     return float(np.sum(np.abs(np.diff(law.evaluate(u)[3]))))
+
+#: A turn of the jerk counts when the jerk swings back by at least this share of its range (max - min) in the phase.
+TURN_PROMINENCE = 0.1
+#: Points at which :func:`jerk_turns` samples the jerk (the knots added).
+TURN_SAMPLES = 20_001
+
+
+def jerk_turns(law: Law, breaks: np.ndarray | None = None) -> int | None:
+    """How many times the jerk ``S'''`` turns (from rising to falling or back) inside the phase, counting only
+    swings of at least :data:`TURN_PROMINENCE` of its range; None where the jerk is infinite.
+
+    The 3-4-5 law's jerk turns once, the 4-5-6-7 law's 3 times (up, down, up); a designed law whose jerk turns more
+    often than the law it replaces rings. Sampled at :data:`TURN_SAMPLES` points and ``breaks`` (a zigzag: a
+    turning point is confirmed once the jerk has moved back from it by the prominence).
+    """
+    if law_peaks(law)["Cj"] is None:
+        return None
+    u = np.linspace(0.0, 1.0, TURN_SAMPLES)
+    if breaks is not None:
+        u = np.unique(np.concatenate([u, np.asarray(breaks, float)]))
+    j = law.evaluate(u)[3]
+    tol = TURN_PROMINENCE * float(np.ptp(j))
+    if not tol > 0:
+        return 0
+    pivot, direction, turns = float(j[0]), 0, 0
+    for v in map(float, j[1:]):
+        if direction == 0:
+            if abs(v - pivot) > tol:  # the first swing sets the direction; the start is no turn
+                direction, pivot = (1 if v > pivot else -1), v
+        elif (v - pivot) * direction > 0:
+            pivot = v  # still going the same way
+        elif abs(v - pivot) > tol:  # moved back by the prominence: the pivot was a turn
+            turns += 1
+            direction, pivot = -direction, v
+    return turns
+
+
+def ringing_note(designed: Law, original: Law, phase: int, kind: str, breaks: np.ndarray | None) -> str | None:
+    """A note when the designed law's jerk turns more often than the original law's (:func:`jerk_turns`), else None."""
+    new, old = jerk_turns(designed, breaks), jerk_turns(original)
+    if new is None or old is None or new <= old:
+        return None
+    def times(n: int) -> str:
+        return {1: "once", 2: "twice"}.get(n, f"{n} times")
+
+    return (f"{phase_words(kind, phase)}: the designed law's jerk rings: it turns {times(new)} where the original "
+            f"{original.name}'s turns {times(old)} (swings over {TURN_PROMINENCE:.0%} of its range); a larger "
+            "optimize.smoothing_slack, or fewer spans, smooths it at some cost in the objective")
+
 
 def _objective_value(obj: str, sol, laws: dict[int, Law], peaks: dict[int, dict], breaks: np.ndarray,
                      degree: int) -> float:
@@ -298,6 +349,7 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
 
     spec = design.optimize
     assert spec is not None
+    t0 = time.perf_counter()  # the result's seconds: the whole motion design, its cams' sizings included
     face = face_of(design)
 
     def size_fixed(d):     # by the face's own limit: the part's constraints are the fallback's below
@@ -413,6 +465,9 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
             "original": {"law": original[i].name, **law_peaks(original[i]),
                          "jerk_variation": jerk_variation(original[i])},
         })
+        ringing = ringing_note(laws_new[i], original[i], i, base.program.phases[i].kind, breaks)
+        if ringing:
+            notes.append(ringing)
     info = MotionCertificate(
         objective=obj,
         value=value,
@@ -441,4 +496,4 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
         seconds=float(ld.seconds),
         notes=tuple(notes),
     )
-    return replace(sol, optimization=info, notes=(*sol.notes, *notes))
+    return replace(sol, optimization=info, notes=(*sol.notes, *notes), seconds=time.perf_counter() - t0)

@@ -20,8 +20,8 @@ import math
 import os
 import re
 import signal
-import sys
 import time
+from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 
@@ -302,7 +302,8 @@ def _check_base(base: dict, keys: tuple[str, ...], combos: list) -> None:
 
 
 def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None = None,
-          workers: int | None = None, progress: bool = False) -> SweepResult:
+          workers: int | None = None,
+          progress: Callable[[int, int], None] | None = None) -> SweepResult:
     """Solve every combination of the varied keys over a base design (a design-file dict).
 
     Parameters
@@ -317,8 +318,9 @@ def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None 
         Processes (default: the machine's cores), an integer >= 1; never more
         than the designs nor :data:`MAX_WORKERS_PER_CPU` per core. 1 runs in
         this process.
-    progress : bool
-        Draw a progress bar on stderr.
+    progress : callable, optional
+        Called as ``progress(done, total)`` as designs are solved (the command's bar,
+        :mod:`cams.commands.progress`); None: nothing is said.
 
     Raises
     ------
@@ -357,38 +359,27 @@ def sweep(base: dict, vary: list[tuple[str, np.ndarray]], *, method: str | None 
     jobs = [(base, keys, c, method) for c in combos]
     t0 = time.perf_counter()
     rows = []
-    drawn = False
 
     def tick(k):
-        nonlocal drawn
         if progress:
-            w = 40
-            done = int(w * k / n)
-            sys.stderr.write(f"\r[{'#' * done}{'.' * (w - done)}] {k}/{n}")
-            sys.stderr.flush()
-            drawn = True
+            progress(k, n)
 
-    try:
-        if workers == 1:
-            for k, j in enumerate(jobs, 1):
-                rows.append(_solve_one(j))
-                tick(k)
-        else:
-            chunk = max(1, min(64, n // (workers * 8) or 1))
-            ex = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
-            try:
-                with _sigint_held():  # a Ctrl-C while the workers start reaches this process only, just after
-                    results = ex.map(_solve_one, jobs, chunksize=chunk)
-                for k, r in enumerate(results, 1):
-                    rows.append(r)
-                    if k % chunk == 0 or k == n:
-                        tick(k)
-            except BaseException:  # Ctrl-C included: no process, no pending design is left
-                _stop(ex)
-                raise
-            ex.shutdown(wait=True)
-    finally:
-        if drawn:
-            sys.stderr.write("\n")
-            sys.stderr.flush()
+    if workers == 1:
+        for k, j in enumerate(jobs, 1):
+            rows.append(_solve_one(j))
+            tick(k)
+    else:
+        chunk = max(1, min(64, n // (workers * 8) or 1))
+        ex = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
+        try:
+            with _sigint_held():  # a Ctrl-C while the workers start reaches this process only, just after
+                results = ex.map(_solve_one, jobs, chunksize=chunk)
+            for k, r in enumerate(results, 1):
+                rows.append(r)
+                if k % chunk == 0 or k == n:
+                    tick(k)
+        except BaseException:  # Ctrl-C included: no process, no pending design is left
+            _stop(ex)
+            raise
+        ex.shutdown(wait=True)
     return SweepResult(keys=keys, rows=rows, seconds=time.perf_counter() - t0, workers=workers)

@@ -38,6 +38,9 @@ __all__ = [
     "bore_text",
     "check_value",
     "off_by",
+    "duration",
+    "COUNT_UNITS",
+    "check_unit",
 ]
 
 #: Decimals of an angle in degrees, everywhere.
@@ -51,8 +54,8 @@ CHECK_WORDS = {
     "undercut_outer": "no undercut of the groove's outer wall: smallest concave radius of curvature, limit the "
                       "roller radius",
     "min_curvature_radius": "working profile's smallest radius of curvature",
-    "profile_polygon": "working profile is one closed curve: self-crossings",
-    "outer_polygon": "groove's outer wall is one closed curve: self-crossings",
+    "profile_polygon": "working profile is one closed curve",
+    "outer_polygon": "groove's outer wall is one closed curve",
     "bore": "bore inside the cam: working profile's smallest radius, limit the bore radius plus the hub wall",
     "convexity": "convex profile: smallest radius of curvature, limit limits.min_radius",
 }
@@ -72,6 +75,21 @@ FAULT_WORDS = {
 }
 
 
+#: The checks whose values are counts (no unit in their record), and what they count.
+COUNT_UNITS = {"profile_polygon": "self-crossing(s)", "outer_polygon": "self-crossing(s)"}
+
+
+def check_unit(name: str, unit: str) -> str:
+    """The unit printed beside the check ``name``'s values: its own, or what its count counts.
+
+    >>> check_unit("profile_polygon", "")
+    'self-crossing(s)'
+    >>> check_unit("bore", "mm")
+    'mm'
+    """
+    return unit or COUNT_UNITS.get(name, "")
+
+
 def fault_words(name: str) -> str:
     """What is wrong when the check ``name`` fails, in a few words (the name itself when it has none).
 
@@ -85,7 +103,7 @@ def check_words(name: str) -> str:
     """The words of a check's internal ``name`` (the name itself when it has none).
 
     >>> check_words("profile_polygon")
-    'working profile is one closed curve: self-crossings'
+    'working profile is one closed curve'
     """
     return CHECK_WORDS.get(name, name.replace("_", " "))
 
@@ -230,24 +248,24 @@ def torque_words(value: float | None, at_deg: float | None, kind: str, digits: i
     return f"largest {kind} torque {abs(value):.{digits}g} N·m at {at}"
 
 
-def phase_words(kind: str, index: int) -> str:
-    """A phase for print: its kind and its place in the file's ``[[motion]]`` list (1-based).
+def phase_words(kind: str | None, index: int) -> str:
+    """A phase for print: its number, the index of its ``[[motion]]`` table from 0 (as JSON's ``phase``), and kind.
+
+    One numbering everywhere: the text, the pictures' legends, the messages and JSON's ``binding[].phase``.
 
     >>> phase_words("rise", 0)
-    'rise, [[motion]] 1'
+    'phase 0 (rise)'
     """
-    return f"{kind}, [[motion]] {index + 1}"
+    return f"phase {index}" + (f" ({kind})" if kind else "")
 
 
 def binding_text(b: dict) -> str:
     """A binding line (as in ``SolveResult.to_dict()["binding"]``): name, cam angle and phase.
 
     >>> binding_text({"line": "t-t", "phi": 48.86221, "phase": 0, "phase_kind": "rise"})
-    't-t at 48.8622 deg (rise, [[motion]] 1)'
+    't-t at 48.8622 deg in phase 0 (rise)'
     """
-    kind = b.get("phase_kind")
-    where = f" ({phase_words(kind, b['phase'])})" if kind else f" ([[motion]] {b['phase'] + 1})"
-    return f"{b['line']} at {deg(b['phi'])}{where}"
+    return f"{b['line']} at {deg(b['phi'])} in {phase_words(b.get('phase_kind'), b['phase'])}"
 
 
 def bore_text(radius: float, suggested: bool) -> str:
@@ -295,3 +313,14 @@ def off_by(worst: float | None, limit: float | None, unit: str) -> str:
     if worst is None or limit is None:
         return ""
     return f": off by {check_value(abs(worst - limit), unit)}"
+
+
+def duration(seconds: float) -> str:
+    """A run time for print: milliseconds under a second, seconds from there.
+
+    >>> duration(0.0152)
+    '15.2 ms'
+    >>> duration(5.4123)
+    '5.41 s'
+    """
+    return f"{seconds * 1e3:.1f} ms" if seconds < 1.0 else f"{seconds:.3g} s"

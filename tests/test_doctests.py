@@ -65,6 +65,7 @@ DOCTEST_MODULES = [
     "optimize.flat",
     "cams.checks.flat",
     "cams.words",
+    "cams.present.text",
     "cams.sweep",
     "cams.profile.roller",
     # exports for manufacture

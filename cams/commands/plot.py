@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+from cams.commands.progress import Progress, progress, wanted
 from cams.present.faces import FlatPresenter, RollerPresenter
 from laws.errors import InputError
 
@@ -20,19 +21,23 @@ FLAT_PICTURES = tuple(FlatPresenter.pictures)
 #: Every picture name ``--only`` takes ("optimized": a design with an [optimize] table, drawn for it by default).
 NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "optimized")
 
-def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Path]:
+def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progress | None = None) -> list[Path]:
     """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.
 
-    ``title`` (:meth:`cams.assess.Assessment.title`) marks every picture of a failing cam.
+    ``title`` (:meth:`cams.assess.Assessment.title`) marks every picture of a failing cam; ``bar`` counts one
+    step a picture.
     """
     from cams.present import plots
     from cams.present.faces import presenter
+
+    bar = bar or Progress()
 
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
     for name in (*presenter(cam).pictures, "optimized"):
         if name not in which:
             continue
+        bar.stage(f"drawing the {name} picture")
         if name == "optimized":
             from cams.present.motion_plots import plot_motion_design
 
@@ -40,6 +45,7 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "") -> list[Pat
         else:
             fig = plots.picture(presenter(cam).pictures[name], cam)
         written += plots.save(plots.mark_failing(fig, title), f"{stem}_{name}")
+        bar.advance()
     return written
 
 
@@ -91,28 +97,37 @@ def run(args) -> int:
     for w in which:
         if w in skipped:
             print(f"cams plot: note: {w}: {skipped[w]}", file=sys.stderr)
-    # one rule for every command (cams.assess): a failing cam's pictures are drawn, titled as failing, exit 1;
-    # the motion diagrams alone need no solution, so they alone assess nothing
-    a = None if set(which) <= {"motion"} and not args.animate else cam.assessment
-    # every picture is drawn to a temporary file; they are moved into place together only when all succeeded,
-    # so a failure (a design that cannot be solved for the zone ...) leaves none of them behind
-    with all_or_nothing():
-        out = ensure_folder(args.out, "--out")
-        written = draw(cam, which, out, title="" if a is None else a.title())
-        if args.animate and no_profile is not None:
-            print(f"cams plot: note: --animate: {no_profile} to turn; skipped", file=sys.stderr)
-        elif args.animate:
-            from cams.present.plots import animate_profile
+    if args.animate and no_profile is not None:
+        print(f"cams plot: note: --animate: {no_profile} to turn; skipped", file=sys.stderr)
+    turn = args.animate and no_profile is None
+    # the pictures (and a turn's frames) counted on a terminal's stderr: the designed law's take seconds each
+    with progress(wanted(args), "solving the cam", total=len(which) + turn, unit="step") as bar:
+        # one rule for every command (cams.assess): a failing cam's pictures are drawn, titled as failing, exit 1;
+        # the motion diagrams alone need no solution, so they alone assess nothing
+        a = None if set(which) <= {"motion"} and not args.animate else cam.assessment
+        # every picture is drawn to a temporary file; they are moved into place together only when all succeeded,
+        # so a failure (a design that cannot be solved for the zone ...) leaves none of them behind
+        with all_or_nothing():
+            out = ensure_folder(args.out, "--out")
+            written = draw(cam, which, out, title="" if a is None else a.title(), bar=bar)
+            if turn:
+                from cams.present.plots import animate_profile
 
-            title = "" if a is None else a.title()  # --animate always assesses
-            written.append(atomic_write(out / f"{_slug(cam.design.name)}_turn.gif", "--out",
-                                        lambda tmp: animate_profile(cam, tmp, title=title), suffix=".gif"))
+                title = "" if a is None else a.title()  # --animate always assesses
+                bar.stage("animating one turn")
+                done = len(which)
+
+                def turn_into(tmp):
+                    return animate_profile(cam, tmp, title=title, progress=lambda k, n: bar.to(done + k, done + n))
+
+                written.append(atomic_write(out / f"{_slug(cam.design.name)}_turn.gif", "--out", turn_into,
+                                            suffix=".gif"))
     for p in written:
         print(p)
     if a is not None and not a.usable:
-        from cams.present.text import print_assessment
+        from cams.present.text import print_assessment, verified_words
 
-        print(f"verified: {'yes' if a.verified else 'NO'}")
+        print(verified_words(a.to_dict()))
         print_assessment(a.to_dict(), indent="")
         return EXIT_CHECK_FAILED
     return EXIT_OK
@@ -137,4 +152,6 @@ def register(sub) -> None:
                    "camshaft torque); a design with [optimize] adds optimized (the designed laws, pressure "
                    "angles and cam beside the original ones)")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
+    q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "
+                   "runs past about two seconds)")
     q.set_defaults(func=run)

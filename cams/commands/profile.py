@@ -15,6 +15,9 @@ __all__ = ["register"]
 
 #: The outputs of ``cams profile``, by option name.
 OUTPUTS = ("csv", "dxf", "svg", "table")
+#: Said when no output option is given: what the command can write.
+NOTHING_ASKED = ("no file written: give --dxf OUT (a drawing), --svg OUT (a drawing to scale), --csv OUT (the "
+                 "profile's points) or --table OUT (the lift table, --step DEG) to write one")
 
 
 def _check_outputs(args) -> None:
@@ -83,7 +86,7 @@ def run(args) -> int:
     import sys
 
     from cams.io.designfile import load_design
-    from cams.present.text import print_assessment
+    from cams.present.text import print_assessment, verified_words
     from cams.profile.roller import default_bore_radius
 
     design = load_design(args.file)
@@ -91,8 +94,12 @@ def run(args) -> int:
     opts = cam.options  # bad options fail before solving
     _check_outputs(args)  # fail before solving, and before writing any file
     out = _summary_stream(args)
-    a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
-    prof = None if cam.face.no_profile(design) is not None else cam.profile
+    from cams.commands.progress import progress, wanted
+
+    # the motion design of [optimize] runs for seconds: its progress on a terminal
+    with progress(wanted(args) and design.optimize is not None, "designing the motion"):
+        a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
+        prof = None if cam.face.no_profile(design) is not None else cam.profile
     bore = None
     if prof is not None:
         bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)
@@ -119,10 +126,12 @@ def run(args) -> int:
             from cams.present.faces import presenter
 
             print(presenter(cam).profile_line(rep, bore, f), file=out)
-        print(f"  verified: {'yes' if a.verified else 'NO'}", file=out)
+        print(f"  {verified_words(rep)}", file=out)
         print_assessment(rep, file=out)
         for w in written:
             print(f"  wrote {w}{'' if a.usable else ' (marked as failing where the format allows)'}", file=out)
+        if not asked:
+            print(f"  {NOTHING_ASKED}", file=out)
     if refused:
         print(f"cams profile: no file written: {refused}", file=sys.stderr)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
@@ -157,4 +166,6 @@ def register(sub) -> None:
     q.add_argument("--allow-failed", action="store_true", help="write the files even when the cam fails a check "
                    "(not verified or not buildable); the DXF and SVG are then marked as failing (exit code 1)")
     q.add_argument("--json", action="store_true", help="print the summary as JSON")
+    q.add_argument("--quiet", action="store_true",
+                   help="no progress (drawn on a terminal's stderr while the motion design of [optimize] runs)")
     q.set_defaults(func=run)

@@ -22,15 +22,19 @@ def run(args) -> int:
     if Path(args.out).is_dir():  # a folder to be made is checked when made
         check_output_paths([("--out", Path(args.out) / name) for name in ("report.html", "report.pdf")],
                            inputs=[("FILE", args.file)])
-    with all_or_nothing():  # report.html and report.pdf appear together or not at all
-        written = write_report(cam, args.out, source=args.file)
+    from cams.commands.progress import progress, wanted
+
+    with progress(wanted(args), "solving the cam") as bar:  # seconds of work: its progress on a terminal
         a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
+        bar.stage("drawing and writing the report")
+        with all_or_nothing():  # report.html and report.pdf appear together or not at all
+            written = write_report(cam, args.out, source=args.file)
     for p in written:
         print(p)
     if not a.usable:
-        from cams.present.text import print_assessment
+        from cams.present.text import print_assessment, verified_words
 
-        print(f"verified: {'yes' if a.verified else 'NO'}")
+        print(verified_words(a.to_dict()))
         print_assessment(a.to_dict(), indent="")
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
@@ -46,4 +50,6 @@ def register(sub) -> None:
     )
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--out", default="report", help="output folder (default: report)")
+    q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "
+                   "runs past about two seconds)")
     q.set_defaults(func=run)

@@ -52,19 +52,12 @@ def _said_saved(rep: dict) -> None:
         print(f"wrote {rep['saved_design']}")
 
 
-def run(args) -> int:
-    from cams.commands.common import face_cam
-    from cams.io.designfile import load_design
-    from cams.present.faces import presenter
-
-    design = load_design(args.file)
-    if args.save_design is not None:
-        _check_save(args, design)
-    cam = face_cam(design, args)
-    result = cam.solution
-    rep = result.to_dict()
+def _work(cam, design, bar):
+    """The report's dict, the forces' dict and the assessment (None: an exact answer not certified)."""
+    rep = cam.solution.to_dict()
     if rep.get("certified") is False:
-        return _not_certified(args, rep)
+        return rep, None, None
+    bar.stage("checking the cam")
     forces = None
     if design.dynamics is not None:
         from cams.dynamics.forces import impact_note
@@ -82,6 +75,25 @@ def run(args) -> int:
     # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
     a = cam.assessment
     rep.update(a.to_dict())
+    return rep, forces, a
+
+
+def run(args) -> int:
+    from cams.commands.common import face_cam
+    from cams.io.designfile import load_design
+    from cams.present.faces import presenter
+
+    design = load_design(args.file)
+    if args.save_design is not None:
+        _check_save(args, design)
+    cam = face_cam(design, args)
+    from cams.commands.progress import progress, wanted
+
+    # the motion design runs for seconds: its progress on a terminal (none for a design of fixed laws)
+    with progress(wanted(args) and design.optimize is not None, "designing the motion") as bar:
+        rep, forces, a = _work(cam, design, bar)
+    if a is None:
+        return _not_certified(args, rep)
     _save(args, cam, rep, a.usable)
     if args.json:
         if forces is not None:
@@ -129,4 +141,6 @@ def register(sub) -> None:
     q.add_argument("--save-design", metavar="FILE",
                    help="with [optimize]: write the design with the designed laws as spline law tables (no "
                         "[optimize]; it solves to the same cam); only for a cam that passes every check")
+    q.add_argument("--quiet", action="store_true",
+                   help="no progress (drawn on a terminal's stderr while the motion design of [optimize] runs)")
     q.set_defaults(func=run)

@@ -32,8 +32,10 @@ def _run(args) -> int:
     (out,) = check_output_paths([("--out", args.out)], inputs=[("FILE", args.file)])
     base = read_toml(args.file)
     vary = [parse_vary(v) for v in args.vary]
-    progress = not args.quiet and sys.stderr.isatty()  # no bar in a log file or a pipe
-    res = sweep(base, vary, method=args.method, workers=args.jobs, progress=progress)
+    from cams.commands.progress import progress, wanted
+
+    with progress(wanted(args), "solving the designs", unit="design") as bar:  # none in a log file or a pipe
+        res = sweep(base, vary, method=args.method, workers=args.jobs, progress=bar.to)
 
     def write(tmp):
         with open(tmp, "w", newline="", encoding="utf-8") as fh:

@@ -58,7 +58,7 @@ class SolveResult:
     detail : SizingDetail
         What only the face's sizing has (see the module).
     seconds : float
-        Time of the sizing (s).
+        Time of the sizing (s); with ``[optimize]``, of the whole motion design (its laws and their cam).
     notes : tuple of str
     certified : bool or None
         The size's certificate: False when the exact method's proven lower bound and its feasible upper bound

@@ -16,7 +16,11 @@ rise_direction = "cw"        # the rocker's sense of rotation during the rise
 
 [cam]
 rotation = "ccw"             # the cam's sense of rotation ("cw" | "ccw")
-rpm = 60                     # optional: time derivatives in the motion diagrams
+rpm = 60                     # optional: time derivatives in the motion diagrams; needed by [dynamics]
+# The shaft's bore (optional): the cam is sized to clear it by the hub wall, cams check checks it and the
+# drawings show it; without it the commands suggest one.
+# bore_radius = 6.0           # mm
+# hub_wall = 3.0             # mm of material at least between the bore and the working profile
 # To check a cam you chose instead of sizing the smallest (no min_base_radius then):
 # base_radius = 18.0         # R0, with limits.centre_distance (L) below; or
 # centre = [133.0, 13.0]     # the cam centre in the rocker's frame (pivot at the origin, X along the arm)
@@ -52,6 +56,24 @@ samples = 360                # convex/exhaustive: steps per phase
 
 [profile]
 tolerance = 0.001            # chord tolerance of the exported profile, mm
+
+# Forces at the cam (optional; force closure, needs [cam] rpm): the spring chosen, the contact force, the
+# camshaft torque and the speed at which the follower jumps; cams check fails a cam that loses contact.
+# [dynamics]
+# mass = 0.003               # kg m^2: the rocker's moment of inertia about its pivot
+# load = 0.5                 # N m opposing the rise
+# friction = 0.1             # in the pivot's journal
+# journal_radius = 8.0       # mm
+# margin = 1.2               # the spring's force >= margin x the force pulling the follower off the cam
+
+# Design a law together with the cam (optional; cams solve then takes seconds, a rocker's about a
+# minute): the rise's law becomes a spline, the smallest cam under caps on its normalized peaks, with a
+# proven lower bound.
+# [optimize]
+# free = ["rise"]            # "rise", "return" or phase numbers (the [[motion]] tables' order from 0)
+# objective = "R0"           # "R0" | "pressure_angle" | "Ca" | "Cj" | "jerk_squared" | "snap_squared"
+# max_Ca = "cycloidal"       # caps on the normalized peaks: a law's name (its peak) or a number
+# max_Cj = "cycloidal"
 '''
 
 _TRANSLATING = '''# A translating roller follower disk cam. Lengths in mm, angles in degrees.
@@ -65,6 +87,11 @@ roller_radius = 8.0          # 0 = knife edge
 
 [cam]
 rotation = "ccw"
+# rpm = 120                  # optional: time derivatives in the motion diagrams; needed by [dynamics]
+# The shaft's bore (optional): the cam is sized to clear it by the hub wall, cams check checks it and the
+# drawings show it; without it the commands suggest one.
+# bore_radius = 5.0           # mm
+# hub_wall = 3.0             # mm of material at least between the bore and the working profile
 # To check a cam you chose instead of sizing the smallest (no min_base_radius then):
 # base_radius = 26.0         # R0, with follower.offset above; or
 # centre = [-8.0, -16.0]     # the cam centre (origin at the roller centre at the bottom, Y along the rise)
@@ -92,6 +119,22 @@ method = "exact"
 
 [profile]
 tolerance = 0.001
+
+# Forces at the cam (optional; force closure, needs [cam] rpm): the spring chosen, the contact force, the
+# camshaft torque and the speed at which the follower jumps; cams check fails a cam that loses contact.
+# [dynamics]
+# mass = 0.5                 # kg: the follower's mass (add a third of the spring's)
+# load = 5.0                 # N opposing the rise
+# friction = 0.1             # in the follower's guide
+# margin = 1.2               # the spring's force >= margin x the force pulling the follower off the cam
+
+# Design a law together with the cam (optional; cams solve then takes seconds): the rise's law becomes a
+# spline, the smallest cam under caps on its normalized peaks, with a proven lower bound.
+# [optimize]
+# free = ["rise"]            # "rise", "return" or phase numbers (the [[motion]] tables' order from 0)
+# objective = "R0"           # "R0" | "pressure_angle" | "Ca" | "Cj" | "jerk_squared" | "snap_squared"
+# max_Ca = "poly345"         # caps on the normalized peaks: a law's name (its peak) or a number
+# max_Cj = "poly345"
 '''
 
 _TRANSLATING_FLAT = '''# A translating flat-faced (mushroom) follower disk cam. Lengths in mm, angles in degrees.
@@ -110,6 +153,10 @@ offset = 0.0                 # axis offset; it only moves the contact along the 
 rotation = "ccw"             # "cw" | "ccw"
 # rpm = 120                  # optional: time derivatives in the motion diagrams
 # base_radius = 30.0         # optional: check this R0 instead of sizing the smallest
+# The shaft's bore (optional): the cam is sized to clear it by the hub wall, cams check checks it and the
+# drawings show it; without it the commands suggest one.
+# bore_radius = 8.0           # mm
+# hub_wall = 3.0             # mm of material at least between the bore and the working profile
 
 # Laws without velocity jumps (a drop of the follower's velocity gives the cam a cusp).
 [[motion]]
@@ -132,6 +179,23 @@ min_radius = 5.0             # smallest radius of curvature of the profile (defa
 
 [profile]
 tolerance = 0.001            # chord tolerance of the exported profile, mm
+
+# Forces at the cam (optional; force closure, needs [cam] rpm): the spring chosen, the contact force, the
+# camshaft torque and the speed at which the follower jumps; cams check fails a cam that loses contact.
+# [dynamics]
+# mass = 0.5                 # kg: the follower's mass (add a third of the spring's)
+# load = 5.0                 # N opposing the rise
+# friction = 0.1             # in the follower's guide
+# face_friction = 0.05        # sliding at the flat face (dimensionless)
+# margin = 1.2               # the spring's force >= margin x the force pulling the follower off the cam
+
+# Design a law together with the cam (optional; cams solve then takes seconds): the rise's law becomes a
+# spline, the smallest cam under caps on its normalized peaks, with a proven lower bound.
+# [optimize]
+# free = ["rise"]            # "rise", "return" or phase numbers (the [[motion]] tables' order from 0)
+# objective = "R0"           # "R0" | "pressure_angle" | "Ca" | "Cj" | "jerk_squared" | "snap_squared"
+# max_Ca = "cycloidal"       # caps on the normalized peaks: a law's name (its peak) or a number
+# max_Cj = "cycloidal"
 '''
 
 _ROCKER_FLAT = '''# A rocker (oscillating) flat-faced follower disk cam. Lengths in mm, angles in degrees.
@@ -152,6 +216,10 @@ rise_direction = "cw"        # the rocker's sense of rotation during the rise
 rotation = "ccw"             # "cw" | "ccw"
 # rpm = 60
 # base_radius = 45.0         # optional: check this R0 instead of sizing the smallest
+# The shaft's bore (optional): the cam is sized to clear it by the hub wall, cams check checks it and the
+# drawings show it; without it the commands suggest one.
+# bore_radius = 8.0           # mm
+# hub_wall = 3.0             # mm of material at least between the bore and the working profile
 
 [[motion]]
 phase = "rise"
@@ -172,6 +240,24 @@ min_radius = 5.0             # smallest radius of curvature of the profile (defa
 
 [profile]
 tolerance = 0.001
+
+# Forces at the cam (optional; force closure, needs [cam] rpm): the spring chosen, the contact force, the
+# camshaft torque and the speed at which the follower jumps; cams check fails a cam that loses contact.
+# [dynamics]
+# mass = 0.003               # kg m^2: the rocker's moment of inertia about its pivot
+# load = 0.5                 # N m opposing the rise
+# friction = 0.1             # in the pivot's journal
+# face_friction = 0.05        # sliding at the flat face (dimensionless)
+# journal_radius = 8.0       # mm
+# margin = 1.2               # the spring's force >= margin x the force pulling the follower off the cam
+
+# Design a law together with the cam (optional; cams solve then takes seconds): the rise's law becomes a
+# spline, the smallest cam under caps on its normalized peaks, with a proven lower bound.
+# [optimize]
+# free = ["rise"]            # "rise", "return" or phase numbers (the [[motion]] tables' order from 0)
+# objective = "R0"           # "R0" | "pressure_angle" | "Ca" | "Cj" | "jerk_squared" | "snap_squared"
+# max_Ca = "cycloidal"       # caps on the normalized peaks: a law's name (its peak) or a number
+# max_Cj = "cycloidal"
 '''
 
 #: Template text by follower kind (``_flat``: flat-faced follower).

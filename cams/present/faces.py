@@ -136,11 +136,17 @@ class RollerPresenter(Presenter):
                 "largest_roller_radius": cam.checks.largest_roller_radius, "groove": prof.groove}
 
     def profile_line(self, rep: dict, bore: float, f: str) -> str:
+        from cams.present.text import no_working_profile
         from cams.words import bore_text
 
-        return (f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
-                f"R0 = {rep['R0']:{f}} mm (pitch curve), cam's smallest radius "
-                f"{rep['smallest_cam_radius']:{f}} mm, {bore_text(bore, rep['bore_suggested'])}")
+        broken = no_working_profile(rep)
+        head = (f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
+                f"R0 = {rep['R0']:{f}} mm (pitch curve), ")
+        if broken is None:
+            return f"{head}cam's smallest radius {rep['smallest_cam_radius']:{f}} mm, " \
+                   f"{bore_text(bore, rep['bore_suggested'])}"
+        bore_words = "no bore suggested" if rep["bore_suggested"] else bore_text(bore, False)
+        return f"{head}{broken}; {bore_words}"
 
 
 class FlatPresenter(Presenter):

@@ -13,6 +13,7 @@ objects and only draw them.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import partial
 from pathlib import Path
 
@@ -526,10 +527,12 @@ def _animation_box(cam, profile) -> tuple[np.ndarray, np.ndarray]:
     return allp.min(axis=0) - span, allp.max(axis=0) + span
 
 
-def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = "") -> Path:
+def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = "",
+                    progress: Callable[[int, int], None] | None = None) -> Path:
     """One turn of the cam with its follower as an animated GIF (Pillow writer).
 
-    ``title`` (:meth:`cams.assess.Assessment.title`) marks a failing cam's animation.
+    ``title`` (:meth:`cams.assess.Assessment.title`) marks a failing cam's animation; ``progress`` is called as
+    ``progress(frames_written, frames)`` after each frame.
     """
     from matplotlib.animation import FuncAnimation, PillowWriter
 
@@ -547,7 +550,8 @@ def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = 
 
     anim = FuncAnimation(fig, frame, frames=frames)
     path = Path(path)
-    anim.save(str(path), writer=PillowWriter(fps=fps))
+    said = None if progress is None else (lambda k, n: progress(k + 1, n))
+    anim.save(str(path), writer=PillowWriter(fps=fps), progress_callback=said)
     return path
 
 

@@ -25,7 +25,7 @@ def _cam_inputs(d) -> list[tuple[str, str]]:
         rows.append(("cam speed", f"{d.rpm:g} rpm"))
     for i, p in enumerate(d.program.phases):
         law = "" if p.law is None else f", {p.law.name}"
-        rows.append((f"phase {i + 1}", f"{p.kind}{law}, {np.degrees(p.angle):.6g} deg"))
+        rows.append((f"phase {i}", f"{p.kind}{law}, {np.degrees(p.angle):.6g} deg"))
     return rows
 
 
@@ -98,8 +98,8 @@ def _assessment_rows(cam) -> list[tuple[str, str]]:
 
 def _check_rows(cam) -> list[tuple[str, str]]:
     """One row per check, named in words (:data:`cams.words.CHECK_WORDS`), values as ``cams check`` prints them."""
+    from cams.words import check_unit, check_words, deg, length_format
     from cams.words import check_value as _fmt
-    from cams.words import check_words, deg, length_format
 
     if cam.face.no_profile(cam.design) is not None:
         return [("profile", "none: a knife edge cannot run in a groove (form closure needs a roller)")]
@@ -109,8 +109,9 @@ def _check_rows(cam) -> list[tuple[str, str]]:
     for c in cam.checks.checks:
         cd = c.to_dict()
         at = "" if cd.get("at_deg") is None else f" at {deg(cd['at_deg'])}"
-        lim_s = "" if cd.get("limit") is None else f" (limit {_fmt(cd['limit'], cd.get('unit', ''), f)})"
-        worst = _fmt(cd.get('worst'), cd.get('unit', ''), f)
+        unit = check_unit(cd["name"], cd.get("unit", ""))  # a count with what it counts
+        lim_s = "" if cd.get("limit") is None else f" (limit {_fmt(cd['limit'], unit, f)})"
+        worst = _fmt(cd.get('worst'), unit, f)
         checks.append((check_words(cd["name"]), f"{'pass' if cd['passed'] else 'FAIL'}: {worst}{at}{lim_s}"))
     given = any(c.name == "bore" for c in cam.checks.checks)
     checks.append(("bore", bore_text(cam.checks.bore_radius, not given)))

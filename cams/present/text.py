@@ -10,16 +10,40 @@ from __future__ import annotations
 from cams.words import (
     binding_text,
     bore_text,
+    check_unit,
     check_words,
     deg,
+    duration,
+    fault_words,
     length_format,
     off_by,
+    phase_words,
 )
 from cams.words import check_value as _fmt
 
 __all__ = ["print_summary", "print_flat_summary", "print_cam_forces", "print_assessment", "print_checks",
            "pressure_text", "optimization_rows", "print_optimization", "governs_line", "part_lines", "peaks_lines",
-           "GOVERNS_WORDS"]
+           "GOVERNS_WORDS", "verified_words", "NOT_VERIFIED", "no_working_profile"]
+
+#: How the assessment's failure of the independent check starts (:func:`cams.assess.assess`).
+NOT_VERIFIED = "not verified: "
+
+
+def verified_words(rep: dict) -> str:
+    """``verified: yes``, or what a cam that is not verified is: which limit it exceeds and by how much.
+
+    ``rep`` holds ``verified`` and the assessment's ``failures`` (:meth:`cams.assess.Assessment.to_dict`); the
+    failure of the independent check is said here, and :func:`print_assessment` leaves it out of its FAIL lines.
+
+    >>> verified_words({"verified": False, "failures": ["not verified: rise pressure angle 46 deg exceeds the "
+    ...                 "limit 45 deg by 1 deg"]})
+    'verified: NO, the cam exceeds its limit: rise pressure angle 46 deg exceeds the limit 45 deg by 1 deg'
+    """
+    if rep["verified"]:
+        return "verified: yes"
+    why = [f.removeprefix(NOT_VERIFIED) for f in rep.get("failures", ()) if f.startswith(NOT_VERIFIED)]
+    return "verified: NO, the cam exceeds its limit: " + ("; ".join(why) or "the independent check finds it so")
+
 
 #: What ``governs`` names, in words.
 GOVERNS_WORDS = {"pressure_angle": "the pressure angle", "convexity": "convexity (limits.min_radius)",
@@ -103,7 +127,7 @@ def print_summary(rep: dict) -> None:
     eb = rep["error_bound"]
     bound = "" if rep["mode"] == "chosen" else \
         f"error bound: {'not stated by this method' if eb is None else f'{eb:.3g} {unit}'}; "
-    print(f"  {bound}verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    print(f"  {bound}{verified_words(rep)}; {duration(rep['seconds'])}")
     for line in peaks_lines(rep, rep.get("rpm")):
         print(line)
     if rep.get("optimize"):
@@ -154,7 +178,7 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
         rows.append(("the original laws' cam", f"R0 = {ref['R0']:{f}} mm; this one: R0 = {R0:{f}} mm"))
     for p in o["phases"]:
         orig = p["original"]
-        rows.append((f"phase {p['phase']} ({p['kind']}; [[motion]] row {p['phase'] + 1})",
+        rows.append((phase_words(p["kind"], p["phase"]),
                      f"Cv {_peak(p['Cv'])}, Ca {_peak(p['Ca'])}, Cj {_peak(p['Cj'])}; was {orig['law']}: "
                      f"Cv {_peak(orig['Cv'])}, Ca {_peak(orig['Ca'])}, Cj {_peak(orig['Cj'])}"))
     return rows
@@ -278,7 +302,7 @@ def print_flat_summary(rep: dict) -> None:
     if rep["face_width_centred"] is not None:
         print(f"        a face centred on the axis needs {rep['face_width_centred']:{f}} {unit} (no margins)")
     print(f"  pressure angle: {pressure_text(rep)}")
-    print(f"  verified: {'yes' if rep['verified'] else 'NO'}; {rep['seconds'] * 1e3:.1f} ms")
+    print(f"  {verified_words(rep)}; {duration(rep['seconds'])}")
     for line in peaks_lines(rep, rep.get("rpm")):
         print(line)
     if rep.get("optimize"):
@@ -293,13 +317,37 @@ def print_flat_summary(rep: dict) -> None:
 def print_assessment(a: dict, indent: str = "  ", file=None) -> None:
     """The buildable line beside verified (from ``Assessment.to_dict``), with what fails.
 
+    The verified line (:func:`verified_words`), printed before it by every command, says why a cam is not
+    verified; the FAIL lines say the rest.
+
     ``usable`` is :attr:`cams.assess.Assessment.usable`, the exit code's rule: certified (a ``certified`` key is
     present only when false), verified and buildable.
     """
     usable = a.get("certified", True) is not False and a["verified"] and a["buildable"]
     print(f"{indent}buildable: {'yes' if a['buildable'] else 'NO'}; usable: {'yes' if usable else 'NO'}", file=file)
     for f in a["failures"]:
-        print(f"{indent}FAIL: {f}", file=file)
+        if not f.startswith(NOT_VERIFIED):  # said on the verified line (verified_words)
+            print(f"{indent}FAIL: {f}", file=file)
+
+
+def no_working_profile(rep: dict) -> str | None:
+    """Why a roller cam has no working profile to measure or bore, in words (None: it has one).
+
+    From a check or profile report (``smallest_cam_radius``, the checks): the roller reaches past the cam centre
+    (the smallest pitch radius less the roller radius is not positive), or the profile undercuts or crosses
+    itself. Its "smallest radius" then measures no cam, and no bore is suggested for it.
+    """
+    cam_r = rep.get("smallest_cam_radius")
+    if cam_r is not None and not cam_r > 0:
+        f = length_format(max(abs(cam_r), 1e-9))
+        return (f"no working profile: the roller reaches past the cam centre (smallest pitch radius - roller "
+                f"radius = {cam_r:{f}} mm)")
+    cuts = ("undercut", "undercut_outer", "profile_polygon", "outer_polygon")
+    failed = {c["name"] for c in rep.get("checks", ()) if not c["passed"]}
+    said = rep.get("failures", ())  # the assessment's lines (cams profile's report has no checks)
+    if failed & set(cuts) or any(f.startswith(fault_words(n) + ":") for f in said for n in cuts):
+        return "no working profile: the roller undercuts it (the profile crosses itself)"
+    return None
 
 
 def _by(c: dict) -> str:
@@ -312,11 +360,13 @@ def print_checks(rep: dict) -> None:
     f = length_format(rep["R0"])
     cam_r = rep.get("smallest_cam_radius")
     head = f"R0 = {rep['R0']:{f}} mm (pitch curve)" if cam_r is not None else f"R0 = {rep['R0']:{f}} mm"
+    broken = no_working_profile(rep)
     if cam_r is not None:
-        head += f", cam's smallest radius {cam_r:{f}} mm"
+        head += ", " + (broken or f"cam's smallest radius {cam_r:{f}} mm")
     print(f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, {head}")
     for c in rep["checks"]:
         at = "" if c["at_deg"] is None else f" at {deg(c['at_deg'])}"
+        c = {**c, "unit": check_unit(c["name"], c["unit"])}  # a count with what it counts
         lim = "" if c["limit"] is None else f" (limit {_fmt(c['limit'], c['unit'], f)})"
         worst = _fmt(c['worst'], c['unit'], f)
         print(f"  {'pass' if c['passed'] else 'FAIL'}  {check_words(c['name'])}: {worst}{at}{lim}{_by(c)}")
@@ -325,4 +375,6 @@ def print_checks(rep: dict) -> None:
         print(f"  roller radius {rep['roller_radius']:{f}} mm; largest without undercut {lr:{f}} mm, "
               f"recommended <= {rep['recommended_roller_radius']:{f}} mm")
     given = any(c["name"] == "bore" for c in rep["checks"])
-    print(f"  {bore_text(rep['bore_radius'], not given)}; {'all checks pass' if rep['passed'] else 'a check FAILS'}")
+    bore = bore_text(rep["bore_radius"], not given) if given or broken is None else \
+        "no bore suggested: the cam has no working profile to hold one"
+    print(f"  {bore}; {'all checks pass' if rep['passed'] else 'a check FAILS'}")

@@ -150,7 +150,7 @@ class SafetyReport:
     at : float
         Cam angle of that line's position, radians from the start of the cycle.
     phase : int
-        Its phase, the index into the program (``[[motion]]`` row ``phase + 1``).
+        Its phase, the index into the program (of its ``[[motion]]`` table, from 0).
     kind : str
         That phase's kind, ``"rise"`` or ``"return"``.
     line : str
@@ -184,7 +184,7 @@ class SafetyReport:
         return (f"safety factor K_C = {self.factor:g} not met: the largest K_C the centre meets is "
                 f"{self.met:.{digits}g}; "
                 f"it lies {self.outside:.6g} mm outside the K_C zone's {self.line} line at cam angle "
-                f"{np.degrees(self.at) % 360:.4f} deg ({phase_words(self.kind, self.phase)})")
+                f"{np.degrees(self.at) % 360:.4f} deg in {phase_words(self.kind, self.phase)}")
 
     def to_dict(self) -> dict:
         """JSON-ready: ``required``, ``met`` (None when not finite), ``outside`` (mm), ``at_deg``, ``phase``,

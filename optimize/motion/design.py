@@ -127,7 +127,7 @@ def free_phases(spec: MotionDesignSpec, program: Program) -> tuple[int, ...]:
             out.update(found)
         else:
             if not 0 <= v < len(kinds):
-                raise InputError("optimize.free", f"phase index {v} does not exist: the [[motion]] rows are 0 to "
+                raise InputError("optimize.free", f"phase {v} does not exist: the phases are numbered 0 to "
                                  f"{len(kinds) - 1}")
             if kinds[v] == "dwell":
                 raise InputError("optimize.free", f"phase {v} is a dwell: only a rise or a return has a law to design")

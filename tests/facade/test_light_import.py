@@ -64,3 +64,12 @@ def test_the_package_re_exports_its_api_lazily():
             "a = cams.solve(d).R0\nimport cams.solve\nb = cams.solve.solve(d).R0\nc = cams.Cam(d).solution.R0\n"
             "assert a == b == c, (a, b, c)")
     assert _loaded_after(code) == []
+
+
+def test_progress_library_loads_only_to_draw_a_bar():
+    """tqdm comes only for a bar (a terminal's stderr, no --quiet): importing the commands and solving, even the
+    motion design's [optimize], with stderr not a terminal, loads none of it."""
+    code = (f"import contextlib, io\nfrom cams.cli import main\nimport cams.commands.progress\n"
+            f"with contextlib.redirect_stdout(io.StringIO()):\n"
+            f"    assert main(['solve', {str(EXAMPLES / 'rocker_force.toml')!r}]) == 0\n")
+    assert _loaded_after(code, ("tqdm",)) == []
