@@ -142,30 +142,25 @@ def register(sub) -> None:
     q = sub.add_parser(
         "profile",
         help="solve, then export the cam profile as CSV, DXF or SVG",
-        description="Solve a design file and write its profile in the cam frame (mm): pitch curve, working "
-                    "profile (and outer groove wall), within a chord tolerance; or its lift table. The files of a cam "
-                    "that fails a check (not verified, or not buildable: undercut, an invalid profile, the bore, "
-                    "[dynamics]) are written only with --allow-failed. Exit code 0: usable, 1: a check fails, "
-                    "2: bad input.",
+        description="Solve a design file and write its profile in the cam frame (mm) within a chord tolerance, "
+                    "or its lift table; a cam that fails a check is written only with --allow-failed. Exit code "
+                    "0: usable, 1: a check fails, 2: bad input.",
         epilog="example: cams profile examples/rocker_force.toml --dxf cam.dxf --table lift.csv --step 1",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     q.add_argument("file", help="design file (TOML)")
-    q.add_argument("--csv", metavar="OUT", help="write phi_deg,pitch_x,pitch_y,work_x,work_y[,outer_x,outer_y] "
-                   "(flat face: phi_deg,work_x,work_y)")
-    q.add_argument("--dxf", metavar="OUT", help="write a DXF drawing: layers PROFILE (working profile), OUTER "
-                   "(a groove's outer wall), PITCH (roller-centre path), BASE (circle of radius R0, the pitch curve's "
-                   "base circle), BORE")
+    q.add_argument("--csv", metavar="OUT", help="write the points as CSV (columns: docs/files.md)")
+    q.add_argument("--dxf", metavar="OUT", help="write a DXF drawing (layers PROFILE, OUTER, PITCH, BASE, BORE)")
     q.add_argument("--svg", metavar="OUT", help="write an SVG drawing to scale")
-    q.add_argument("--table", metavar="OUT", help="write the lift table (CSV, units in the header) per --step from "
-                   "cam angle 0: lift, points (polar, x y), pressure angle, radius of curvature")
+    q.add_argument("--table", metavar="OUT", help="write the lift table (CSV, units in the header) every --step "
+                   "from cam angle 0")
     q.add_argument("--step", type=float, metavar="DEG", help="lift table step, degrees dividing 360 (default 1)")
     q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
                    help="override [solve] method (roller followers)")
-    q.add_argument("--allow-failed", action="store_true", help="write the files even when the cam fails a check "
-                   "(not verified or not buildable); the DXF and SVG are then marked as failing (exit code 1)")
+    q.add_argument("--allow-failed", action="store_true", help="write the files of a cam that fails a check, "
+                   "marked as failing (exit code 1)")
     q.add_argument("--json", action="store_true", help="print the summary as JSON")
     q.add_argument("--quiet", action="store_true",
-                   help="no progress (drawn on a terminal's stderr while the motion design of [optimize] runs)")
+                   help="no progress bar (drawn on a terminal while [optimize] runs)")
     q.set_defaults(func=run)

@@ -56,7 +56,8 @@ def test_every_reason_a_certificate_fails_is_said(change, reason, monkeypatch):
 
 def test_a_certified_design_says_no_reason():
     o = design_motion(_design()).optimization.to_dict()
-    assert o["certified"] and o["notes"] == []
+    # no reason; a note on the designed law's shape (its jerk ringing, issue 22) is not one
+    assert o["certified"] and [n for n in o["notes"] if "jerk rings" not in n] == []
 
 
 def test_an_infinite_peak_over_its_cap_is_said_in_words(monkeypatch):
