@@ -44,9 +44,11 @@ def effective_radius(rho1, rho2) -> np.ndarray:
     ``inf`` for two planes; NaN where ``1/R <= 0`` but not both planes (a concave face at least as sharp as the
     body in it: no line contact, the roller does not fit).
     """
+    r1, r2 = np.asarray(rho1, float), np.asarray(rho2, float)
     with np.errstate(divide="ignore", invalid="ignore"):
-        k = 1.0 / np.asarray(rho1, float) + 1.0 / np.asarray(rho2, float)
-        return np.where(k > 0, 1.0 / np.where(k > 0, k, 1.0), np.where(k == 0, np.inf, np.nan))
+        k = 1.0 / r1 + 1.0 / r2
+        planes = np.isinf(r1) & np.isinf(r2)
+        return np.where(k > 0, 1.0 / np.where(k > 0, k, 1.0), np.where(planes, np.inf, np.nan))
 
 
 def half_width(w, R, E_star: float) -> np.ndarray:
