@@ -112,6 +112,29 @@ class Face(ABC):
         return contact_cycle(design, self.contact_geometry(design, solution, f.phi, f.length_unit), f.contact,
                              f.omega), None
 
+    def contact_check(self, design, solution: SolveResult) -> Check | None:
+        """The largest Hertz pressure along the cycle against ``[contact]``'s allowable (a check in MPa named
+        ``contact_stress``): what the sizing to the part (:mod:`cams.faces.part`) judges a candidate's contact by.
+        None without ``[contact]``, without an allowable, or without forces (no speed, form closure)."""
+        if design.contact is None:
+            return None
+        from cams.strength.along import materials_of
+
+        allowable = materials_of(design.contact).allowable
+        if allowable is None:
+            return None
+        forces, _ = self.forces(design, solution)
+        cycle, _ = self.contact(design, solution, forces)
+        if cycle is None:
+            return None
+        from cams.checks.base import Check
+
+        i = cycle.at_max
+        p0 = cycle.max_pressure
+        return Check("contact_stress", bool(p0 <= allowable), p0, float(cycle.phi[i]), float(allowable), "MPa",
+                     f"largest Hertz pressure {p0:.6g} MPa at cam angle {np.degrees(cycle.phi[i]) % 360:.2f} deg "
+                     f"against the allowable {allowable:.6g} MPa")
+
     def contact_geometry(self, design, solution: SolveResult, phi: np.ndarray, length_unit: float) -> Any:
         """The contact's geometry at cam angles ``phi`` (:class:`cams.strength.along.ContactGeometry`)."""
         raise InputError("contact", f"a {self.name} follower's contact stress is not computed")

@@ -50,7 +50,7 @@ GOVERNS_WORDS = {"pressure_angle": "the pressure angle", "convexity": "convexity
                  "min_base_radius": "the floor limits.min_base_radius", "bore": "the bore and its hub wall",
                  "undercut": "the roller (undercut)",
                  "curvature": "the least radius of curvature (profile.min_curvature_radius)",
-                 "chosen": "the chosen cam"}
+                 "contact_stress": "the contact stress (contact.allowable_stress)", "chosen": "the chosen cam"}
 
 
 def governs_line(rep: dict, f: str) -> str | None:

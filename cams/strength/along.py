@@ -256,6 +256,47 @@ class ContactCycle:
         """The cam angles (radians) where the entrainment velocity passes through zero."""
         return film.zero_crossings(self.phi, self.entrainment)
 
+    def roller_radius_range(self) -> tuple[float, float] | None:
+        """The roller radii (mm) that keep p0 within the allowable on this cam (its pitch curve and forces held: the
+        rigid force does not depend on the roller), or None (no allowable, a flat face, or no radius does).
+
+        At each cam angle the pitch curve's radius of curvature ``rho_p = rho_cam + r`` is the roller's; with a
+        roller of radius ``x`` the effective radius is ``1/R = 1/(rho_p - x) + 1/x`` and p0 stays within the
+        allowable ``p_a`` where ``1/R <= K = pi width p_a^2 / (N E*)``: on a convex piece ``x`` between the roots
+        of ``K x (rho_p - x) = rho_p`` (p0 is not monotone in ``x``: the effective radius peaks at ``rho_p / 2``);
+        on a concave one above the root of ``K x (|rho_p| + x) = |rho_p|``; on a straight one ``x >= 1/K``. The
+        answer is the intersection over the turn, bounded above by undercut (``x`` below the least convex
+        ``rho_p``). Returns ``(least, largest)``.
+        """
+        a = self.materials.allowable
+        r = float(self.follower_radius[0])
+        if a is None or not np.isfinite(r):
+            return None
+        rho_p = self.cam_radius + r
+        N = self.force
+        lo, hi = 0.0, np.inf
+        convex = rho_p[np.isfinite(rho_p) & (rho_p > 0)]
+        if convex.size:
+            hi = float(np.min(convex))
+        for rp, f in zip(rho_p, N, strict=True):
+            if not f > 0:
+                continue
+            if not np.isfinite(f):
+                return None
+            K = np.pi * self.width * a**2 / (f * self.materials.E_star)
+            if not np.isfinite(rp):
+                lo = max(lo, 1.0 / K)
+            elif rp > 0:
+                disc = rp * rp - 4.0 * rp / K
+                if disc < 0:
+                    return None
+                lo = max(lo, 0.5 * (rp - np.sqrt(disc)))
+                hi = min(hi, 0.5 * (rp + np.sqrt(disc)))
+            else:
+                q = -rp
+                lo = max(lo, 0.5 * (-q + np.sqrt(q * q + 4.0 * q / K)))
+        return (lo, hi) if lo <= hi else None
+
     def ratios(self) -> dict[str, float]:
         """Each judged limit's ratio of what the cam achieves to what is asked (>= 1 passes): ``contact_stress``
         allowable / p0, ``film_parameter`` Lambda / its minimum, ``bearing_life`` life / target."""
@@ -306,6 +347,12 @@ class ContactCycle:
                        + ", ".join(f"{np.degrees(p) % 360:.2f} deg" for p in z)
                        + ": no film is drawn in there (only squeezed); a larger nose radius lowers p0 but can bring "
                        "this about")
+        rr = self.roller_radius_range()
+        if rr is not None:
+            top = "any larger" if not np.isfinite(rr[1]) else f"{rr[1]:.4g} mm (the least convex radius of " \
+                "curvature of the pitch curve: a larger roller undercuts)"
+            out.append(f"roller radius that keeps p0 within the allowable on this cam: from {rr[0]:.4g} mm to "
+                       f"{top}")
         if self.life_hours is not None and self.spec.bearing_rating_type == "basic":
             out.append("bearing life from the basic rating C: a bearing running as a track roller has a lower "
                        "effective rating (its outer ring bends), so this life is an upper bound; give "
