@@ -153,7 +153,8 @@ def register(sub) -> None:
     q.add_argument("--out", default=".", help="output folder (default: current)")
     q.add_argument("--only", help=f"comma-separated subset of {','.join(PICTURES)} (flat face: "
                    f"{','.join(FLAT_PICTURES)}); forces needs a [dynamics] table (contact force, spring and load, "
-                   "camshaft torque); contact needs a [contact] table (p0 and the film along the cycle); a design with [optimize] adds optimized (the designed laws, pressure "
+                   "camshaft torque); contact needs a [contact] table (p0 and the film along the cycle); a design "
+                   "with [optimize] adds optimized (the designed laws, pressure "
                    "angles and cam beside the original ones)")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
     q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "

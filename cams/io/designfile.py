@@ -58,6 +58,7 @@ from cams.io.document import check_document, check_keys, read_toml, toml_integer
 from cams.io.document import toml_number as _num
 from cams.io.document import toml_table as _table
 from cams.io.lawtable import law_from_table
+from cams.model.contact import CONTACT_KEYS, ContactSpec
 from cams.model.design import (
     MAX_SAMPLES,
     OBJECTIVE_SUPERSEDED,
@@ -66,7 +67,6 @@ from cams.model.design import (
     Limits,
     check_lift,
 )
-from cams.model.contact import CONTACT_KEYS, ContactSpec
 from cams.model.dynamics import (
     DynamicsSpec,
     FollowerDynamics,

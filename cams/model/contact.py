@@ -16,10 +16,24 @@ from laws.errors import check_number as _num
 __all__ = ["ContactSpec", "CONTACT_KEYS", "FORCE_MODELS"]
 
 #: The keys of a design file's [contact] table, in their documented order.
-CONTACT_KEYS = ("cam_material", "follower_material", "cam_modulus", "cam_poisson", "follower_modulus",
-                "follower_poisson", "allowable_stress", "cam_roughness", "follower_roughness", "viscosity",
-                "pressure_viscosity", "min_film_parameter", "bearing_rating", "bearing_rating_type", "life_hours",
-                "force_model")
+CONTACT_KEYS = (
+    "cam_material",
+    "follower_material",
+    "cam_modulus",
+    "cam_poisson",
+    "follower_modulus",
+    "follower_poisson",
+    "allowable_stress",
+    "cam_roughness",
+    "follower_roughness",
+    "viscosity",
+    "pressure_viscosity",
+    "min_film_parameter",
+    "bearing_rating",
+    "bearing_rating_type",
+    "life_hours",
+    "force_model",
+)
 #: The contact forces the stresses may be computed on: the rigid (kinetostatic) force of :mod:`cams.dynamics`.
 FORCE_MODELS = ("rigid",)
 
@@ -79,8 +93,18 @@ class ContactSpec:
             v = getattr(self, k)
             if v is not None and not isinstance(v, str):
                 raise InputError(f"contact.{k}", f"must be a material's name (a string), got {v!r}")
-        for k in ("cam_modulus", "follower_modulus", "allowable_stress", "cam_roughness", "follower_roughness",
-                  "viscosity", "pressure_viscosity", "min_film_parameter", "bearing_rating", "life_hours"):
+        for k in (
+            "cam_modulus",
+            "follower_modulus",
+            "allowable_stress",
+            "cam_roughness",
+            "follower_roughness",
+            "viscosity",
+            "pressure_viscosity",
+            "min_film_parameter",
+            "bearing_rating",
+            "life_hours",
+        ):
             v = getattr(self, k)
             if v is not None:
                 _num(f"contact.{k}", v, lo=0.0, strict=True)
@@ -91,26 +115,36 @@ class ContactSpec:
                 if not -1.0 < v < 0.5:
                     raise InputError(f"contact.{k}", f"must be in (-1, 0.5) (Poisson's ratio), got {v!r}")
         if self.bearing_rating_type not in ("basic", "track_roller"):
-            raise InputError("contact.bearing_rating_type", f"must be 'basic' or 'track_roller', got "
-                             f"{self.bearing_rating_type!r}")
+            raise InputError(
+                "contact.bearing_rating_type", f"must be 'basic' or 'track_roller', got {self.bearing_rating_type!r}"
+            )
         if self.force_model not in FORCE_MODELS:
-            raise InputError("contact.force_model", f"must be one of {', '.join(FORCE_MODELS)} (the elastic "
-                             f"contact force is not computed yet), got {self.force_model!r}")
+            raise InputError(
+                "contact.force_model",
+                f"must be one of {', '.join(FORCE_MODELS)} (the elastic "
+                f"contact force is not computed yet), got {self.force_model!r}",
+            )
         if self.life_hours is not None and self.bearing_rating is None:
-            raise InputError("contact.life_hours", "a life target needs the roller bearing's rating: give "
-                             "contact.bearing_rating (N)")
+            raise InputError(
+                "contact.life_hours", "a life target needs the roller bearing's rating: give contact.bearing_rating (N)"
+            )
         if (self.cam_roughness is None) != (self.follower_roughness is None):
             missing = "cam_roughness" if self.cam_roughness is None else "follower_roughness"
             raise InputError(f"contact.{missing}", "the film parameter needs both surfaces' roughness (Rq, um)")
         for k, v in (("cam_modulus", self.cam_material), ("follower_modulus", self.follower_material)):
             side = k.split("_")[0]
             if getattr(self, k) is None and v is None:
-                raise InputError(f"contact.{side}_material", f"the contact stress needs the {side}'s material: give "
-                                 f"contact.{side}_material (a name) or contact.{side}_modulus (GPa) and "
-                                 f"contact.{side}_poisson")
+                raise InputError(
+                    f"contact.{side}_material",
+                    f"the contact stress needs the {side}'s material: give "
+                    f"contact.{side}_material (a name) or contact.{side}_modulus (GPa) and "
+                    f"contact.{side}_poisson",
+                )
             if v is None and getattr(self, f"{side}_poisson") is None:
-                raise InputError(f"contact.{side}_poisson", f"contact.{side}_modulus needs its Poisson's ratio "
-                                 f"(contact.{side}_poisson, in (-1, 0.5))")
+                raise InputError(
+                    f"contact.{side}_poisson",
+                    f"contact.{side}_modulus needs its Poisson's ratio (contact.{side}_poisson, in (-1, 0.5))",
+                )
 
     @property
     def lubricated(self) -> bool:

@@ -21,7 +21,8 @@ from cams.words import (
 )
 from cams.words import check_value as _fmt
 
-__all__ = ["print_summary", "print_flat_summary", "print_cam_forces", "print_contact", "print_assessment", "print_checks",
+__all__ = ["print_summary", "print_flat_summary", "print_cam_forces", "print_contact", "print_assessment",
+           "print_checks",
            "pressure_text", "optimization_rows", "print_optimization", "governs_line", "part_lines", "peaks_lines",
            "GOVERNS_WORDS", "verified_words", "NOT_VERIFIED", "no_working_profile"]
 

@@ -22,13 +22,24 @@ from cams.strength import film, hertz, life
 from cams.strength.materials import material
 from laws.errors import InputError
 
-__all__ = ["ContactGeometry", "ContactMaterials", "materials_of", "roller_geometry", "flat_geometry",
-           "ContactCycle", "contact_cycle", "EDGE_NOTE", "CONTACT_LIMITS"]
+__all__ = [
+    "ContactGeometry",
+    "ContactMaterials",
+    "materials_of",
+    "roller_geometry",
+    "flat_geometry",
+    "ContactCycle",
+    "contact_cycle",
+    "EDGE_NOTE",
+    "CONTACT_LIMITS",
+]
 
 #: What the output says of an uncrowned roller (and of any line contact's figure).
-EDGE_NOTE = ("the line-contact figures assume a uniform load along the width: at an uncrowned roller's (or a "
-             "flat face's) edges the pressure rises above them (edge loading), so they are unconservative there; "
-             "crown the roller or relieve the edges")
+EDGE_NOTE = (
+    "the line-contact figures assume a uniform load along the width: at an uncrowned roller's (or a "
+    "flat face's) edges the pressure rises above them (edge loading), so they are unconservative there; "
+    "crown the roller or relieve the edges"
+)
 #: The contact's limits, as :attr:`ContactCycle.limit` names them.
 CONTACT_LIMITS = ("contact_stress", "film_parameter", "bearing_life")
 
@@ -55,8 +66,7 @@ class ContactMaterials:
     @property
     def E_star(self) -> float:
         """The contact modulus E* (MPa): ``1/E* = sum (1 - nu^2)/E``."""
-        return hertz.contact_modulus(self.cam_modulus, self.cam_poisson, self.follower_modulus,
-                                     self.follower_poisson)
+        return hertz.contact_modulus(self.cam_modulus, self.cam_poisson, self.follower_modulus, self.follower_poisson)
 
 
 def materials_of(spec: ContactSpec) -> ContactMaterials:
@@ -122,8 +132,11 @@ def roller_geometry(design, centre, phi: np.ndarray, length_unit: float = 1e-3) 
 
     r = float(design.follower.roller_radius)
     if not r > 0:
-        raise InputError("follower.roller_radius", "a knife edge's contact stress is unbounded (a line of zero "
-                         "radius): give the roller's radius for [contact]")
+        raise InputError(
+            "follower.roller_radius",
+            "a knife edge's contact stress is unbounded (a line of zero "
+            "radius): give the roller's radius for [contact]",
+        )
     inv = invert_at(design, np.asarray(centre, float), phi)
     kappa = curvature(inv)
     speed = np.linalg.norm(inv.w1, axis=-1)
@@ -134,8 +147,13 @@ def roller_geometry(design, centre, phi: np.ndarray, length_unit: float = 1e-3) 
     f = design.follower
     arm_rate = f.sense * inv.ds if isinstance(f, Rocker) else np.zeros_like(phi)
     turns = (-eps * speed / r + eps - arm_rate) / (2.0 * np.pi)
-    return ContactGeometry(phi=np.asarray(phi, float), cam_radius=rho, follower_radius=r,
-                           entrainment=speed * np.abs(1.0 - r * kappa) * length_unit, roller_turns=turns)
+    return ContactGeometry(
+        phi=np.asarray(phi, float),
+        cam_radius=rho,
+        follower_radius=r,
+        entrainment=speed * np.abs(1.0 - r * kappa) * length_unit,
+        roller_turns=turns,
+    )
 
 
 def flat_geometry(design, R0: float, phi: np.ndarray, length_unit: float = 1e-3) -> ContactGeometry:
@@ -166,8 +184,13 @@ def flat_geometry(design, R0: float, phi: np.ndarray, length_unit: float = 1e-3)
         rho = curvature_radius(dth, d2th, p, dp, d2p)
     v_sl = flat_contact(design, R0, phi).sliding_per_radian(eps)
     u = sigma * rho * dth - 0.5 * v_sl
-    return ContactGeometry(phi=phi, cam_radius=np.asarray(rho, float), follower_radius=np.inf,
-                           entrainment=u * length_unit, roller_turns=None)
+    return ContactGeometry(
+        phi=phi,
+        cam_radius=np.asarray(rho, float),
+        follower_radius=np.inf,
+        entrainment=u * length_unit,
+        roller_turns=None,
+    )
 
 
 @dataclass(frozen=True, eq=False)
@@ -187,7 +210,8 @@ class ContactCycle:
     pressure : ndarray
         The maximum Hertz pressure p0 (MPa).
     shear, von_mises : ndarray
-        The largest subsurface principal shear and von Mises stress (MPa); their depths are fixed fractions of b.
+        The largest subsurface principal shear and von Mises stress (MPa) in the cam (von Mises with the cam's
+        Poisson's ratio, plane strain); their depths are fixed fractions of b.
     shear_depth, von_mises_depth : ndarray
         Their depths below the surface (mm).
     entrainment : ndarray
@@ -323,19 +347,30 @@ class ContactCycle:
         at = np.degrees(self.phi[i]) % 360.0
         a = self.materials.allowable
         if a is not None and not self.max_pressure <= a:
-            out.append(("contact stress", f"contact stress: p0 = {self.max_pressure:.4g} MPa at cam angle "
-                        f"{at:.2f} deg exceeds the allowable {a:.4g} MPa (the least face width is "
-                        f"{self.min_width:.4g} mm)"))
+            out.append(
+                (
+                    "contact stress",
+                    f"contact stress: p0 = {self.max_pressure:.4g} MPa at cam angle "
+                    f"{at:.2f} deg exceeds the allowable {a:.4g} MPa (the least face width is "
+                    f"{self.min_width:.4g} mm)",
+                )
+            )
         lam = self.min_film_parameter
         if lam is not None and not lam >= self.spec.min_film_parameter:
             j = int(np.argmin(self.film_parameter))  # type: ignore[arg-type]
-            out.append(("film", f"lubricant film: film parameter {lam:.3g} at cam angle "
-                        f"{np.degrees(self.phi[j]) % 360:.2f} deg is below contact.min_film_parameter "
-                        f"{self.spec.min_film_parameter:g}"))
+            out.append(
+                (
+                    "film",
+                    f"lubricant film: film parameter {lam:.3g} at cam angle "
+                    f"{np.degrees(self.phi[j]) % 360:.2f} deg is below contact.min_film_parameter "
+                    f"{self.spec.min_film_parameter:g}",
+                )
+            )
         t = self.spec.life_hours
         if t is not None and self.life_hours is not None and not self.life_hours >= t:
-            out.append(("bearing life", f"bearing life: L10 = {self.life_hours:.4g} h is below contact.life_hours "
-                        f"{t:.4g} h"))
+            out.append(
+                ("bearing life", f"bearing life: L10 = {self.life_hours:.4g} h is below contact.life_hours {t:.4g} h")
+            )
         return out
 
     def notes(self) -> list[str]:
@@ -343,20 +378,27 @@ class ContactCycle:
         out = [EDGE_NOTE]
         z = self.zero_entrainment
         if z:
-            out.append("the entrainment velocity falls to zero at cam angle "
-                       + ", ".join(f"{np.degrees(p) % 360:.2f} deg" for p in z)
-                       + ": no film is drawn in there (only squeezed); a larger nose radius lowers p0 but can bring "
-                       "this about")
+            out.append(
+                "the entrainment velocity falls to zero at cam angle "
+                + ", ".join(f"{np.degrees(p) % 360:.2f} deg" for p in z)
+                + ": no film is drawn in there (only squeezed); a larger nose radius lowers p0 but can bring "
+                "this about"
+            )
         rr = self.roller_radius_range()
         if rr is not None:
-            top = "any larger" if not np.isfinite(rr[1]) else f"{rr[1]:.4g} mm (the least convex radius of " \
+            top = (
+                "any larger"
+                if not np.isfinite(rr[1])
+                else f"{rr[1]:.4g} mm (the least convex radius of "
                 "curvature of the pitch curve: a larger roller undercuts)"
-            out.append(f"roller radius that keeps p0 within the allowable on this cam: from {rr[0]:.4g} mm to "
-                       f"{top}")
+            )
+            out.append(f"roller radius that keeps p0 within the allowable on this cam: from {rr[0]:.4g} mm to {top}")
         if self.life_hours is not None and self.spec.bearing_rating_type == "basic":
-            out.append("bearing life from the basic rating C: a bearing running as a track roller has a lower "
-                       "effective rating (its outer ring bends), so this life is an upper bound; give "
-                       "bearing_rating_type = \"track_roller\" with the catalogue's effective rating")
+            out.append(
+                "bearing life from the basic rating C: a bearing running as a track roller has a lower "
+                "effective rating (its outer ring bends), so this life is an upper bound; give "
+                'bearing_rating_type = "track_roller" with the catalogue\'s effective rating'
+            )
         return out
 
     def to_dict(self) -> dict:
@@ -371,8 +413,12 @@ class ContactCycle:
             "force_model": self.spec.force_model,
             "max_pressure": fin(self.max_pressure),
             "max_pressure_at_deg": float(np.degrees(self.phi[i]) % 360.0),
-            "at_max": {"force": fin(self.force[i]), "cam_curvature_radius": fin(self.cam_radius[i]),
-                       "follower_radius": fin(self.follower_radius[i]), "half_width": fin(self.half_width[i])},
+            "at_max": {
+                "force": fin(self.force[i]),
+                "cam_curvature_radius": fin(self.cam_radius[i]),
+                "follower_radius": fin(self.follower_radius[i]),
+                "half_width": fin(self.half_width[i]),
+            },
             "max_shear": fin(float(np.max(self.shear))),
             "max_shear_depth": fin(float(self.shear_depth[int(np.argmax(self.shear))])),
             "max_von_mises": fin(float(np.max(self.von_mises))),
@@ -403,7 +449,7 @@ def contact_cycle(design, geometry: ContactGeometry, force, omega: float) -> Con
     E = mats.E_star
     rf = np.full_like(phi, geometry.follower_radius)
     R = hertz.effective_radius(geometry.cam_radius, rf)
-    R = np.where(np.isnan(R), 0.0, R)          # no line contact (a concave face sharper than the roller): p0 inf
+    R = np.where(np.isnan(R), 0.0, R)  # no line contact (a concave face sharper than the roller): p0 inf
     w = N / width
     with np.errstate(divide="ignore", invalid="ignore"):
         p0 = np.where(R > 0, hertz.max_pressure(w, np.where(R > 0, R, 1.0), E), np.inf)
@@ -412,10 +458,16 @@ def contact_cycle(design, geometry: ContactGeometry, force, omega: float) -> Con
     k = hertz.subsurface_maxima(float(mats.cam_poisson))
     u = geometry.entrainment * omega
     h = lam = None
-    if spec.lubricated:
+    if spec.viscosity is not None and spec.pressure_viscosity is not None:
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            hm = film.dowson_higginson(u, R * 1e-3, np.maximum(w, 1e-300) * 1e3, 2.0 * E * 1e6,
-                                       float(spec.viscosity), float(spec.pressure_viscosity) * 1e-9)
+            hm = film.dowson_higginson(
+                u,
+                R * 1e-3,
+                np.maximum(w, 1e-300) * 1e3,
+                2.0 * E * 1e6,
+                float(spec.viscosity),
+                float(spec.pressure_viscosity) * 1e-9,
+            )
         h = np.where(np.isfinite(hm), hm, 0.0) * 1e6
         if spec.cam_roughness is not None and spec.follower_roughness is not None:
             lam = film.film_parameter(h, spec.cam_roughness, spec.follower_roughness)
@@ -429,8 +481,25 @@ def contact_cycle(design, geometry: ContactGeometry, force, omega: float) -> Con
             hours = life.life_hours(float(spec.bearing_rating), N, turns, per_rev, rpm)
     elif spec.bearing_rating is not None:
         raise InputError("contact.bearing_rating", "applies to a roller follower's bearing; a flat face has none")
-    return ContactCycle(phi=phi, force=N, cam_radius=np.asarray(geometry.cam_radius, float), follower_radius=rf,
-                        effective_radius=R, half_width=b, pressure=p0, shear=k.shear * p0,
-                        shear_depth=k.shear_depth * b, von_mises=k.von_mises * p0, von_mises_depth=k.von_mises_depth * b,
-                        entrainment=u, film=h, film_parameter=lam, width=width, materials=mats, spec=spec,
-                        life_hours=hours, roller_turns_per_rev=per_rev, rpm=omega * 60.0 / (2.0 * np.pi))
+    return ContactCycle(
+        phi=phi,
+        force=N,
+        cam_radius=np.asarray(geometry.cam_radius, float),
+        follower_radius=rf,
+        effective_radius=R,
+        half_width=b,
+        pressure=p0,
+        shear=k.shear * p0,
+        shear_depth=k.shear_depth * b,
+        von_mises=k.von_mises * p0,
+        von_mises_depth=k.von_mises_depth * b,
+        entrainment=u,
+        film=h,
+        film_parameter=lam,
+        width=width,
+        materials=mats,
+        spec=spec,
+        life_hours=hours,
+        roller_turns_per_rev=per_rev,
+        rpm=omega * 60.0 / (2.0 * np.pi),
+    )

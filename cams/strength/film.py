@@ -27,8 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["dowson_higginson", "hamrock", "composite_roughness", "film_parameter", "flat_entrainment",
-           "zero_crossings"]
+__all__ = ["dowson_higginson", "hamrock", "composite_roughness", "film_parameter", "flat_entrainment", "zero_crossings"]
 
 
 def _groups(u, R, w, E_prime: float, viscosity: float, pressure_viscosity: float):

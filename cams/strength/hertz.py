@@ -26,8 +26,16 @@ from functools import lru_cache
 
 import numpy as np
 
-__all__ = ["contact_modulus", "effective_radius", "half_width", "max_pressure", "subsurface_field", "von_mises",
-           "SubsurfaceMaxima", "subsurface_maxima"]
+__all__ = [
+    "contact_modulus",
+    "effective_radius",
+    "half_width",
+    "max_pressure",
+    "subsurface_field",
+    "von_mises",
+    "SubsurfaceMaxima",
+    "subsurface_maxima",
+]
 
 
 def contact_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
@@ -138,6 +146,7 @@ def subsurface_maxima(nu: float) -> SubsurfaceMaxima:
     """The largest principal shear and von Mises stress below a line contact (per p0, depths per b), found on
     :func:`subsurface_field` below the strip's centre, where both peak (the field is symmetric and they fall off
     sideways: tested on a grid). Poisson's ratio ``nu`` enters von Mises only."""
+
     def shear(z):
         sx, sz, txz = subsurface_field(np.zeros_like(z), z)
         return np.sqrt((0.5 * (sx - sz)) ** 2 + txz**2)

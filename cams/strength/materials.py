@@ -64,20 +64,47 @@ _SHIGLEY = "Shigley's Mechanical Engineering Design, table A-5 (typical)"
 _ISO = "ISO 6336-5, sigma_Hlim quality MQ"
 
 #: The known materials, by name.
-MATERIALS: dict[str, Material] = {m.name: m for m in (
-    Material("steel", 206e3, 0.30, None, None, f"{_SHIGLEY}; no allowable: give the heat treatment's material"),
-    Material("through_hardened_steel", 206e3, 0.30, 770.0, 700.0,
-             f"{_SHIGLEY}; {_ISO}, through-hardened alloy steel about 300 HV (typical, read off its graph); "
-             "yield typical of a quenched and tempered 42CrMo4"),
-    Material("case_hardened_steel", 206e3, 0.30, 1500.0, None,
-             f"{_SHIGLEY}; {_ISO}, case-hardened wrought steel; yield: the core's, not one value"),
-    Material("nitrided_steel", 206e3, 0.30, 1250.0, None, f"{_SHIGLEY}; {_ISO}, nitrided nitriding steel"),
-    Material("bearing_steel", 208e3, 0.30, 1500.0, None,
-             "rolling-bearing catalogues' 100Cr6 (AISI 52100) elastic constants (typical); allowable taken as "
-             "case-hardened steel's (ISO 6336-5 MQ)"),
-    Material("grey_cast_iron", 100e3, 0.21, 370.0, None,
-             f"{_SHIGLEY} (grey cast iron); {_ISO}, grey cast iron about 200 HB (typical, read off its graph)"),
-)}
+MATERIALS: dict[str, Material] = {
+    m.name: m
+    for m in (
+        Material("steel", 206e3, 0.30, None, None, f"{_SHIGLEY}; no allowable: give the heat treatment's material"),
+        Material(
+            "through_hardened_steel",
+            206e3,
+            0.30,
+            770.0,
+            700.0,
+            f"{_SHIGLEY}; {_ISO}, through-hardened alloy steel about 300 HV (typical, read off its graph); "
+            "yield typical of a quenched and tempered 42CrMo4",
+        ),
+        Material(
+            "case_hardened_steel",
+            206e3,
+            0.30,
+            1500.0,
+            None,
+            f"{_SHIGLEY}; {_ISO}, case-hardened wrought steel; yield: the core's, not one value",
+        ),
+        Material("nitrided_steel", 206e3, 0.30, 1250.0, None, f"{_SHIGLEY}; {_ISO}, nitrided nitriding steel"),
+        Material(
+            "bearing_steel",
+            208e3,
+            0.30,
+            1500.0,
+            None,
+            "rolling-bearing catalogues' 100Cr6 (AISI 52100) elastic constants (typical); allowable taken as "
+            "case-hardened steel's (ISO 6336-5 MQ)",
+        ),
+        Material(
+            "grey_cast_iron",
+            100e3,
+            0.21,
+            370.0,
+            None,
+            f"{_SHIGLEY} (grey cast iron); {_ISO}, grey cast iron about 200 HB (typical, read off its graph)",
+        ),
+    )
+}
 
 
 def material(name: object, field: str) -> Material:

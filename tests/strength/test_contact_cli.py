@@ -15,9 +15,21 @@ from tests.commands.test_bad_input import to_toml
 from tests.conftest import EXAMPLES
 
 #: the JSON contact object's keys, exactly the issue's
-KEYS = {"force_model", "max_pressure", "max_pressure_at_deg", "at_max", "max_shear", "max_shear_depth",
-        "max_von_mises", "min_film", "min_film_parameter", "zero_entrainment_at_deg", "min_width",
-        "bearing_life_hours", "limit"}
+KEYS = {
+    "force_model",
+    "max_pressure",
+    "max_pressure_at_deg",
+    "at_max",
+    "max_shear",
+    "max_shear_depth",
+    "max_von_mises",
+    "min_film",
+    "min_film_parameter",
+    "zero_entrainment_at_deg",
+    "min_width",
+    "bearing_life_hours",
+    "limit",
+}
 #: the materials' constants as the test reads them off the table's sources (E MPa, nu)
 STEEL, BEARING = (206e3, 0.30), (208e3, 0.30)
 
@@ -98,11 +110,14 @@ def test_the_largest_pressure_is_the_largest_over_the_turn(tmp_path, capsys):
     assert co.to_dict()["max_pressure_at_deg"] == pytest.approx(np.degrees(co.phi[int(np.argmax(p0))]) % 360)
 
 
-@pytest.mark.parametrize("change, words", [
-    ({"allowable_stress": 200.0}, "contact stress: p0 ="),
-    ({"min_film_parameter": 5.0}, "lubricant film: film parameter"),
-    ({"life_hours": 1e7}, "bearing life: L10 ="),
-])
+@pytest.mark.parametrize(
+    "change, words",
+    [
+        ({"allowable_stress": 200.0}, "contact stress: p0 ="),
+        ({"min_film_parameter": 5.0}, "lubricant film: film parameter"),
+        ({"life_hours": 1e7}, "bearing life: L10 ="),
+    ],
+)
 @pytest.mark.parametrize("command", ["check", "solve"])
 def test_a_failing_contact_fails_the_cam(change, words, command, tmp_path, capsys):
     doc = _doc("translating_contact.toml")
@@ -113,8 +128,11 @@ def test_a_failing_contact_fails_the_cam(change, words, command, tmp_path, capsy
     rc, rep = _json(tmp_path, doc, capsys) if command == "solve" else (1, None)
     if rep is not None:
         assert rc == 1 and any(f.startswith(words.split(":")[0]) for f in rep["failures"])
-        ratio = {"contact stress": "contact_stress", "lubricant film": "film_parameter",
-                 "bearing life": "bearing_life"}[words.split(":")[0]]
+        ratio = {
+            "contact stress": "contact_stress",
+            "lubricant film": "film_parameter",
+            "bearing life": "bearing_life",
+        }[words.split(":")[0]]
         assert rep["contact"]["limit"] == ratio
 
 
@@ -134,30 +152,64 @@ def test_a_flat_face_s_zero_entrainment_is_flagged(tmp_path, capsys):
     assert np.all(np.abs(rep["R0"] + m.s + 2 * m.d2s) < 0.05 * rep["R0"])
     assert any("entrainment velocity falls to zero" in n for n in rep["notes"])
     assert co["min_film_parameter"] < 0.05
-    assert co["at_max"]["follower_radius"] is None       # a plane
+    assert co["at_max"]["follower_radius"] is None  # a plane
 
 
-@pytest.mark.parametrize("change, field, words", [
-    ({"contact": {"viscosity": 0.1}}, "contact.cam_material", "material"),
-    ({"cam": {"rpm": 300, "width": 0.0}}, "cam.width", "> 0"),
-    ({"cam": {"rpm": 300, "width": -2.0}}, "cam.width", "> 0"),
-    ({"contact": {"cam_modulus": 0.0, "cam_poisson": 0.3, "follower_material": "steel"}}, "contact.cam_modulus",
-     "> 0"),
-    ({"contact": {"cam_material": "steel", "follower_material": "steel", "cam_roughness": 0.0,
-                  "follower_roughness": 0.2}}, "contact.cam_roughness", "> 0"),
-    ({"contact": {"cam_material": "steel", "follower_material": "steel", "follower_poisson": 0.5}},
-     "contact.follower_poisson", "(-1, 0.5)"),
-    ({"contact": {"cam_material": "steel", "follower_material": "steel", "cam_poisson": -1.0}},
-     "contact.cam_poisson", "(-1, 0.5)"),
-    ({"contact": {"cam_material": "unobtainium", "follower_material": "steel"}}, "contact.cam_material",
-     "known: steel, through_hardened_steel"),
-    ({"contact": {"cam_material": "steel", "follower_material": "steel", "life_hours": 1000.0}},
-     "contact.life_hours", "bearing_rating"),
-    ({"contact": {"cam_material": "steel", "follower_material": "steel", "bearing_rating_type": "big"}},
-     "contact.bearing_rating_type", "track_roller"),
-    ({"contact": {"cam_material": "steel", "follower_material": "steel", "force_model": "elastic"}},
-     "contact.force_model", "rigid"),
-])
+@pytest.mark.parametrize(
+    "change, field, words",
+    [
+        ({"contact": {"viscosity": 0.1}}, "contact.cam_material", "material"),
+        ({"cam": {"rpm": 300, "width": 0.0}}, "cam.width", "> 0"),
+        ({"cam": {"rpm": 300, "width": -2.0}}, "cam.width", "> 0"),
+        (
+            {"contact": {"cam_modulus": 0.0, "cam_poisson": 0.3, "follower_material": "steel"}},
+            "contact.cam_modulus",
+            "> 0",
+        ),
+        (
+            {
+                "contact": {
+                    "cam_material": "steel",
+                    "follower_material": "steel",
+                    "cam_roughness": 0.0,
+                    "follower_roughness": 0.2,
+                }
+            },
+            "contact.cam_roughness",
+            "> 0",
+        ),
+        (
+            {"contact": {"cam_material": "steel", "follower_material": "steel", "follower_poisson": 0.5}},
+            "contact.follower_poisson",
+            "(-1, 0.5)",
+        ),
+        (
+            {"contact": {"cam_material": "steel", "follower_material": "steel", "cam_poisson": -1.0}},
+            "contact.cam_poisson",
+            "(-1, 0.5)",
+        ),
+        (
+            {"contact": {"cam_material": "unobtainium", "follower_material": "steel"}},
+            "contact.cam_material",
+            "known: steel, through_hardened_steel",
+        ),
+        (
+            {"contact": {"cam_material": "steel", "follower_material": "steel", "life_hours": 1000.0}},
+            "contact.life_hours",
+            "bearing_rating",
+        ),
+        (
+            {"contact": {"cam_material": "steel", "follower_material": "steel", "bearing_rating_type": "big"}},
+            "contact.bearing_rating_type",
+            "track_roller",
+        ),
+        (
+            {"contact": {"cam_material": "steel", "follower_material": "steel", "force_model": "elastic"}},
+            "contact.force_model",
+            "rigid",
+        ),
+    ],
+)
 def test_bad_input_is_one_line(change, field, words, tmp_path, capsys):
     doc = _doc("translating_contact.toml")
     for table, values in change.items():

@@ -11,8 +11,8 @@ from cams.io.designfile import design_from_dict
 from cams.strength import film, hertz
 from cams.strength.along import flat_geometry, roller_geometry
 
-ES = hertz.contact_modulus(206e3, 0.3, 206e3, 0.3) * 1e6      # Pa
-EP = 2 * ES                                                    # the EHL literature's E'
+ES = hertz.contact_modulus(206e3, 0.3, 206e3, 0.3) * 1e6  # Pa
+EP = 2 * ES  # the EHL literature's E'
 
 
 @pytest.mark.parametrize("u, R, w", [(2.0, 7.5e-3, 2e5), (0.5, 20e-3, 5e4), (5.0, 5e-3, 4e5)])
@@ -22,7 +22,7 @@ def test_two_formulas_agree_within_their_spread(u, R, w):
     a = film.dowson_higginson(u, R, w, EP, 0.05, 20e-9)
     b = film.hamrock(u, R, w, EP, 0.05, 20e-9)
     assert 0.8 < float(b / a) < 1.2
-    assert 0.05e-6 < float(a) < 5e-6          # a cam's film: a tenth of a micrometre to a few
+    assert 0.05e-6 < float(a) < 5e-6  # a cam's film: a tenth of a micrometre to a few
 
 
 def test_the_power_of_speed_and_the_groups():
@@ -30,8 +30,9 @@ def test_the_power_of_speed_and_the_groups():
     in place of E' is not what they give)."""
     h1 = film.dowson_higginson(1.0, 0.01, 1e5, EP, 0.05, 20e-9)
     assert float(film.dowson_higginson(3.0, 0.01, 1e5, EP, 0.05, 20e-9) / h1) == pytest.approx(3**0.7, rel=1e-12)
-    assert float(film.hamrock(3.0, 0.01, 1e5, EP, 0.05, 20e-9) / film.hamrock(1.0, 0.01, 1e5, EP, 0.05, 20e-9)) \
-        == pytest.approx(3**0.694, rel=1e-12)
+    assert float(
+        film.hamrock(3.0, 0.01, 1e5, EP, 0.05, 20e-9) / film.hamrock(1.0, 0.01, 1e5, EP, 0.05, 20e-9)
+    ) == pytest.approx(3**0.694, rel=1e-12)
     assert float(film.dowson_higginson(1.0, 0.01, 2e5, EP, 0.05, 20e-9) / h1) == pytest.approx(2**-0.13, rel=1e-12)
     # by hand: h = 2.65 R U^0.7 G^0.54 W^-0.13
     U, G, W = 0.05 * 1.0 / (EP * 0.01), 20e-9 * EP, 1e5 / (EP * 0.01)
@@ -47,14 +48,27 @@ def test_film_parameter_and_zero_crossings():
 
 
 def _roller(kind: str) -> dict:
-    fo = {"kind": "rocker", "arm": 125.0, "swing": 15.0, "roller_radius": 10.0, "rise_direction": "cw"} \
-        if kind == "rocker" else {"kind": "translating", "stroke": 30.0, "roller_radius": 8.0}
-    return {"follower": fo, "cam": {"rotation": "ccw", "base_radius": 60.0, **({} if kind == "rocker" else {})},
-            "motion": [{"phase": "rise", "law": "cycloidal", "angle": 120}, {"phase": "dwell", "angle": 30},
-                       {"phase": "return", "law": "poly345", "angle": 120}, {"phase": "dwell"}],
-            "limits": {"pressure_angle": 45, "closure": "force",
-                       **({"centre_distance": 150.0} if kind == "rocker" else {})},
-            **({} if kind == "rocker" else {"follower": {**fo, "offset": 5.0}})}
+    fo = (
+        {"kind": "rocker", "arm": 125.0, "swing": 15.0, "roller_radius": 10.0, "rise_direction": "cw"}
+        if kind == "rocker"
+        else {"kind": "translating", "stroke": 30.0, "roller_radius": 8.0}
+    )
+    return {
+        "follower": fo,
+        "cam": {"rotation": "ccw", "base_radius": 60.0},
+        "motion": [
+            {"phase": "rise", "law": "cycloidal", "angle": 120},
+            {"phase": "dwell", "angle": 30},
+            {"phase": "return", "law": "poly345", "angle": 120},
+            {"phase": "dwell"},
+        ],
+        "limits": {
+            "pressure_angle": 45,
+            "closure": "force",
+            **({"centre_distance": 150.0} if kind == "rocker" else {}),
+        },
+        **({} if kind == "rocker" else {"follower": {**fo, "offset": 5.0}}),
+    }
 
 
 @pytest.mark.parametrize("kind", ["translating", "rocker"])
@@ -80,18 +94,34 @@ def test_a_roller_s_entrainment_is_the_contact_s_travel_along_the_cam(kind):
     w0, w1, w2 = work(phi - 1e-4), work(phi), work(phi + 1e-4)
     a, b, cc = (np.linalg.norm(w1 - w0, axis=1), np.linalg.norm(w2 - w1, axis=1), np.linalg.norm(w2 - w0, axis=1))
     cross = (w1 - w0)[:, 0] * (w2 - w1)[:, 1] - (w1 - w0)[:, 1] * (w2 - w1)[:, 0]
-    rho = a * b * cc / (2 * cross) * (-d.cam_sense)          # the profile runs against the cam's sense
+    rho = a * b * cc / (2 * cross) * (-d.cam_sense)  # the profile runs against the cam's sense
     assert g.cam_radius == pytest.approx(rho, rel=1e-4)
 
 
 def _flat(kind: str, R0: float) -> dict:
-    fo = {"kind": "rocker", "face": "flat", "swing": 15.0, "centre_distance": 120.0, "face_offset": 10.0,
-          "rise_direction": "cw"} if kind == "rocker" else {"kind": "translating", "face": "flat", "stroke": 20.0,
-                                                            "offset": 3.0}
-    return {"follower": fo, "cam": {"rotation": "cw", "base_radius": R0},
-            "motion": [{"phase": "rise", "law": "cycloidal", "angle": 120}, {"phase": "dwell", "angle": 60},
-                       {"phase": "return", "law": "poly345", "angle": 120}, {"phase": "dwell"}],
-            "limits": {"min_radius": 1.0}}
+    fo = (
+        {
+            "kind": "rocker",
+            "face": "flat",
+            "swing": 15.0,
+            "centre_distance": 120.0,
+            "face_offset": 10.0,
+            "rise_direction": "cw",
+        }
+        if kind == "rocker"
+        else {"kind": "translating", "face": "flat", "stroke": 20.0, "offset": 3.0}
+    )
+    return {
+        "follower": fo,
+        "cam": {"rotation": "cw", "base_radius": R0},
+        "motion": [
+            {"phase": "rise", "law": "cycloidal", "angle": 120},
+            {"phase": "dwell", "angle": 60},
+            {"phase": "return", "law": "poly345", "angle": 120},
+            {"phase": "dwell"},
+        ],
+        "limits": {"min_radius": 1.0},
+    }
 
 
 @pytest.mark.parametrize("kind, R0", [("translating", 40.0), ("rocker", 50.0)])
@@ -118,7 +148,7 @@ def test_a_flat_face_s_entrainment_from_the_travels_along_both_surfaces(kind, R0
     cam_travel = np.sum((wp - wm) / (2 * h) * u_cam, axis=1)
     face_travel = (flat_contact(d, R0, phi + h).position - flat_contact(d, R0, phi - h).position) / (2 * h)
     assert g.entrainment == pytest.approx(-(cam_travel + face_travel) / 2, rel=1e-5, abs=1e-6)
-    if kind == "translating":       # by hand: -eps (R0 + s + 2 s'') / 2
+    if kind == "translating":  # by hand: -eps (R0 + s + 2 s'') / 2
         m = d.program.evaluate(phi)
         assert g.entrainment == pytest.approx(-eps * (R0 + m.s + 2 * m.d2s) / 2, rel=1e-12)
 
@@ -141,5 +171,5 @@ def test_the_nose_radius_trap():
     # along a turn of such a nose the entrainment changes sign: the crossing is flagged
     phi = np.linspace(-0.5, 0.5, 201)
     d = h + R0 - 17.0
-    u = 17.0 - d * np.cos(phi)               # R0 + s + 2 s'' on the nose: r_n + d cos - 2 d cos
+    u = 17.0 - d * np.cos(phi)  # R0 + s + 2 s'' on the nose: r_n + d cos - 2 d cos
     assert film.zero_crossings(phi + 0.5, u)

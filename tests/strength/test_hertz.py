@@ -10,8 +10,8 @@ from scipy import integrate
 
 from cams.strength import hertz
 
-E, NU = 206e3, 0.3          # MPa, steel
-F, WIDTH = 2000.0, 10.0     # N, mm
+E, NU = 206e3, 0.3  # MPa, steel
+F, WIDTH = 2000.0, 10.0  # N, mm
 
 
 def _norton_p0(F: float, L: float, R1: float, R2: float, E1=E, nu1=NU, E2=E, nu2=NU) -> float:
@@ -58,6 +58,7 @@ def test_the_pressure_carries_the_force_and_the_radius_signs():
 def _flamant(x: float, z: float, b: float = 1.0, p0: float = 1.0) -> tuple[float, float, float]:
     """The stresses at (x, z) of the elliptic pressure as a sum of line loads p(s) ds at s (Flamant's solution:
     sigma_x = -2 P (x-s)^2 z / (pi r^4), sigma_z = -2 P z^3 / (pi r^4), tau_xz = -2 P (x-s) z^2 / (pi r^4))."""
+
     def kern(s, which):
         dx = x - s
         r4 = (dx * dx + z * z) ** 2
@@ -65,12 +66,17 @@ def _flamant(x: float, z: float, b: float = 1.0, p0: float = 1.0) -> tuple[float
         num = {"x": dx * dx * z, "z": z**3, "xz": dx * z * z}[which]
         return -2 * P * num / (np.pi * r4)
 
-    return tuple(integrate.quad(kern, -b, b, args=(k,), points=[x] if -b < x < b else None, limit=400,
-                                epsabs=1e-12, epsrel=1e-11)[0] for k in ("x", "z", "xz"))
+    return tuple(
+        integrate.quad(
+            kern, -b, b, args=(k,), points=[x] if -b < x < b else None, limit=400, epsabs=1e-12, epsrel=1e-11
+        )[0]
+        for k in ("x", "z", "xz")
+    )
 
 
-@pytest.mark.parametrize("x, z", [(0.0, 0.786), (0.0, 0.3), (0.0, 2.0), (0.5, 0.5), (-0.8, 0.3), (1.5, 0.7),
-                                  (0.9, 0.05)])
+@pytest.mark.parametrize(
+    "x, z", [(0.0, 0.786), (0.0, 0.3), (0.0, 2.0), (0.5, 0.5), (-0.8, 0.3), (1.5, 0.7), (0.9, 0.05)]
+)
 def test_mcewen_s_field_is_the_line_loads_summed(x, z):
     sx, sz, txz = hertz.subsurface_field(np.array([x]), np.array([z]))
     fx, fz, fxz = _flamant(x, z)
@@ -106,4 +112,5 @@ def test_p0_scales_as_one_over_root_width_and_root_force():
     forum = np.array([331228.0, 306658.0, 286852.0])
     assert p / p[0] == pytest.approx(forum / forum[0], abs=2e-6)
     assert float(hertz.max_pressure(2 * F / WIDTH, 7.5, Es)) == pytest.approx(
-        np.sqrt(2) * float(hertz.max_pressure(F / WIDTH, 7.5, Es)), rel=1e-14)
+        np.sqrt(2) * float(hertz.max_pressure(F / WIDTH, 7.5, Es)), rel=1e-14
+    )

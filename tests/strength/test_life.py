@@ -31,7 +31,7 @@ def _brute_force_turns(design, centre, phi):
     f, eps = design.follower, design.cam_sense
     P = pitch_curve(design, centre, phi).point
     chord = np.linalg.norm(np.diff(P, axis=0), axis=1)
-    if f.kind == "rocker":      # the arm's angle about its pivot; a translating follower's pin does not turn
+    if f.kind == "rocker":  # the arm's angle about its pivot; a translating follower's pin does not turn
         A = f.position(design.program.evaluate(phi).s) - f.pivot
         beta = np.unwrap(np.arctan2(A[:, 1], A[:, 0]))
     else:
@@ -58,8 +58,11 @@ def test_the_mean_load_is_weighted_by_the_roller_s_revolutions(name):
     assert co.life_hours == pytest.approx(hours, rel=2e-3)
     # weighted by cam angle instead: 5 % off on the translating example (its load varies; the roller turns slowest
     # on the base circle); the rocker's load is nearly constant (its large working moment): the weights hardly matter
-    by_angle = (cam.design.contact.bearing_rating / (np.mean(load**p)) ** (1 / p)) ** p * 1e6 / (
-        per_turn * cam.design.rpm * 60)
+    by_angle = (
+        (cam.design.contact.bearing_rating / (np.mean(load**p)) ** (1 / p)) ** p
+        * 1e6
+        / (per_turn * cam.design.rpm * 60)
+    )
     assert abs(by_angle / hours - 1) > (0.04 if name.startswith("translating") else 0.0)
 
 
@@ -74,8 +77,9 @@ def test_a_rocker_s_arm_turns_with_the_roller():
 
     P = pitch_curve(cam.design, cam.solution.centre, fine).point
     chord = np.linalg.norm(np.diff(P, axis=0), axis=1)
-    frame = (-cam.design.cam_sense * chord / cam.design.follower.roller_radius
-             + cam.design.cam_sense * np.diff(fine)) / (2 * np.pi)
+    frame = (
+        -cam.design.cam_sense * chord / cam.design.follower.roller_radius + cam.design.cam_sense * np.diff(fine)
+    ) / (2 * np.pi)
     rise = fine[:-1] < np.radians(120)
     swing = np.radians(15) / (2 * np.pi)
     assert abs(np.abs(frame[rise]).sum() - np.abs(steps[rise]).sum()) == pytest.approx(swing, rel=1e-6)

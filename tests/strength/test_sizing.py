@@ -17,7 +17,7 @@ from tests.conftest import EXAMPLES
 def _translating(**contact) -> dict:
     d = tomllib.loads((EXAMPLES / "translating_contact.toml").read_text(encoding="utf-8"))
     d["limits"].pop("min_base_radius")
-    d["contact"].update({"min_film_parameter": 0.5, **contact})     # the film not at stake here
+    d["contact"].update({"min_film_parameter": 0.5, **contact})  # the film not at stake here
     return d
 
 
