@@ -151,6 +151,23 @@ class _Family:
         return cand, v
 
 
+#: The contact stress's stall: a growth step of the floor that lowers the largest Hertz pressure by less than this
+#: fraction of itself, the stress alone failing, ends the upward scan (no larger cam will meet it: the pressure
+#: tends to the roller's own, ``sqrt(w E* / (pi r))``, as the cam's curvature flattens). A heuristic stop, said so.
+STALL = 1e-3
+
+
+def _stress_levels_off(before: Verdict, now: Verdict) -> bool:
+    """True when only the contact stress fails at both floors and the later's largest pressure is within
+    :data:`STALL` of the earlier's (or above it)."""
+    if before.failing != ("contact_stress",) or now.failing != ("contact_stress",):
+        return False
+    a, b = before.failed_check("contact_stress"), now.failed_check("contact_stress")
+    if a is None or b is None or a.worst is None or b.worst is None:
+        return False
+    return bool(b.worst > a.worst * (1.0 - STALL))
+
+
 def _end_of_family(fam: _Family, lo: float, hi: float, last: tuple[SolveResult, Verdict]):
     """The family ends between ``lo`` (a cam, failing) and ``hi`` (none): a passing cam before the end, or None.
 
@@ -331,6 +348,9 @@ def size_to_part(face: Face, design, base: SolveResult,
         if v.passed:
             found = (F, cand, v)
             break
+        if _stress_levels_off(last[1], v):
+            raise _no_cam(fam, base, F, cand, v, "where the largest Hertz pressure levels off: it falls by less "
+                          f"than {STALL:g} of itself as R0 grows by {GROWTH:g}, bounded by the roller's own radius")
         lo, g_lo, last = F, v.margin, (cand, v)
         F *= GROWTH
     if found is None:
