@@ -16,7 +16,10 @@ can be made and run as designed; it is false when any of these fails:
   profile round the cam centre, the bore given by ``[cam] bore_radius``
   inside the cam;
 * the ``[dynamics]`` table, when given: the follower keeps contact, does not
-  jam and meets no rigid impact (:attr:`cams.dynamics.forces.CamForces.ok`).
+  jam and meets no rigid impact (:attr:`cams.dynamics.forces.CamForces.ok`);
+* the ``[contact]`` table, when given: the contact stress within the
+  allowable, the film parameter at least its minimum, the bearing's life at
+  least its target (:meth:`cams.strength.along.ContactCycle.failures`).
 
 A design is usable when it is both; every command exits 1 otherwise.
 """
@@ -99,7 +102,8 @@ def _dynamics_failure(forces) -> str | None:
     return "dynamics: " + "; ".join(why or ["the forces fail"])
 
 
-def assess(design, solution, *, checks=None, forces=None, no_profile: str | None = None) -> Assessment:
+def assess(design, solution, *, checks=None, forces=None, no_profile: str | None = None,
+           contact=None) -> Assessment:
     """Assess a sized cam from its parts.
 
     Parameters
@@ -116,6 +120,9 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     no_profile : str, optional
         Why no profile could be built at the chord tolerance (then ``checks``
         is None and the cam is not buildable).
+    contact : cams.strength.along.ContactCycle, optional
+        The ``[contact]`` results: a contact stress over the allowable, a film
+        parameter under its minimum or a bearing life under its target fails.
 
     Returns
     -------
@@ -171,6 +178,9 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
         why = _dynamics_failure(forces.forces)
         if why is not None:
             fail("dynamics", why)
+    if contact is not None:
+        for short, line in contact.failures():
+            fail(short, line)
     return Assessment(verified, buildable, tuple(f for _, f in failures), tuple(s for s, _ in failures), certified)
 
 
@@ -185,5 +195,6 @@ def assess_cam(cam) -> Assessment:
         except ProfileSizeError as e:  # a valid design whose profile the tolerance cannot carry: not buildable
             no_profile = str(e)
     has_dynamics = cam.design.dynamics is not None  # else no forces module to import
+    has_contact = cam.design.contact is not None
     return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None,
-                  no_profile=no_profile)
+                  no_profile=no_profile, contact=cam.contact if has_contact else None)

@@ -124,6 +124,22 @@ class Cam:
         return self._forces[1]
 
     @cached_property
+    def _contact(self):
+        """``(ContactCycle or None, note or None)`` of the face's contact stage, computed once."""
+        return self.face.contact(self.design, self.solution, self.forces)
+
+    @property
+    def contact(self):
+        """The contact along the cycle (:class:`cams.strength.along.ContactCycle`): stresses, film, life; None
+        without a ``[contact]`` table or without forces (:attr:`contact_note` says why)."""
+        return self._contact[0]
+
+    @property
+    def contact_note(self) -> str | None:
+        """Why there is no contact stress where ``[contact]`` asks for it, else None."""
+        return self._contact[1]
+
+    @cached_property
     def assessment(self):
         """Verified and buildable, with the reasons (:func:`cams.assess.assess_cam`)."""
         from cams.assess import assess_cam

@@ -116,6 +116,19 @@ def test_dynamics_keys_documented():
     assert _missing(_section(_design(), "### `[dynamics]`"), designfile.DYNAMICS_KEYS) == []
 
 
+def test_contact_keys_documented():
+    """The [contact] table's keys and the JSON contact object's keys, each in the section."""
+    from cams.model.contact import CONTACT_KEYS
+
+    section = _section(_design(), "### `[contact]`")
+    assert _missing(section, CONTACT_KEYS) == []
+    json_keys = ("max_pressure", "max_pressure_at_deg", "at_max.force", "at_max.cam_curvature_radius",
+                 "at_max.follower_radius", "at_max.half_width", "max_shear", "max_shear_depth", "max_von_mises",
+                 "min_film", "min_film_parameter", "zero_entrainment_at_deg", "min_width", "bearing_life_hours",
+                 "limit")
+    assert _missing(section, json_keys) == []
+
+
 def test_flat_face_refusals_documented():
     """The keys a flat face refuses or alone takes are named in the flat-face section."""
     section = _section(_design(), "### Flat-faced followers")

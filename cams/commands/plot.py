@@ -19,7 +19,7 @@ PICTURES = tuple(RollerPresenter.pictures)
 #: A flat-faced follower's pictures: no zone; the radius of curvature with the contact's travel instead.
 FLAT_PICTURES = tuple(FlatPresenter.pictures)
 #: Every picture name ``--only`` takes ("optimized": a design with an [optimize] table, drawn for it by default).
-NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "optimized")
+NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "contact", "optimized")
 
 def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progress | None = None) -> list[Path]:
     """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.
@@ -75,7 +75,7 @@ def run(args) -> int:
 
     which = _only(args.only)
     from cams.present.faces import presenter
-    from cams.present.plots import no_forces
+    from cams.present.plots import no_contact, no_forces
 
     cam = Cam.from_file(args.file)
     designed = cam.given.optimize is not None
@@ -83,8 +83,12 @@ def run(args) -> int:
         which = (*presenter(cam).pictures, *(("optimized",) if designed else ()))
         if no_forces(cam) is not None:
             which = tuple(w for w in which if w != "forces")
+        if no_contact(cam) is not None:
+            which = tuple(w for w in which if w != "contact")
     elif "forces" in which and (why := no_forces(cam)) is not None:
         raise InputError("--only", f"forces: {why}")
+    elif "contact" in which and (why := no_contact(cam)) is not None:
+        raise InputError("--only", f"contact: {why}")
     elif "optimized" in which and not designed:
         which = tuple(w for w in which if w != "optimized")
         print("cams plot: note: optimized: the design has no [optimize] table, no motion was designed; skipped",
@@ -149,7 +153,8 @@ def register(sub) -> None:
     q.add_argument("--out", default=".", help="output folder (default: current)")
     q.add_argument("--only", help=f"comma-separated subset of {','.join(PICTURES)} (flat face: "
                    f"{','.join(FLAT_PICTURES)}); forces needs a [dynamics] table (contact force, spring and load, "
-                   "camshaft torque); a design with [optimize] adds optimized (the designed laws, pressure "
+                   "camshaft torque); contact needs a [contact] table (p0 and the film along the cycle); a design "
+                   "with [optimize] adds optimized (the designed laws, pressure "
                    "angles and cam beside the original ones)")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
     q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "

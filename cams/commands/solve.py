@@ -72,6 +72,11 @@ def _work(cam, design, bar):
                 rep["notes"].append(note)
     if cam.face.forces_computed:
         rep["forces"] = forces
+    if design.contact is not None:
+        c, note = cam.contact, cam.contact_note
+        rep["contact"] = None if c is None else c.to_dict()
+        for n in ([note] if note else []) + ([] if c is None else c.notes()):
+            rep["notes"].append(n)
     # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
     a = cam.assessment
     rep.update(a.to_dict())

@@ -98,6 +98,47 @@ class Face(ABC):
         """``(DesignForces or None, note or None)``: the ``[dynamics]`` table's spring, forces and jump speed."""
         return None, None
 
+    def contact(self, design, solution: SolveResult, forces: Any) -> tuple[Any, str | None]:
+        """``(ContactCycle or None, note or None)``: the ``[contact]`` table's stresses, film and life along the
+        cycle (:mod:`cams.strength.along`) under the contact force of ``forces`` (:meth:`forces`' DesignForces;
+        ``force_model = "rigid"``). None without ``[contact]``; None with a note without forces."""
+        if design.contact is None:
+            return None, None
+        if forces is None:
+            return None, "[contact] needs the contact force of [dynamics] (a force-closed cam and cam.rpm)"
+        from cams.strength.along import contact_cycle
+
+        f = forces.forces
+        return contact_cycle(design, self.contact_geometry(design, solution, f.phi, f.length_unit), f.contact,
+                             f.omega), None
+
+    def contact_check(self, design, solution: SolveResult) -> Check | None:
+        """The largest Hertz pressure along the cycle against ``[contact]``'s allowable (a check in MPa named
+        ``contact_stress``): what the sizing to the part (:mod:`cams.faces.part`) judges a candidate's contact by.
+        None without ``[contact]``, without an allowable, or without forces (no speed, form closure)."""
+        if design.contact is None:
+            return None
+        from cams.strength.along import materials_of
+
+        allowable = materials_of(design.contact).allowable
+        if allowable is None:
+            return None
+        forces, _ = self.forces(design, solution)
+        cycle, _ = self.contact(design, solution, forces)
+        if cycle is None:
+            return None
+        from cams.checks.base import Check
+
+        i = cycle.at_max
+        p0 = cycle.max_pressure
+        return Check("contact_stress", bool(p0 <= allowable), p0, float(cycle.phi[i]), float(allowable), "MPa",
+                     f"largest Hertz pressure {p0:.6g} MPa at cam angle {np.degrees(cycle.phi[i]) % 360:.2f} deg "
+                     f"against the allowable {allowable:.6g} MPa")
+
+    def contact_geometry(self, design, solution: SolveResult, phi: np.ndarray, length_unit: float) -> Any:
+        """The contact's geometry at cam angles ``phi`` (:class:`cams.strength.along.ContactGeometry`)."""
+        raise InputError("contact", f"a {self.name} follower's contact stress is not computed")
+
     def tradeoff(self, design) -> Any:
         """The R0-L trade-off of the cam (a rocker roller's), or None where the face has none."""
         return None

@@ -120,6 +120,11 @@ class FlatFace(Face):
 
         return flat_design_forces(design, float(solution.R0))
 
+    def contact_geometry(self, design, solution: SolveResult, phi, length_unit: float):
+        from cams.strength.along import flat_geometry
+
+        return flat_geometry(design, float(solution.R0), phi, length_unit)
+
 
 #: The flat-faced follower's pipeline.
 FLAT = FlatFace()

@@ -12,7 +12,9 @@ profile may not clear the shaft's bore, the roller may undercut it, its curvatur
   analytic rates, never the sampled polyline's): the pressure angle within its limits (the independent check,
   :attr:`cams.faces.result.SolveResult.verified`, and its recomputation), the working profile's smallest radius at
   least the bore radius plus the hub wall (``bore``), no undercut and a working profile at all (``undercut``), the
-  least radius of curvature asked for (``curvature``), a flat face's convexity (``convexity``).
+  least radius of curvature asked for (``curvature``), a flat face's convexity (``convexity``), and with a
+  ``[contact]`` table's allowable stress the largest Hertz pressure along the cycle within it
+  (``contact_stress``, :meth:`cams.faces.base.Face.contact_check`: the cam's forces and contact computed).
 
 The search: from the pressure-angle minimum the floor jumps to the least R0 whose base circle clears the bore by
 the wall (:meth:`cams.faces.base.Face.bore_R0`: no smaller cam can, since the roller centre's path passes the
@@ -63,13 +65,14 @@ MAX_STEPS = 200
 #: The constraint each check (or each unbuildable reason of a face) stands for, as ``governs`` names it.
 GOVERNS = {"jamming_rise": "pressure_angle", "jamming_return": "pressure_angle", "bore": "bore",
            "undercut": "undercut", "undercut_outer": "undercut", "no working profile": "undercut",
-           "min_curvature_radius": "curvature", "convexity": "convexity"}
+           "min_curvature_radius": "curvature", "convexity": "convexity", "contact_stress": "contact_stress"}
 #: The checks whose worst value 0 is a corner of the pitch curve at a phase joint (a velocity jump): radius 0 at
 #: every size, so no cam of the family passes them (:func:`cams.checks.profile.curvature_extremes`).
 SIZELESS = ("undercut", "undercut_outer")
 #: The design file's field that asks for each constraint (for the error when no cam of the family meets it).
 FIELDS = {"pressure_angle": "limits.pressure_angle", "bore": "cam.bore_radius", "undercut": "follower.roller_radius",
-          "curvature": "profile.min_curvature_radius", "convexity": "limits.min_radius"}
+          "curvature": "profile.min_curvature_radius", "convexity": "limits.min_radius",
+          "contact_stress": "contact.allowable_stress"}
 #: Notes of the face's sizing that the answer does not keep: a floor raised (the search's is not the user's) and
 #: the base cam's failures (the answer passes).
 _STALE_NOTES = ("R0 raised to the constructive floor", "R0 raised to limits.min_base_radius", "not buildable:",
@@ -113,6 +116,9 @@ def judge(face: Face, design, solution: SolveResult) -> Verdict:
     roller's (``undercut``).
     """
     checks = tuple(face.part_checks(design, solution))
+    stress = face.contact_check(design, solution)
+    if stress is not None:
+        checks = (*checks, stress)
     failing: list[str] = []
     margin = np.inf
     if not solution.verified:
@@ -143,6 +149,23 @@ class _Family:
         if not v.passed:
             self.failing[F] = v
         return cand, v
+
+
+#: The contact stress's stall: a growth step of the floor that lowers the largest Hertz pressure by less than this
+#: fraction of itself, the stress alone failing, ends the upward scan (no larger cam will meet it: the pressure
+#: tends to the roller's own, ``sqrt(w E* / (pi r))``, as the cam's curvature flattens). A heuristic stop, said so.
+STALL = 1e-3
+
+
+def _stress_levels_off(before: Verdict, now: Verdict) -> bool:
+    """True when only the contact stress fails at both floors and the later's largest pressure is within
+    :data:`STALL` of the earlier's (or above it)."""
+    if before.failing != ("contact_stress",) or now.failing != ("contact_stress",):
+        return False
+    a, b = before.failed_check("contact_stress"), now.failed_check("contact_stress")
+    if a is None or b is None or a.worst is None or b.worst is None:
+        return False
+    return bool(b.worst > a.worst * (1.0 - STALL))
 
 
 def _end_of_family(fam: _Family, lo: float, hi: float, last: tuple[SolveResult, Verdict]):
@@ -325,6 +348,9 @@ def size_to_part(face: Face, design, base: SolveResult,
         if v.passed:
             found = (F, cand, v)
             break
+        if _stress_levels_off(last[1], v):
+            raise _no_cam(fam, base, F, cand, v, "where the largest Hertz pressure levels off: it falls by less "
+                          f"than {STALL:g} of itself as R0 grows by {GROWTH:g}, bounded by the roller's own radius")
         lo, g_lo, last = F, v.margin, (cand, v)
         F *= GROWTH
     if found is None:

@@ -345,6 +345,11 @@ class RollerFace(Face):
 
         return design_forces(design, solution.centre)
 
+    def contact_geometry(self, design, solution: SolveResult, phi, length_unit: float):
+        from cams.strength.along import roller_geometry
+
+        return roller_geometry(design, solution.centre, phi, length_unit)
+
     def tradeoff(self, design):
         if design.follower.kind != "rocker":
             return None

@@ -58,6 +58,7 @@ from cams.io.document import check_document, check_keys, read_toml, toml_integer
 from cams.io.document import toml_number as _num
 from cams.io.document import toml_table as _table
 from cams.io.lawtable import law_from_table
+from cams.model.contact import CONTACT_KEYS, ContactSpec
 from cams.model.design import (
     MAX_SAMPLES,
     OBJECTIVE_SUPERSEDED,
@@ -90,9 +91,10 @@ from laws.units import LENGTH_UNITS
 __all__ = ["load_design", "design_from_dict", "dynamics_from_dict", "designed_document", "MAX_SAMPLES"]
 
 _KEYS = {
-    "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics", "optimize"},
+    "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics", "optimize",
+         "contact"},
     "follower": {"kind", "face", "arm", "swing", "stroke", "offset", "roller_radius", "rise_direction"},
-    "cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius", "centre"},
+    "cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius", "centre", "width"},
     "motion": {"phase", "law", "angle", "height"},
     "limits": {"pressure_angle", "return_pressure_angle", "closure", "safety_factor",
                "centre_distance", "min_base_radius"},
@@ -101,7 +103,7 @@ _KEYS = {
     # flat-faced followers
     "flat_rocker": {"kind", "face", "swing", "rise_direction", "centre_distance", "face_offset"},
     "flat_translating": {"kind", "face", "stroke", "offset"},
-    "flat_cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius"},
+    "flat_cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius", "width"},
     "flat_limits": {"min_radius", "min_base_radius", "closure"},
     "flat_profile": {"tolerance"},
 }
@@ -159,7 +161,7 @@ LENGTH_RANGE = (1e-9, 1e9)
 _LENGTH_KEYS = {
     "follower": ("arm", "stroke", "offset", "roller_radius", "centre_distance", "face_offset"),
     "limits": ("centre_distance", "min_base_radius", "min_radius"),
-    "cam": ("bore_radius", "hub_wall", "base_radius"),
+    "cam": ("bore_radius", "hub_wall", "base_radius", "width"),
     "profile": ("tolerance", "min_curvature_radius"),
 }
 
@@ -285,6 +287,7 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         min_curvature_radius=_value(pt, "min_curvature_radius"), bore_radius=_value(cam, "bore_radius"),
         hub_wall=_value(cam, "hub_wall"), constraints=so.get("constraints", "all"),
         dynamics=_dynamics(d, kind), optimize=_optimize(d, so),
+        width=_num(cam, "width", "cam.width", required=False), contact=_contact(d),
     )
 
 
@@ -462,7 +465,25 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         hub_wall=_num(cam, "hub_wall", "cam.hub_wall", required=False),
         tolerance=_num(pt, "tolerance", "profile.tolerance", required=False),
         optimize=_optimize(d, {}), dynamics=dynamics,
+        width=_num(cam, "width", "cam.width", required=False), contact=_contact(d),
     )
+
+
+def _contact(d: dict) -> ContactSpec | None:
+    """The optional [contact] table (None without one), onto a :class:`cams.model.contact.ContactSpec` (the file's
+    units; the material names are resolved by :mod:`cams.strength.materials` where the stress is computed)."""
+    if "contact" not in d:
+        return None
+    table = d["contact"]
+    if not isinstance(table, dict):
+        raise InputError("contact", "must be a table")
+    check_keys(table, CONTACT_KEYS, "contact")
+    if "dynamics" not in d:
+        raise InputError("contact", "the contact stress needs the contact force: add a [dynamics] table (and "
+                         "cam.rpm)")
+    if "width" not in (d.get("cam") or {}):
+        raise InputError("cam.width", "the contact stress needs the cam's face width: give cam.width (mm, > 0)")
+    return ContactSpec(**table)
 
 
 def _dynamics(d: dict, kind: str, *, flat: bool = False) -> DynamicsSpec | None:

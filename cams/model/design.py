@@ -11,6 +11,7 @@ from typing import ClassVar
 
 import numpy as np
 
+from cams.model.contact import ContactSpec
 from cams.model.dynamics import DynamicsSpec, check_dynamics_follower
 from cams.model.follower import (
     FlatFollower,
@@ -119,6 +120,10 @@ class Design:
         The follower's dynamics (a file's ``[dynamics]``); None: no forces.
     optimize : MotionDesignSpec or None
         Design the free phases' laws with the cam (a file's ``[optimize]``); None: the laws are as given.
+    width : float or None
+        The cam's face width (length, > 0; ``[cam] width``): the contact's length for its stress.
+    contact : ContactSpec or None
+        The contact's materials, lubricant and bearing (a file's ``[contact]``); None: no contact stress.
     """
 
     #: The follower's face: ``"roller"`` (a knife edge is a roller of radius 0) or ``"flat"``; a label for texts
@@ -139,9 +144,18 @@ class Design:
     constraints: str
     dynamics: DynamicsSpec | None
     optimize: MotionDesignSpec | None
+    width: float | None
+    contact: ContactSpec | None
 
     def _check_common(self) -> None:
         """Refuse the common fields' bad values (one line each, named as in the design file)."""
+        if self.width is not None:
+            check_length("cam.width", self.width)
+        if self.contact is not None:
+            if not isinstance(self.contact, ContactSpec):
+                raise InputError("contact", f"must be a ContactSpec, got {type(self.contact).__name__}")
+            if self.width is None:
+                raise InputError("cam.width", "the contact stress needs the cam's face width: give cam.width (mm)")
         if self.cam_sense not in (1, -1):
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
@@ -296,6 +310,8 @@ class CamDesign(Design):
     constraints: str = "all"
     dynamics: DynamicsSpec | None = None
     optimize: MotionDesignSpec | None = None
+    width: float | None = None
+    contact: ContactSpec | None = None
 
     def __post_init__(self) -> None:
         # in the order a design file's tables are read, so that a file with two faults names the same one
@@ -502,6 +518,8 @@ class FlatFaceDesign(Design):
     dynamics: DynamicsSpec | None = None
     hub_wall: float | None = None
     constraints: str = "all"
+    width: float | None = None
+    contact: ContactSpec | None = None
 
     face = "flat"
 

@@ -29,7 +29,7 @@ from cams.words import binding_text, phase_words
 from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
-           "plot_forces", "picture", "PICTURES", "no_forces",
+           "plot_forces", "picture", "PICTURES", "no_forces", "plot_contact", "no_contact",
            "animate_profile", "save", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
@@ -479,6 +479,73 @@ def plot_forces(cam):
     return fig
 
 
+def no_contact(cam) -> str | None:
+    """Why ``cam`` has no contact stress to draw, or None when it has (:func:`plot_contact`)."""
+    if cam.design.contact is None:
+        return ("the design has no [contact] table (the materials, and [cam] width); add one, with [dynamics] and "
+                "cam.rpm, to draw the contact stress and the film")
+    if cam.contact is None:
+        return f"no contact to draw: {cam.contact_note}"
+    return None
+
+
+def plot_contact(cam):
+    """The contact over one turn: the maximum Hertz pressure p0 (MPa) with the allowable, and the lubricant's
+    minimum film thickness (um) with the film the least film parameter asks for, against the cam angle from the
+    timing datum (degrees); where the entrainment velocity falls to zero a dotted line marks it.
+
+    Raises
+    ------
+    ValueError
+        ``cam`` has no contact (:func:`no_contact` says why).
+    """
+    why = no_contact(cam)
+    if why is not None:
+        raise ValueError(why)
+    co = cam.contact
+    d = cam.design
+    x = np.degrees(co.phi)
+    o = np.argsort(x)
+    x = x[o]
+
+    def finite(v):
+        v = np.asarray(v, dtype=float)[o]
+        return np.where(np.isfinite(v), v, np.nan)
+
+    fig = _figure(h=6.0)
+    ax_p, ax_h = fig.subplots(2, 1, sharex=True)
+    ax_p.plot(x, finite(co.pressure), color="#2b6cb0", lw=1.4, label="maximum Hertz pressure p0")
+    a = co.materials.allowable
+    if a is not None:
+        ax_p.axhline(a, color="#c53030", lw=1.0, ls="--", label=f"allowable {a:.4g} MPa")
+    ax_p.set_ylabel("p0, MPa")
+    if co.film is not None:
+        ax_h.plot(x, finite(co.film), color="#2f855a", lw=1.4, label="minimum film thickness (Dowson-Higginson)")
+        sp = co.spec
+        if sp.cam_roughness is not None and sp.follower_roughness is not None:
+            need = sp.min_film_parameter * float(np.hypot(sp.cam_roughness, sp.follower_roughness))
+            ax_h.axhline(need, color="#c53030", lw=1.0, ls="--",
+                         label=f"film for the film parameter {sp.min_film_parameter:g}: {need:.3g} um")
+        ax_h.set_ylabel("film, um")
+    else:
+        ax_h.plot(x, finite(np.abs(co.entrainment)), color="#2f855a", lw=1.4, label="entrainment velocity")
+        ax_h.set_ylabel("entrainment velocity, m/s")
+    for k, z in enumerate(co.zero_entrainment):
+        for ax in (ax_p, ax_h):
+            ax.axvline(np.degrees(z) % 360, color="#b7791f", lw=1.0, ls=":",
+                       label="entrainment velocity zero" if k == 0 else None)
+    ax_h.set_xlabel("cam angle φ from the timing datum, deg")
+    for ax in (ax_p, ax_h):
+        for s in d.program.starts:
+            ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
+        ax.grid(True, lw=0.3)
+        ax.set_xlim(0, 360)
+        ax.set_ylim(bottom=0)
+        legend_once(ax, fontsize=7, loc="best")
+    _title(ax_p, f"{d.name}: contact stress and film at {co.rpm:.4g} rpm, face width {co.width:.4g} mm")
+    return fig
+
+
 def _draw(ax, cam, profile, phi: float):
     """The cam turned to ``phi`` with its follower, as its face draws it (:mod:`cams.present.faces`)."""
     from cams.present.faces import presenter
@@ -565,6 +632,7 @@ PICTURES = {
     "curvature": lambda cam: plot_curvature(cam.solution),
     "profile": lambda cam: plot_profile(cam),
     "forces": lambda cam: plot_forces(cam),
+    "contact": lambda cam: plot_contact(cam),
 }
 
 

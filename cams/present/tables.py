@@ -69,7 +69,8 @@ def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"]]
     return [("Inputs", inputs), ("Results", results), _blank_section(r, ".6f"), *_lift_table_section(cam),
-            ("Checks", _check_rows(cam)), *_motion_section(cam), *_forces_section(cam)]
+            ("Checks", _check_rows(cam)), *_motion_section(cam), *_forces_section(cam),
+            *_contact_section(cam)]
 
 
 def _part_rows(r: dict, fl: str) -> list[tuple[str, str]]:
@@ -166,7 +167,8 @@ def roller_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     results += _assessment_rows(cam)
     results += [("note", n) for n in r["notes"] if not any(n in f for f in cam.assessment.failures)]  # said once
     return [("Inputs", inputs), ("Results", results), _blank_section(r, fl), *_lift_table_section(cam),
-            ("Checks", _check_rows(cam)), *_motion_section(cam), *_forces_section(cam)]
+            ("Checks", _check_rows(cam)), *_motion_section(cam), *_forces_section(cam),
+            *_contact_section(cam)]
 
 
 def _dynamics_inputs(d, *, sliding_face: bool = False) -> list[tuple[str, str]]:
@@ -313,6 +315,45 @@ def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:
     if note:
         rows.append(("note", note))
     return rows
+
+
+def _contact_section(cam) -> list[tuple[str, list[tuple[str, str]]]]:
+    """The contact's table (a design with ``[contact]`` and its contact computed), else nothing: the largest Hertz
+    pressure with its angle and radii, the subsurface stresses, the film, the life, the least width, the limit
+    that binds, and the notes (edge loading first)."""
+    co = cam.contact if cam.design.contact is not None else None
+    if co is None:
+        return []
+    d = co.to_dict()
+    am = d["at_max"]
+    a = co.materials.allowable
+    rc = "straight" if am["cam_curvature_radius"] is None else f"{am['cam_curvature_radius']:.6g} mm"
+    rf = "a plane" if am["follower_radius"] is None else f"{am['follower_radius']:.6g} mm"
+    p0 = "unbounded" if d["max_pressure"] is None else f"{d['max_pressure']:.6g} MPa"
+    rows = [
+        ("contact force", f"{d['force_model']} ([dynamics] at the cam speed)"),
+        ("face width", f"{co.width:.6g} mm" + ("" if d["min_width"] is None else
+                                                 f" (least for the allowable: {d['min_width']:.6g} mm)")),
+        ("contact modulus E*", f"{co.materials.E_star:.6g} MPa (1/E* = sum (1 - nu^2)/E; the film's E' = 2 E*)"),
+        ("largest Hertz pressure p0", f"{p0} at {deg(d['max_pressure_at_deg'])}"
+         + ("" if a is None else f" (allowable {a:.6g} MPa)")),
+        ("there", f"force {force(am['force'])}, cam's radius of curvature {rc}, follower's {rf}, half-width "
+                  f"{am['half_width']:.4g} mm" if am["half_width"] is not None else "no line contact"),
+        ("below the surface", f"largest shear {d['max_shear']:.6g} MPa at depth {d['max_shear_depth']:.4g} mm; "
+                              f"largest von Mises stress {d['max_von_mises']:.6g} MPa"
+         if d["max_shear"] is not None else "unbounded"),
+    ]
+    if d["min_film"] is not None:
+        lam = "" if d["min_film_parameter"] is None else f", film parameter {d['min_film_parameter']:.3g} (least " \
+            f"allowed {co.spec.min_film_parameter:g})"
+        rows.append(("lubricant film", f"thinnest {d['min_film']:.4g} um{lam} (Dowson-Higginson)"))
+    if d["bearing_life_hours"] is not None:
+        rows.append(("roller bearing life", f"L10 {d['bearing_life_hours']:.6g} h (ISO 281, mean load weighted by "
+                                            "the roller's revolutions)"))
+    if d["limit"] is not None:
+        rows.append(("limit that binds", d["limit"].replace("_", " ")))
+    rows.extend(("note", n) for n in co.notes())
+    return [("Contact stress, film and life", rows)]
 
 
 def _motion_section(cam) -> list[tuple[str, list[tuple[str, str]]]]:

@@ -21,7 +21,8 @@ from cams.words import (
 )
 from cams.words import check_value as _fmt
 
-__all__ = ["print_summary", "print_flat_summary", "print_cam_forces", "print_assessment", "print_checks",
+__all__ = ["print_summary", "print_flat_summary", "print_cam_forces", "print_contact", "print_assessment",
+           "print_checks",
            "pressure_text", "optimization_rows", "print_optimization", "governs_line", "part_lines", "peaks_lines",
            "GOVERNS_WORDS", "verified_words", "NOT_VERIFIED", "no_working_profile"]
 
@@ -50,7 +51,7 @@ GOVERNS_WORDS = {"pressure_angle": "the pressure angle", "convexity": "convexity
                  "min_base_radius": "the floor limits.min_base_radius", "bore": "the bore and its hub wall",
                  "undercut": "the roller (undercut)",
                  "curvature": "the least radius of curvature (profile.min_curvature_radius)",
-                 "chosen": "the chosen cam"}
+                 "contact_stress": "the contact stress (contact.allowable_stress)", "chosen": "the chosen cam"}
 
 
 def governs_line(rep: dict, f: str) -> str | None:
@@ -135,6 +136,8 @@ def print_summary(rep: dict) -> None:
     fo = rep.get("forces")
     if fo:
         print_cam_forces(fo, follower=rep["follower"])
+    if rep.get("contact"):
+        print_contact(rep["contact"])
     failures = rep.get("failures", ())
     for n in rep["notes"]:
         said = any(n in f for f in failures) or (  # said once, on its FAIL line
@@ -310,8 +313,43 @@ def print_flat_summary(rep: dict) -> None:
     fo = rep.get("forces")
     if fo:
         print_cam_forces(fo, follower=rep["follower"])
+    if rep.get("contact"):
+        print_contact(rep["contact"])
     for n in rep["notes"]:
         print(f"  note: {n}")
+
+
+_LIMIT_WORDS = {"contact_stress": "the contact stress", "film_parameter": "the lubricant film",
+                "bearing_life": "the bearing's life"}
+
+
+def print_contact(co: dict, indent: str = "  ") -> None:
+    """The contact's lines of a solve report's ``contact`` (:meth:`cams.strength.along.ContactCycle.to_dict`):
+    the largest Hertz pressure with its angle and radii, the subsurface stresses, the film, the life, the least
+    face width and the contact limit that binds."""
+    def num(v, unit: str, fmt: str = ".4g") -> str:
+        return "unbounded" if v is None else f"{v:{fmt}} {unit}"
+
+    am = co["at_max"]
+    rf = "a plane (flat face)" if am["follower_radius"] is None else num(am["follower_radius"], "mm")
+    rc = "straight" if am["cam_curvature_radius"] is None else num(am["cam_curvature_radius"], "mm")
+    print(f"{indent}contact ({co['force_model']} force): largest Hertz pressure p0 {num(co['max_pressure'], 'MPa')} "
+          f"at {co['max_pressure_at_deg']:.2f} deg (force {num(am['force'], 'N')}, cam's radius of curvature {rc}, "
+          f"follower's {rf}, half-width {num(am['half_width'], 'mm')})")
+    print(f"{indent}  below the surface: largest shear {num(co['max_shear'], 'MPa')} at depth "
+          f"{num(co['max_shear_depth'], 'mm')}, largest von Mises stress {num(co['max_von_mises'], 'MPa')}")
+    if co["min_film"] is not None:
+        lam = "" if co["min_film_parameter"] is None else f", film parameter {co['min_film_parameter']:.3g}"
+        print(f"{indent}  lubricant film: thinnest {co['min_film']:.4g} um{lam} (Dowson-Higginson)")
+    z = co["zero_entrainment_at_deg"]
+    if z:
+        print(f"{indent}  entrainment velocity zero at " + ", ".join(f"{a:.2f} deg" for a in z))
+    if co["bearing_life_hours"] is not None:
+        print(f"{indent}  roller bearing: L10 life {co['bearing_life_hours']:.4g} h at the cam's speed (ISO 281)")
+    if co["min_width"] is not None:
+        print(f"{indent}  least face width for the allowable stress: {co['min_width']:.4g} mm")
+    if co["limit"] is not None:
+        print(f"{indent}  contact limit that binds: {_LIMIT_WORDS.get(co['limit'], co['limit'])}")
 
 
 def print_assessment(a: dict, indent: str = "  ", file=None) -> None:

@@ -1,10 +1,11 @@
-"""The cam's strength, a room for what comes next: contact stress, the lubricant film, the cam's life.
+"""The cam's strength: the contact stress, the lubricant film and the roller bearing's life.
 
-It will hold what follows from the loads on the cam and its profile: the contact stress between the cam and its
-roller or flat face (from the contact force of :mod:`cams.dynamics` and the profile's curvature of
-:mod:`cams.profile`), the lubricant film, and the life they give. It sits above :mod:`cams.dynamics` and
-:mod:`cams.profile` and below the facade (:mod:`cams.solve`), as the layer rule (``tests/test_layers.py``) has
-it; nothing lives here yet.
+:mod:`~cams.strength.materials` (a table of cam and follower materials with their sources),
+:mod:`~cams.strength.hertz` (Hertz's line contact and McEwen's subsurface field), :mod:`~cams.strength.film`
+(entrainment, the EHL film, the film parameter), :mod:`~cams.strength.life` (ISO 281) and
+:mod:`~cams.strength.along` (all of it along the cycle, from a face's contact geometry and the contact force of
+:mod:`cams.dynamics`). It sits above :mod:`cams.dynamics` and :mod:`cams.profile` and below the faces' pipelines
+(their ``contact`` stage) and the facade, as the layer rule (``tests/test_layers.py``) has it.
 """
 
 __all__: list[str] = []

@@ -117,6 +117,14 @@ FLAT_ROCKER = {
 }
 #: a flat-faced rocker with every [dynamics] key a flat face takes (face_friction: a flat face's only)
 FLAT_ROCKER_FORCE = {**FLAT_ROCKER, "dynamics": {**ROCKER_FORCE["dynamics"], "face_friction": 0.1}}
+#: a rocker with its contact: every numeric [contact] key (the moduli and ratios given beside the materials)
+CONTACT_NUMBERS = {"cam_modulus": 206.0, "cam_poisson": 0.3, "follower_modulus": 208.0, "follower_poisson": 0.3,
+                   "allowable_stress": 1500.0, "cam_roughness": 0.3, "follower_roughness": 0.2, "viscosity": 0.1,
+                   "pressure_viscosity": 20.0, "min_film_parameter": 1.0, "bearing_rating": 5000.0,
+                   "life_hours": 1000.0}
+ROCKER_CONTACT = {**ROCKER_FORCE, "cam": {"rpm": 60, "width": 10.0},
+                  "contact": {"cam_material": "steel", "follower_material": "bearing_steel", **CONTACT_NUMBERS}}
+FLAT_ROCKER_WIDTH = {**FLAT_ROCKER, "cam": {**FLAT_ROCKER["cam"], "width": 10.0}}
 FLAT_ROCKER_FLOOR = {  # a floor on R0 sizes the cam: it goes without a chosen [cam] base_radius
     **FLAT_ROCKER, "cam": {"rpm": 60, "bore_radius": 5.0}, "limits": {"min_radius": 5.0, "min_base_radius": 10.0},
 }
@@ -182,6 +190,9 @@ HOMES = {
     ("`[cam]`", "", "hub_wall"): (ROCKER_WALL, "cam.hub_wall"),
     ("`[cam]`", "", "base_radius"): (ROCKER_CHOSEN_R0, "cam.base_radius"),
     ("`[cam]`", "", "centre"): (ROCKER_CHOSEN_CENTRE, "cam.centre[0]"),
+    ("`[cam]`", "", "width"): (ROCKER_CONTACT, "cam.width"),
+    **{("`[contact]`", "", k): (ROCKER_CONTACT, f"contact.{k}") for k in CONTACT_NUMBERS},
+    ("Flat-faced followers (`face = \"flat\"`)", "`[cam]`", "width"): (FLAT_ROCKER_WIDTH, "cam.width"),
     ("`[[motion]]`", "", "angle"): (ROCKER_FORM, "motion[2].angle"),
     ("`[[motion]]`", "", "height"): (ROCKER_FORM, "motion[0].height"),
     ("`[limits]`", "", "pressure_angle"): (ROCKER_FORM, "limits.pressure_angle"),

@@ -16,6 +16,7 @@ import pytest
 
 from cams.cam import Cam
 from cams.io.designfile import design_from_dict, load_design
+from cams.model.contact import ContactSpec
 from cams.model.design import CamDesign, FlatFaceDesign, Limits
 from cams.model.dynamics import DynamicsSpec, FollowerDynamics, Spring
 from cams.model.follower import Rocker, Translating
@@ -77,6 +78,30 @@ BUILT = {
         min_radius=5.0, cam_sense=CCW, rpm=60.0, name="rocker flat-face cam",
         dynamics=DynamicsSpec(FollowerDynamics(0.004, load=0.05, friction=0.1, journal_radius=6.0,
                                                face_friction=0.08))),
+    "translating_contact": CamDesign(
+        Translating(12.0, stroke_scale=30.0), program(30.0, *_cycle("poly4567", 150, 30, "cycloidal", 120)),
+        Limits(np.radians(30.0), min_base_radius=30.0), cam_sense=CCW, rpm=300.0,
+        name="translating roller cam, contact stress",
+        dynamics=DynamicsSpec(FollowerDynamics(1.2, load=300.0, friction=0.05)), width=12.0,
+        contact=ContactSpec(cam_material="through_hardened_steel", follower_material="bearing_steel",
+                            cam_roughness=0.4, follower_roughness=0.2, viscosity=0.19, pressure_viscosity=20.0,
+                            min_film_parameter=1.0, bearing_rating=3500.0, bearing_rating_type="track_roller",
+                            life_hours=5000.0)),
+    "rocker_contact": CamDesign(
+        Rocker(125.0, 10.0, sense=CW), program(np.radians(15.0), *_cycle("cycloidal", 120, 30, "cycloidal", 120)),
+        Limits(np.radians(45.0), min_base_radius=40.0), cam_sense=CCW, rpm=250.0, name="rocker cam, contact stress",
+        dynamics=DynamicsSpec(FollowerDynamics(0.004, load=100.0, friction=0.05, journal_radius=8.0)), width=10.0,
+        contact=ContactSpec(cam_material="case_hardened_steel", follower_material="bearing_steel",
+                            cam_roughness=0.3, follower_roughness=0.2, viscosity=0.19, pressure_viscosity=20.0,
+                            bearing_rating=6000.0, bearing_rating_type="track_roller", life_hours=8000.0)),
+    "translating_flat_contact": FlatFaceDesign(
+        FlatTranslating(0.0, stroke_scale=20.0), program(20.0, *_cycle("cycloidal", 120, 60, "poly345", 120)),
+        min_radius=10.0, min_base_radius=65.0, cam_sense=CCW, rpm=300.0,
+        name="translating flat-face cam, contact stress",
+        dynamics=DynamicsSpec(FollowerDynamics(0.5, load=100.0, friction=0.1, face_friction=0.08)), width=10.0,
+        contact=ContactSpec(cam_material="nitrided_steel", follower_material="case_hardened_steel",
+                            cam_roughness=0.3, follower_roughness=0.3, viscosity=0.19, pressure_viscosity=20.0,
+                            min_film_parameter=0.5)),
 }
 
 
@@ -95,7 +120,7 @@ def test_an_example_built_in_python_is_the_file_s_design(name):
 
 
 @pytest.mark.parametrize("name", ["rocker_force", "slotting_feed_cam", "translating_flat", "rocker_flat",
-                                  "translating_designed_rise"])
+                                  "translating_designed_rise", "rocker_contact", "translating_flat_contact"])
 def test_an_example_built_in_python_gives_the_file_s_outputs(name):
     a, b = Cam(BUILT[name]), Cam(load_design(EXAMPLES / f"{name}.toml"))
     assert _solved(a) == _solved(b)
@@ -103,6 +128,8 @@ def test_an_example_built_in_python_gives_the_file_s_outputs(name):
     assert a.assessment.to_dict() == b.assessment.to_dict()
     if a.forces is not None or b.forces is not None:
         assert a.forces.to_dict() == b.forces.to_dict()
+    if a.contact is not None or b.contact is not None:
+        assert a.contact.to_dict() == b.contact.to_dict()
 
 
 def _solved(cam: Cam) -> dict:
