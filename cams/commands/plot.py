@@ -75,20 +75,15 @@ def run(args) -> int:
 
     which = _only(args.only)
     from cams.present.faces import presenter
-    from cams.present.plots import no_contact, no_forces
+    from cams.present.plots import NEEDS, missing
 
     cam = Cam.from_file(args.file)
     designed = cam.given.optimize is not None
     if which is None:  # everything that applies: no note for what the user did not ask for
-        which = (*presenter(cam).pictures, *(("optimized",) if designed else ()))
-        if no_forces(cam) is not None:
-            which = tuple(w for w in which if w != "forces")
-        if no_contact(cam) is not None:
-            which = tuple(w for w in which if w != "contact")
-    elif "forces" in which and (why := no_forces(cam)) is not None:
-        raise InputError("--only", f"forces: {why}")
-    elif "contact" in which and (why := no_contact(cam)) is not None:
-        raise InputError("--only", f"contact: {why}")
+        which = tuple(w for w in (*presenter(cam).pictures, *(("optimized",) if designed else ()))
+                      if missing(w, cam) is None)
+    elif (asked := next((w for w in which if w in NEEDS and missing(w, cam) is not None), None)) is not None:
+        raise InputError("--only", f"{asked}: {missing(asked, cam)}")
     elif "optimized" in which and not designed:
         which = tuple(w for w in which if w != "optimized")
         print("cams plot: note: optimized: the design has no [optimize] table, no motion was designed; skipped",

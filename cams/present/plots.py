@@ -29,7 +29,7 @@ from cams.words import binding_text, phase_words
 from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
-           "plot_forces", "picture", "PICTURES", "no_forces", "plot_contact", "no_contact",
+           "plot_forces", "picture", "PICTURES", "NEEDS", "missing", "no_forces", "plot_contact", "no_contact",
            "animate_profile", "save", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
@@ -491,7 +491,7 @@ def no_contact(cam) -> str | None:
 
 def plot_contact(cam):
     """The contact over one turn: the maximum Hertz pressure p0 (MPa) with the allowable, and the lubricant's
-    minimum film thickness (um) with the film the least film parameter asks for, against the cam angle from the
+    minimum film thickness (µm) with the film the least film parameter asks for, against the cam angle from the
     timing datum (degrees); where the entrainment velocity falls to zero a dotted line marks it.
 
     Raises
@@ -525,8 +525,8 @@ def plot_contact(cam):
         if sp.cam_roughness is not None and sp.follower_roughness is not None:
             need = sp.min_film_parameter * float(np.hypot(sp.cam_roughness, sp.follower_roughness))
             ax_h.axhline(need, color="#c53030", lw=1.0, ls="--",
-                         label=f"film for the film parameter {sp.min_film_parameter:g}: {need:.3g} um")
-        ax_h.set_ylabel("film, um")
+                         label=f"film for the film parameter {sp.min_film_parameter:g}: {need:.3g} µm")
+        ax_h.set_ylabel("film, µm")
     else:
         ax_h.plot(x, finite(np.abs(co.entrainment)), color="#2f855a", lw=1.4, label="entrainment velocity")
         ax_h.set_ylabel("entrainment velocity, m/s")
@@ -634,6 +634,19 @@ PICTURES = {
     "forces": lambda cam: plot_forces(cam),
     "contact": lambda cam: plot_contact(cam),
 }
+
+
+#: The pictures drawn only for a design that has their data, each with why not (None: it has it).
+NEEDS = {
+    "forces": lambda cam: no_forces(cam),
+    "contact": lambda cam: no_contact(cam),
+}
+
+
+def missing(kind: str, cam) -> str | None:
+    """Why ``cam`` has no picture of ``kind`` to draw (its data is not in the design), or None when it has."""
+    why = NEEDS.get(kind)
+    return None if why is None else why(cam)
 
 
 def picture(kind: str, cam):

@@ -346,7 +346,7 @@ def _contact_section(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     if d["min_film"] is not None:
         lam = "" if d["min_film_parameter"] is None else f", film parameter {d['min_film_parameter']:.3g} (least " \
             f"allowed {co.spec.min_film_parameter:g})"
-        rows.append(("lubricant film", f"thinnest {d['min_film']:.4g} um{lam} (Dowson-Higginson)"))
+        rows.append(("lubricant film", f"thinnest {d['min_film']:.4g} µm{lam} (Dowson-Higginson)"))
     if d["bearing_life_hours"] is not None:
         rows.append(("roller bearing life", f"L10 {d['bearing_life_hours']:.6g} h (ISO 281, mean load weighted by "
                                             "the roller's revolutions)"))

@@ -340,7 +340,7 @@ def print_contact(co: dict, indent: str = "  ") -> None:
           f"{num(co['max_shear_depth'], 'mm')}, largest von Mises stress {num(co['max_von_mises'], 'MPa')}")
     if co["min_film"] is not None:
         lam = "" if co["min_film_parameter"] is None else f", film parameter {co['min_film_parameter']:.3g}"
-        print(f"{indent}  lubricant film: thinnest {co['min_film']:.4g} um{lam} (Dowson-Higginson)")
+        print(f"{indent}  lubricant film: thinnest {co['min_film']:.4g} µm{lam} (Dowson-Higginson)")
     z = co["zero_entrainment_at_deg"]
     if z:
         print(f"{indent}  entrainment velocity zero at " + ", ".join(f"{a:.2f} deg" for a in z))

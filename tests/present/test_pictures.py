@@ -74,7 +74,7 @@ def _figures(cam):
     from cams.present.faces import presenter
 
     return {name: plots.picture(kind, cam) for name, kind in presenter(cam).pictures.items()
-            if kind != "forces" or plots.no_forces(cam) is None}  # the forces: only a cam with [dynamics]
+            if plots.missing(kind, cam) is None}  # the forces: only a cam with [dynamics]
 
 
 @pytest.mark.parametrize("name", ALL_EXAMPLES)

@@ -59,7 +59,7 @@ def test_solve_says_the_contact(name, capsys):
     out = capsys.readouterr().out
     assert rc == 0
     assert "largest Hertz pressure p0" in out and " MPa at " in out
-    assert "lubricant film: thinnest" in out and "um" in out
+    assert "lubricant film: thinnest" in out and "µm" in out
     assert "least face width for the allowable stress" in out
     assert "contact limit that binds" in out
     assert "unconservative" in out and "edge" in out
