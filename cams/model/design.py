@@ -22,7 +22,14 @@ from cams.model.follower import (
     check_length,
 )
 from cams.model.motiondesign import MotionDesignSpec
-from cams.model.options import ProfileOptions, check_constraints, check_hub_wall, check_objective, check_tolerance
+from cams.model.options import (
+    ProfileOptions,
+    check_constraints,
+    check_hub_wall,
+    check_keyway,
+    check_objective,
+    check_tolerance,
+)
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
@@ -111,6 +118,11 @@ class Design:
     hub_wall : float or None
         The least material between the bore and the working profile (length, >= 0; only with ``bore_radius``);
         None: the profile need only clear the bore.
+    keyway_width, keyway_depth : float or None
+        The bore's keyway (length): its width, and its depth measured radially from the bore's surface on the
+        keyway's centre line; None: no keyway (drawn in the exports, :mod:`cams.manufacture.keyway`).
+    keyway_angle : float or None
+        The keyway's centre line from the timing datum, in the cam's sense of rotation (radians); None: 0.
     constraints : {"all", "pressure_angle"}
         What the sizing keeps: ``"all"`` (the smallest cam whose pressure angle is within its limits, whose working
         profile clears the bore by the wall and passes the profile's checks) or ``"pressure_angle"`` (the face's
@@ -139,6 +151,9 @@ class Design:
     constraints: str
     dynamics: DynamicsSpec | None
     optimize: MotionDesignSpec | None
+    keyway_width: float | None
+    keyway_depth: float | None
+    keyway_angle: float | None
 
     def _check_common(self) -> None:
         """Refuse the common fields' bad values (one line each, named as in the design file)."""
@@ -147,6 +162,10 @@ class Design:
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
             raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
         check_constraints(self.constraints)
+
+    def _check_keyway(self) -> None:
+        """Refuse a bad keyway (after the bore's own checks)."""
+        check_keyway(self.keyway_width, self.keyway_depth, self.keyway_angle, self.bore_radius)
 
     @property
     def scale(self) -> float:
@@ -296,6 +315,9 @@ class CamDesign(Design):
     constraints: str = "all"
     dynamics: DynamicsSpec | None = None
     optimize: MotionDesignSpec | None = None
+    keyway_width: float | None = None
+    keyway_depth: float | None = None
+    keyway_angle: float | None = None
 
     def __post_init__(self) -> None:
         # in the order a design file's tables are read, so that a file with two faults names the same one
@@ -327,6 +349,7 @@ class CamDesign(Design):
             raise InputError("follower.kind", "must be 'rocker' or 'translating'")
         ProfileOptions(self.tolerance, self.min_curvature_radius, self.bore_radius,  # checks the four
                        hub_wall=self.hub_wall)
+        self._check_keyway()
         check_optimize(self.optimize, self.objective, self.chosen)
 
     @property
@@ -502,6 +525,9 @@ class FlatFaceDesign(Design):
     dynamics: DynamicsSpec | None = None
     hub_wall: float | None = None
     constraints: str = "all"
+    keyway_width: float | None = None
+    keyway_depth: float | None = None
+    keyway_angle: float | None = None
 
     face = "flat"
 
@@ -515,6 +541,7 @@ class FlatFaceDesign(Design):
             if getattr(self, name) is not None or name == "min_radius":
                 check_length(fld, getattr(self, name))
         check_hub_wall(self.hub_wall, self.bore_radius)
+        self._check_keyway()
         if self.tolerance is not None:
             check_tolerance(self.tolerance, "profile.tolerance")
         if self.base_radius is not None and self.min_base_radius is not None:  # as for a roller follower
