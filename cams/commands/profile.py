@@ -24,10 +24,9 @@ def _check_outputs(args) -> None:
     """Refuse bad output paths and a bad ``--step`` before anything is computed: a path empty, unwritable, the
     design file, or one twice; a step without ``--table``, not > 0 or not dividing 360."""
     from cams.io.files import check_output_paths
+    from cams.manufacture.curves import check_curve
     from cams.manufacture.table import table_angles
     from laws.errors import InputError
-
-    from cams.manufacture.curves import check_curve
 
     check_curve(args.curve)
     if args.step is not None and args.table is None:
@@ -161,7 +160,7 @@ def run(args) -> int:
     elif asked and not a.usable and not args.allow_failed:
         refused = "the cam fails (" + ", ".join(a.short) + "); --allow-failed writes them, marked as failing"
     elif asked:
-        if args.dxf is not None or args.svg is not None:
+        if prof is not None and (args.dxf is not None or args.svg is not None):
             from cams.manufacture.curves import fit_curves
 
             drawing["curves"] = fit_curves(exact, prof.tolerance, args.curve)

@@ -46,8 +46,17 @@ import numpy as np
 from cams.profile.exact import ExactCam, ExactCurve
 from laws.errors import InputError
 
-__all__ = ["CURVES", "ArcChain", "CubicSpline", "FittedCurves", "fit_arcs", "fit_spline", "fit_curves",
-           "SAMPLES", "MAX_ELEMENTS"]
+__all__ = [
+    "CURVES",
+    "ArcChain",
+    "CubicSpline",
+    "FittedCurves",
+    "fit_arcs",
+    "fit_spline",
+    "fit_curves",
+    "SAMPLES",
+    "MAX_ELEMENTS",
+]
 
 #: The curve kinds ``cams profile --curve`` writes.
 CURVES = ("arcs", "spline", "polyline")
@@ -149,8 +158,11 @@ class FittedCurves:
 
     def to_dict(self) -> dict:
         """``curve`` (kind), ``tolerance`` (mm), and per layer ``elements`` (count) and ``distance`` (mm, certified)."""
-        return {"curve": self.kind, "tolerance": self.tolerance,
-                "layers": {k: {"elements": c.elements, "distance": c.distance} for k, c in self.curves.items()}}
+        return {
+            "curve": self.kind,
+            "tolerance": self.tolerance,
+            "layers": {k: {"elements": c.elements, "distance": c.distance} for k, c in self.curves.items()},
+        }
 
 
 def check_curve(kind: object, field: str = "--curve") -> str:
@@ -171,7 +183,7 @@ def _evaluate(curve: ExactCurve, piece: np.ndarray, u: np.ndarray) -> tuple[np.n
     for k in np.unique(piece):
         sel = piece == k
         pts[sel], tan[sel] = curve.pieces[int(k)].evaluate(u[sel])
-    return pts.reshape(shape + (2,)), tan.reshape(shape + (2,))
+    return pts.reshape((*shape, 2)), tan.reshape((*shape, 2))
 
 
 def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -214,8 +226,11 @@ def _biarc(P0, T0, P1, T1):
     nj = np.hypot(TJ[:, 0], TJ[:, 1])
     with np.errstate(divide="ignore", invalid="ignore"):
         TJ = np.where(nj[:, None] > 0, TJ / nj[:, None], T0)
-    straight = (np.abs(_cross(T0, v)) <= 1e-15 * np.sqrt(vv)) & (np.abs(_cross(T1, v)) <= 1e-15 * np.sqrt(vv)) \
+    straight = (
+        (np.abs(_cross(T0, v)) <= 1e-15 * np.sqrt(vv))
+        & (np.abs(_cross(T1, v)) <= 1e-15 * np.sqrt(vv))
         & (_dot(T0, v) > 0)
+    )
     J = np.where(straight[:, None], 0.5 * (P0 + P1), J)
     TJ = np.where(straight[:, None], T0, TJ)
     return J, TJ
@@ -279,18 +294,22 @@ def fit_arcs(curve: ExactCurve, tolerance: float, *, field: str = "--curve") -> 
             break
         (P0, T0), (P1, T1) = _evaluate(curve, piece, ua), _evaluate(curve, piece, ub)
         J, TJ = _biarc(P0, T0, P1, T1)
-        worst, b1, k1, b2, k2 = _certify_biarcs(curve, piece, ua, ub, P0, T0, J, TJ, P1)
+        worst, b1, _, b2, _ = _certify_biarcs(curve, piece, ua, ub, P0, T0, J, TJ, P1)
         bad = ~(worst <= tolerance)
         stuck = bad & ((ub - ua) < 1e-9)
         if np.any(stuck):
-            raise InputError(field, f"arcs cannot follow the curve within {tolerance:g} mm near "
-                             f"({P0[stuck][0][0]:.6g}, {P0[stuck][0][1]:.6g}) mm (a cusp or corner); use "
-                             "--curve polyline or a larger --tolerance")
+            raise InputError(
+                field,
+                f"arcs cannot follow the curve within {tolerance:g} mm near "
+                f"({P0[stuck][0][0]:.6g}, {P0[stuck][0][1]:.6g}) mm (a cusp or corner); use "
+                "--curve polyline or a larger --tolerance",
+            )
         ok = ~bad
         done.append((piece[ok], ua[ok], P0[ok], T0[ok], J[ok], TJ[ok], b1[ok], b2[ok], worst[ok]))
         if sum(len(d[0]) for d in done) * 2 + 4 * int(bad.sum()) > MAX_ELEMENTS:
-            raise InputError(field, f"arcs within {tolerance:g} mm need more than {MAX_ELEMENTS} elements; use a "
-                             "larger --tolerance")
+            raise InputError(
+                field, f"arcs within {tolerance:g} mm need more than {MAX_ELEMENTS} elements; use a larger --tolerance"
+            )
         um = 0.5 * (ua[bad] + ub[bad])
         piece = np.concatenate([piece[bad], piece[bad]])
         ua, ub = np.concatenate([ua[bad], um]), np.concatenate([um, ub[bad]])
@@ -371,8 +390,11 @@ def fit_spline(curve: ExactCurve, tolerance: float, *, field: str = "--curve") -
             return CubicSpline(knots, ctrl, float(np.max(worst)))
         if len(u) + int(bad.sum()) > MAX_ELEMENTS or np.any(bad & ((ue - u) < 1e-9)):
             where = pts[bad][0]
-            raise InputError(field, f"a spline cannot follow the curve within {tolerance:g} mm near "
-                             f"({where[0]:.6g}, {where[1]:.6g}) mm (a corner); use --curve arcs")
+            raise InputError(
+                field,
+                f"a spline cannot follow the curve within {tolerance:g} mm near "
+                f"({where[0]:.6g}, {where[1]:.6g}) mm (a corner); use --curve arcs",
+            )
         um = 0.5 * (u[bad] + ue[bad])
         piece = np.concatenate([piece, piece[bad]])
         u = np.concatenate([u, um])

@@ -92,7 +92,9 @@ def write_dxf(profile: Profile, path: str | os.PathLike, *, bore_radius: float |
             spline = msp.add_spline(dxfattribs=attribs)
             spline.apply_construction_tool(BSpline(fitted.control.tolist(), order=4, knots=fitted.knots.tolist()))
         else:
-            msp.add_lwpolyline(points[name].tolist(), format="xy", close=True, dxfattribs=attribs)
+            pts = points[name]
+            assert pts is not None  # drawn: the profile has this curve
+            msp.add_lwpolyline(pts.tolist(), format="xy", close=True, dxfattribs=attribs)
     msp.add_circle((0.0, 0.0), profile.R0, dxfattribs={"layer": "BASE"})
     ext = _extent(profile)
     if bore is not None and keyway is None:

@@ -12,7 +12,8 @@ Geometry, cam frame of :mod:`cams.manufacture.drawing` (mm, radians inside):
 * The **hub wall at the keyway** is the least distance from the working profile to the slot (the rectangle
   from the bore to the keyway's bottom, ``width`` wide): the material the keyway leaves. It must be at least
   ``[cam] hub_wall`` (0 when not given: the slot must not reach the profile). It is computed on the exact
-  working profile, sampled and refined where the minimum may lie, as a certified lower bound (:func:`_refined`, :func:`_lower`).
+  working profile, sampled and refined where the minimum may lie, as a certified lower bound
+  (:func:`_refined`, :func:`_lower`).
 """
 
 from __future__ import annotations
@@ -150,15 +151,21 @@ def check_keyway_wall(exact: ExactCam, bore: float, keyway: Keyway, hub_wall: fl
     lo, hi = 0.0, keyway.depth
     if wall(lo) < need:
         corner = float(np.hypot(bore, keyway.width / 2.0))
-        raise InputError("cam.keyway_depth", f"even 0 mm deep a keyway {keyway.width:g} mm wide (its bottom corners "
-                         f"{corner:.4g} mm from the centre) leaves {wall(lo):.4g} mm to the working profile, less "
-                         f"than the hub wall {need:g} mm: choose another cam.keyway_angle or a narrower keyway")
+        raise InputError(
+            "cam.keyway_depth",
+            f"even 0 mm deep a keyway {keyway.width:g} mm wide (its bottom corners "
+            f"{corner:.4g} mm from the centre) leaves {wall(lo):.4g} mm to the working profile, less "
+            f"than the hub wall {need:g} mm: choose another cam.keyway_angle or a narrower keyway",
+        )
     for _ in range(3):  # each pass refined where the last one's deepest keyway leaves the least wall
         hi = keyway.depth
         for _ in range(40):
             mid = 0.5 * (lo + hi)
             lo, hi = (mid, hi) if wall(mid) >= need else (lo, mid)
         samples = _refined(exact, bore, Keyway(keyway.width, lo, keyway.alpha))
-    raise InputError("cam.keyway_depth", f"{keyway.depth:g} mm leaves {got:.4g} mm of material between the keyway "
-                     f"and the working profile, less than the hub wall {need:g} mm (cam.hub_wall); at most "
-                     f"{lo:.4g} mm deep")
+    raise InputError(
+        "cam.keyway_depth",
+        f"{keyway.depth:g} mm leaves {got:.4g} mm of material between the keyway "
+        f"and the working profile, less than the hub wall {need:g} mm (cam.hub_wall); at most "
+        f"{lo:.4g} mm deep",
+    )

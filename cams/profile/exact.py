@@ -141,6 +141,7 @@ def roller_exact(design, centre: np.ndarray) -> ExactCam:
     for layer, d in offsets.items():
         pieces: list[ExactPiece] = []
         for i in range(nph):
+
             def ev(u: np.ndarray, i: int = i, d: float = d) -> tuple[np.ndarray, np.ndarray]:
                 g = pitch_phase(design, centre, i, np.asarray(u, float))
                 t = _unit(g.d1)
@@ -192,6 +193,7 @@ def flat_exact(design, R0: float) -> ExactCam:
 
     pieces = []
     for i in range(len(prog.phases)):
+
         def ev(u: np.ndarray, i: int = i) -> tuple[np.ndarray, np.ndarray]:
             th, dth, d2th, p, dp, d2p = terms(i, np.asarray(u, float))
             X, rho, _ = envelope(th, dth, d2th, p, dp, d2p)

@@ -11,6 +11,7 @@ calls the fitter's certificate.
 
 from __future__ import annotations
 
+import itertools
 import json
 import re
 import tomllib
@@ -34,6 +35,7 @@ def _doc(name: str, **cam) -> dict:
 
 def _toml(d: dict) -> str:
     """A small TOML writer for the examples' shapes (tables, arrays of tables, scalars)."""
+
     def val(v):
         if isinstance(v, bool):
             return "true" if v else "false"
@@ -43,8 +45,11 @@ def _toml(d: dict) -> str:
             return "[" + ", ".join(val(x) for x in v) + "]"
         return repr(v)
 
-    out = [f"{k} = {val(v)}" for k, v in d.items() if not isinstance(v, (dict, list)) or
-           (isinstance(v, list) and v and not isinstance(v[0], dict))]
+    out = [
+        f"{k} = {val(v)}"
+        for k, v in d.items()
+        if not isinstance(v, (dict, list)) or (isinstance(v, list) and v and not isinstance(v[0], dict))
+    ]
     for k, v in d.items():
         if isinstance(v, dict):
             out.append(f"[{k}]")
@@ -72,6 +77,7 @@ def _solved(doc: dict):
 
 # --- the exact curves, densely, by the kernel -------------------------------------------------------------------
 
+
 def _exact_points(doc: dict, n: int = 20000) -> dict[str, np.ndarray]:
     """The exact curves at ``n`` cam angles: the kernel's pitch curve and its offsets (roller), or the envelope."""
     design, sol = _solved(doc)
@@ -91,6 +97,7 @@ def _exact_points(doc: dict, n: int = 20000) -> dict[str, np.ndarray]:
 
 
 # --- the test's own arcs ---------------------------------------------------------------------------------------
+
 
 def _arcs_from_bulges(v: np.ndarray, b: np.ndarray):
     """Centre, radius, start angle and signed sweep of each element ``v[i] -> v[i+1]`` (closed) of bulge ``b[i]``:
@@ -213,11 +220,12 @@ def test_element_count_falls_with_a_looser_tolerance(tmp_path, capsys):
         assert rc == 0
         counts.append(json.loads(out)["curves"]["layers"]["PROFILE"]["elements"])
     assert counts[0] > counts[1] > counts[2]
-    for a, b in zip(counts, counts[1:], strict=False):
+    for a, b in itertools.pairwise(counts):
         assert 1.5 < a / b < 3.2, counts
 
 
 # --- the spline --------------------------------------------------------------------------------------------
+
 
 @pytest.mark.parametrize("name", ("rocker_form", "translating_flat"))
 def test_spline_within_the_tolerance_of_the_exact_curve(tmp_path, capsys, name):
@@ -258,6 +266,7 @@ def test_spline_within_the_tolerance_of_the_exact_curve(tmp_path, capsys, name):
 
 # --- the SVG's arcs, parsed by the test ------------------------------------------------------------------------
 
+
 def _svg_arcs(d: str):
     """The elements of an SVG path of ``M``, ``L``, ``A`` and ``Z`` as the chain of :func:`_arcs_from_bulges`
     (y turned back up): from each ``A``'s radius and flags (SVG 1.1, F.6.5) the centre and the sweep."""
@@ -277,7 +286,7 @@ def _svg_arcs(d: str):
             vs.append(cur), ws.append(nxt)
             cur = nxt
         elif cmd == "A":
-            r, _, _, large, flag, x, y = (float(t) for t in tokens[i:i + 7])
+            r, _, _, large, flag, x, y = (float(t) for t in tokens[i : i + 7])
             i += 7
             nxt = np.array([x, -y])
             ccw = flag == 0  # SVG's positive-angle sweep is clockwise once y is turned up
@@ -314,6 +323,7 @@ def test_svg_arcs_within_the_tolerance(arcs_files, name):
 
 
 # --- the datum -----------------------------------------------------------------------------------------------
+
 
 @pytest.mark.parametrize("name", ROLLERS)
 def test_datum_points_at_the_roller_centre_at_cam_angle_0(arcs_files, tmp_path, capsys, name):
@@ -371,9 +381,17 @@ def test_flat_datum_is_the_contact_normal_at_cam_angle_0(arcs_files):
 
 # --- the keyway ---------------------------------------------------------------------------------------------
 
+
 def _keyway_doc(name: str, rotation: str, angle: float, depth: float = 2.0, width: float = 4.0) -> dict:
-    return _doc(name, rotation=rotation, bore_radius=10.0, hub_wall=1.0, keyway_width=width,
-                keyway_depth=depth, keyway_angle=angle)
+    return _doc(
+        name,
+        rotation=rotation,
+        bore_radius=10.0,
+        hub_wall=1.0,
+        keyway_width=width,
+        keyway_depth=depth,
+        keyway_angle=angle,
+    )
 
 
 def _slot_distance(X, quad):
@@ -435,12 +453,15 @@ def test_keyway_too_deep_names_the_deepest_that_fits(tmp_path, capsys):
         assert _run(capsys, "profile", str(f))[0] == code, depth
 
 
-@pytest.mark.parametrize("cam,field", [
-    ({"keyway_width": 3.0, "keyway_depth": 1.0}, "cam.keyway_width"),                           # no bore
-    ({"bore_radius": 5.0, "keyway_width": 10.0, "keyway_depth": 1.0}, "cam.keyway_width"),      # wider than the bore
-    ({"bore_radius": 5.0, "keyway_width": 3.0}, "cam.keyway_depth"),                             # no depth
-    ({"bore_radius": 5.0, "keyway_width": 3.0, "keyway_depth": -1.0}, "cam.keyway_depth"),
-])
+@pytest.mark.parametrize(
+    "cam,field",
+    [
+        ({"keyway_width": 3.0, "keyway_depth": 1.0}, "cam.keyway_width"),  # no bore
+        ({"bore_radius": 5.0, "keyway_width": 10.0, "keyway_depth": 1.0}, "cam.keyway_width"),  # wider than the bore
+        ({"bore_radius": 5.0, "keyway_width": 3.0}, "cam.keyway_depth"),  # no depth
+        ({"bore_radius": 5.0, "keyway_width": 3.0, "keyway_depth": -1.0}, "cam.keyway_depth"),
+    ],
+)
 def test_bad_keyway(tmp_path, capsys, cam, field):
     f = tmp_path / "k.toml"
     f.write_text(_toml(_doc("rocker_force", **cam)), encoding="utf-8")
@@ -468,8 +489,18 @@ def test_text_reports_the_curves(tmp_path, capsys):
 def test_polyline_is_kept(tmp_path, capsys):
     """--curve polyline writes the sampled points as before: the DXF's PROFILE vertices are the CSV's points."""
     dxf, csv = tmp_path / "c.dxf", tmp_path / "c.csv"
-    rc, out, _ = _run(capsys, "profile", str(EXAMPLES / "rocker_force.toml"), "--dxf", str(dxf), "--csv", str(csv),
-                      "--curve", "polyline", "--json")
+    rc, out, _ = _run(
+        capsys,
+        "profile",
+        str(EXAMPLES / "rocker_force.toml"),
+        "--dxf",
+        str(dxf),
+        "--csv",
+        str(csv),
+        "--curve",
+        "polyline",
+        "--json",
+    )
     assert rc == 0
     v, b = _lwpolyline(_read_dxf(dxf), "PROFILE")
     data = np.loadtxt(csv, delimiter=",", skiprows=1)
