@@ -285,6 +285,11 @@ class CamDesign(Design):
     hub_wall : float or None
         The least material between the bore and the working profile
         (length, >= 0; only with ``bore_radius``); None: 0.
+    keyway_width, keyway_depth, keyway_angle : float or None
+        The bore's keyway: width and depth (length; the depth from the bore's
+        surface on the keyway's centre line) and the centre line's angle from
+        the timing datum in the cam's sense of rotation (radians); None: no
+        keyway (the angle: 0).
     constraints : {"all", "pressure_angle"}
         ``"all"``: the smallest cam that meets the pressure angle, the bore
         and the profile's checks (:mod:`cams.faces.part`);
@@ -497,6 +502,8 @@ class FlatFaceDesign(Design):
         Bore radius (length): a constraint of the sizing and a check.
     hub_wall : float or None
         The least material between the bore and the profile (length, >= 0; only with ``bore_radius``).
+    keyway_width, keyway_depth, keyway_angle : float or None
+        The bore's keyway, as :class:`CamDesign`'s (the datum: the face's contact normal at cam angle 0).
     constraints : {"all", "pressure_angle"}
         ``"all"``: the smallest cam convex enough whose profile clears the bore by the wall;
         ``"pressure_angle"``: convexity alone (a flat face's own limit; its pressure angle does not size it).
