@@ -23,8 +23,9 @@ curve to the element, bounded by sampling with a stated bound. On each span the 
 ``SAMPLES + 1`` uniform steps of its parameter. For an arc, ``e(u)`` is the exact signed distance of the curve's
 point to the arc's circle (a line's: to its line), ``(kappa |w|^2 - 2 w . n) / (1 + |kappa w - n|)`` with ``w``
 the point less the arc's start, ``n`` the unit normal there towards the centre and ``kappa`` the signed
-curvature (stable for nearly straight arcs); for the spline, ``e(u) = |C(u) - S(x(u))|`` with the spline's
-parameter ``x`` mapped linearly on the span (a point of the spline, so an upper bound of the distance). Between
+curvature (stable for nearly straight arcs); for the spline, ``e(u)`` is ``|C(u) - S(x)|`` signed by the side, at the
+foot ``x`` of the perpendicular from the point found by Newton's method from the span mapped linearly (a point
+of the spline, so an upper bound of the distance). Between
 samples ``delta`` apart, ``|e| <= max(|e_j|, |e_j+1|) + delta^2 M / 8`` (the error of linear interpolation),
 where ``M`` bounds ``|e''|``; ``M`` is taken as twice the largest second divided difference of ``e`` over the
 span (each equals ``e''`` somewhere between its three samples; the factor 2 is the stated allowance for the
@@ -350,6 +351,24 @@ def _clamped(spl, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return knots, np.asarray(lsq.c)
 
 
+def _spline_distance(spl, period: float, C: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Signed distance of the points ``C`` (..., 2) to the periodic spline ``spl`` (of parameter period ``period``):
+    from the parameters ``t`` (the span mapped linearly), Newton's steps to the foot of the perpendicular, then
+    ``(C - S(t)) . n`` with ``n`` the spline's left unit normal there (its length ``|C - S(t)|``, a point of the
+    spline: an upper bound of the distance; a smooth function of the curve's parameter where the foot is unique,
+    which the certificate's second differences need)."""
+    d1, d2 = spl.derivative(), spl.derivative(2)
+    for _ in range(6):
+        tt = np.mod(t, period)
+        g, v, a = spl(tt) - C, d1(tt), d2(tt)
+        step = np.sum(g * v, -1) / (np.sum(v * v, -1) + np.sum(g * a, -1))
+        t = t - np.where(np.isfinite(step), step, 0.0)
+    tt = np.mod(t, period)
+    g, v = C - spl(tt), d1(tt)
+    n = np.stack([-v[..., 1], v[..., 0]], axis=-1) / np.hypot(v[..., 0], v[..., 1])[..., None]
+    return np.sign(np.sum(g * n, -1)) * np.hypot(g[..., 0], g[..., 1])
+
+
 def fit_spline(curve: ExactCurve, tolerance: float, *, field: str = "--curve") -> CubicSpline:
     """Fit a closed cubic spline through exact points of ``curve`` within ``tolerance`` (mm), certified.
 
@@ -373,17 +392,13 @@ def fit_spline(curve: ExactCurve, tolerance: float, *, field: str = "--curve") -
         # the span from point j to j + 1: the exact curve from (piece_j, u_j) to the next point's position
         nxt_piece, nxt_u = np.roll(piece, -1), np.roll(u, -1)
         same = nxt_piece == piece
-        ue = np.where(same, nxt_u, 1.0)
+        ue = np.where(same & (nxt_u > u), nxt_u, 1.0)  # the last span runs to its piece's end
         # a span that ends at the next piece's start runs to the end of its own piece (the same point)
         uu = u[:, None] + (ue - u)[:, None] * s[None]
         C, _t = _evaluate(curve, np.repeat(piece[:, None], SAMPLES + 1, 1), uu)
         xx = x[:-1, None] + np.diff(x)[:, None] * s[None]
-        S = spl(xx)
-        g = C - S
-        e = np.hypot(g[..., 0], g[..., 1])
-        # the bound on |g| from its components' second differences (each component's interpolation error)
-        gb = np.hypot(_margin(g[..., 0], 1.0 / SAMPLES), _margin(g[..., 1], 1.0 / SAMPLES))
-        worst = np.max(np.maximum(e[:, :-1], e[:, 1:]) + gb, axis=1)
+        e = _spline_distance(spl, x[-1], C, xx)
+        worst = np.max(_bound(e, 1.0 / SAMPLES), axis=1)
         bad = ~(worst <= tolerance)
         if not np.any(bad):
             knots, ctrl = _clamped(spl, x)

@@ -507,3 +507,57 @@ def test_polyline_is_kept(tmp_path, capsys):
     assert np.allclose(b, 0.0) and np.allclose(v, data[:, 3:5], atol=1e-9)
     rep = json.loads(out)["curves"]
     assert rep["curve"] == "polyline" and rep["layers"]["PROFILE"] == {"elements": len(v), "distance": None}
+
+
+# --- the fitters on curves known in closed form ----------------------------------------------------------------
+
+
+def _ellipse(a: float, b: float):
+    """An ellipse ``(a cos t, b sin t)`` as one exact piece, ``t = 2 pi u``, counter-clockwise."""
+    from cams.profile.exact import ExactCurve, ExactPiece
+
+    def ev(u):
+        t = 2 * np.pi * np.asarray(u, float)
+        d = np.stack([-a * np.sin(t), b * np.cos(t)], axis=1)
+        return np.stack([a * np.cos(t), b * np.sin(t)], axis=1), d / np.hypot(d[:, 0], d[:, 1])[:, None]
+
+    return ExactCurve((ExactPiece(ev, "curve", 0),))
+
+
+def test_arcs_of_a_circle_are_the_circle():
+    """A circle's biarcs are arcs of the circle itself: every element's radius is the circle's (from the test's
+    own bulge formulas), its centre the circle's, and the certified distance is rounding."""
+    from cams.manufacture.curves import fit_arcs
+
+    chain = fit_arcs(_ellipse(30.0, 30.0), 1e-6)
+    centre, R, *_ = _arcs_from_bulges(chain.start, chain.bulge)
+    assert np.allclose(R, 30.0, rtol=1e-12) and np.allclose(centre, 0.0, atol=1e-9)
+    assert chain.elements == 16 and chain.distance < 1e-12
+
+
+@pytest.mark.parametrize("tol", [1e-2, 1e-4])
+def test_arcs_and_spline_of_an_ellipse(tol):
+    """An ellipse (axes 40 and 15): the exact distance of 100,000 of its points to the arcs (the test's own
+    point-to-arc distance) and to the spline (Newton projection) is within the certified distance, itself within
+    the tolerance; and the certificate is not idle (the measured distance reaches a tenth of it)."""
+    from scipy.interpolate import BSpline
+
+    from cams.manufacture.curves import fit_arcs, fit_spline
+
+    curve = _ellipse(40.0, 15.0)
+    X = curve.pieces[0].evaluate(np.linspace(0.0, 1.0, 100000, endpoint=False))[0]
+    chain = fit_arcs(curve, tol)
+    measured = float(np.max(_distance_to_chain(X, _arcs_from_bulges(chain.start, chain.bulge))))
+    assert 0.1 * chain.distance < measured <= chain.distance + 1e-12 <= tol
+    sp = fit_spline(curve, tol)
+    S = BSpline(sp.knots, sp.control, 3)
+    dS, d2S = S.derivative(), S.derivative(2)
+    dense = np.linspace(sp.knots[0], sp.knots[-1], 400001)
+    from scipy.spatial import cKDTree
+
+    t = dense[cKDTree(S(dense)).query(X)[1]]
+    for _ in range(8):
+        r, d1, d2 = S(t) - X, dS(t), d2S(t)
+        t = np.clip(t - np.sum(r * d1, 1) / (np.sum(d1 * d1, 1) + np.sum(r * d2, 1)), sp.knots[0], sp.knots[-1])
+    dist = float(np.max(np.hypot(*(S(t) - X).T)))
+    assert 0.1 * sp.distance < dist <= sp.distance + 1e-12 <= tol
