@@ -561,3 +561,42 @@ def test_arcs_and_spline_of_an_ellipse(tol):
         t = np.clip(t - np.sum(r * d1, 1) / (np.sum(d1 * d1, 1) + np.sum(r * d2, 1)), sp.knots[0], sp.knots[-1])
     dist = float(np.max(np.hypot(*(S(t) - X).T)))
     assert 0.1 * sp.distance < dist <= sp.distance + 1e-12 <= tol
+
+
+def test_svg_spline_is_the_dxf_spline(tmp_path, capsys):
+    """The SVG's cubic Beziers (``C``) are the DXF SPLINE's spans: each Bezier at a quarter, a half and three
+    quarters (de Casteljau, the test's own) is the B-spline read back from the DXF at the same share of the span."""
+    import xml.etree.ElementTree as ET
+
+    from scipy.interpolate import BSpline
+
+    dxf, svg = tmp_path / "c.dxf", tmp_path / "c.svg"
+    rc, _, _ = _run(
+        capsys,
+        "profile",
+        str(EXAMPLES / "rocker_force.toml"),
+        "--dxf",
+        str(dxf),
+        "--svg",
+        str(svg),
+        "--curve",
+        "spline",
+    )
+    assert rc == 0
+    (e,) = [e for e in _read_dxf(dxf) if e.dxf.layer == "PROFILE"]
+    knots = np.array(e.knots, float)
+    S = BSpline(knots, np.array(e.control_points, float)[:, :2], 3)
+    x = np.unique(knots)
+    ns = {"s": "http://www.w3.org/2000/svg"}
+    d = ET.parse(svg).getroot().find("s:g[@id='PROFILE']", ns).find("s:path", ns).get("d")
+    nums = [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", d)]
+    start = np.array([nums[0], -nums[1]])
+    ctrl = np.array(nums[2:]).reshape(-1, 3, 2) * np.array([1.0, -1.0])
+    assert d.count("C") == len(ctrl) == len(x) - 1
+    prev = start
+    for j, (c1, c2, p3) in enumerate(ctrl):
+        for t in (0.25, 0.5, 0.75):
+            a, b, c = prev + t * (c1 - prev), c1 + t * (c2 - c1), c2 + t * (p3 - c2)
+            ab, bc = a + t * (b - a), b + t * (c - b)
+            assert np.allclose(ab + t * (bc - ab), S(x[j] + t * (x[j + 1] - x[j])), atol=1e-8)
+        prev = p3
