@@ -600,3 +600,42 @@ def test_svg_spline_is_the_dxf_spline(tmp_path, capsys):
             ab, bc = a + t * (b - a), b + t * (c - b)
             assert np.allclose(ab + t * (bc - ab), S(x[j] + t * (x[j + 1] - x[j])), atol=1e-8)
         prev = p3
+
+
+def _deltoid():
+    """A deltoid ``10 (2 cos t + cos 2t, 2 sin t - sin 2t)``: three cusps, the first at ``t = 0``, (30, 0)."""
+    from cams.profile.exact import ExactCurve, ExactPiece
+
+    def ev(u):
+        t = 2 * np.pi * np.asarray(u, float)
+        p = 10 * np.stack([2 * np.cos(t) + np.cos(2 * t), 2 * np.sin(t) - np.sin(2 * t)], 1)
+        d = np.stack([-2 * np.sin(t) - 2 * np.sin(2 * t), 2 * np.cos(t) - 2 * np.cos(2 * t)], 1)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return p, d / np.hypot(d[:, 0], d[:, 1])[:, None]
+
+    return ExactCurve((ExactPiece(ev, "curve", 0),)), ev
+
+
+def test_arcs_refuse_a_cusp_in_one_line():
+    """Tangent arcs cannot turn a cusp (an undercut profile's): refused on ``--curve``, naming where."""
+    from cams.manufacture.curves import fit_arcs
+    from laws.errors import InputError
+
+    with pytest.raises(InputError, match=r"^--curve: arcs cannot follow the curve within 0.001 mm near \(30, 0\)"):
+        fit_arcs(_deltoid()[0], 1e-3)
+
+
+def test_spline_through_cusps_is_still_certified():
+    """A spline can pass a cusp (tightly turning): its certified distance still bounds the distance of 200,000
+    exact points to 4,000,001 of its own points (an upper bound of the distance to the spline)."""
+    from scipy.interpolate import BSpline
+    from scipy.spatial import cKDTree
+
+    from cams.manufacture.curves import fit_spline
+
+    curve, ev = _deltoid()
+    sp = fit_spline(curve, 1e-3)
+    S = BSpline(sp.knots, sp.control, 3)
+    X = ev(np.linspace(0.0, 1.0, 200000, endpoint=False))[0]
+    d = cKDTree(S(np.linspace(sp.knots[0], sp.knots[-1], 4000001))).query(X)[0]
+    assert float(np.max(d)) <= sp.distance <= 1e-3
