@@ -90,6 +90,11 @@ class Face(ABC):
         """
 
     @abstractmethod
+    def exact(self, design, solution: SolveResult) -> Any:
+        """The cam's exact curves by drawing layer and its timing datum (:class:`cams.profile.exact.ExactCam`),
+        cam frame: what the exports' arcs and spline are fitted to (:mod:`cams.manufacture.curves`)."""
+
+    @abstractmethod
     def checks(self, design, solution: SolveResult, profile: Any, options: ProfileOptions) -> Any:
         """The checks of the finished profile (``profile``: :meth:`profile`'s, or None to build it); a report
         with ``checks`` (:class:`cams.checks.base.Check`), ``passed`` and ``to_dict()``."""

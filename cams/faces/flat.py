@@ -108,6 +108,11 @@ class FlatFace(Face):
 
         return flat_face_profile(design, solution.R0, tolerance=options.tolerance, field=options.tolerance_field)
 
+    def exact(self, design, solution: SolveResult):
+        from cams.profile.exact import flat_exact
+
+        return flat_exact(design, solution.R0)
+
     def checks(self, design, solution: SolveResult, profile, options: ProfileOptions) -> FlatCheckReport:
         from cams.checks.flat import check_flat_face
 

@@ -335,6 +335,11 @@ class RollerFace(Face):
 
         return build_profile(design, solution.centre, tolerance=options.tolerance, field=options.tolerance_field)
 
+    def exact(self, design, solution: SolveResult):
+        from cams.profile.exact import roller_exact
+
+        return roller_exact(design, solution.centre)
+
     def checks(self, design, solution: SolveResult, profile, options: ProfileOptions) -> CheckReport:
         from cams.checks.profile import check_profile
 

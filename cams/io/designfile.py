@@ -7,6 +7,7 @@ Schema (see ``examples/``)::
     [follower]   kind, face ("roller" default | "flat"), arm, swing (rocker) | stroke, offset
                  (translating), roller_radius, rise_direction ("cw" | "ccw", rocker)
     [cam]        rotation ("cw" | "ccw"), rpm (optional), bore_radius and hub_wall (optional),
+                 keyway_width, keyway_depth (mm) and keyway_angle (degrees from the datum; optional),
                  base_radius (a chosen R0, with follower.offset or limits.centre_distance)
                  or centre ([x, y] in the follower's fixed frame): a chosen cam, checked not sized
     [[motion]]   phase ("rise" | "dwell" | "return"), law, angle (degrees),
@@ -33,7 +34,8 @@ instead: its size is limited by convexity, not by a pressure angle::
                  moves the contact); rocker: swing, rise_direction, centre_distance
                  (L, pivot to cam centre, required), face_offset (signed distance
                  pivot to face line, positive with the pivot on the cam's side; default 0)
-    [cam]        rotation, rpm, bore_radius, hub_wall, base_radius (optional: a chosen R0 to
+    [cam]        rotation, rpm, bore_radius, hub_wall, keyway_width, keyway_depth, keyway_angle,
+                 base_radius (optional: a chosen R0 to
                  check instead of the smallest)
     [[motion]]   as above
     [limits]     min_radius (smallest radius of curvature of the profile, default a
@@ -94,7 +96,8 @@ _KEYS = {
     "": {"name", "units", "follower", "cam", "motion", "limits", "solve", "profile", "dynamics", "optimize",
          "contact"},
     "follower": {"kind", "face", "arm", "swing", "stroke", "offset", "roller_radius", "rise_direction"},
-    "cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius", "centre", "width"},
+    "cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius", "centre", "width", "keyway_width",
+            "keyway_depth", "keyway_angle"},
     "motion": {"phase", "law", "angle", "height"},
     "limits": {"pressure_angle", "return_pressure_angle", "closure", "safety_factor",
                "centre_distance", "min_base_radius"},
@@ -103,7 +106,8 @@ _KEYS = {
     # flat-faced followers
     "flat_rocker": {"kind", "face", "swing", "rise_direction", "centre_distance", "face_offset"},
     "flat_translating": {"kind", "face", "stroke", "offset"},
-    "flat_cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius", "width"},
+    "flat_cam": {"rotation", "rpm", "bore_radius", "hub_wall", "base_radius", "width", "keyway_width", "keyway_depth",
+                 "keyway_angle"},
     "flat_limits": {"min_radius", "min_base_radius", "closure"},
     "flat_profile": {"tolerance"},
 }
@@ -161,7 +165,7 @@ LENGTH_RANGE = (1e-9, 1e9)
 _LENGTH_KEYS = {
     "follower": ("arm", "stroke", "offset", "roller_radius", "centre_distance", "face_offset"),
     "limits": ("centre_distance", "min_base_radius", "min_radius"),
-    "cam": ("bore_radius", "hub_wall", "base_radius", "width"),
+    "cam": ("bore_radius", "hub_wall", "base_radius", "width", "keyway_width", "keyway_depth"),
     "profile": ("tolerance", "min_curvature_radius"),
 }
 
@@ -287,8 +291,18 @@ def design_from_dict(d: dict) -> CamDesign | FlatFaceDesign:
         min_curvature_radius=_value(pt, "min_curvature_radius"), bore_radius=_value(cam, "bore_radius"),
         hub_wall=_value(cam, "hub_wall"), constraints=so.get("constraints", "all"),
         dynamics=_dynamics(d, kind), optimize=_optimize(d, so),
-        width=_num(cam, "width", "cam.width", required=False), contact=_contact(d),
+        width=_num(cam, "width", "cam.width", required=False), contact=_contact(d), **_keyway(cam),
     )
+
+
+def _keyway(cam: dict) -> dict:
+    """``[cam] keyway_width``, ``keyway_depth`` (mm) and ``keyway_angle`` (degrees, here radians) as the design's
+    fields; the model checks them (:func:`cams.model.options.check_keyway`)."""
+    angle = _value(cam, "keyway_angle")
+    if isinstance(angle, (int, float)) and not isinstance(angle, bool):
+        angle = float(np.radians(angle))
+    return {"keyway_width": _value(cam, "keyway_width"), "keyway_depth": _value(cam, "keyway_depth"),
+            "keyway_angle": angle}
 
 
 def _optimize(d: dict, solve_table: dict):
@@ -465,7 +479,7 @@ def _flat_design(d: dict, fo: dict, kind: str) -> FlatFaceDesign:
         hub_wall=_num(cam, "hub_wall", "cam.hub_wall", required=False),
         tolerance=_num(pt, "tolerance", "profile.tolerance", required=False),
         optimize=_optimize(d, {}), dynamics=dynamics,
-        width=_num(cam, "width", "cam.width", required=False), contact=_contact(d),
+        width=_num(cam, "width", "cam.width", required=False), contact=_contact(d), **_keyway(cam),
     )
 
 

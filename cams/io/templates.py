@@ -21,6 +21,8 @@ rpm = 60                     # optional: time derivatives in the motion diagrams
 # drawings show it; without it the commands suggest one.
 # bore_radius = 6.0           # mm
 # hub_wall = 3.0             # mm of material at least between the bore and the working profile
+# keyway_width = 4.0         # mm: a keyway in the bore (with keyway_depth, mm from the bore's surface,
+# keyway_depth = 1.8         #   and keyway_angle, degrees from the datum in the cam's sense of rotation)
 # To check a cam you chose instead of sizing the smallest (no min_base_radius then):
 # base_radius = 18.0         # R0, with limits.centre_distance (L) below; or
 # centre = [133.0, 13.0]     # the cam centre in the rocker's frame (pivot at the origin, X along the arm)
@@ -92,6 +94,8 @@ rotation = "ccw"
 # drawings show it; without it the commands suggest one.
 # bore_radius = 5.0           # mm
 # hub_wall = 3.0             # mm of material at least between the bore and the working profile
+# keyway_width = 4.0         # mm: a keyway in the bore (with keyway_depth, mm from the bore's surface,
+# keyway_depth = 1.8         #   and keyway_angle, degrees from the datum in the cam's sense of rotation)
 # To check a cam you chose instead of sizing the smallest (no min_base_radius then):
 # base_radius = 26.0         # R0, with follower.offset above; or
 # centre = [-8.0, -16.0]     # the cam centre (origin at the roller centre at the bottom, Y along the rise)
@@ -157,6 +161,8 @@ rotation = "ccw"             # "cw" | "ccw"
 # drawings show it; without it the commands suggest one.
 # bore_radius = 8.0           # mm
 # hub_wall = 3.0             # mm of material at least between the bore and the working profile
+# keyway_width = 4.0         # mm: a keyway in the bore (with keyway_depth, mm from the bore's surface,
+# keyway_depth = 1.8         #   and keyway_angle, degrees from the datum in the cam's sense of rotation)
 
 # Laws without velocity jumps (a drop of the follower's velocity gives the cam a cusp).
 [[motion]]
@@ -220,6 +226,8 @@ rotation = "ccw"             # "cw" | "ccw"
 # drawings show it; without it the commands suggest one.
 # bore_radius = 8.0           # mm
 # hub_wall = 3.0             # mm of material at least between the bore and the working profile
+# keyway_width = 4.0         # mm: a keyway in the bore (with keyway_depth, mm from the bore's surface,
+# keyway_depth = 1.8         #   and keyway_angle, degrees from the datum in the cam's sense of rotation)
 
 [[motion]]
 phase = "rise"

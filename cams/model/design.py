@@ -23,7 +23,14 @@ from cams.model.follower import (
     check_length,
 )
 from cams.model.motiondesign import MotionDesignSpec
-from cams.model.options import ProfileOptions, check_constraints, check_hub_wall, check_objective, check_tolerance
+from cams.model.options import (
+    ProfileOptions,
+    check_constraints,
+    check_hub_wall,
+    check_keyway,
+    check_objective,
+    check_tolerance,
+)
 from laws.errors import InputError, check_option, show_value
 from laws.program import Program
 
@@ -112,6 +119,11 @@ class Design:
     hub_wall : float or None
         The least material between the bore and the working profile (length, >= 0; only with ``bore_radius``);
         None: the profile need only clear the bore.
+    keyway_width, keyway_depth : float or None
+        The bore's keyway (length): its width, and its depth measured radially from the bore's surface on the
+        keyway's centre line; None: no keyway (drawn in the exports, :mod:`cams.manufacture.keyway`).
+    keyway_angle : float or None
+        The keyway's centre line from the timing datum, in the cam's sense of rotation (radians); None: 0.
     constraints : {"all", "pressure_angle"}
         What the sizing keeps: ``"all"`` (the smallest cam whose pressure angle is within its limits, whose working
         profile clears the bore by the wall and passes the profile's checks) or ``"pressure_angle"`` (the face's
@@ -146,6 +158,9 @@ class Design:
     optimize: MotionDesignSpec | None
     width: float | None
     contact: ContactSpec | None
+    keyway_width: float | None
+    keyway_depth: float | None
+    keyway_angle: float | None
 
     def _check_common(self) -> None:
         """Refuse the common fields' bad values (one line each, named as in the design file)."""
@@ -161,6 +176,10 @@ class Design:
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
             raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
         check_constraints(self.constraints)
+
+    def _check_keyway(self) -> None:
+        """Refuse a bad keyway (after the bore's own checks)."""
+        check_keyway(self.keyway_width, self.keyway_depth, self.keyway_angle, self.bore_radius)
 
     @property
     def scale(self) -> float:
@@ -280,6 +299,11 @@ class CamDesign(Design):
     hub_wall : float or None
         The least material between the bore and the working profile
         (length, >= 0; only with ``bore_radius``); None: 0.
+    keyway_width, keyway_depth, keyway_angle : float or None
+        The bore's keyway: width and depth (length; the depth from the bore's
+        surface on the keyway's centre line) and the centre line's angle from
+        the timing datum in the cam's sense of rotation (radians); None: no
+        keyway (the angle: 0).
     constraints : {"all", "pressure_angle"}
         ``"all"``: the smallest cam that meets the pressure angle, the bore
         and the profile's checks (:mod:`cams.faces.part`);
@@ -312,6 +336,9 @@ class CamDesign(Design):
     optimize: MotionDesignSpec | None = None
     width: float | None = None
     contact: ContactSpec | None = None
+    keyway_width: float | None = None
+    keyway_depth: float | None = None
+    keyway_angle: float | None = None
 
     def __post_init__(self) -> None:
         # in the order a design file's tables are read, so that a file with two faults names the same one
@@ -343,6 +370,7 @@ class CamDesign(Design):
             raise InputError("follower.kind", "must be 'rocker' or 'translating'")
         ProfileOptions(self.tolerance, self.min_curvature_radius, self.bore_radius,  # checks the four
                        hub_wall=self.hub_wall)
+        self._check_keyway()
         check_optimize(self.optimize, self.objective, self.chosen)
 
     @property
@@ -490,6 +518,8 @@ class FlatFaceDesign(Design):
         Bore radius (length): a constraint of the sizing and a check.
     hub_wall : float or None
         The least material between the bore and the profile (length, >= 0; only with ``bore_radius``).
+    keyway_width, keyway_depth, keyway_angle : float or None
+        The bore's keyway, as :class:`CamDesign`'s (the datum: the face's contact normal at cam angle 0).
     constraints : {"all", "pressure_angle"}
         ``"all"``: the smallest cam convex enough whose profile clears the bore by the wall;
         ``"pressure_angle"``: convexity alone (a flat face's own limit; its pressure angle does not size it).
@@ -520,6 +550,9 @@ class FlatFaceDesign(Design):
     constraints: str = "all"
     width: float | None = None
     contact: ContactSpec | None = None
+    keyway_width: float | None = None
+    keyway_depth: float | None = None
+    keyway_angle: float | None = None
 
     face = "flat"
 
@@ -533,6 +566,7 @@ class FlatFaceDesign(Design):
             if getattr(self, name) is not None or name == "min_radius":
                 check_length(fld, getattr(self, name))
         check_hub_wall(self.hub_wall, self.bore_radius)
+        self._check_keyway()
         if self.tolerance is not None:
             check_tolerance(self.tolerance, "profile.tolerance")
         if self.base_radius is not None and self.min_base_radius is not None:  # as for a roller follower

@@ -25,6 +25,7 @@ __all__ = [
     "check_objective",
     "check_constraints",
     "check_hub_wall",
+    "check_keyway",
     "check_tolerance",
     "profile_options",
     "resolve_tolerance",
@@ -126,6 +127,29 @@ def check_hub_wall(hub_wall: object, bore_radius: float | None) -> float | None:
         raise InputError("cam.hub_wall", "is the wall between the bore and the working profile: give "
                          "cam.bore_radius too")
     return float(hub_wall)
+
+
+def check_keyway(width: object, depth: object, angle: object, bore_radius: float | None) -> None:
+    """Refuse a bad keyway (``[cam] keyway_width``, ``keyway_depth`` in mm, ``keyway_angle`` in radians here):
+    :class:`InputError` naming the field, one line. The three are given together (the angle may be left out:
+    0, on the datum), with a bore, and the keyway no wider than the bore (``width < 2 bore_radius``); how deep it
+    may go against the hub wall needs the profile (:func:`cams.manufacture.keyway.check_keyway_wall`)."""
+    given = {"cam.keyway_width": width, "cam.keyway_depth": depth, "cam.keyway_angle": angle}
+    if all(v is None for v in given.values()):
+        return
+    for field, v in given.items():
+        if v is None and field != "cam.keyway_angle":
+            raise InputError(field, "is missing: a keyway takes keyway_width and keyway_depth (mm; keyway_angle "
+                             "in degrees from the datum, default 0)")
+        if v is not None and (isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating))
+                              or not math.isfinite(v) or (field != "cam.keyway_angle" and v <= 0)):
+            raise InputError(field, f"must be a number{'' if field == 'cam.keyway_angle' else ' > 0 (mm)'}, got "
+                             f"{v!r}")
+    if bore_radius is None:
+        raise InputError("cam.keyway_width", "a keyway is cut in the bore: give cam.bore_radius too")
+    if float(width) >= 2.0 * bore_radius:  # type: ignore[arg-type]
+        raise InputError("cam.keyway_width", f"{float(width):g} mm is not narrower than the bore (diameter "  # type: ignore[arg-type]
+                         f"{2.0 * bore_radius:g} mm)")
 
 
 def check_constraints(constraints: object) -> str:

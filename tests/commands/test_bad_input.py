@@ -162,6 +162,9 @@ SLOTTING_LENGTHS = {**SLOTTING, "linkage": {"type": "slotting", "crank": 75.0, "
 ROCKER_WALL = {**ROCKER_FORM, "cam": {**ROCKER_FORM["cam"], "hub_wall": 2.0}}
 FLAT_WALL = {**FLAT_ROCKER, "cam": {**FLAT_ROCKER["cam"], "hub_wall": 2.0}}
 SLOTTING_WALL = {**SLOTTING, "cam": {"bore_radius": 10.0, "hub_wall": 2.0}}
+# a keyway goes with a bore
+ROCKER_KEYWAY = {**ROCKER_FORM, "cam": {**ROCKER_FORM["cam"], "keyway_width": 3.0, "keyway_depth": 1.0,
+                                        "keyway_angle": 90.0}}
 CRANK_SLIDER = {
     "linkage": {"type": "crank_slider", "stroke": 100.0, "rod": 300.0, "offset": 0.0, "rod_cg": 100.0, "rpm": 60},
     "cutting": {"working": "forward"},
@@ -188,6 +191,7 @@ HOMES = {
     ("`[cam]`", "", "rpm"): (ROCKER_FORM, "cam.rpm"),
     ("`[cam]`", "", "bore_radius"): (ROCKER_FORM, "cam.bore_radius"),
     ("`[cam]`", "", "hub_wall"): (ROCKER_WALL, "cam.hub_wall"),
+    **{("`[cam]`", "", k): (ROCKER_KEYWAY, f"cam.{k}") for k in ("keyway_width", "keyway_depth", "keyway_angle")},
     ("`[cam]`", "", "base_radius"): (ROCKER_CHOSEN_R0, "cam.base_radius"),
     ("`[cam]`", "", "centre"): (ROCKER_CHOSEN_CENTRE, "cam.centre[0]"),
     ("`[cam]`", "", "width"): (ROCKER_CONTACT, "cam.width"),

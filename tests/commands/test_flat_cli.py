@@ -152,8 +152,9 @@ def test_check_profile_plot_report_run(tmp_path, capsys, file):
     import ezdxf
 
     doc = ezdxf.readfile(str(dxf))
-    # no [cam] bore_radius: the suggested bore is not a dimension, so no BORE circle (issue 12, item 13)
-    assert {e.dxf.layer for e in doc.modelspace()} == {"PROFILE", "BASE"}
+    # no [cam] bore_radius: the suggested bore is not a dimension, so no BORE circle (issue 12, item 13); the
+    # centre mark and the timing datum are drawn in every drawing (issue 25)
+    assert {e.dxf.layer for e in doc.modelspace()} == {"PROFILE", "BASE", "CENTRE", "DATUM"}
     text = svg.read_text()
     assert 'id="PROFILE"' in text and 'id="PITCH"' not in text
     rc, out, err = _run(capsys, "plot", str(file), "--out", str(tmp_path / "pics"))
