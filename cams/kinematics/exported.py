@@ -1,0 +1,704 @@
+"""The motion an exported curve really gives: the follower in contact with the drawn profile, inverted exactly.
+
+An export (:mod:`cams.manufacture`) draws the working profile as elements -- line segments, circle arcs, B-spline
+pieces. This module shares no formula with the exporters: it takes the elements as the shop would cut them and
+finds, for each cam angle, where the design's follower sits in contact with them, then the motion's derivatives
+by implicit differentiation of the contact condition on the element in contact.
+
+Frames and signs
+----------------
+* The elements are in the cam frame of :mod:`cams.kinematics.inversion` (origin at the cam centre, axes parallel
+  to the fixed frame at ``phi = 0``; a flat rocker's: its line-of-centres frame, :mod:`cams.kinematics.flat`). A
+  point ``X`` of the cam frame is at ``O + R(eps phi) X`` in the fixed frame (``eps`` the cam's sense).
+* Roller (or knife edge) of radius ``r``: its centre's path at cam angle ``phi`` seen from the cam is
+  ``Q(s) = R(-eps phi) (A(s) - O)`` -- a line (translating) or a circle about the turned pivot (rocker). The
+  follower sits at the **outermost** ``s`` at which the roller touches the curve: the largest ``s`` with
+  ``dist(Q(s), curve) = r``. That ``s`` is a boundary point of ``{s: dist(Q(s), curve) <= r}``, where the
+  nearest point of the curve is an element's end point (the roller rounds it: ``|Q - V| = r``) or an interior
+  foot (a segment: ``Q`` on a line offset by ``r``; an arc of centre ``C``, radius ``R``: ``|Q - C| = R + r`` or
+  ``R - r`` with the radial foot on the arc; a spline piece: ``Q = B(t) +- r N(t)``). Every such candidate is a
+  true touch and the largest is the answer: closed forms (line or circle against line or circle) for the first
+  three, a bracketed root-finding to machine precision in ``t`` for a spline piece.
+* Flat face: the face's distance from the cam centre is the curve's support function ``h(theta) = max X . m``
+  over its points (``m`` the face normal at angle ``theta`` in the cam frame): exact per element (an end point,
+  an arc's ``C . m + R`` where ``m`` points into its span, a spline piece's interior critical points
+  ``B'(t) . m = 0``). A translating face: ``theta = pi/2 - eps phi``, ``s = h - R0``; a rocker:
+  ``f - L cos a = h(a - eps phi)`` solved for the face angle ``a`` (``s = sigma (a - a0)``).
+* Derivatives: with ``g(Q)`` the distance to the element in contact less ``r`` (gradient ``n``, the unit vector
+  from the foot to ``Q``; Hessian ``k t t^T``, ``k`` the curvature of the offset curve through ``Q``:
+  ``1/r`` at an end point, ``1/(R + r)`` or ``-1/(R - r)`` on an arc, 0 on a segment, ``kappa/(1 + kappa r)``
+  on a spline piece), ``F(s, phi) = g(Q(s, phi)) = 0`` gives ``s' = -F_phi / F_s`` and
+  ``s'' = -(F_ss s'^2 + 2 F_sphi s' + F_phiphi) / F_s``: exact between the switches from one element to the next.
+  A flat face: ``h_theta = X* . m_theta`` and ``h_thetatheta = rho* - h`` at the support point ``X*``.
+
+Angles radians, lengths the design's unit (mm); a rocker's swing in radians (reported in degrees by
+:meth:`ExportMotion.to_dict`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from cams.model.design import CamDesign, FlatFaceDesign
+from cams.model.follower import FlatRocker, FlatTranslating, Rocker, Translating
+from laws.errors import InputError
+
+__all__ = ["Line", "Arc", "SplinePiece", "Element", "Contact", "ExportMotion", "check_closed", "roller_contact",
+           "flat_contact", "export_motion", "CLOSURE_TOLERANCE"]
+
+#: A curve is closed when each element's end meets the next one's start within this share of its size.
+CLOSURE_TOLERANCE = 1e-7
+
+
+def _rot(v: np.ndarray, a: float) -> np.ndarray:
+    c, s = np.cos(a), np.sin(a)
+    return np.array([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]]).T if v.ndim > 1 else \
+        np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+
+
+def _J(v: np.ndarray) -> np.ndarray:
+    """``v`` turned by +90 degrees."""
+    return np.array([-v[1], v[0]])
+
+
+@dataclass(frozen=True)
+class Line:
+    """A straight segment from ``start`` to ``end`` (cam frame, length unit)."""
+
+    start: tuple[float, float]
+    end: tuple[float, float]
+
+    @property
+    def ends(self) -> tuple[np.ndarray, np.ndarray]:
+        return np.asarray(self.start, float), np.asarray(self.end, float)
+
+
+@dataclass(frozen=True)
+class Arc:
+    """A circle arc: ``centre``, ``radius`` (length), from angle ``start`` to ``end`` (radians) turning in
+    ``sense`` (+1 counter-clockwise, -1 clockwise). Its span is the angle swept from ``start`` to ``end`` in
+    ``sense``, in (0, 2 pi]."""
+
+    centre: tuple[float, float]
+    radius: float
+    start: float
+    end: float
+    sense: int = 1
+
+    @property
+    def span(self) -> float:
+        sw = (self.sense * (self.end - self.start)) % (2 * np.pi)
+        return 2 * np.pi if sw == 0 else float(sw)
+
+    def point(self, angle: float) -> np.ndarray:
+        return np.asarray(self.centre, float) + self.radius * np.array([np.cos(angle), np.sin(angle)])
+
+    @property
+    def ends(self) -> tuple[np.ndarray, np.ndarray]:
+        return self.point(self.start), self.point(self.start + self.sense * self.span)
+
+    def contains(self, angle: float) -> bool:
+        """Whether the direction ``angle`` (radians) points into the arc's span (its ends included)."""
+        d = (self.sense * (angle - self.start)) % (2 * np.pi)
+        return bool(d <= self.span + 1e-13 or d >= 2 * np.pi - 1e-13)
+
+
+@dataclass(frozen=True, eq=False)
+class SplinePiece:
+    """One polynomial piece of a (possibly rational) B-spline, ``t`` in ``[0, 1]``.
+
+    ``coeffs`` has shape ``(degree + 1, 3)``: the power-basis coefficients (highest first) of the homogeneous
+    coordinates ``(w x, w y, w)``; a non-rational piece has ``w = 1``. Built by
+    :func:`cams.manufacture.readback.spline_pieces` (or by hand in tests).
+    """
+
+    coeffs: np.ndarray
+
+    def _h(self, t: float) -> np.ndarray:
+        """Homogeneous point and its two derivatives at ``t``, shape (3, 3)."""
+        c = self.coeffs
+        p0 = np.polyval(c, t) if c.ndim == 1 else np.array([np.polyval(c[:, j], t) for j in range(3)])
+        d = [np.polyder(c[:, j]) for j in range(3)]
+        p1 = np.array([np.polyval(d[j], t) for j in range(3)])
+        p2 = np.array([np.polyval(np.polyder(d[j]), t) for j in range(3)])
+        return np.array([p0, p1, p2])
+
+    def derivatives(self, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``B(t), B'(t), B''(t)`` (cam frame, length unit per unit of ``t``), the rational quotient rule."""
+        h = self._h(t)
+        w, w1, w2 = h[0, 2], h[1, 2], h[2, 2]
+        b = h[0, :2] / w
+        b1 = (h[1, :2] - w1 * b) / w
+        b2 = (h[2, :2] - 2 * w1 * b1 - w2 * b) / w
+        return b, b1, b2
+
+    @property
+    def ends(self) -> tuple[np.ndarray, np.ndarray]:
+        return self.derivatives(0.0)[0], self.derivatives(1.0)[0]
+
+    def bound(self) -> tuple[np.ndarray, float]:
+        """A circle holding the piece (centre, radius), from a dense look plus a margin of its chord."""
+        t = np.linspace(0.0, 1.0, 33)
+        pts = np.array([self.derivatives(x)[0] for x in t])
+        c = 0.5 * (pts.min(axis=0) + pts.max(axis=0))
+        step = float(np.max(np.linalg.norm(np.diff(pts, axis=0), axis=1)))
+        return c, float(np.max(np.linalg.norm(pts - c, axis=1))) + step
+
+
+Element = Line | Arc | SplinePiece
+
+
+def check_closed(elements: list[Element], field: str = "PROFILE") -> None:
+    """Raise :class:`InputError` (``field``) unless the elements form one closed chain, in order.
+
+    Each element's end must meet the next one's start (the last the first's) within :data:`CLOSURE_TOLERANCE`
+    of the curve's size.
+    """
+    if not elements:
+        raise InputError(field, "holds no curve: give a closed profile of lines, arcs or spline pieces")
+    ends = [e.ends for e in elements]
+    size = max(float(np.max(np.abs(np.concatenate([a, b])))) for a, b in ends)
+    tol = CLOSURE_TOLERANCE * max(size, 1.0)
+    for i, (_, b) in enumerate(ends):
+        a = ends[(i + 1) % len(ends)][0]
+        gap = float(np.hypot(*(a - b)))
+        if gap > tol:
+            raise InputError(field, f"is not a closed curve: element {i}'s end ({b[0]:.6g}, {b[1]:.6g}) is "
+                             f"{gap:.3g} mm from the next one's start; export the profile as one closed curve")
+
+
+# -- the paths: a line (translating) or a circle (rocker), and their meetings with lines and circles -------------
+
+
+@dataclass(frozen=True)
+class _Path:
+    """The roller centre's path seen from the cam at one cam angle: ``Q(s)``, its derivatives and meetings.
+
+    The meetings take arrays of circles or lines and give the points met, shape (k, 2), with the index of the
+    circle or line each belongs to.
+    """
+
+    kind: str          # "line" or "circle"
+    base: np.ndarray   # line: Q(0); circle: its centre (the pivot, turned)
+    axis: np.ndarray   # line: dQ/ds; circle: the turned fixed frame's x axis
+    yaxis: np.ndarray  # circle: the turned y axis
+    radius: float      # circle: the arm
+    sense: int         # circle: the rocker's sense
+    window: float      # circle: the swing about which the answer is sought (radians)
+
+    def point(self, s: float) -> np.ndarray:
+        if self.kind == "line":
+            return self.base + s * self.axis
+        th = self.sense * s
+        return self.base + self.radius * (np.cos(th) * self.axis + np.sin(th) * self.yaxis)
+
+    def d1(self, s: float) -> np.ndarray:
+        if self.kind == "line":
+            return self.axis
+        th = self.sense * s
+        return self.sense * self.radius * (-np.sin(th) * self.axis + np.cos(th) * self.yaxis)
+
+    def d2(self, s: float) -> np.ndarray:
+        if self.kind == "line":
+            return np.zeros(2)
+        return self.base - self.point(s)
+
+    def param(self, q: np.ndarray) -> np.ndarray:
+        """The ``s`` of points ``q`` (k, 2) on the path (a rocker's within pi of the window's swing)."""
+        d = q - self.base
+        if self.kind == "line":
+            return d @ self.axis
+        s = self.sense * np.arctan2(d @ self.yaxis, d @ self.axis)
+        return s + 2 * np.pi * np.round((self.window - s) / (2 * np.pi))
+
+    def circles(self, c: np.ndarray, rad: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The path's points at distance ``rad`` (m,) from the points ``c`` (m, 2)."""
+        if self.kind == "line":
+            t0 = (c - self.base) @ self.axis
+            foot = self.base + t0[:, None] * self.axis
+            h2 = rad * rad - np.sum((c - foot) ** 2, axis=1)
+            ok = (h2 >= 0) & (rad >= 0)
+            h = np.sqrt(np.where(ok, h2, 0.0))[:, None]
+            pts = np.concatenate([foot + h * self.axis, foot - h * self.axis])
+        else:
+            d = c - self.base
+            dist = np.hypot(d[:, 0], d[:, 1])
+            R1 = self.radius
+            ok = (dist > 0) & (dist <= R1 + rad) & (dist >= np.abs(R1 - rad)) & (rad >= 0)
+            dist = np.where(ok, dist, 1.0)
+            a = (R1 * R1 - rad * rad + dist * dist) / (2 * dist)
+            h = np.sqrt(np.maximum(R1 * R1 - a * a, 0.0))[:, None]
+            e = d / dist[:, None]
+            je = np.stack([-e[:, 1], e[:, 0]], axis=1)
+            m = self.base + a[:, None] * e
+            pts = np.concatenate([m + h * je, m - h * je])
+        idx = np.concatenate([np.arange(len(c))] * 2)
+        keep = np.concatenate([ok, ok])
+        return pts[keep], idx[keep]
+
+    def lines(self, p: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The path's points on the lines through ``p`` (m, 2) along the unit vectors ``d`` (m, 2)."""
+        if self.kind == "line":
+            den = self.axis[0] * d[:, 1] - self.axis[1] * d[:, 0]
+            ok = np.abs(den) > 1e-15
+            w = p - self.base
+            t = (w[:, 0] * d[:, 1] - w[:, 1] * d[:, 0]) / np.where(ok, den, 1.0)
+            return (self.base + t[:, None] * self.axis)[ok], np.arange(len(p))[ok]
+        t0 = np.sum((self.base - p) * d, axis=1)
+        foot = p + t0[:, None] * d
+        h2 = self.radius ** 2 - np.sum((self.base - foot) ** 2, axis=1)
+        ok = h2 >= 0
+        h = np.sqrt(np.where(ok, h2, 0.0))[:, None]
+        pts = np.concatenate([foot + h * d, foot - h * d])
+        idx = np.concatenate([np.arange(len(p))] * 2)
+        keep = np.concatenate([ok, ok])
+        return pts[keep], idx[keep]
+
+    def off(self, q: np.ndarray) -> float:
+        """A signed measure of ``q`` off the path (zero on it): for root-finding along a spline piece."""
+        if self.kind == "line":
+            w = q - self.base
+            return float(self.axis[0] * w[1] - self.axis[1] * w[0])
+        return float(np.hypot(*(q - self.base)) - self.radius)
+
+    def near(self, c: np.ndarray, reach: np.ndarray) -> np.ndarray:
+        """Which of the points ``c`` (n, 2) lie within ``reach`` (n,) of the path."""
+        if self.kind == "line":
+            w = c - self.base
+            return np.abs(self.axis[0] * w[:, 1] - self.axis[1] * w[:, 0]) <= reach
+        return np.abs(np.hypot(*(c - self.base).T) - self.radius) <= reach
+
+
+# -- the contact ------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Contact:
+    """The follower in contact with an exported curve at cam angles ``phi``.
+
+    Attributes
+    ----------
+    phi : ndarray, shape (n,)
+        Cam angles, radians.
+    s, ds, d2s : ndarray, shape (n,)
+        The follower's displacement (length, or a rocker's swing in radians) and its first two derivatives by the
+        cam angle (per radian, per radian^2), exact on the element in contact.
+    element : ndarray of int, shape (n,)
+        Index of the element in contact (an end point counts as its element's).
+    """
+
+    phi: np.ndarray
+    s: np.ndarray
+    ds: np.ndarray
+    d2s: np.ndarray
+    element: np.ndarray
+
+
+class _Elements:
+    """The elements sorted by kind, with bounds for a quick choice of those near the path."""
+
+    def __init__(self, elements: list[Element]):
+        self.items = list(elements)
+        # the chain is closed (check_closed): each element's start is the previous one's end, one vertex each
+        self.verts = np.array([e.ends[0] for e in self.items]).reshape(-1, 2)
+        self.vert_owner = np.arange(len(self.items))
+        kinds = np.array([0 if isinstance(e, Line) else 1 if isinstance(e, Arc) else 2 for e in self.items])
+        self.lines, self.arcs, self.splines = (np.flatnonzero(kinds == k) for k in range(3))
+        self.la = np.zeros((len(self.items), 2))
+        self.ld = np.zeros((len(self.items), 2))
+        self.ll = np.zeros(len(self.items))
+        for i in self.lines:
+            a, b = self.items[i].ends
+            ln = float(np.hypot(*(b - a)))
+            self.la[i], self.ll[i] = a, ln
+            self.ld[i] = (b - a) / ln if ln > 0 else (1.0, 0.0)
+        bounds = []
+        for e in self.items:
+            if isinstance(e, SplinePiece):
+                bounds.append(e.bound())
+            else:
+                a, b = e.ends
+                c = 0.5 * (a + b)
+                rad = 0.5 * float(np.hypot(*(b - a)))
+                if isinstance(e, Arc):
+                    c, rad = np.asarray(e.centre, float), e.radius  # the whole circle holds the arc
+                bounds.append((c, rad))
+        self.bc = np.array([b[0] for b in bounds]).reshape(-1, 2)
+        self.br = np.array([b[1] for b in bounds])
+        self.size = float(np.max(np.abs(self.verts)))
+
+
+def _roller_candidates(els: _Elements, path: _Path, r: float) -> tuple[float, int, np.ndarray, float]:
+    """The outermost touch of the roller with the curve along the path: ``(s, element, foot, k)`` (module notes).
+
+    Every touch is a candidate (end points, segments' and arcs' interiors, spline pieces' roots); the largest
+    ``s`` wins, an end point before an interior touch at the same ``s``.
+    """
+    S: list[np.ndarray] = []
+    OWN: list[np.ndarray] = []
+    FOOT: list[np.ndarray] = []
+    K: list[np.ndarray] = []
+    slack = 1e-9 * max(els.size, 1.0)
+    k_vertex = 1.0 / r if r > 0 else np.inf
+    vj = np.flatnonzero(path.near(els.verts, np.full(len(els.verts), r + slack)))
+    if len(vj):
+        q, j = path.circles(els.verts[vj], np.full(len(vj), r))
+        S.append(path.param(q))
+        OWN.append(els.vert_owner[vj][j])
+        FOOT.append(els.verts[vj][j])
+        K.append(np.full(len(j), k_vertex))
+    near = path.near(els.bc, els.br + r + slack)
+    li = els.lines[near[els.lines]]
+    if len(li):
+        a, d, ln = els.la[li], els.ld[li], els.ll[li]
+        jd = np.stack([-d[:, 1], d[:, 0]], axis=1)
+        for side in (1.0, -1.0):
+            q, j = path.lines(a + side * r * jd, d)
+            u = np.sum((q - a[j]) * d[j], axis=1)
+            ok = (u >= 0) & (u <= ln[j])
+            S.append(path.param(q[ok]))
+            OWN.append(li[j[ok]])
+            FOOT.append(a[j[ok]] + u[ok, None] * d[j[ok]])
+            K.append(np.zeros(int(ok.sum())))
+    for i in els.arcs[near[els.arcs]]:
+        arc = els.items[i]
+        c, R = np.asarray(arc.centre, float), arc.radius
+        for rad, k in ((R + r, 1.0 / (R + r)), (R - r, -1.0 / (R - r) if R > r else 0.0)):
+            if rad <= 0:
+                continue
+            q, _ = path.circles(c[None, :], np.array([rad]))
+            for qq in q:
+                ang = float(np.arctan2(qq[1] - c[1], qq[0] - c[0]))
+                if arc.contains(ang):
+                    S.append(path.param(qq[None, :]))
+                    OWN.append(np.array([i]))
+                    FOOT.append(arc.point(ang)[None, :])
+                    K.append(np.array([k]))
+    for i in els.splines[near[els.splines]]:
+        for s, own, foot, k in _spline_touches(els.items[i], int(i), path, r):
+            S.append(np.array([s]))
+            OWN.append(np.array([own]))
+            FOOT.append(foot[None, :])
+            K.append(np.array([k]))
+    if not S or not sum(len(x) for x in S):
+        raise LookupError
+    s_all = np.concatenate(S)
+    best = int(np.argmax(s_all))
+    return float(s_all[best]), int(np.concatenate(OWN)[best]), np.concatenate(FOOT)[best], float(np.concatenate(K)[best])
+
+
+def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[tuple[float, int, np.ndarray, float]]:
+    """The touches of the roller with a spline piece's interior: roots in ``t`` of the offset point's distance off
+    the path, bracketed on a grid of the piece and refined by Brent's method to machine precision."""
+    from scipy.optimize import brentq
+
+    out = []
+    for side in (1.0, -1.0):
+        def offset(t: float, side: float = side) -> np.ndarray:
+            b, b1, _ = piece.derivatives(t)
+            return b + side * r * _J(b1) / np.hypot(*b1)
+
+        def f(t: float, offset=offset) -> float:
+            return path.off(offset(t))
+
+        ts = np.linspace(0.0, 1.0, 17)
+        fs = [f(t) for t in ts]
+        for t0, t1, f0, f1 in zip(ts[:-1], ts[1:], fs[:-1], fs[1:], strict=True):
+            if f0 == 0:
+                roots = [t0]
+            elif f0 * f1 < 0:
+                roots = [brentq(f, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)]
+            else:
+                continue
+            for t in roots:
+                b, b1, b2 = piece.derivatives(t)
+                kc = (b1[0] * b2[1] - b1[1] * b2[0]) / np.hypot(*b1) ** 3
+                kap = -side * kc
+                out.append((float(path.param(offset(t)[None, :])[0]), i, b, kap / (1.0 + kap * r) if r > 0 else kap))
+    return out
+
+
+def _roller_path(design: CamDesign, centre: np.ndarray, phi: float, s_design: float) -> _Path:
+    f, eps = design.follower, design.cam_sense
+    turn = -eps * phi
+    base = _rot(-np.asarray(centre, float), turn)
+    if isinstance(f, Translating):
+        return _Path("line", base, _rot(np.array([0.0, 1.0]), turn), np.zeros(2), 0.0, 1, 0.0)
+    if isinstance(f, Rocker):
+        return _Path("circle", base + _rot(f.pivot, turn), _rot(np.array([1.0, 0.0]), turn),
+                     _rot(np.array([0.0, 1.0]), turn), f.arm, f.sense, s_design)
+    raise InputError("follower.kind", "the roller contact is defined for rocker and translating roller followers")
+
+
+def roller_contact(design: CamDesign, centre: np.ndarray, elements: list[Element], phi: np.ndarray) -> Contact:
+    """The roller (or knife edge) in contact with the exported curve ``elements`` at cam angles ``phi``.
+
+    Parameters
+    ----------
+    design : CamDesign
+        The roller follower's design (follower, roller radius, cam sense).
+    centre : array_like, shape (2,)
+        Cam centre in the fixed frame (``SolveResult.centre``), length unit.
+    elements : list of Line, Arc, SplinePiece
+        The working profile, cam frame, a closed chain.
+    phi : ndarray
+        Cam angles, radians.
+
+    Returns
+    -------
+    Contact
+        Exact position on the element in contact (module notes), its derivatives by implicit differentiation.
+
+    Raises
+    ------
+    InputError
+        The curve is not closed; the roller's path does not touch it at some angle.
+    """
+    check_closed(elements)
+    els = _Elements(elements)
+    r = design.follower.roller_radius
+    eps = design.cam_sense
+    phi = np.atleast_1d(np.asarray(phi, float))
+    s_d = design.program.evaluate(phi).s
+    out = np.empty((3, len(phi)))
+    which = np.empty(len(phi), int)
+    for k, ph in enumerate(phi):
+        path = _roller_path(design, centre, float(ph), float(s_d[k]))
+        try:
+            s, i, foot, kk = _roller_candidates(els, path, r)
+        except LookupError:
+            raise InputError("PROFILE", f"the follower does not touch the curve at cam angle {np.degrees(ph):.6g} "
+                             "deg: is it this design's profile, in its cam frame?") from None
+        q = path.point(s)
+        qs, qss = path.d1(s), path.d2(s)
+        qp = -eps * _J(q)            # dQ/dphi: the cam frame turns by -eps phi
+        qpp = -q
+        qsp = -eps * _J(qs)
+        n = (q - foot) / r if r > 0 else _knife_normal(els.items[i], foot, q, qs)
+        t = _J(n)
+        Fs = float(n @ qs)
+        Fp = float(n @ qp)
+        ts, tp = float(t @ qs), float(t @ qp)
+        Fss = kk * ts * ts + float(n @ qss)
+        Fsp = kk * ts * tp + float(n @ qsp)
+        Fpp = kk * tp * tp + float(n @ qpp)
+        d1 = -Fp / Fs
+        d2 = -(Fss * d1 * d1 + 2 * Fsp * d1 + Fpp) / Fs
+        out[:, k] = (s, d1, d2)
+        which[k] = i
+    return Contact(phi, out[0], out[1], out[2], which)
+
+
+def _knife_normal(e: Element, foot: np.ndarray, q: np.ndarray, qs: np.ndarray) -> np.ndarray:
+    """A knife edge's contact normal: the element's normal at the contact, on the side the path leaves by."""
+    if isinstance(e, Line):
+        a, b = e.ends
+        n = _J((b - a) / np.hypot(*(b - a)))
+    elif isinstance(e, Arc):
+        d = foot - np.asarray(e.centre, float)
+        n = d / np.hypot(*d)
+    else:
+        # the foot's parameter is not kept: the normal of the nearest of a few points is enough for its side
+        ts = np.linspace(0, 1, 65)
+        j = int(np.argmin([np.hypot(*(e.derivatives(t)[0] - foot)) for t in ts]))
+        b1 = e.derivatives(ts[j])[1]
+        n = _J(b1 / np.hypot(*b1))
+    return n if float(n @ qs) > 0 else -n
+
+
+# -- a flat face --------------------------------------------------------------------------------------------------
+
+
+def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
+    """The curve's support function at the normal angle ``theta``: ``h, h_theta, h_thetatheta`` and the element."""
+    from scipy.optimize import brentq
+
+    m = np.array([np.cos(theta), np.sin(theta)])
+    mt = _J(m)
+    best: tuple[float, np.ndarray, float, int] | None = None
+
+    def take(h: float, x: np.ndarray, rho: float, i: int) -> None:
+        nonlocal best
+        if best is None or h > best[0]:
+            best = (h, x, rho, i)
+
+    hv = els.verts @ m
+    j = int(np.argmax(hv))
+    take(float(hv[j]), els.verts[j], 0.0, int(els.vert_owner[j]))
+    for i in els.arcs:
+        arc = els.items[i]
+        if arc.contains(theta):
+            c = np.asarray(arc.centre, float)
+            take(float(c @ m) + arc.radius, c + arc.radius * m, arc.radius, i)
+    for i in els.splines:
+        piece = els.items[i]
+        c, rad = els.bc[i], els.br[i]
+        if best is not None and float(c @ m) + rad < best[0]:
+            continue
+
+        def g(t: float, piece=piece) -> float:
+            return float(piece.derivatives(t)[1] @ m)
+
+        ts = np.linspace(0.0, 1.0, 17)
+        gs = [g(t) for t in ts]
+        for t0, t1, g0, g1 in zip(ts[:-1], ts[1:], gs[:-1], gs[1:], strict=True):
+            if g0 > 0 >= g1:  # a maximum of B . m
+                t = brentq(g, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
+                b, b1, b2 = piece.derivatives(t)
+                kc = abs(b1[0] * b2[1] - b1[1] * b2[0]) / np.hypot(*b1) ** 3
+                take(float(b @ m), b, 1.0 / kc if kc > 0 else np.inf, i)
+    assert best is not None
+    h, x, rho, i = best
+    return h, float(x @ mt), rho - h, i
+
+
+def flat_contact(design: FlatFaceDesign, R0: float, elements: list[Element], phi: np.ndarray) -> Contact:
+    """A flat face in contact with the exported curve ``elements`` at cam angles ``phi`` (module notes).
+
+    Parameters
+    ----------
+    design : FlatFaceDesign
+    R0 : float
+        The base radius the cam was sized to (length): a translating face's distance from the cam centre at
+        ``s = 0``; a rocker's sets its face angle at the near dwell.
+    elements : list of Line, Arc, SplinePiece
+        The profile in the flat profile's cam frame (a rocker's: the line-of-centres frame).
+    phi : ndarray
+        Cam angles, radians.
+    """
+    from scipy.optimize import brentq
+
+    from cams.kinematics.flat import oscillating_setup
+
+    check_closed(elements)
+    els = _Elements(elements)
+    fo, eps, prog = design.follower, design.cam_sense, design.program
+    phi = np.atleast_1d(np.asarray(phi, float))
+    s_d = prog.evaluate(phi).s
+    out = np.empty((3, len(phi)))
+    which = np.empty(len(phi), int)
+    if isinstance(fo, FlatTranslating):
+        for k, ph in enumerate(phi):
+            h, ht, htt, i = _support(els, np.pi / 2 - eps * ph)
+            out[:, k] = (h - R0, -eps * ht, htt)
+            which[k] = i
+        return Contact(phi, out[0], out[1], out[2], which)
+    if not isinstance(fo, FlatRocker):
+        raise InputError("follower.kind", "a flat face is a translating or rocker follower")
+    L, f, sg = fo.centre_distance, fo.face_offset, fo.sense
+    a0 = oscillating_setup(prog, L, R0, f, sg)
+    for k, ph in enumerate(phi):
+        def G(a: float, ph=ph) -> float:
+            return f - L * np.cos(a) - _support(els, a - eps * ph)[0]
+
+        ad = a0 + sg * s_d[k]
+        lo, hi, step = ad, ad, 1e-3
+        while G(lo) * G(hi) > 0:
+            lo, hi, step = ad - step, ad + step, 2 * step
+            if step > 1.0:
+                raise InputError("PROFILE", f"the face does not touch the curve near cam angle {np.degrees(ph):.6g} "
+                                 "deg: is it this design's profile, in its cam frame?")
+        a = brentq(G, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200) if lo != hi else ad
+        _, ht, htt, i = _support(els, a - eps * ph)
+        Ga, Gp = L * np.sin(a) - ht, eps * ht
+        Gaa, Gap, Gpp = L * np.cos(a) - htt, eps * htt, -htt
+        a1 = -Gp / Ga
+        a2 = -(Gaa * a1 * a1 + 2 * Gap * a1 + Gpp) / Ga
+        out[:, k] = (sg * (a - a0), sg * a1, sg * a2)
+        which[k] = i
+    return Contact(phi, out[0], out[1], out[2], which)
+
+
+# -- the errors against the design --------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ExportMotion:
+    """The largest errors of the motion an exported curve gives against the design's law.
+
+    Attributes
+    ----------
+    max_ds, max_dv, max_da : float
+        Largest ``|s - s_design|``, ``|s' - s'_design|``, ``|s'' - s''_design|`` over the angles checked (length,
+        length/rad, length/rad^2; a rocker's rad, rad/rad, rad/rad^2).
+    lift, peak_velocity, peak_acceleration : float
+        The law's lift and peaks (same units), the shares' denominators.
+    rocker : bool
+        The displacement is a swing (radians).
+    elements : int
+        Number of elements of the curve.
+    contact : Contact
+        The contact at the angles checked.
+    """
+
+    max_ds: float
+    max_dv: float
+    max_da: float
+    lift: float
+    peak_velocity: float
+    peak_acceleration: float
+    rocker: bool
+    elements: int
+    contact: Contact = field(repr=False)
+
+    @property
+    def ds_ratio(self) -> float:
+        return self.max_ds / self.lift
+
+    @property
+    def dv_ratio(self) -> float:
+        return self.max_dv / self.peak_velocity if self.peak_velocity > 0 else float("inf")
+
+    @property
+    def da_ratio(self) -> float:
+        return self.max_da / self.peak_acceleration if self.peak_acceleration > 0 else float("inf")
+
+    def to_dict(self) -> dict:
+        """JSON-ready errors: ``max_ds`` (mm, a rocker's deg), ``max_dv`` (mm/rad or deg/rad), ``max_da``
+        (mm/rad^2 or deg/rad^2), ``max_da_ratio`` (share of the law's peak acceleration) and ``elements``."""
+        k = float(np.degrees(1.0)) if self.rocker else 1.0
+        return {"elements": self.elements, "max_ds": k * self.max_ds, "max_dv": k * self.max_dv,
+                "max_da": k * self.max_da, "max_da_ratio": self.da_ratio}
+
+
+def check_angles(design: CamDesign | FlatFaceDesign, elements: int, per_element: int = 4,
+                 least: int = 3600) -> np.ndarray:
+    """The cam angles the errors are checked at: uniform, ``max(least, per_element * elements)`` a turn, with the
+    phase starts (radians)."""
+    n = int(min(max(least, per_element * elements), 200_000))
+    phi = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+    return np.unique(np.concatenate([phi, np.asarray(design.program.starts, float) % (2 * np.pi)]))
+
+
+def export_motion(design: CamDesign | FlatFaceDesign, elements: list[Element], *, centre: np.ndarray | None = None,
+                  R0: float | None = None, phi: np.ndarray | None = None) -> ExportMotion:
+    """The largest errors in displacement, velocity and acceleration of the motion the curve gives.
+
+    The contact (:func:`roller_contact` with ``centre``, :func:`flat_contact` with ``R0``) is compared with the
+    design's law at the angles ``phi`` (default :func:`check_angles`: the maximum is over these angles; on each
+    element the motion is exact). At a phase joint the law's later phase is taken.
+    """
+    from cams.kinematics.peaks import motion_peaks
+
+    phi = check_angles(design, len(elements)) if phi is None else np.atleast_1d(np.asarray(phi, float))
+    if isinstance(design, FlatFaceDesign):
+        if R0 is None:
+            raise InputError("R0", "a flat face's contact needs the base radius")
+        c = flat_contact(design, R0, elements, phi)
+    else:
+        if centre is None:
+            raise InputError("centre", "a roller's contact needs the cam centre")
+        c = roller_contact(design, centre, elements, phi)
+    m = design.program.evaluate(phi)
+    rocker = design.follower.kind == "rocker"
+    pk = motion_peaks(design.program, rocker=rocker)
+    vel = pk.velocity.value
+    acc = pk.acceleration.value
+    return ExportMotion(
+        max_ds=float(np.max(np.abs(c.s - m.s))), max_dv=float(np.max(np.abs(c.ds - m.ds))),
+        max_da=float(np.max(np.abs(c.d2s - m.d2s))), lift=float(design.program.lift),
+        peak_velocity=float("inf") if vel is None else float(vel),
+        peak_acceleration=float("inf") if acc is None else float(acc), rocker=rocker, elements=len(elements),
+        contact=c)
