@@ -13,6 +13,8 @@ from cams.words import length_format
 __all__ = ["register"]
 
 
+#: The drawings whose curve's motion is measured (``export_motion``), in the order they are written.
+MOTION_FORMATS = ("dxf", "svg")
 #: The outputs of ``cams profile``, by option name.
 OUTPUTS = ("csv", "dxf", "svg", "table")
 #: Said when no output option is given: what the command can write.
@@ -34,6 +36,16 @@ def _check_outputs(args) -> None:
     check_output_paths([(f"--{opt}", getattr(args, opt)) for opt in OUTPUTS], inputs=[("FILE", args.file)])
 
 
+def _render(fmt: str, prof, path, bore, failing: str = ""):
+    """Write the drawing ``fmt`` (``"dxf"``, ``"svg"``) of ``prof`` to ``path``: the one call of each writer, for
+    the files asked for and for the copies the export's motion is measured on."""
+    from cams.manufacture.dxf import write_dxf
+    from cams.manufacture.svg import write_svg
+
+    writer = {"dxf": write_dxf, "svg": write_svg}[fmt]
+    return writer(prof, path, bore_radius=bore, failing=failing, field=f"--{fmt}")
+
+
 def _write(args, cam, prof, bore, failing: str = "") -> list[str]:
     """Write the outputs asked for, all of them or none (each rendered to a temporary first).
 
@@ -41,9 +53,7 @@ def _write(args, cam, prof, bore, failing: str = "") -> list[str]:
     lift table) is never marked.
     """
     from cams.io.files import STDOUT, all_or_nothing
-    from cams.manufacture.dxf import write_dxf
     from cams.manufacture.points import write_csv
-    from cams.manufacture.svg import write_svg
     from cams.manufacture.table import table_angles, write_table
 
     written = []
@@ -55,11 +65,68 @@ def _write(args, cam, prof, bore, failing: str = "") -> list[str]:
             written.append(str(write_table(cols, args.table)))
         if args.csv is not None:
             written.append(str(write_csv(prof, args.csv)))
-        if args.dxf is not None:
-            written.append(str(write_dxf(prof, args.dxf, bore_radius=bore, failing=failing)))
-        if args.svg is not None:
-            written.append(str(write_svg(prof, args.svg, bore_radius=bore, failing=failing)))
+        for fmt in MOTION_FORMATS:
+            if getattr(args, fmt) is not None:
+                written.append(str(_render(fmt, prof, getattr(args, fmt), bore, failing)))
     return [f"{w} (standard output)" if w == STDOUT else w for w in written]
+
+
+def _measured(args, cam, prof, bore, failing: str) -> list[dict]:
+    """The motion each written drawing's curve gives (``export_motion``): read back from the file written, or,
+    where it went to a stream, from a copy written alike."""
+    import tempfile
+
+    from cams.io.files import output_kind
+    from cams.manufacture.motion import export_entry, measure
+
+    out = []
+    for fmt in MOTION_FORMATS:
+        path = getattr(args, fmt)
+        if path is None:
+            continue
+        with tempfile.TemporaryDirectory() as tmp:
+            if output_kind(path)[0] != "file":
+                path = _render(fmt, prof, f"{tmp}/copy.{fmt}", bore, failing)
+            els, motion = measure(cam.design, cam.solution, path, f"--{fmt}")
+        out.append(export_entry(fmt, prof.tolerance, els, motion))
+    return out
+
+
+def _search(args, cam):
+    """``--max-accel-error``: the coarsest tolerance whose drawing keeps the acceleration error within the share
+    (:func:`cams.manufacture.motion.coarsest_tolerance`), measured on the first drawing asked for (a DXF)."""
+    import tempfile
+
+    from cams.manufacture.motion import Trial, coarsest_tolerance, curve_kind, measure
+    from cams.model.options import profile_options
+    from cams.profile.roller import DEFAULT_TOLERANCE_FRACTION, MAX_TOLERANCE_FRACTION
+    from laws.errors import InputError
+
+    fmt = next((f for f in MOTION_FORMATS if getattr(args, f) is not None), None)
+    if fmt is None:
+        raise InputError("--max-accel-error", "measures a drawing's curve: give --dxf OUT or --svg OUT too")
+    if args.tolerance is not None:
+        raise InputError("--max-accel-error", "chooses the tolerance: give it or --tolerance, not both")
+    design, sol = cam.design, cam.solution
+    base = cam.profile  # the default tolerance's: its exact smallest radius sets the range searched
+    smallest = float(base.min_work_radius)
+    coarsest = 0.999 * MAX_TOLERANCE_FRACTION * smallest  # just inside the cap (cap_tolerance)
+    finest = min(base.tolerance, DEFAULT_TOLERANCE_FRACTION * smallest) / 10.0
+    kinds: list[str] = []
+    done: dict[float, Trial] = {}
+
+    def evaluate(tol: float) -> Trial:
+        if tol in done:
+            return done[tol]
+        prof = cam.face.profile(design, sol, profile_options(design, tolerance=tol))
+        with tempfile.TemporaryDirectory() as tmp:
+            els, motion = measure(design, sol, _render(fmt, prof, f"{tmp}/trial.{fmt}", None), f"--{fmt}")
+        kinds.append(curve_kind(els))
+        done[tol] = Trial(tol, motion.da_ratio, len(els))
+        return done[tol]
+
+    evaluate(coarsest)  # the curve kind the writer draws, for the message
+    return coarsest_tolerance(evaluate, coarsest, finest, args.max_accel_error, curve=kinds[0]).tolerance
 
 
 def _summary_stream(args):
@@ -98,6 +165,12 @@ def run(args) -> int:
 
     # the motion design of [optimize] runs for seconds: its progress on a terminal
     with progress(wanted(args) and design.optimize is not None, "designing the motion"):
+        if args.max_accel_error is not None and cam.face.no_profile(design) is None:
+            from cams.cam import Cam
+
+            chosen = _search(args, cam)
+            cam = Cam(design, method=args.method, tolerance=chosen, solution=cam.solution)
+            opts = cam.options
         a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
         prof = None if cam.face.no_profile(design) is not None else cam.profile
     bore = None
@@ -114,8 +187,11 @@ def run(args) -> int:
         refused = "the cam fails (" + ", ".join(a.short) + "); --allow-failed writes them, marked as failing"
     elif asked:
         # a suggested bore is not drawn: only a given one
-        written = _write(args, cam, prof, opts.bore_radius, failing="" if a.usable else "; ".join(a.failures))
+        failing = "" if a.usable else "; ".join(a.failures)
+        written = _write(args, cam, prof, opts.bore_radius, failing=failing)
+        rep["export_motion"] = _measured(args, cam, prof, opts.bore_radius, failing)
     rep["written"] = written
+    rep.setdefault("export_motion", [])
     if args.json:
         print(json.dumps(rep, indent=2), file=out)
     else:
@@ -130,11 +206,22 @@ def run(args) -> int:
         print_assessment(rep, file=out)
         for w in written:
             print(f"  wrote {w}{'' if a.usable else ' (marked as failing where the format allows)'}", file=out)
+        for e in rep["export_motion"]:
+            print(f"  {_motion_words(e, cam.design.follower.kind == 'rocker')}", file=out)
         if not asked:
             print(f"  {NOTHING_ASKED}", file=out)
     if refused:
         print(f"cams profile: no file written: {refused}", file=sys.stderr)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
+
+
+def _motion_words(entry: dict, rocker: bool) -> str:
+    """One line of an ``export_motion`` entry, units beside every number."""
+    u = "deg" if rocker else "mm"
+    return (f"the motion the {entry['format'].upper()}'s {entry['curve']} gives (tolerance {entry['tolerance']:.3g} "
+            f"mm, {entry['elements']} elements), largest errors against the law: displacement "
+            f"{entry['max_ds']:.3g} {u}, velocity {entry['max_dv']:.3g} {u}/rad, acceleration {entry['max_da']:.3g} "
+            f"{u}/rad² ({100 * entry['max_da_ratio']:.3g} % of the law's peak)")
 
 
 def register(sub) -> None:
@@ -161,6 +248,9 @@ def register(sub) -> None:
                    "cam angle 0: lift, points (polar, x y), pressure angle, radius of curvature")
     q.add_argument("--step", type=float, metavar="DEG", help="lift table step, degrees dividing 360 (default 1)")
     q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001)")
+    q.add_argument("--max-accel-error", type=float, metavar="SHARE",
+                   help="choose the coarsest tolerance whose drawing (--dxf, else --svg) keeps the follower's "
+                        "acceleration error within SHARE of the law's peak (0.05: 5 %%); exit 2 when none can")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
                    help="override [solve] method (roller followers)")
     q.add_argument("--allow-failed", action="store_true", help="write the files even when the cam fails a check "

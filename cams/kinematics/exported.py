@@ -683,14 +683,14 @@ def export_motion(design: CamDesign | FlatFaceDesign, elements: list[Element], *
     from cams.kinematics.peaks import motion_peaks
 
     phi = check_angles(design, len(elements)) if phi is None else np.atleast_1d(np.asarray(phi, float))
-    if isinstance(design, FlatFaceDesign):
+    if isinstance(design.follower, FlatTranslating | FlatRocker):
         if R0 is None:
             raise InputError("R0", "a flat face's contact needs the base radius")
-        c = flat_contact(design, R0, elements, phi)
+        c = flat_contact(design, R0, elements, phi)  # type: ignore[arg-type]
     else:
         if centre is None:
             raise InputError("centre", "a roller's contact needs the cam centre")
-        c = roller_contact(design, centre, elements, phi)
+        c = roller_contact(design, centre, elements, phi)  # type: ignore[arg-type]
     m = design.program.evaluate(phi)
     rocker = design.follower.kind == "rocker"
     pk = motion_peaks(design.program, rocker=rocker)
