@@ -116,22 +116,29 @@ class SplinePiece:
 
     coeffs: np.ndarray
 
-    def _h(self, t: float) -> np.ndarray:
-        """Homogeneous point and its two derivatives at ``t``, shape (3, 3)."""
-        c = self.coeffs
-        p0 = np.polyval(c, t) if c.ndim == 1 else np.array([np.polyval(c[:, j], t) for j in range(3)])
-        d = [np.polyder(c[:, j]) for j in range(3)]
-        p1 = np.array([np.polyval(d[j], t) for j in range(3)])
-        p2 = np.array([np.polyval(np.polyder(d[j]), t) for j in range(3)])
-        return np.array([p0, p1, p2])
+    def __post_init__(self) -> None:
+        c = np.asarray(self.coeffs, float)
+        deg = len(c) - 1
+        p = np.arange(deg, -1, -1)[:, None]
+        c1 = (c * p)[:-1]                      # the power basis differentiated, highest power first
+        c2 = (c1 * p[1:])[:-1] if deg > 1 else np.zeros((1, 3))
+        object.__setattr__(self, "coeffs", c)
+        object.__setattr__(self, "_d", (c, c1 if deg > 0 else np.zeros((1, 3)), c2))
 
-    def derivatives(self, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``B(t), B'(t), B''(t)`` (cam frame, length unit per unit of ``t``), the rational quotient rule."""
-        h = self._h(t)
-        w, w1, w2 = h[0, 2], h[1, 2], h[2, 2]
-        b = h[0, :2] / w
-        b1 = (h[1, :2] - w1 * b) / w
-        b2 = (h[2, :2] - 2 * w1 * b1 - w2 * b) / w
+    def derivatives(self, t):
+        """``B(t), B'(t), B''(t)`` (cam frame, length unit per unit of ``t``), the rational quotient rule; ``t`` a
+        number (arrays of shape (2,)) or an array (shape ``t.shape + (2,)``)."""
+        t = np.asarray(t, float)
+        h = []
+        for c in self._d:  # Horner's scheme on the three homogeneous coordinates at once
+            y = np.broadcast_to(c[0], t.shape + (3,)).copy()
+            for row in c[1:]:
+                y = y * t[..., None] + row
+            h.append(y)
+        w, w1, w2 = h[0][..., 2:], h[1][..., 2:], h[2][..., 2:]
+        b = h[0][..., :2] / w
+        b1 = (h[1][..., :2] - w1 * b) / w
+        b2 = (h[2][..., :2] - 2 * w1 * b1 - w2 * b) / w
         return b, b1, b2
 
     @property
@@ -140,8 +147,7 @@ class SplinePiece:
 
     def bound(self) -> tuple[np.ndarray, float]:
         """A circle holding the piece (centre, radius), from a dense look plus a margin of its chord."""
-        t = np.linspace(0.0, 1.0, 33)
-        pts = np.array([self.derivatives(x)[0] for x in t])
+        pts = self.derivatives(np.linspace(0.0, 1.0, 33))[0]
         c = 0.5 * (pts.min(axis=0) + pts.max(axis=0))
         step = float(np.max(np.linalg.norm(np.diff(pts, axis=0), axis=1)))
         return c, float(np.max(np.linalg.norm(pts - c, axis=1))) + step
@@ -256,12 +262,12 @@ class _Path:
         keep = np.concatenate([ok, ok])
         return pts[keep], idx[keep]
 
-    def off(self, q: np.ndarray) -> float:
-        """A signed measure of ``q`` off the path (zero on it): for root-finding along a spline piece."""
+    def off(self, q: np.ndarray) -> np.ndarray:
+        """A signed measure of points ``q`` (..., 2) off the path (zero on it): for root-finding along a spline."""
+        w = q - self.base
         if self.kind == "line":
-            w = q - self.base
-            return float(self.axis[0] * w[1] - self.axis[1] * w[0])
-        return float(np.hypot(*(q - self.base)) - self.radius)
+            return self.axis[0] * w[..., 1] - self.axis[1] * w[..., 0]
+        return np.hypot(w[..., 0], w[..., 1]) - self.radius
 
     def near(self, c: np.ndarray, reach: np.ndarray) -> np.ndarray:
         """Which of the points ``c`` (n, 2) lie within ``reach`` (n,) of the path."""
@@ -334,7 +340,7 @@ def _roller_candidates(els: _Elements, path: _Path, r: float) -> tuple[float, in
     """The outermost touch of the roller with the curve along the path: ``(s, element, foot, k)`` (module notes).
 
     Every touch is a candidate (end points, segments' and arcs' interiors, spline pieces' roots); the largest
-    ``s`` wins, an end point before an interior touch at the same ``s``.
+    ``s`` wins, an interior touch before an end point at the same ``s`` (within 1e-12 of the curve's size).
     """
     S: list[np.ndarray] = []
     OWN: list[np.ndarray] = []
@@ -349,6 +355,7 @@ def _roller_candidates(els: _Elements, path: _Path, r: float) -> tuple[float, in
         OWN.append(els.vert_owner[vj][j])
         FOOT.append(els.verts[vj][j])
         K.append(np.full(len(j), k_vertex))
+    n_vertex = sum(len(x) for x in S)
     near = path.near(els.bc, els.br + r + slack)
     li = els.lines[near[els.lines]]
     if len(li):
@@ -386,6 +393,11 @@ def _roller_candidates(els: _Elements, path: _Path, r: float) -> tuple[float, in
         raise LookupError
     s_all = np.concatenate(S)
     best = int(np.argmax(s_all))
+    # a tie with an interior touch (an end point joining two elements smoothly): the element's side wins
+    tie = np.flatnonzero(s_all >= s_all[best] - 1e-12 * max(els.size, 1.0))
+    inner = tie[tie >= n_vertex]
+    if len(inner):
+        best = int(inner[np.argmax(s_all[inner])])
     return float(s_all[best]), int(np.concatenate(OWN)[best]), np.concatenate(FOOT)[best], float(np.concatenate(K)[best])
 
 
@@ -395,16 +407,17 @@ def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[t
     from scipy.optimize import brentq
 
     out = []
+    ts = np.linspace(0.0, 1.0, 17)
     for side in (1.0, -1.0):
-        def offset(t: float, side: float = side) -> np.ndarray:
+        def offset(t, side: float = side) -> np.ndarray:
             b, b1, _ = piece.derivatives(t)
-            return b + side * r * _J(b1) / np.hypot(*b1)
+            n = np.stack([-b1[..., 1], b1[..., 0]], axis=-1) / np.hypot(b1[..., 0], b1[..., 1])[..., None]
+            return b + side * r * n
 
         def f(t: float, offset=offset) -> float:
-            return path.off(offset(t))
+            return float(path.off(offset(t)))
 
-        ts = np.linspace(0.0, 1.0, 17)
-        fs = [f(t) for t in ts]
+        fs = path.off(offset(ts))
         for t0, t1, f0, f1 in zip(ts[:-1], ts[1:], fs[:-1], fs[1:], strict=True):
             if f0 == 0:
                 roots = [t0]
@@ -519,9 +532,12 @@ def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
     mt = _J(m)
     best: tuple[float, np.ndarray, float, int] | None = None
 
+    tie = 1e-12 * max(els.size, 1.0)
+
     def take(h: float, x: np.ndarray, rho: float, i: int) -> None:
+        # an element's interior wins a tie with an end point (a smooth joint): its curvature is the one
         nonlocal best
-        if best is None or h > best[0]:
+        if best is None or h > best[0] + (-tie if rho != 0 else 0.0):
             best = (h, x, rho, i)
 
     hv = els.verts @ m
@@ -538,11 +554,11 @@ def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
         if best is not None and float(c @ m) + rad < best[0]:
             continue
 
-        def g(t: float, piece=piece) -> float:
-            return float(piece.derivatives(t)[1] @ m)
+        def g(t, piece=piece):
+            return piece.derivatives(t)[1] @ m
 
         ts = np.linspace(0.0, 1.0, 17)
-        gs = [g(t) for t in ts]
+        gs = g(ts)
         for t0, t1, g0, g1 in zip(ts[:-1], ts[1:], gs[:-1], gs[1:], strict=True):
             if g0 > 0 >= g1:  # a maximum of B . m
                 t = brentq(g, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
