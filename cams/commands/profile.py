@@ -34,6 +34,14 @@ def _check_outputs(args) -> None:
     if args.table is not None:
         table_angles(1.0 if args.step is None else args.step)
     check_output_paths([(f"--{opt}", getattr(args, opt)) for opt in OUTPUTS], inputs=[("FILE", args.file)])
+    if args.max_accel_error is not None:
+        from cams.manufacture.motion import check_share
+
+        check_share(args.max_accel_error)
+        if not any(getattr(args, f) is not None for f in MOTION_FORMATS):
+            raise InputError("--max-accel-error", "measures a drawing's curve: give --dxf OUT or --svg OUT too")
+        if args.tolerance is not None:
+            raise InputError("--max-accel-error", "chooses the tolerance: give it or --tolerance, not both")
 
 
 def _render(fmt: str, prof, path, bore, failing: str = ""):
@@ -100,13 +108,8 @@ def _search(args, cam):
     from cams.manufacture.motion import Trial, coarsest_tolerance, curve_kind, measure
     from cams.model.options import profile_options
     from cams.profile.roller import DEFAULT_TOLERANCE_FRACTION, MAX_TOLERANCE_FRACTION
-    from laws.errors import InputError
 
-    fmt = next((f for f in MOTION_FORMATS if getattr(args, f) is not None), None)
-    if fmt is None:
-        raise InputError("--max-accel-error", "measures a drawing's curve: give --dxf OUT or --svg OUT too")
-    if args.tolerance is not None:
-        raise InputError("--max-accel-error", "chooses the tolerance: give it or --tolerance, not both")
+    fmt = next(f for f in MOTION_FORMATS if getattr(args, f) is not None)  # one is given (_check_outputs)
     design, sol = cam.design, cam.solution
     base = cam.profile  # the default tolerance's: its exact smallest radius sets the range searched
     smallest = float(base.min_work_radius)

@@ -18,7 +18,7 @@ import numpy as np
 from cams.kinematics.exported import Arc, Element, ExportMotion, Line, export_motion
 from laws.errors import InputError
 
-__all__ = ["curve_kind", "export_entry", "measure", "coarsest_tolerance", "Trial", "MOTION_FORMATS",
+__all__ = ["check_share", "curve_kind", "export_entry", "measure", "coarsest_tolerance", "Trial", "MOTION_FORMATS",
            "SEARCH_STEPS", "REFINE_STEPS"]
 
 #: The written formats whose curve is read back and followed (a CSV holds points, not a curve).
@@ -27,6 +27,17 @@ MOTION_FORMATS = ("dxf", "svg")
 SEARCH_STEPS = 2
 #: Bisections (in the tolerance's logarithm) between the last tolerance that failed and the first that met.
 REFINE_STEPS = 4
+
+
+def check_share(share: object, field: str = "--max-accel-error") -> float:
+    """``share`` as a float > 0 (a share of the law's peak acceleration: 0.05 is 5 %), else :class:`InputError`."""
+    try:
+        v = float(share)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        v = float("nan")
+    if not (np.isfinite(v) and v > 0):
+        raise InputError(field, f"must be a share of the peak acceleration > 0 (0.05 is 5 %), got {share!r}")
+    return v
 
 
 def curve_kind(elements: list[Element]) -> str:
@@ -74,8 +85,7 @@ def coarsest_tolerance(evaluate: Callable[[float], Trial], coarsest: float, fine
     InputError
         ``field``: no tolerance tried meets the share; the message gives the finest's error.
     """
-    if not (np.isfinite(share) and share > 0):
-        raise InputError(field, f"must be a share of the peak acceleration > 0 (0.05 is 5 %), got {share!r}")
+    share = check_share(share, field)
     n = max(1, int(np.ceil(SEARCH_STEPS * np.log10(coarsest / finest))))
     tried = np.geomspace(coarsest, finest, n + 1)
     last_bad = None
