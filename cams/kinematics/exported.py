@@ -38,6 +38,7 @@ Angles radians, lengths the design's unit (mm); a rocker's swing in radians (rep
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any, cast
 
 import numpy as np
 
@@ -45,8 +46,19 @@ from cams.model.design import CamDesign, FlatFaceDesign
 from cams.model.follower import FlatRocker, FlatTranslating, Rocker, Translating
 from laws.errors import InputError
 
-__all__ = ["Line", "Arc", "SplinePiece", "Element", "Contact", "ExportMotion", "check_closed", "roller_contact",
-           "flat_contact", "export_motion", "CLOSURE_TOLERANCE"]
+__all__ = [
+    "Line",
+    "Arc",
+    "SplinePiece",
+    "Element",
+    "Contact",
+    "ExportMotion",
+    "check_closed",
+    "roller_contact",
+    "flat_contact",
+    "export_motion",
+    "CLOSURE_TOLERANCE",
+]
 
 #: A curve is closed when each element's end meets the next one's start within this share of its size.
 CLOSURE_TOLERANCE = 1e-7
@@ -54,8 +66,11 @@ CLOSURE_TOLERANCE = 1e-7
 
 def _rot(v: np.ndarray, a: float) -> np.ndarray:
     c, s = np.cos(a), np.sin(a)
-    return np.array([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]]).T if v.ndim > 1 else \
-        np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+    return (
+        np.array([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]]).T
+        if v.ndim > 1
+        else np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+    )
 
 
 def _J(v: np.ndarray) -> np.ndarray:
@@ -115,12 +130,13 @@ class SplinePiece:
     """
 
     coeffs: np.ndarray
+    _d: Any = field(init=False, repr=False, compare=False, default=None)
 
     def __post_init__(self) -> None:
         c = np.asarray(self.coeffs, float)
         deg = len(c) - 1
         p = np.arange(deg, -1, -1)[:, None]
-        c1 = (c * p)[:-1]                      # the power basis differentiated, highest power first
+        c1 = (c * p)[:-1]  # the power basis differentiated, highest power first
         c2 = (c1 * p[1:])[:-1] if deg > 1 else np.zeros((1, 3))
         object.__setattr__(self, "coeffs", c)
         object.__setattr__(self, "_d", (c, c1 if deg > 0 else np.zeros((1, 3)), c2))
@@ -131,7 +147,7 @@ class SplinePiece:
         t = np.asarray(t, float)
         h = []
         for c in self._d:  # Horner's scheme on the three homogeneous coordinates at once
-            y = np.broadcast_to(c[0], t.shape + (3,)).copy()
+            y = np.broadcast_to(c[0], (*t.shape, 3)).copy()
             for row in c[1:]:
                 y = y * t[..., None] + row
             h.append(y)
@@ -171,8 +187,11 @@ def check_closed(elements: list[Element], field: str = "PROFILE") -> None:
         a = ends[(i + 1) % len(ends)][0]
         gap = float(np.hypot(*(a - b)))
         if gap > tol:
-            raise InputError(field, f"is not a closed curve: element {i}'s end ({b[0]:.6g}, {b[1]:.6g}) is "
-                             f"{gap:.3g} mm from the next one's start; export the profile as one closed curve")
+            raise InputError(
+                field,
+                f"is not a closed curve: element {i}'s end ({b[0]:.6g}, {b[1]:.6g}) is "
+                f"{gap:.3g} mm from the next one's start; export the profile as one closed curve",
+            )
 
 
 # -- the paths: a line (translating) or a circle (rocker), and their meetings with lines and circles -------------
@@ -186,13 +205,13 @@ class _Path:
     circle or line each belongs to.
     """
 
-    kind: str          # "line" or "circle"
-    base: np.ndarray   # line: Q(0); circle: its centre (the pivot, turned)
-    axis: np.ndarray   # line: dQ/ds; circle: the turned fixed frame's x axis
+    kind: str  # "line" or "circle"
+    base: np.ndarray  # line: Q(0); circle: its centre (the pivot, turned)
+    axis: np.ndarray  # line: dQ/ds; circle: the turned fixed frame's x axis
     yaxis: np.ndarray  # circle: the turned y axis
-    radius: float      # circle: the arm
-    sense: int         # circle: the rocker's sense
-    window: float      # circle: the swing about which the answer is sought (radians)
+    radius: float  # circle: the arm
+    sense: int  # circle: the rocker's sense
+    window: float  # circle: the swing about which the answer is sought (radians)
 
     def point(self, s: float) -> np.ndarray:
         if self.kind == "line":
@@ -254,7 +273,7 @@ class _Path:
             return (self.base + t[:, None] * self.axis)[ok], np.arange(len(p))[ok]
         t0 = np.sum((self.base - p) * d, axis=1)
         foot = p + t0[:, None] * d
-        h2 = self.radius ** 2 - np.sum((self.base - foot) ** 2, axis=1)
+        h2 = self.radius**2 - np.sum((self.base - foot) ** 2, axis=1)
         ok = h2 >= 0
         h = np.sqrt(np.where(ok, h2, 0.0))[:, None]
         pts = np.concatenate([foot + h * d, foot - h * d])
@@ -370,7 +389,7 @@ def _roller_candidates(els: _Elements, path: _Path, r: float) -> tuple[float, in
             FOOT.append(a[j[ok]] + u[ok, None] * d[j[ok]])
             K.append(np.zeros(int(ok.sum())))
     for i in els.arcs[near[els.arcs]]:
-        arc = els.items[i]
+        arc = cast(Arc, els.items[i])
         c, R = np.asarray(arc.centre, float), arc.radius
         for rad, k in ((R + r, 1.0 / (R + r)), (R - r, -1.0 / (R - r) if R > r else 0.0)):
             if rad <= 0:
@@ -384,7 +403,7 @@ def _roller_candidates(els: _Elements, path: _Path, r: float) -> tuple[float, in
                     FOOT.append(arc.point(ang)[None, :])
                     K.append(np.array([k]))
     for i in els.splines[near[els.splines]]:
-        for s, own, foot, k in _spline_touches(els.items[i], int(i), path, r):
+        for s, own, foot, k in _spline_touches(cast(SplinePiece, els.items[i]), int(i), path, r):
             S.append(np.array([s]))
             OWN.append(np.array([own]))
             FOOT.append(foot[None, :])
@@ -398,7 +417,8 @@ def _roller_candidates(els: _Elements, path: _Path, r: float) -> tuple[float, in
     inner = tie[tie >= n_vertex]
     if len(inner):
         best = int(inner[np.argmax(s_all[inner])])
-    return float(s_all[best]), int(np.concatenate(OWN)[best]), np.concatenate(FOOT)[best], float(np.concatenate(K)[best])
+    owners, feet, ks = np.concatenate(OWN), np.concatenate(FOOT), np.concatenate(K)
+    return float(s_all[best]), int(owners[best]), feet[best], float(ks[best])
 
 
 def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[tuple[float, int, np.ndarray, float]]:
@@ -409,6 +429,7 @@ def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[t
     out = []
     ts = np.linspace(0.0, 1.0, 17)
     for side in (1.0, -1.0):
+
         def offset(t, side: float = side) -> np.ndarray:
             b, b1, _ = piece.derivatives(t)
             n = np.stack([-b1[..., 1], b1[..., 0]], axis=-1) / np.hypot(b1[..., 0], b1[..., 1])[..., None]
@@ -440,8 +461,15 @@ def _roller_path(design: CamDesign, centre: np.ndarray, phi: float, s_design: fl
     if isinstance(f, Translating):
         return _Path("line", base, _rot(np.array([0.0, 1.0]), turn), np.zeros(2), 0.0, 1, 0.0)
     if isinstance(f, Rocker):
-        return _Path("circle", base + _rot(f.pivot, turn), _rot(np.array([1.0, 0.0]), turn),
-                     _rot(np.array([0.0, 1.0]), turn), f.arm, f.sense, s_design)
+        return _Path(
+            "circle",
+            base + _rot(f.pivot, turn),
+            _rot(np.array([1.0, 0.0]), turn),
+            _rot(np.array([0.0, 1.0]), turn),
+            f.arm,
+            f.sense,
+            s_design,
+        )
     raise InputError("follower.kind", "the roller contact is defined for rocker and translating roller followers")
 
 
@@ -482,11 +510,14 @@ def roller_contact(design: CamDesign, centre: np.ndarray, elements: list[Element
         try:
             s, i, foot, kk = _roller_candidates(els, path, r)
         except LookupError:
-            raise InputError("PROFILE", f"the follower does not touch the curve at cam angle {np.degrees(ph):.6g} "
-                             "deg: is it this design's profile, in its cam frame?") from None
+            raise InputError(
+                "PROFILE",
+                f"the follower does not touch the curve at cam angle {np.degrees(ph):.6g} "
+                "deg: is it this design's profile, in its cam frame?",
+            ) from None
         q = path.point(s)
         qs, qss = path.d1(s), path.d2(s)
-        qp = -eps * _J(q)            # dQ/dphi: the cam frame turns by -eps phi
+        qp = -eps * _J(q)  # dQ/dphi: the cam frame turns by -eps phi
         qpp = -q
         qsp = -eps * _J(qs)
         n = (q - foot) / r if r > 0 else _knife_normal(els.items[i], foot, q, qs)
@@ -544,12 +575,12 @@ def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
     j = int(np.argmax(hv))
     take(float(hv[j]), els.verts[j], 0.0, int(els.vert_owner[j]))
     for i in els.arcs:
-        arc = els.items[i]
+        arc = cast(Arc, els.items[i])
         if arc.contains(theta):
             c = np.asarray(arc.centre, float)
-            take(float(c @ m) + arc.radius, c + arc.radius * m, arc.radius, i)
+            take(float(c @ m) + arc.radius, c + arc.radius * m, arc.radius, int(i))
     for i in els.splines:
-        piece = els.items[i]
+        piece = cast(SplinePiece, els.items[i])
         c, rad = els.bc[i], els.br[i]
         if best is not None and float(c @ m) + rad < best[0]:
             continue
@@ -564,10 +595,10 @@ def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
                 t = brentq(g, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
                 b, b1, b2 = piece.derivatives(t)
                 kc = abs(b1[0] * b2[1] - b1[1] * b2[0]) / np.hypot(*b1) ** 3
-                take(float(b @ m), b, 1.0 / kc if kc > 0 else np.inf, i)
+                take(float(b @ m), b, 1.0 / kc if kc > 0 else np.inf, int(i))
     assert best is not None
-    h, x, rho, i = best
-    return h, float(x @ mt), rho - h, i
+    h, x, rho, owner = best
+    return h, float(x @ mt), rho - h, owner
 
 
 def flat_contact(design: FlatFaceDesign, R0: float, elements: list[Element], phi: np.ndarray) -> Contact:
@@ -606,6 +637,7 @@ def flat_contact(design: FlatFaceDesign, R0: float, elements: list[Element], phi
     L, f, sg = fo.centre_distance, fo.face_offset, fo.sense
     a0 = oscillating_setup(prog, L, R0, f, sg)
     for k, ph in enumerate(phi):
+
         def G(a: float, ph=ph) -> float:
             return f - L * np.cos(a) - _support(els, a - eps * ph)[0]
 
@@ -614,8 +646,11 @@ def flat_contact(design: FlatFaceDesign, R0: float, elements: list[Element], phi
         while G(lo) * G(hi) > 0:
             lo, hi, step = ad - step, ad + step, 2 * step
             if step > 1.0:
-                raise InputError("PROFILE", f"the face does not touch the curve near cam angle {np.degrees(ph):.6g} "
-                                 "deg: is it this design's profile, in its cam frame?")
+                raise InputError(
+                    "PROFILE",
+                    f"the face does not touch the curve near cam angle {np.degrees(ph):.6g} "
+                    "deg: is it this design's profile, in its cam frame?",
+                )
         a = brentq(G, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200) if lo != hi else ad
         _, ht, htt, i = _support(els, a - eps * ph)
         Ga, Gp = L * np.sin(a) - ht, eps * ht
@@ -675,12 +710,18 @@ class ExportMotion:
         """JSON-ready errors: ``max_ds`` (mm, a rocker's deg), ``max_dv`` (mm/rad or deg/rad), ``max_da``
         (mm/rad^2 or deg/rad^2), ``max_da_ratio`` (share of the law's peak acceleration) and ``elements``."""
         k = float(np.degrees(1.0)) if self.rocker else 1.0
-        return {"elements": self.elements, "max_ds": k * self.max_ds, "max_dv": k * self.max_dv,
-                "max_da": k * self.max_da, "max_da_ratio": self.da_ratio}
+        return {
+            "elements": self.elements,
+            "max_ds": k * self.max_ds,
+            "max_dv": k * self.max_dv,
+            "max_da": k * self.max_da,
+            "max_da_ratio": self.da_ratio,
+        }
 
 
-def check_angles(design: CamDesign | FlatFaceDesign, elements: int, per_element: int = 4,
-                 least: int = 3600) -> np.ndarray:
+def check_angles(
+    design: CamDesign | FlatFaceDesign, elements: int, per_element: int = 4, least: int = 3600
+) -> np.ndarray:
     """The cam angles the errors are checked at: uniform, ``max(least, per_element * elements)`` a turn, with the
     phase starts (radians)."""
     n = int(min(max(least, per_element * elements), 200_000))
@@ -688,8 +729,14 @@ def check_angles(design: CamDesign | FlatFaceDesign, elements: int, per_element:
     return np.unique(np.concatenate([phi, np.asarray(design.program.starts, float) % (2 * np.pi)]))
 
 
-def export_motion(design: CamDesign | FlatFaceDesign, elements: list[Element], *, centre: np.ndarray | None = None,
-                  R0: float | None = None, phi: np.ndarray | None = None) -> ExportMotion:
+def export_motion(
+    design: CamDesign | FlatFaceDesign,
+    elements: list[Element],
+    *,
+    centre: np.ndarray | None = None,
+    R0: float | None = None,
+    phi: np.ndarray | None = None,
+) -> ExportMotion:
     """The largest errors in displacement, velocity and acceleration of the motion the curve gives.
 
     The contact (:func:`roller_contact` with ``centre``, :func:`flat_contact` with ``R0``) is compared with the
@@ -702,19 +749,24 @@ def export_motion(design: CamDesign | FlatFaceDesign, elements: list[Element], *
     if isinstance(design.follower, FlatTranslating | FlatRocker):
         if R0 is None:
             raise InputError("R0", "a flat face's contact needs the base radius")
-        c = flat_contact(design, R0, elements, phi)  # type: ignore[arg-type]
+        c = flat_contact(design, R0, elements, phi)
     else:
         if centre is None:
             raise InputError("centre", "a roller's contact needs the cam centre")
-        c = roller_contact(design, centre, elements, phi)  # type: ignore[arg-type]
+        c = roller_contact(design, centre, elements, phi)
     m = design.program.evaluate(phi)
     rocker = design.follower.kind == "rocker"
     pk = motion_peaks(design.program, rocker=rocker)
     vel = pk.velocity.value
     acc = pk.acceleration.value
     return ExportMotion(
-        max_ds=float(np.max(np.abs(c.s - m.s))), max_dv=float(np.max(np.abs(c.ds - m.ds))),
-        max_da=float(np.max(np.abs(c.d2s - m.d2s))), lift=float(design.program.lift),
+        max_ds=float(np.max(np.abs(c.s - m.s))),
+        max_dv=float(np.max(np.abs(c.ds - m.ds))),
+        max_da=float(np.max(np.abs(c.d2s - m.d2s))),
+        lift=float(design.program.lift),
         peak_velocity=float("inf") if vel is None else float(vel),
-        peak_acceleration=float("inf") if acc is None else float(acc), rocker=rocker, elements=len(elements),
-        contact=c)
+        peak_acceleration=float("inf") if acc is None else float(acc),
+        rocker=rocker,
+        elements=len(elements),
+        contact=c,
+    )

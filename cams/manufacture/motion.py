@@ -18,8 +18,17 @@ import numpy as np
 from cams.kinematics.exported import Arc, Element, ExportMotion, Line, export_motion
 from laws.errors import InputError
 
-__all__ = ["check_share", "curve_kind", "export_entry", "measure", "coarsest_tolerance", "Trial", "MOTION_FORMATS",
-           "SEARCH_STEPS", "REFINE_STEPS"]
+__all__ = [
+    "check_share",
+    "curve_kind",
+    "export_entry",
+    "measure",
+    "coarsest_tolerance",
+    "Trial",
+    "MOTION_FORMATS",
+    "SEARCH_STEPS",
+    "REFINE_STEPS",
+]
 
 #: The written formats whose curve is read back and followed (a CSV holds points, not a curve).
 MOTION_FORMATS = ("dxf", "svg")
@@ -72,8 +81,15 @@ class Trial:
         self.tolerance, self.ratio, self.elements = tolerance, ratio, elements
 
 
-def coarsest_tolerance(evaluate: Callable[[float], Trial], coarsest: float, finest: float, share: float, *,
-                       curve: str, field: str = "--max-accel-error") -> Trial:
+def coarsest_tolerance(
+    evaluate: Callable[[float], Trial],
+    coarsest: float,
+    finest: float,
+    share: float,
+    *,
+    curve: str,
+    field: str = "--max-accel-error",
+) -> Trial:
     """The coarsest tolerance whose export keeps the acceleration error within ``share`` of the law's peak.
 
     Tolerances from ``coarsest`` down to ``finest`` are tried, :data:`SEARCH_STEPS` a decade; between the last
@@ -95,12 +111,18 @@ def coarsest_tolerance(evaluate: Callable[[float], Trial], coarsest: float, fine
             break
         last_bad = trial
     else:
-        why = (": the roller rounds each vertex, so a polyline's acceleration error does not fall with the tolerance"
-               if curve == "polyline" else "")
+        why = (
+            ": the roller rounds each vertex, so a polyline's acceleration error does not fall with the tolerance"
+            if curve == "polyline"
+            else ""
+        )
         assert last_bad is not None
-        raise InputError(field, f"no {curve} export keeps the acceleration error within {100 * share:.4g} % of the "
-                         f"law's peak: at the finest tolerance tried, {last_bad.tolerance:.3g} mm "
-                         f"({last_bad.elements} elements), it is {100 * last_bad.ratio:.4g} %{why}")
+        raise InputError(
+            field,
+            f"no {curve} export keeps the acceleration error within {100 * share:.4g} % of the "
+            f"law's peak: at the finest tolerance tried, {last_bad.tolerance:.3g} mm "
+            f"({last_bad.elements} elements), it is {100 * last_bad.ratio:.4g} %{why}",
+        )
     good = trial
     if last_bad is not None:
         lo, hi = np.log(good.tolerance), np.log(last_bad.tolerance)

@@ -44,8 +44,9 @@ def bulge_arc(p0: np.ndarray, p1: np.ndarray, bulge: float) -> Element:
     return Arc((float(c[0]), float(c[1])), float(R), a0, a0 + sweep, 1 if sweep > 0 else -1)
 
 
-def spline_pieces(control: np.ndarray, knots: np.ndarray, degree: int,
-                  weights: np.ndarray | None = None) -> list[SplinePiece]:
+def spline_pieces(
+    control: np.ndarray, knots: np.ndarray, degree: int, weights: np.ndarray | None = None
+) -> list[SplinePiece]:
     """A B-spline cut at its knots into polynomial pieces (homogeneous coordinates, power basis on ``[0, 1]``).
 
     Parameters
@@ -64,7 +65,7 @@ def spline_pieces(control: np.ndarray, knots: np.ndarray, degree: int,
     hom = np.column_stack([control * w[:, None], w])
     knots = np.asarray(knots, float)
     pieces = []
-    cols = [PPoly.from_spline(BSpline(knots, hom[:, j], degree)) for j in range(3)]
+    cols = [PPoly.from_spline(BSpline(knots, hom[:, j], degree)) for j in range(3)]  # type: ignore[arg-type]
     x = cols[0].x
     lo, hi = knots[degree], knots[len(knots) - degree - 1]
     for j in range(len(x) - 1):
@@ -115,10 +116,14 @@ def chain(elements: list[Element], field: str) -> list[Element]:
             break
         else:
             if np.hypot(*(cur - start)) <= tol:
-                raise InputError(field, f"its PROFILE holds more than one closed curve ({len(left)} elements left "
-                                 "over): the working profile is one closed curve")
-            raise InputError(field, f"its PROFILE is not a closed curve: nothing starts at ({cur[0]:.6g}, "
-                             f"{cur[1]:.6g}) mm")
+                raise InputError(
+                    field,
+                    f"its PROFILE holds more than one closed curve ({len(left)} elements left "
+                    "over): the working profile is one closed curve",
+                )
+            raise InputError(
+                field, f"its PROFILE is not a closed curve: nothing starts at ({cur[0]:.6g}, {cur[1]:.6g}) mm"
+            )
     check_closed(out, field)
     return out
 
@@ -163,9 +168,8 @@ def _dxf_entities(entity, field: str) -> list[Element]:
         bs = entity.construction_tool()
         ctrl = np.array([(p.x, p.y) for p in bs.control_points])
         w = np.asarray(bs.weights(), float) if bs.is_rational else None
-        return spline_pieces(ctrl, np.asarray(bs.knots(), float), bs.degree, w)
-    raise InputError(field, f"its PROFILE holds a {kind}: read are LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE and "
-                     "SPLINE")
+        return list(spline_pieces(ctrl, np.asarray(bs.knots(), float), bs.degree, w))
+    raise InputError(field, f"its PROFILE holds a {kind}: read are LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE and SPLINE")
 
 
 def read_dxf_profile(path: str | os.PathLike, field: str = "FILE") -> list[Element]:
@@ -240,7 +244,7 @@ def read_svg_profile(path: str | os.PathLike, field: str = "FILE") -> list[Eleme
         raise InputError(field, f"cannot be read as an SVG: {exc}") from None
     group = next((g for g in root.iter() if g.get("id") == "PROFILE"), None)
     if group is None:
-        raise InputError(field, "has no group PROFILE: the working profile is read from the group id=\"PROFILE\"")
+        raise InputError(field, 'has no group PROFILE: the working profile is read from the group id="PROFILE"')
     elements: list[Element] = []
     for node in group.iter():
         if node.tag.rsplit("}", 1)[-1] == "path":
@@ -257,14 +261,14 @@ def _svg_path(d: str, field: str) -> list[Element]:
 
     def take(k: int) -> list[float]:
         nonlocal i
-        vals = tokens[i:i + k]
+        vals = tokens[i : i + k]
         if len(vals) < k or any(v.isalpha() for v in vals):
-            raise InputError(field, f"its PROFILE path is malformed near {' '.join(tokens[i - 1:i + k])!r}")
+            raise InputError(field, f"its PROFILE path is malformed near {' '.join(tokens[i - 1 : i + k])!r}")
         i += k
         return [float(v) for v in vals]
 
-    def pt(x: float, y: float, rel: bool) -> np.ndarray:
-        return cur + (x, y) if rel else np.array([x, y])
+    def pt(xy: list[float], rel: bool) -> np.ndarray:
+        return cur + np.array(xy) if rel else np.array(xy)
 
     while i < len(tokens):
         if tokens[i].isalpha():
@@ -281,12 +285,12 @@ def _svg_path(d: str, field: str) -> list[Element]:
             cmd = ""
             continue
         if c == "M":
-            cur = start = pt(*take(2), rel)
+            cur = start = pt(take(2), rel)
             cmd = "l" if rel else "L"
             continue
         if c in "LHV":
             if c == "L":
-                nxt = pt(*take(2), rel)
+                nxt = pt(take(2), rel)
             elif c == "H":
                 (x,) = take(1)
                 nxt = np.array([cur[0] + x if rel else x, cur[1]])
@@ -297,11 +301,11 @@ def _svg_path(d: str, field: str) -> list[Element]:
                 out.append(Line(tuple(cur * [1, -1]), tuple(nxt * [1, -1])))
         elif c == "A":
             rx, ry, _, large, sweep, x, y = take(7)
-            nxt = pt(x, y, rel)
+            nxt = pt([x, y], rel)
             out.append(_svg_arc(cur, nxt, rx, ry, bool(large), bool(sweep), field))
         elif c in "CQ":
             k = 3 if c == "C" else 2
-            ctrl = [cur] + [pt(*take(2), rel) for _ in range(k)]
+            ctrl = [cur] + [pt(take(2), rel) for _ in range(k)]
             nxt = ctrl[-1]
             out.append(_bezier([p * [1, -1] for p in ctrl]))
         else:

@@ -89,8 +89,9 @@ def test_export_motion_json_against_brute_force(translating, tmp_path, capsys):
     cam = Cam.from_file(translating)
     d = cam.design
     phi = check_angles(d, len(pts))
-    s = _brute_positions(pts, np.array([rep["centre"]["x"], rep["centre"]["y"]]), d.follower.roller_radius, phi,
-                         d.cam_sense)
+    s = _brute_positions(
+        pts, np.array([rep["centre"]["x"], rep["centre"]["y"]]), d.follower.roller_radius, phi, d.cam_sense
+    )
     law = d.program.evaluate(phi)
     assert em[0]["max_ds"] == pytest.approx(float(np.max(np.abs(s - law.s))), abs=1e-9)
     assert em[1]["max_ds"] == pytest.approx(em[0]["max_ds"], abs=1e-8)
@@ -140,17 +141,22 @@ def test_max_accel_error_a_polyline_cannot_meet(tmp_path, capsys):
     out_file = tmp_path / "f.dxf"
     rc, out, err = _run(capsys, EXAMPLES / "translating_flat.toml", "--dxf", out_file, "--max-accel-error", "0.05")
     assert rc == 2 and err.count("\n") == 1
-    assert err.startswith("cams profile: error: --max-accel-error: no polyline export keeps the acceleration error "
-                          "within 5 % of the law's peak")
+    assert err.startswith(
+        "cams profile: error: --max-accel-error: no polyline export keeps the acceleration error "
+        "within 5 % of the law's peak"
+    )
     assert "finest tolerance tried" in err and not out_file.exists()
 
 
-@pytest.mark.parametrize("argv, words", [
-    (["--max-accel-error", "0.05"], "give --dxf OUT or --svg OUT too"),
-    (["--dxf", "X", "--max-accel-error", "0.05", "--tolerance", "0.01"], "not both"),
-    (["--dxf", "X", "--max-accel-error", "-1"], "must be a share"),
-    (["--dxf", "X", "--max-accel-error", "nan"], "must be a share"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["--max-accel-error", "0.05"], "give --dxf OUT or --svg OUT too"),
+        (["--dxf", "X", "--max-accel-error", "0.05", "--tolerance", "0.01"], "not both"),
+        (["--dxf", "X", "--max-accel-error", "-1"], "must be a share"),
+        (["--dxf", "X", "--max-accel-error", "nan"], "must be a share"),
+    ],
+)
 def test_max_accel_error_bad_input(argv, words, tmp_path, capsys):
     argv = [str(tmp_path / "o.dxf") if a == "X" else a for a in argv]
     rc, _, err = _run(capsys, EXAMPLES / "translating_flat.toml", *argv)

@@ -14,6 +14,8 @@
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
 
@@ -32,24 +34,35 @@ from laws.errors import InputError
 from laws.program import Phase, Program
 from laws.registry import get_law
 
-RC, E, R = 30.0, 5.0, 8.0          # the eccentric circle and the roller, mm
+RC, E, R = 30.0, 5.0, 8.0  # the eccentric circle and the roller, mm
 
 
 def _program(lift: float) -> Program:
-    return Program((Phase("rise", np.radians(120), get_law("cycloidal")), Phase("dwell", np.radians(60)),
-                    Phase("return", np.radians(120), get_law("cycloidal")), Phase("dwell", np.radians(60))), lift)
+    return Program(
+        (
+            Phase("rise", np.radians(120), get_law("cycloidal")),
+            Phase("dwell", np.radians(60)),
+            Phase("return", np.radians(120), get_law("cycloidal")),
+            Phase("dwell", np.radians(60)),
+        ),
+        lift,
+    )
 
 
 def _translating(cam_sense: int, r: float = R) -> tuple[CamDesign, np.ndarray, float]:
     """A translating roller follower on the axis x = 0 of the fixed frame, the cam centre d0 below the roller
     centre at s = 0."""
     d0 = RC + r - E
-    return CamDesign(Translating(r, offset=0.0), _program(2 * E), Limits(np.radians(30)), cam_sense=cam_sense), \
-        np.array([0.0, -d0]), d0
+    return (
+        CamDesign(Translating(r, offset=0.0), _program(2 * E), Limits(np.radians(30)), cam_sense=cam_sense),
+        np.array([0.0, -d0]),
+        d0,
+    )
 
 
-def _eccentric(phi: np.ndarray, cam_sense: int, centre_angle: float, rc: float = RC, e: float = E,
-               r: float = R) -> np.ndarray:
+def _eccentric(
+    phi: np.ndarray, cam_sense: int, centre_angle: float, rc: float = RC, e: float = E, r: float = R
+) -> np.ndarray:
     """Roller-centre distance from the cam centre, the circle's centre at polar (e, centre_angle) on the cam.
 
     The follower's axis points along +Y of the fixed frame; seen from the cam it points at the cam-frame angle
@@ -71,7 +84,7 @@ def test_eccentric_circle_as_arcs_is_exact(cam_sense, pieces):
     if pieces == 1:
         arcs = [Arc((cx, cy), RC, cuts[0], cuts[1], 1)]
     else:  # drawn clockwise, the chain the other way round
-        arcs = [Arc((cx, cy), RC, b, a, -1) for a, b in zip(cuts[:-1], cuts[1:], strict=True)][::-1]
+        arcs = [Arc((cx, cy), RC, b, a, -1) for a, b in itertools.pairwise(cuts)][::-1]
     c = roller_contact(d, centre, arcs, PHI)
     exact = _eccentric(PHI, cam_sense, ang) - d0
     assert np.max(np.abs(c.s - exact)) < 1e-12
@@ -173,8 +186,12 @@ def test_spline_contact_against_brute_force():
     fine = []
     for p in pieces:  # dense points: the Bernstein form evaluated directly (not the piece's power basis)
         cp = _controls(p)
-        b = ((1 - t) ** 3)[:, None] * cp[0] + (3 * (1 - t) ** 2 * t)[:, None] * cp[1] + \
-            (3 * (1 - t) * t**2)[:, None] * cp[2] + (t**3)[:, None] * cp[3]
+        b = (
+            ((1 - t) ** 3)[:, None] * cp[0]
+            + (3 * (1 - t) ** 2 * t)[:, None] * cp[1]
+            + (3 * (1 - t) * t**2)[:, None] * cp[2]
+            + (t**3)[:, None] * cp[3]
+        )
         fine.append(b)
     pts = np.concatenate(fine)
     phis = np.linspace(0.0, 2 * np.pi, 13)[:-1] + 0.05
@@ -238,7 +255,7 @@ def test_rocker_eccentric_circle_closed_form(sigma):
     d = CamDesign(Rocker(arm, R, sense=sigma), _program(np.radians(5)), Limits(np.radians(40)), cam_sense=eps)
     cc = np.array([E, 1.0])
     c = roller_contact(d, centre, [Arc(tuple(cc), RC, 0.0, 2 * np.pi, 1)], PHI)
-    cf = centre + np.array([_turn(cc, eps * p) for p in PHI])      # the circle's centre, fixed frame
+    cf = centre + np.array([_turn(cc, eps * p) for p in PHI])  # the circle's centre, fixed frame
     D = np.hypot(cf[:, 0], cf[:, 1])
     beta = np.arctan2(cf[:, 1], cf[:, 0])
     gam = np.arccos((arm**2 + D**2 - (RC + R) ** 2) / (2 * arm * D))

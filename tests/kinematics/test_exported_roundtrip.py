@@ -26,8 +26,14 @@ RC, E, R = 30.0, 5.0, 8.0
 
 
 def _design() -> tuple[CamDesign, np.ndarray, float]:
-    prog = Program((Phase("rise", np.radians(120), get_law("cycloidal")), Phase("return", np.radians(120),
-                    get_law("cycloidal")), Phase("dwell", np.radians(120))), 2 * E)
+    prog = Program(
+        (
+            Phase("rise", np.radians(120), get_law("cycloidal")),
+            Phase("return", np.radians(120), get_law("cycloidal")),
+            Phase("dwell", np.radians(120)),
+        ),
+        2 * E,
+    )
     d0 = RC + R - E
     return CamDesign(Translating(R, offset=0.0), prog, Limits(np.radians(30)), cam_sense=1), np.array([0.0, -d0]), d0
 
@@ -84,8 +90,7 @@ def test_dxf_arcs_circle_bulges_and_exact_spline(tmp_path):
     # an LWPOLYLINE of two half circles: bulge 1 (tan of a quarter of 180 degrees), and -1 drawn clockwise
     for b in (1.0, -1.0):
         doc, msp = _new_dxf()
-        msp.add_lwpolyline([(CX + RC, CY, 0, 0, b), (CX - RC, CY, 0, 0, b)], format="xyseb", close=True,
-                           dxfattribs=at)
+        msp.add_lwpolyline([(CX + RC, CY, 0, 0, b), (CX - RC, CY, 0, 0, b)], format="xyseb", close=True, dxfattribs=at)
         doc.saveas(tmp_path / "bulge.dxf")
         _check_circle(read_dxf_profile(tmp_path / "bulge.dxf"))
     # the exact rational quadratic B-spline of a circle (nine control points, weights 1 and sqrt(2)/2)
@@ -143,8 +148,10 @@ def test_svg_arcs_and_beziers(tmp_path):
     _check_circle(read_svg_profile(p))
     # cubic Beziers: a closed curve of four, followed like the same pieces given directly
     k = 0.5523 * RC
-    d = (f"M{x0},{y} C{x0},{y - k} {CX + k},{y - RC} {CX},{y - RC} C{CX - k},{y - RC} {x1},{y - k} {x1},{y} "
-         f"C{x1},{y + k} {CX - k},{y + RC} {CX},{y + RC} C{CX + k},{y + RC} {x0},{y + k} {x0},{y} Z")
+    d = (
+        f"M{x0},{y} C{x0},{y - k} {CX + k},{y - RC} {CX},{y - RC} C{CX - k},{y - RC} {x1},{y - k} {x1},{y} "
+        f"C{x1},{y + k} {CX - k},{y + RC} {CX},{y + RC} C{CX + k},{y + RC} {x0},{y + k} {x0},{y} Z"
+    )
     els = read_svg_profile(_svg(tmp_path, d))
     assert len(els) == 4 and all(isinstance(e, SplinePiece) for e in els)
     # the Bezier's points on the circle's quarter marks, its midpoint at the classic 0.5523 radius
