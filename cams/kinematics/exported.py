@@ -73,6 +73,11 @@ def _rot(v: np.ndarray, a: float) -> np.ndarray:
     )
 
 
+def _Jv(v: np.ndarray) -> np.ndarray:
+    """Rows of ``v`` (n, 2) turned by +90 degrees."""
+    return np.column_stack([-v[:, 1], v[:, 0]])
+
+
 def _J(v: np.ndarray) -> np.ndarray:
     """``v`` turned by +90 degrees."""
     return np.array([-v[1], v[0]])
@@ -194,16 +199,13 @@ def check_closed(elements: list[Element], field: str = "PROFILE") -> None:
             )
 
 
-# -- the paths: a line (translating) or a circle (rocker), and their meetings with lines and circles -------------
+# -- the path at one cam angle: a line (translating) or a circle (rocker), for the spline pieces' roots ----------
 
 
 @dataclass(frozen=True)
 class _Path:
-    """The roller centre's path seen from the cam at one cam angle: ``Q(s)``, its derivatives and meetings.
-
-    The meetings take arrays of circles or lines and give the points met, shape (k, 2), with the index of the
-    circle or line each belongs to.
-    """
+    """The roller centre's path seen from the cam at one cam angle (the spline pieces' root-finding's; the
+    block of angles of the end points, segments and arcs is :class:`_Paths`)."""
 
     kind: str  # "line" or "circle"
     base: np.ndarray  # line: Q(0); circle: its centre (the pivot, turned)
@@ -213,23 +215,6 @@ class _Path:
     sense: int  # circle: the rocker's sense
     window: float  # circle: the swing about which the answer is sought (radians)
 
-    def point(self, s: float) -> np.ndarray:
-        if self.kind == "line":
-            return self.base + s * self.axis
-        th = self.sense * s
-        return self.base + self.radius * (np.cos(th) * self.axis + np.sin(th) * self.yaxis)
-
-    def d1(self, s: float) -> np.ndarray:
-        if self.kind == "line":
-            return self.axis
-        th = self.sense * s
-        return self.sense * self.radius * (-np.sin(th) * self.axis + np.cos(th) * self.yaxis)
-
-    def d2(self, s: float) -> np.ndarray:
-        if self.kind == "line":
-            return np.zeros(2)
-        return self.base - self.point(s)
-
     def param(self, q: np.ndarray) -> np.ndarray:
         """The ``s`` of points ``q`` (k, 2) on the path (a rocker's within pi of the window's swing)."""
         d = q - self.base
@@ -237,49 +222,6 @@ class _Path:
             return d @ self.axis
         s = self.sense * np.arctan2(d @ self.yaxis, d @ self.axis)
         return s + 2 * np.pi * np.round((self.window - s) / (2 * np.pi))
-
-    def circles(self, c: np.ndarray, rad: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The path's points at distance ``rad`` (m,) from the points ``c`` (m, 2)."""
-        if self.kind == "line":
-            t0 = (c - self.base) @ self.axis
-            foot = self.base + t0[:, None] * self.axis
-            h2 = rad * rad - np.sum((c - foot) ** 2, axis=1)
-            ok = (h2 >= 0) & (rad >= 0)
-            h = np.sqrt(np.where(ok, h2, 0.0))[:, None]
-            pts = np.concatenate([foot + h * self.axis, foot - h * self.axis])
-        else:
-            d = c - self.base
-            dist = np.hypot(d[:, 0], d[:, 1])
-            R1 = self.radius
-            ok = (dist > 0) & (dist <= R1 + rad) & (dist >= np.abs(R1 - rad)) & (rad >= 0)
-            dist = np.where(ok, dist, 1.0)
-            a = (R1 * R1 - rad * rad + dist * dist) / (2 * dist)
-            h = np.sqrt(np.maximum(R1 * R1 - a * a, 0.0))[:, None]
-            e = d / dist[:, None]
-            je = np.stack([-e[:, 1], e[:, 0]], axis=1)
-            m = self.base + a[:, None] * e
-            pts = np.concatenate([m + h * je, m - h * je])
-        idx = np.concatenate([np.arange(len(c))] * 2)
-        keep = np.concatenate([ok, ok])
-        return pts[keep], idx[keep]
-
-    def lines(self, p: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The path's points on the lines through ``p`` (m, 2) along the unit vectors ``d`` (m, 2)."""
-        if self.kind == "line":
-            den = self.axis[0] * d[:, 1] - self.axis[1] * d[:, 0]
-            ok = np.abs(den) > 1e-15
-            w = p - self.base
-            t = (w[:, 0] * d[:, 1] - w[:, 1] * d[:, 0]) / np.where(ok, den, 1.0)
-            return (self.base + t[:, None] * self.axis)[ok], np.arange(len(p))[ok]
-        t0 = np.sum((self.base - p) * d, axis=1)
-        foot = p + t0[:, None] * d
-        h2 = self.radius**2 - np.sum((self.base - foot) ** 2, axis=1)
-        ok = h2 >= 0
-        h = np.sqrt(np.where(ok, h2, 0.0))[:, None]
-        pts = np.concatenate([foot + h * d, foot - h * d])
-        idx = np.concatenate([np.arange(len(p))] * 2)
-        keep = np.concatenate([ok, ok])
-        return pts[keep], idx[keep]
 
     def off(self, q: np.ndarray) -> np.ndarray:
         """A signed measure of points ``q`` (..., 2) off the path (zero on it): for root-finding along a spline."""
@@ -355,70 +297,180 @@ class _Elements:
         self.size = float(np.max(np.abs(self.verts)))
 
 
-def _roller_candidates(els: _Elements, path: _Path, r: float) -> tuple[float, int, np.ndarray, float]:
-    """The outermost touch of the roller with the curve along the path: ``(s, element, foot, k)`` (module notes).
+class _Paths:
+    """The roller centre's paths at a block of cam angles seen from the cam (vectorized :class:`_Path`).
 
-    Every touch is a candidate (end points, segments' and arcs' interiors, spline pieces' roots); the largest
-    ``s`` wins, an interior touch before an end point at the same ``s`` (within 1e-12 of the curve's size).
+    Translating: ``Q(s) = base + s axis``; rocker: ``Q(s) = base + arm (cos(sigma s) ax + sin(sigma s) ay)``.
     """
-    S: list[np.ndarray] = []
-    OWN: list[np.ndarray] = []
-    FOOT: list[np.ndarray] = []
-    K: list[np.ndarray] = []
-    slack = 1e-9 * max(els.size, 1.0)
+
+    def __init__(self, design: CamDesign, centre: np.ndarray, phi: np.ndarray, s_design: np.ndarray):
+        f = design.follower
+        turn = -design.cam_sense * phi
+        c, sn = np.cos(turn), np.sin(turn)
+
+        def rot(v: np.ndarray) -> np.ndarray:
+            return np.column_stack([c * v[0] - sn * v[1], sn * v[0] + c * v[1]])
+
+        self.line = isinstance(f, Translating)
+        if not self.line and not isinstance(f, Rocker):
+            raise InputError("follower.kind", "the roller contact is defined for rocker and translating followers")
+        pivot = np.zeros(2) if self.line else np.asarray(f.pivot, float)
+        self.base = rot(pivot - np.asarray(centre, float))
+        self.axis = np.column_stack([-sn, c])  # (0, 1) turned: a translating follower's rise
+        self.ax = np.column_stack([c, sn])
+        self.arm = float(f.arm) if isinstance(f, Rocker) else 0.0
+        self.sigma = int(f.sense) if isinstance(f, Rocker) else 1
+        self.window = s_design
+
+    def param(self, q: np.ndarray) -> np.ndarray:
+        """``s`` of points ``q`` (B, m, 2) on the paths (a rocker's within pi of the design's swing)."""
+        d = q - self.base[:, None, :]
+        if self.line:
+            return np.einsum("bmk,bk->bm", d, self.axis)
+        s = self.sigma * np.arctan2(np.einsum("bmk,bk->bm", d, self.axis), np.einsum("bmk,bk->bm", d, self.ax))
+        w = self.window[:, None]
+        return s + 2 * np.pi * np.round((w - s) / (2 * np.pi))
+
+    def circles(self, c: np.ndarray, rad: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+        """Points (B, m, 2) of the paths at distance ``rad`` (m,) from ``c`` (m, 2), both roots, and validity."""
+        w = c[None, :, :] - self.base[:, None, :]
+        if self.line:
+            ax = self.axis[:, None, :]
+            t0 = np.einsum("bmk,bmk->bm", w, np.broadcast_to(ax, w.shape))
+            perp = ax[..., 0] * w[..., 1] - ax[..., 1] * w[..., 0]
+            h2 = rad[None, :] ** 2 - perp**2
+            ok = h2 >= 0
+            h = np.sqrt(np.where(ok, h2, 0.0))
+            return [(self.base[:, None, :] + (t0 + sg * h)[..., None] * ax, ok) for sg in (1.0, -1.0)]
+        dist = np.hypot(w[..., 0], w[..., 1])
+        R1 = self.arm
+        ok = (dist > 0) & (dist <= R1 + rad) & (dist >= np.abs(R1 - rad))
+        dist = np.where(ok, dist, 1.0)
+        a = (R1 * R1 - rad * rad + dist * dist) / (2 * dist)
+        h = np.sqrt(np.maximum(R1 * R1 - a * a, 0.0))
+        e = w / dist[..., None]
+        je = np.stack([-e[..., 1], e[..., 0]], axis=-1)
+        m = self.base[:, None, :] + a[..., None] * e
+        return [(m + sg * h[..., None] * je, ok) for sg in (1.0, -1.0)]
+
+    def lines(self, p: np.ndarray, d: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+        """Points (B, m, 2) of the paths on the lines through ``p`` (m, 2) along ``d`` (m, 2), and validity."""
+        w = p[None, :, :] - self.base[:, None, :]
+        if self.line:
+            ax = self.axis[:, None, :]
+            den = ax[..., 0] * d[None, :, 1] - ax[..., 1] * d[None, :, 0]
+            ok = np.abs(den) > 1e-15
+            t = (w[..., 0] * d[None, :, 1] - w[..., 1] * d[None, :, 0]) / np.where(ok, den, 1.0)
+            return [(self.base[:, None, :] + t[..., None] * ax, ok)]
+        t0 = -np.einsum("bmk,mk->bm", w, d)
+        foot = p[None, :, :] + t0[..., None] * d[None, :, :]
+        g = self.base[:, None, :] - foot
+        h2 = self.arm**2 - np.einsum("bmk,bmk->bm", g, g)
+        ok = h2 >= 0
+        h = np.sqrt(np.where(ok, h2, 0.0))[..., None]
+        return [(foot + sg * h * d[None, :, :], ok) for sg in (1.0, -1.0)]
+
+    def near(self, c: np.ndarray, reach: np.ndarray) -> np.ndarray:
+        """Which of the points ``c`` (m, 2) lie within ``reach`` (m,) of the path at some angle of the block."""
+        w = c[None, :, :] - self.base[:, None, :]
+        if self.line:
+            off = np.abs(self.axis[:, None, 0] * w[..., 1] - self.axis[:, None, 1] * w[..., 0])
+        else:
+            off = np.abs(np.hypot(w[..., 0], w[..., 1]) - self.arm)
+        return np.any(off <= reach[None, :], axis=0)
+
+    def point(self, s: np.ndarray) -> np.ndarray:
+        if self.line:
+            return self.base + s[:, None] * self.axis
+        th = self.sigma * s
+        return self.base + self.arm * (np.cos(th)[:, None] * self.ax + np.sin(th)[:, None] * self.axis)
+
+    def d1(self, s: np.ndarray) -> np.ndarray:
+        if self.line:
+            return self.axis.copy()
+        th = self.sigma * s
+        return self.sigma * self.arm * (-np.sin(th)[:, None] * self.ax + np.cos(th)[:, None] * self.axis)
+
+    def d2(self, s: np.ndarray) -> np.ndarray:
+        if self.line:
+            return np.zeros_like(self.axis)
+        return self.base - self.point(s)
+
+
+class _Best:
+    """The best touch per cam angle of a block: largest ``s``, its element, foot and offset curvature ``k``."""
+
+    def __init__(self, n: int):
+        self.s = np.full(n, -np.inf)
+        self.own = np.full(n, -1)
+        self.foot = np.zeros((n, 2))
+        self.k = np.zeros(n)
+
+    def offer(self, s: np.ndarray, ok: np.ndarray, own: np.ndarray, foot: np.ndarray, k: np.ndarray) -> None:
+        """Candidates ``s`` (B, m) where ``ok``, of elements ``own`` (m,), feet (B, m, 2) or (m, 2), ``k`` (m,)."""
+        if s.shape[1] == 0:
+            return
+        s = np.where(ok, s, -np.inf)
+        j = np.argmax(s, axis=1)
+        rows = np.arange(len(j))
+        sj = s[rows, j]
+        better = sj > self.s
+        self.s = np.where(better, sj, self.s)
+        self.own = np.where(better, own[j], self.own)
+        fj = foot[rows, j] if foot.ndim == 3 else foot[j]
+        self.foot = np.where(better[:, None], fj, self.foot)
+        self.k = np.where(better, k[j], self.k)
+
+
+def _block(els: _Elements, paths: _Paths, r: float, n: int) -> tuple[_Best, _Best]:
+    """The best end-point touch and the best interior touch (segments, arcs) of a block of ``n`` cam angles."""
+    vert, inner = _Best(n), _Best(n)
     k_vertex = 1.0 / r if r > 0 else np.inf
-    vj = np.flatnonzero(path.near(els.verts, np.full(len(els.verts), r + slack)))
-    if len(vj):
-        q, j = path.circles(els.verts[vj], np.full(len(vj), r))
-        S.append(path.param(q))
-        OWN.append(els.vert_owner[vj][j])
-        FOOT.append(els.verts[vj][j])
-        K.append(np.full(len(j), k_vertex))
-    n_vertex = sum(len(x) for x in S)
-    near = path.near(els.bc, els.br + r + slack)
+    slack = 1e-9 * max(els.size, 1.0)
+    vj = np.flatnonzero(paths.near(els.verts, np.full(len(els.verts), r + slack)))
+    for q, ok in paths.circles(els.verts[vj], np.full(len(vj), r)):
+        vert.offer(paths.param(q), ok, els.vert_owner[vj], els.verts[vj], np.full(len(vj), k_vertex))
+    near = paths.near(els.bc, els.br + r + slack)
     li = els.lines[near[els.lines]]
     if len(li):
         a, d, ln = els.la[li], els.ld[li], els.ll[li]
         jd = np.stack([-d[:, 1], d[:, 0]], axis=1)
         for side in (1.0, -1.0):
-            q, j = path.lines(a + side * r * jd, d)
-            u = np.sum((q - a[j]) * d[j], axis=1)
-            ok = (u >= 0) & (u <= ln[j])
-            S.append(path.param(q[ok]))
-            OWN.append(li[j[ok]])
-            FOOT.append(a[j[ok]] + u[ok, None] * d[j[ok]])
-            K.append(np.zeros(int(ok.sum())))
-    for i in els.arcs[near[els.arcs]]:
-        arc = cast(Arc, els.items[i])
-        c, R = np.asarray(arc.centre, float), arc.radius
-        for rad, k in ((R + r, 1.0 / (R + r)), (R - r, -1.0 / (R - r) if R > r else 0.0)):
-            if rad <= 0:
-                continue
-            q, _ = path.circles(c[None, :], np.array([rad]))
-            for qq in q:
-                ang = float(np.arctan2(qq[1] - c[1], qq[0] - c[0]))
-                if arc.contains(ang):
-                    S.append(path.param(qq[None, :]))
-                    OWN.append(np.array([i]))
-                    FOOT.append(arc.point(ang)[None, :])
-                    K.append(np.array([k]))
-    for i in els.splines[near[els.splines]]:
-        for s, own, foot, k in _spline_touches(cast(SplinePiece, els.items[i]), int(i), path, r):
-            S.append(np.array([s]))
-            OWN.append(np.array([own]))
-            FOOT.append(foot[None, :])
-            K.append(np.array([k]))
-    if not S or not sum(len(x) for x in S):
-        raise LookupError
-    s_all = np.concatenate(S)
-    best = int(np.argmax(s_all))
-    # a tie with an interior touch (an end point joining two elements smoothly): the element's side wins
-    tie = np.flatnonzero(s_all >= s_all[best] - 1e-12 * max(els.size, 1.0))
-    inner = tie[tie >= n_vertex]
-    if len(inner):
-        best = int(inner[np.argmax(s_all[inner])])
-    owners, feet, ks = np.concatenate(OWN), np.concatenate(FOOT), np.concatenate(K)
-    return float(s_all[best]), int(owners[best]), feet[best], float(ks[best])
+            for q, ok in paths.lines(a + side * r * jd, d):
+                u = np.einsum("bmk,mk->bm", q - a[None, :, :], d)
+                good = ok & (u >= 0) & (u <= ln[None, :])
+                inner.offer(paths.param(q), good, li, a[None, :, :] + u[..., None] * d[None, :, :], np.zeros(len(li)))
+    ai = els.arcs[near[els.arcs]]
+    if len(ai):
+        arcs = [cast(Arc, els.items[i]) for i in ai]
+        c = np.array([a.centre for a in arcs], float).reshape(-1, 2)
+        R = np.array([a.radius for a in arcs])
+        start = np.array([a.start for a in arcs])
+        sense = np.array([a.sense for a in arcs])
+        span = np.array([a.span for a in arcs])
+        for rad, k in ((R + r, 1.0 / (R + r)), (R - r, np.where(R > r, -1.0 / np.where(R > r, R - r, 1.0), 0.0))):
+            live = rad > 0
+            for q, ok in paths.circles(c, np.where(live, rad, 1.0)):
+                w = q - c[None, :, :]
+                ang = np.arctan2(w[..., 1], w[..., 0])
+                dd = (sense[None, :] * (ang - start[None, :])) % (2 * np.pi)
+                inside = (dd <= span[None, :] + 1e-13) | (dd >= 2 * np.pi - 1e-13)
+                foot = c[None, :, :] + R[None, :, None] * np.stack([np.cos(ang), np.sin(ang)], axis=-1)
+                inner.offer(paths.param(q), ok & inside & live[None, :], ai, foot, k)
+    return vert, inner
+
+
+def _spline_best(els: _Elements, path: _Path, r: float) -> tuple[float, int, np.ndarray, float] | None:
+    """The outermost touch of the roller with the spline pieces near its path at one cam angle, or None."""
+    slack = 1e-9 * max(els.size, 1.0)
+    sp = els.splines
+    near = sp[path.near(els.bc[sp], els.br[sp] + r + slack)]
+    best = None
+    for i in near:
+        for cand in _spline_touches(cast(SplinePiece, els.items[i]), int(i), path, r):
+            if best is None or cand[0] > best[0]:
+                best = cand
+    return best
 
 
 def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[tuple[float, int, np.ndarray, float]]:
@@ -502,36 +554,56 @@ def roller_contact(design: CamDesign, centre: np.ndarray, elements: list[Element
     r = design.follower.roller_radius
     eps = design.cam_sense
     phi = np.atleast_1d(np.asarray(phi, float))
-    s_d = design.program.evaluate(phi).s
+    s_all = design.program.evaluate(phi).s
     out = np.empty((3, len(phi)))
     which = np.empty(len(phi), int)
-    for k, ph in enumerate(phi):
-        path = _roller_path(design, centre, float(ph), float(s_d[k]))
-        try:
-            s, i, foot, kk = _roller_candidates(els, path, r)
-        except LookupError:
+    block = 32  # contiguous angles: the elements near their paths are few
+    tie = 1e-12 * max(els.size, 1.0)
+    for b0 in range(0, len(phi), block):
+        ph, s_d = phi[b0 : b0 + block], s_all[b0 : b0 + block]
+        paths = _Paths(design, centre, ph, s_d)
+        vert, inner = _block(els, paths, r, len(ph))
+        if len(els.splines):
+            for k in range(len(ph)):
+                best = _spline_best(els, _roller_path(design, centre, float(ph[k]), float(s_d[k])), r)
+                if best is not None and best[0] > inner.s[k]:
+                    inner.s[k], inner.own[k], inner.foot[k], inner.k[k] = best
+        # a tie with an interior touch (an end point joining two elements smoothly): the element's side wins
+        take = inner.s >= np.maximum(vert.s, inner.s) - tie
+        s = np.where(take, inner.s, vert.s)
+        if not np.all(np.isfinite(s)):
+            at = float(ph[np.flatnonzero(~np.isfinite(s))[0]])
             raise InputError(
                 "PROFILE",
-                f"the follower does not touch the curve at cam angle {np.degrees(ph):.6g} "
+                f"the follower does not touch the curve at cam angle {np.degrees(at):.6g} "
                 "deg: is it this design's profile, in its cam frame?",
-            ) from None
-        q = path.point(s)
-        qs, qss = path.d1(s), path.d2(s)
-        qp = -eps * _J(q)  # dQ/dphi: the cam frame turns by -eps phi
+            )
+        own = np.where(take, inner.own, vert.own)
+        foot = np.where(take[:, None], inner.foot, vert.foot)
+        kk = np.where(take, inner.k, vert.k)
+        q, qs, qss = paths.point(s), paths.d1(s), paths.d2(s)
+        qp = -eps * _Jv(q)  # dQ/dphi: the cam frame turns by -eps phi
         qpp = -q
-        qsp = -eps * _J(qs)
-        n = (q - foot) / r if r > 0 else _knife_normal(els.items[i], foot, q, qs)
-        t = _J(n)
-        Fs = float(n @ qs)
-        Fp = float(n @ qp)
-        ts, tp = float(t @ qs), float(t @ qp)
-        Fss = kk * ts * ts + float(n @ qss)
-        Fsp = kk * ts * tp + float(n @ qsp)
-        Fpp = kk * tp * tp + float(n @ qpp)
+        qsp = -eps * _Jv(qs)
+        if r > 0:
+            n = (q - foot) / r
+        else:
+            n = np.array([_knife_normal(els.items[i], foot[k], q[k], qs[k]) for k, i in enumerate(own)])
+        t = _Jv(n)
+
+        def dot(u: np.ndarray, v: np.ndarray) -> np.ndarray:
+            return np.einsum("bk,bk->b", u, v)
+
+        Fs, Fp = dot(n, qs), dot(n, qp)
+        ts, tp = dot(t, qs), dot(t, qp)
+        with np.errstate(invalid="ignore"):  # a knife edge on a vertex: k infinite, its acceleration too
+            Fss = kk * ts * ts + dot(n, qss)
+            Fsp = kk * ts * tp + dot(n, qsp)
+            Fpp = kk * tp * tp + dot(n, qpp)
         d1 = -Fp / Fs
         d2 = -(Fss * d1 * d1 + 2 * Fsp * d1 + Fpp) / Fs
-        out[:, k] = (s, d1, d2)
-        which[k] = i
+        out[:, b0 : b0 + block] = (s, d1, d2)
+        which[b0 : b0 + block] = own
     return Contact(phi, out[0], out[1], out[2], which)
 
 
