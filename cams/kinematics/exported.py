@@ -289,8 +289,10 @@ class _Elements:
                 a, b = e.ends
                 c = 0.5 * (a + b)
                 rad = 0.5 * float(np.hypot(*(b - a)))
-                if isinstance(e, Arc):
+                if isinstance(e, Arc) and e.span > np.pi:
                     c, rad = np.asarray(e.centre, float), e.radius  # the whole circle holds the arc
+                elif isinstance(e, Arc):  # up to a half circle, within half its chord of the chord's midpoint
+                    rad *= 1.0 + 1e-12
                 bounds.append((c, rad))
         self.bc = np.array([b[0] for b in bounds]).reshape(-1, 2)
         self.br = np.array([b[1] for b in bounds])

@@ -229,3 +229,66 @@ def test_bad_drawings(tmp_path):
         read_svg_profile(_svg(tmp_path, "M0,0 L10,0 L10,10"))
     with pytest.raises(InputError, match="elliptic arc"):
         read_svg_profile(_svg(tmp_path, "M0,0 A10,5 0 0 1 10,0 Z"))
+
+
+def _arc_from(p: np.ndarray, t: np.ndarray, q: np.ndarray):
+    """The circle arc from p, tangent to the unit vector t there, to q (a Line when straight): its centre on the
+    normal at p, equidistant from p and q."""
+    n = np.array([-t[1], t[0]])
+    w = q - p
+    h = n @ w
+    if abs(h) < 1e-12 * (w @ w):
+        return Line(tuple(p), tuple(q))
+    rho = (w @ w) / (2 * h)
+    c = p + rho * n
+    return Arc(
+        tuple(c), abs(rho), float(np.arctan2(*(p - c)[::-1])), float(np.arctan2(*(q - c)[::-1])), 1 if rho > 0 else -1
+    )
+
+
+def _biarcs(P: np.ndarray, T: np.ndarray) -> list:
+    """The test's own biarc fit through the closed points P with unit tangents T: two arcs a span, tangent at both
+    ends and at their joint, the two tangent lengths equal."""
+    els = []
+    for i in range(len(P)):
+        p0, p1, t0, t1 = P[i], P[(i + 1) % len(P)], T[i], T[(i + 1) % len(P)]
+        v, ts, den = p1 - p0, t0 + t1, 2 * (1 - t0 @ t1)
+        d = (v @ v) / (4 * (v @ t1)) if den < 1e-12 else (-(v @ ts) + np.sqrt((v @ ts) ** 2 + den * (v @ v))) / den
+        m = 0.5 * ((p0 + d * t0) + (p1 - d * t1))
+        back = _arc_from(p1, -t1, m)  # the second arc built from its far end, then turned round
+        second = (
+            Line(tuple(m), tuple(p1))
+            if isinstance(back, Line)
+            else Arc(back.centre, back.radius, back.end, back.start, -back.sense)
+        )
+        els += [_arc_from(p0, t0, m), second]
+    return els
+
+
+def test_biarc_export_keeps_the_motion(translating_cam, tmp_path):
+    """A biarc of the working profile's points (tangents from the profile's normals), drawn as DXF ARCs and read
+    back: the same motion as the arcs themselves, its acceleration error a few percent of the law's peak where the
+    polyline through the same points is several times it."""
+    cam, prof = translating_cam
+    W, N = prof.work, prof.normal
+    T = np.column_stack([-N[:, 1], N[:, 0]])
+    T *= np.sign(np.sum(T * (np.roll(W, -1, axis=0) - W), axis=1))[:, None]
+    arcs = _biarcs(W, T)
+    doc, msp = _new_dxf()
+    for a in arcs:
+        if isinstance(a, Line):
+            msp.add_line(a.start, a.end, dxfattribs={"layer": "PROFILE"})
+        else:  # DXF arcs turn counter-clockwise: a clockwise one is drawn from its end
+            a0, a1 = (a.start, a.end) if a.sense > 0 else (a.end, a.start)
+            msp.add_arc(a.centre, a.radius, np.degrees(a0), np.degrees(a1), dxfattribs={"layer": "PROFILE"})
+    doc.saveas(tmp_path / "biarc.dxf")
+    read = read_dxf_profile(tmp_path / "biarc.dxf")
+    assert len(read) == len(arcs)
+    centre = cam.solution.centre
+    em, em_read = export_motion(cam.design, arcs, centre=centre), export_motion(cam.design, read, centre=centre)
+    assert em_read.max_ds == pytest.approx(em.max_ds, abs=1e-10)
+    assert em_read.max_da == pytest.approx(em.max_da, rel=1e-6)
+    lines = [Line(tuple(W[i]), tuple(W[(i + 1) % len(W)])) for i in range(len(W))]
+    poly = export_motion(cam.design, lines, centre=centre)
+    assert em.da_ratio < 0.05 < 1.0 < poly.da_ratio
+    assert em.max_ds < 0.1 * poly.max_ds
