@@ -221,10 +221,15 @@ def run(args) -> int:
 def _motion_words(entry: dict, rocker: bool) -> str:
     """One line of an ``export_motion`` entry, units beside every number."""
     u = "deg" if rocker else "mm"
+
+    def num(v: float | None, unit: str) -> str:
+        return "unbounded (a knife edge on a corner)" if v is None else f"{v:.3g} {unit}"
+
+    share = "" if entry["max_da_ratio"] is None else f" ({100 * entry['max_da_ratio']:.3g} % of the law's peak)"
     return (f"the motion the {entry['format'].upper()}'s {entry['curve']} gives (tolerance {entry['tolerance']:.3g} "
             f"mm, {entry['elements']} elements), largest errors against the law: displacement "
-            f"{entry['max_ds']:.3g} {u}, velocity {entry['max_dv']:.3g} {u}/rad, acceleration {entry['max_da']:.3g} "
-            f"{u}/rad² ({100 * entry['max_da_ratio']:.3g} % of the law's peak)")
+            f"{num(entry['max_ds'], u)}, velocity {num(entry['max_dv'], u + '/rad')}, acceleration "
+            f"{num(entry['max_da'], u + '/rad²')}{share}")
 
 
 def register(sub) -> None:

@@ -54,6 +54,7 @@ __all__ = [
     "Contact",
     "ExportMotion",
     "check_closed",
+    "corners",
     "roller_contact",
     "flat_contact",
     "export_motion",
@@ -604,6 +605,7 @@ def roller_contact(design: CamDesign, centre: np.ndarray, elements: list[Element
             Fpp = kk * tp * tp + dot(n, qpp)
         d1 = -Fp / Fs
         d2 = -(Fss * d1 * d1 + 2 * Fsp * d1 + Fpp) / Fs
+        d2[~np.isfinite(kk)] = np.inf  # a knife edge on a corner: its velocity jumps, the acceleration is unbounded
         out[:, b0 : b0 + block] = (s, d1, d2)
         which[b0 : b0 + block] = own
     return Contact(phi, out[0], out[1], out[2], which)
@@ -782,15 +784,45 @@ class ExportMotion:
 
     def to_dict(self) -> dict:
         """JSON-ready errors: ``max_ds`` (mm, a rocker's deg), ``max_dv`` (mm/rad or deg/rad), ``max_da``
-        (mm/rad^2 or deg/rad^2), ``max_da_ratio`` (share of the law's peak acceleration) and ``elements``."""
+        (mm/rad^2 or deg/rad^2), ``max_da_ratio`` (share of the law's peak acceleration) and ``elements``; None
+        where unbounded (a knife edge on a corner of the curve)."""
         k = float(np.degrees(1.0)) if self.rocker else 1.0
+
+        def finite(v: float) -> float | None:
+            return float(v) if np.isfinite(v) else None
+
         return {
             "elements": self.elements,
-            "max_ds": k * self.max_ds,
-            "max_dv": k * self.max_dv,
-            "max_da": k * self.max_da,
-            "max_da_ratio": self.da_ratio,
+            "max_ds": finite(k * self.max_ds),
+            "max_dv": finite(k * self.max_dv),
+            "max_da": finite(k * self.max_da),
+            "max_da_ratio": finite(self.da_ratio),
         }
+
+
+def _end_tangents(e: Element) -> tuple[np.ndarray, np.ndarray]:
+    """Unit tangents of an element at its start and its end, in its direction of travel."""
+    if isinstance(e, Line):
+        a, b = e.ends
+        t = (b - a) / np.hypot(*(b - a))
+        return t, t
+    if isinstance(e, Arc):
+        out = []
+        for ang in (e.start, e.start + e.sense * e.span):
+            out.append(e.sense * np.array([-np.sin(ang), np.cos(ang)]))
+        return out[0], out[1]
+    t0, t1 = e.derivatives(0.0)[1], e.derivatives(1.0)[1]
+    return t0 / np.hypot(*t0), t1 / np.hypot(*t1)
+
+
+def corners(elements: list[Element], angle: float = 1e-9) -> int:
+    """How many joints of the closed chain turn its tangent by more than ``angle`` (radians): its corners."""
+    tangents = [_end_tangents(e) for e in elements]
+    n = 0
+    for i, (_, t_end) in enumerate(tangents):
+        t_next = tangents[(i + 1) % len(tangents)][0]
+        n += bool(np.arctan2(abs(t_end[0] * t_next[1] - t_end[1] * t_next[0]), t_end @ t_next) > angle)
+    return n
 
 
 def check_angles(
@@ -813,6 +845,9 @@ def export_motion(
 ) -> ExportMotion:
     """The largest errors in displacement, velocity and acceleration of the motion the curve gives.
 
+    A knife edge (roller radius 0) on a curve with corners (:func:`corners`) has an unbounded acceleration error:
+    its velocity jumps where it crosses each corner, whichever angles are checked.
+
     The contact (:func:`roller_contact` with ``centre``, :func:`flat_contact` with ``R0``) is compared with the
     design's law at the angles ``phi`` (default :func:`check_angles`: the maximum is over these angles; on each
     element the motion is exact). At a phase joint the law's later phase is taken.
@@ -830,13 +865,17 @@ def export_motion(
         c = roller_contact(design, centre, elements, phi)
     m = design.program.evaluate(phi)
     rocker = design.follower.kind == "rocker"
+    max_da = float(np.max(np.abs(c.d2s - m.d2s)))
+    f = design.follower
+    if isinstance(f, Rocker | Translating) and f.roller_radius == 0 and corners(elements):
+        max_da = float("inf")  # a knife edge crosses each corner with a jump of its velocity: unbounded
     pk = motion_peaks(design.program, rocker=rocker)
     vel = pk.velocity.value
     acc = pk.acceleration.value
     return ExportMotion(
         max_ds=float(np.max(np.abs(c.s - m.s))),
         max_dv=float(np.max(np.abs(c.ds - m.ds))),
-        max_da=float(np.max(np.abs(c.d2s - m.d2s))),
+        max_da=max_da,
         lift=float(design.program.lift),
         peak_velocity=float("inf") if vel is None else float(vel),
         peak_acceleration=float("inf") if acc is None else float(acc),

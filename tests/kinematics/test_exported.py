@@ -24,6 +24,7 @@ from cams.kinematics.exported import (
     Line,
     SplinePiece,
     check_closed,
+    corners,
     export_motion,
     flat_contact,
     roller_contact,
@@ -321,3 +322,23 @@ def test_not_closed_and_no_touch():
     far = [Arc((500.0, 500.0), 1.0, 0.0, 2 * np.pi, 1)]
     with pytest.raises(InputError, match="does not touch"):
         roller_contact(d, centre, far, np.array([0.0]))
+
+
+def test_knife_edge():
+    """A knife edge (r = 0) on the eccentric circle follows the closed form with r = 0; on a polygon's corner its
+    velocity jumps, so its acceleration there is unbounded: infinite here, null in the JSON entry."""
+    d, centre, d0 = _translating(1, r=0.0)
+    arc = Arc((0.0, E), RC, 0.0, 2 * np.pi, 1)
+    c = roller_contact(d, centre, [arc], PHI)
+    exact = _eccentric(PHI, 1, np.pi / 2, r=0.0)
+    assert np.max(np.abs(c.s + d0 - exact)) < 1e-12
+    h = 1e-4
+    fd = (_eccentric(PHI + h, 1, np.pi / 2, r=0.0) - _eccentric(PHI - h, 1, np.pi / 2, r=0.0)) / (2 * h)
+    assert np.max(np.abs(c.ds - fd)) < 1e-6
+    lines, v = _polygon(8)
+    c = roller_contact(d, centre, lines, np.array([np.pi / 2]))  # the axis points at the vertex at angle 0
+    assert c.s[0] + d0 == pytest.approx(RC, abs=1e-12)
+    assert corners(lines) == 8 and corners([arc]) == 0
+    em = export_motion(d, lines, centre=centre, phi=np.array([0.3, 0.4]))  # between the corners, yet unbounded
+    assert em.to_dict()["max_da"] is None and em.to_dict()["max_da_ratio"] is None
+    assert em.to_dict()["max_ds"] is not None
