@@ -74,6 +74,10 @@ def export_entry(fmt: str, tolerance: float, elements: list[Element], motion: Ex
     return {"format": fmt, "curve": curve_kind(elements), "tolerance": float(tolerance), **motion.to_dict()}
 
 
+def _share(ratio: float) -> str:
+    return f"{100 * ratio:.4g} %" if np.isfinite(ratio) else "unbounded (a knife edge on a corner)"
+
+
 class Trial:
     """One tolerance tried by :func:`coarsest_tolerance`: its tolerance (mm), acceleration share and elements."""
 
@@ -121,7 +125,7 @@ def coarsest_tolerance(
             field,
             f"no {curve} export keeps the acceleration error within {100 * share:.4g} % of the "
             f"law's peak: at the finest tolerance tried, {last_bad.tolerance:.3g} mm "
-            f"({last_bad.elements} elements), it is {100 * last_bad.ratio:.4g} %{why}",
+            f"({last_bad.elements} elements), it is {_share(last_bad.ratio)}{why}",
         )
     good = trial
     if last_bad is not None:

@@ -162,3 +162,26 @@ def test_max_accel_error_bad_input(argv, words, tmp_path, capsys):
     rc, _, err = _run(capsys, EXAMPLES / "translating_flat.toml", *argv)
     assert rc == 2 and err.count("\n") == 1 and "--max-accel-error" in err and words in err
     assert not (tmp_path / "o.dxf").exists()
+
+
+def test_flat_face_export_motion_against_the_support(tmp_path, capsys):
+    """A translating flat face touches the polyline at its support: s = max over the vertices of V . m - R0, m the
+    face's normal (pi/2 - eps phi in the cam frame): the test's own, at the same angles."""
+    import ezdxf
+
+    from cams.cam import Cam
+    from cams.kinematics.exported import check_angles
+
+    src = EXAMPLES / "translating_flat.toml"
+    rc, out, _ = _run(capsys, src, "--dxf", tmp_path / "f.dxf", "--json")
+    assert rc == 0
+    e = json.loads(out)["export_motion"][0]
+    pl = next(iter(ezdxf.readfile(tmp_path / "f.dxf").modelspace().query('LWPOLYLINE[layer=="PROFILE"]')))
+    pts = np.array([(x, y) for x, y in pl.get_points("xy")])
+    cam = Cam.from_file(src)
+    d = cam.design
+    phi = check_angles(d, len(pts))
+    th = np.pi / 2 - d.cam_sense * phi
+    s = np.max(np.cos(th)[:, None] * pts[:, 0] + np.sin(th)[:, None] * pts[:, 1], axis=1) - cam.solution.R0
+    assert e["max_ds"] == pytest.approx(float(np.max(np.abs(s - d.program.evaluate(phi).s))), abs=1e-12)
+    assert e["elements"] == len(pts) and e["curve"] == "polyline"
