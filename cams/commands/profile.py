@@ -225,7 +225,8 @@ def _motion_words(entry: dict, rocker: bool) -> str:
     def num(v: float | None, unit: str) -> str:
         return "unbounded (a knife edge on a corner)" if v is None else f"{v:.3g} {unit}"
 
-    share = "" if entry["max_da_ratio"] is None else f" ({100 * entry['max_da_ratio']:.3g} % of the law's peak)"
+    pct = None if entry["max_da_ratio"] is None else 100 * entry["max_da_ratio"]
+    share = "" if pct is None else f" ({pct:{'.0f' if pct >= 100 else '.3g'}} % of the law's peak)"
     return (f"the motion the {entry['format'].upper()}'s {entry['curve']} gives (tolerance {entry['tolerance']:.3g} "
             f"mm, {entry['elements']} elements), largest errors against the law: displacement "
             f"{num(entry['max_ds'], u)}, velocity {num(entry['max_dv'], u + '/rad')}, acceleration "
