@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+from typing import Any
 
 import numpy as np
 
@@ -79,9 +80,10 @@ def _write(args, cam, prof, bore, failing: str = "") -> list[str]:
     return [f"{w} (standard output)" if w == STDOUT else w for w in written]
 
 
-def _measured(args, cam, prof, bore, failing: str) -> list[dict]:
-    """The motion each written drawing's curve gives (``export_motion``): read back from the file written, or,
-    where it went to a stream, from a copy written alike."""
+def _measured(args, cam, prof, bore, failing: str) -> list[tuple[dict, Any]]:
+    """The motion each written drawing's curve gives: its ``export_motion`` entry and its
+    :class:`cams.kinematics.exported.ExportMotion`, read back from the file written, or, where it went to a stream,
+    from a copy written alike."""
     import tempfile
 
     from cams.io.files import output_kind
@@ -96,7 +98,7 @@ def _measured(args, cam, prof, bore, failing: str) -> list[dict]:
             if output_kind(path)[0] != "file":
                 path = _render(fmt, prof, f"{tmp}/copy.{fmt}", bore, failing)
             els, motion = measure(cam.design, cam.solution, path, f"--{fmt}")
-        out.append(export_entry(fmt, prof.tolerance, els, motion))
+        out.append((export_entry(fmt, prof.tolerance, els, motion), motion))
     return out
 
 
@@ -184,6 +186,7 @@ def run(args) -> int:
     asked = any(getattr(args, o) is not None for o in OUTPUTS)
     refused = ""
     written: list[str] = []
+    measured: list[tuple[dict, Any]] = []
     if asked and prof is None:
         refused = "no profile to write"
     elif asked and not a.usable and not args.allow_failed:
@@ -192,7 +195,8 @@ def run(args) -> int:
         # a suggested bore is not drawn: only a given one
         failing = "" if a.usable else "; ".join(a.failures)
         written = _write(args, cam, prof, opts.bore_radius, failing=failing)
-        rep["export_motion"] = _measured(args, cam, prof, opts.bore_radius, failing)
+        measured = _measured(args, cam, prof, opts.bore_radius, failing)
+        rep["export_motion"] = [entry for entry, _ in measured]
     rep["written"] = written
     rep.setdefault("export_motion", [])
     if args.json:
@@ -209,8 +213,8 @@ def run(args) -> int:
         print_assessment(rep, file=out)
         for w in written:
             print(f"  wrote {w}{'' if a.usable else ' (marked as failing where the format allows)'}", file=out)
-        for e in rep["export_motion"]:
-            print(f"  {_motion_words(e, cam.design.follower.kind == 'rocker')}", file=out)
+        for entry, motion in measured:
+            print(f"  {_motion_words(entry, motion)}", file=out)
         if not asked:
             print(f"  {NOTHING_ASKED}", file=out)
     if refused:
@@ -218,19 +222,22 @@ def run(args) -> int:
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
 
-def _motion_words(entry: dict, rocker: bool) -> str:
-    """One line of an ``export_motion`` entry, units beside every number."""
-    u = "deg" if rocker else "mm"
+def _motion_words(entry: dict, motion) -> str:
+    """One line of an ``export_motion`` entry, units beside every number, with its shares of the law's lift and
+    peaks (``motion``: its :class:`cams.kinematics.exported.ExportMotion`)."""
+    u = "deg" if motion.rocker else "mm"
 
-    def num(v: float | None, unit: str) -> str:
-        return "unbounded (a knife edge on a corner)" if v is None else f"{v:.3g} {unit}"
+    def num(v: float | None, unit: str, ratio: float, of: str) -> str:
+        if v is None or not np.isfinite(ratio):
+            return "unbounded (a knife edge on a corner)" if v is None else f"{v:.3g} {unit}"
+        pct = 100 * ratio
+        return f"{v:.3g} {unit} ({pct:{'.0f' if pct >= 100 else '.3g'}} % of the law's {of})"
 
-    pct = None if entry["max_da_ratio"] is None else 100 * entry["max_da_ratio"]
-    share = "" if pct is None else f" ({pct:{'.0f' if pct >= 100 else '.3g'}} % of the law's peak)"
     return (f"the motion the {entry['format'].upper()}'s {entry['curve']} gives (tolerance {entry['tolerance']:.3g} "
             f"mm, {entry['elements']} elements), largest errors against the law: displacement "
-            f"{num(entry['max_ds'], u)}, velocity {num(entry['max_dv'], u + '/rad')}, acceleration "
-            f"{num(entry['max_da'], u + '/rad²')}{share}")
+            f"{num(entry['max_ds'], u, motion.ds_ratio, 'lift')}, velocity "
+            f"{num(entry['max_dv'], u + '/rad', motion.dv_ratio, 'peak')}, acceleration "
+            f"{num(entry['max_da'], u + '/rad²', motion.da_ratio, 'peak')}")
 
 
 def register(sub) -> None:

@@ -110,7 +110,15 @@ def test_export_motion_text_has_units(tmp_path, capsys):
     rc, out, _ = _run(capsys, EXAMPLES / "rocker_force.toml", "--dxf", tmp_path / "r.dxf")
     assert rc == 0
     line = next(ln for ln in out.splitlines() if "the motion the DXF's polyline gives" in ln)
-    for unit in ("tolerance 0.001 mm", "elements", " deg,", "deg/rad,", "deg/rad²", "% of the law's peak"):
+    for unit in (
+        "tolerance 0.001 mm",
+        "elements",
+        " deg (",
+        "deg/rad (",
+        "deg/rad² (",
+        "% of the law's lift",
+        "% of the law's peak",
+    ):
         assert unit in line
     rc, out, _ = _run(capsys, EXAMPLES / "rocker_force.toml", "--csv", tmp_path / "r.csv", "--json")
     assert json.loads(out)["export_motion"] == []  # a CSV holds points: no curve to follow
