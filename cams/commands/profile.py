@@ -81,22 +81,19 @@ def _write(args, cam, prof, bore, failing: str = "") -> list[str]:
 
 
 def _measured(args, cam, prof, bore, failing: str) -> list[tuple[dict, Any]]:
-    """The motion each written drawing's curve gives: its ``export_motion`` entry and its
-    :class:`cams.kinematics.exported.ExportMotion`, read back from the file written, or, where it went to a stream,
-    from a copy written alike."""
+    """The motion each drawing asked for gives: its ``export_motion`` entry and its
+    :class:`cams.kinematics.exported.ExportMotion`, read back from a copy the same writer draws first (so that a
+    drawing whose curve cannot be followed stops the command before any file is written)."""
     import tempfile
 
-    from cams.io.files import output_kind
     from cams.manufacture.motion import export_entry, measure
 
     out = []
     for fmt in MOTION_FORMATS:
-        path = getattr(args, fmt)
-        if path is None:
+        if getattr(args, fmt) is None:
             continue
         with tempfile.TemporaryDirectory() as tmp:
-            if output_kind(path)[0] != "file":
-                path = _render(fmt, prof, f"{tmp}/copy.{fmt}", bore, failing)
+            path = _render(fmt, prof, f"{tmp}/copy.{fmt}", bore, failing)
             els, motion = measure(cam.design, cam.solution, path, f"--{fmt}")
         out.append((export_entry(fmt, prof.tolerance, els, motion), motion))
     return out
@@ -194,8 +191,8 @@ def run(args) -> int:
     elif asked:
         # a suggested bore is not drawn: only a given one
         failing = "" if a.usable else "; ".join(a.failures)
-        written = _write(args, cam, prof, opts.bore_radius, failing=failing)
         measured = _measured(args, cam, prof, opts.bore_radius, failing)
+        written = _write(args, cam, prof, opts.bore_radius, failing=failing)
         rep["export_motion"] = [entry for entry, _ in measured]
     rep["written"] = written
     rep.setdefault("export_motion", [])

@@ -1,6 +1,6 @@
-"""The motion each exported curve gives, read back from the file written: ``cams profile``'s ``export_motion``.
+"""The motion each exported curve gives, read back from the drawing: ``cams profile``'s ``export_motion``.
 
-A drawing written (DXF, SVG) is read back (:mod:`cams.manufacture.readback`: whatever curve it holds -- a
+A drawing (DXF, SVG) is read back (:mod:`cams.manufacture.readback`: whatever curve it holds -- a
 polyline, arcs, a spline) and the design's follower is put in contact with it (:mod:`cams.kinematics.exported`).
 :func:`export_entry` gives the JSON entry, :func:`coarsest_tolerance` searches the coarsest tolerance whose export
 keeps the acceleration error within a share of the law's peak.
