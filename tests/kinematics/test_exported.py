@@ -342,3 +342,26 @@ def test_knife_edge():
     em = export_motion(d, lines, centre=centre, phi=np.array([0.3, 0.4]))  # between the corners, yet unbounded
     assert em.to_dict()["max_da"] is None and em.to_dict()["max_da_ratio"] is None
     assert em.to_dict()["max_ds"] is not None
+
+
+def test_a_joint_takes_the_nearer_side_of_the_law():
+    """A harmonic rise's acceleration jumps at its ends: at a joint the contact's one-sided value (either side)
+    is no error, a value off both sides is."""
+    from cams.kinematics.exported import Contact, _law_errors
+
+    prog = Program(
+        (
+            Phase("rise", np.radians(120), get_law("harmonic")),
+            Phase("dwell", np.radians(60)),
+            Phase("return", np.radians(180), get_law("harmonic")),
+        ),
+        10.0,
+    )
+    d = CamDesign(Translating(R, offset=0.0), prog, Limits(np.radians(30)), cam_sense=1)
+    joint = np.array([np.radians(120)])
+    peak = np.pi**2 / 2 * 10.0 / np.radians(120) ** 2  # the harmonic rise's acceleration at its ends, by hand
+    for d2s in (-peak, 0.0):  # the rise's end, the dwell's start
+        c = Contact(joint, np.array([10.0]), np.array([0.0]), np.array([d2s]), np.array([0]))
+        assert np.max(_law_errors(d, c)) < 1e-9
+    c = Contact(joint, np.array([10.0]), np.array([0.0]), np.array([1.0]), np.array([0]))
+    assert _law_errors(d, c)[2, 0] == pytest.approx(1.0)
