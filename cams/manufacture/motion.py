@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -78,11 +79,23 @@ def _share(ratio: float) -> str:
     return f"{100 * ratio:.4g} %" if np.isfinite(ratio) else "unbounded (a knife edge on a corner)"
 
 
+@dataclass(frozen=True)
 class Trial:
-    """One tolerance tried by :func:`coarsest_tolerance`: its tolerance (mm), acceleration share and elements."""
+    """One tolerance tried by :func:`coarsest_tolerance`.
 
-    def __init__(self, tolerance: float, ratio: float, elements: int):
-        self.tolerance, self.ratio, self.elements = tolerance, ratio, elements
+    Attributes
+    ----------
+    tolerance : float
+        The chord tolerance (mm).
+    ratio : float
+        The acceleration error's share of the law's peak (``inf``: unbounded).
+    elements : int
+        The drawing's elements at that tolerance.
+    """
+
+    tolerance: float
+    ratio: float
+    elements: int
 
 
 def coarsest_tolerance(

@@ -193,3 +193,22 @@ def test_flat_face_export_motion_against_the_support(tmp_path, capsys):
     s = np.max(np.cos(th)[:, None] * pts[:, 0] + np.sin(th)[:, None] * pts[:, 1], axis=1) - cam.solution.R0
     assert e["max_ds"] == pytest.approx(float(np.max(np.abs(s - d.program.evaluate(phi).s))), abs=1e-12)
     assert e["elements"] == len(pts) and e["curve"] == "polyline"
+
+
+def test_coarsest_tolerance_search():
+    """Against an error that grows as the tolerance (share = tolerance): the coarsest tolerance found meets the
+    share and is within the bisections' last step of it; a share nothing meets names the finest tried."""
+    from cams.manufacture.motion import REFINE_STEPS, SEARCH_STEPS, Trial, coarsest_tolerance
+    from laws.errors import InputError
+
+    tried = []
+
+    def evaluate(t):
+        tried.append(t)
+        return Trial(t, t, int(1 / t))
+
+    got = coarsest_tolerance(evaluate, 1.0, 1e-3, 0.3, curve="arcs")
+    step = (10 ** (1 / SEARCH_STEPS)) ** (1 / 2**REFINE_STEPS)  # the last bisection's ratio
+    assert got.tolerance <= 0.3 < got.tolerance * step * (1 + 1e-12)
+    with pytest.raises(InputError, match=r"no polyline export .* finest tolerance tried, 0\.001 mm \(1000 elements\)"):
+        coarsest_tolerance(lambda t: Trial(t, 5.0, int(1 / t)), 1.0, 1e-3, 0.05, curve="polyline")
