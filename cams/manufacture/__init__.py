@@ -7,8 +7,8 @@ written coordinates' digits (:mod:`~cams.manufacture.drawing`). A drawing is rea
 :mod:`~cams.manufacture.readback` (its ``PROFILE``'s lines, arcs and splines) and the motion its curve gives is
 measured by :mod:`~cams.manufacture.motion` (``cams profile``'s ``export_motion``). Tool paths from the profile
 (a cutter's centre path, its feeds) will live here too. The package sits above :mod:`cams.profile` and
-:mod:`cams.io` (whose :func:`~cams.io.files.atomic_write` puts a file in place whole or not at all) and below the commands; the
-design file's schema and its readers stay in :mod:`cams.io`.
+:mod:`cams.io` (whose :func:`~cams.io.files.atomic_write` puts a file in place whole or not at all) and below
+the commands; the design file's schema and its readers stay in :mod:`cams.io`.
 """
 
 __all__: list[str] = []
