@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+from typing import Any
 
 import numpy as np
 
@@ -13,6 +14,8 @@ from cams.words import length_format
 __all__ = ["register"]
 
 
+#: The drawings whose curve's motion is measured (``export_motion``), in the order they are written.
+MOTION_FORMATS = ("dxf", "svg")
 #: The outputs of ``cams profile``, by option name.
 OUTPUTS = ("csv", "dxf", "svg", "table")
 #: Said when no output option is given: what the command can write.
@@ -34,6 +37,24 @@ def _check_outputs(args) -> None:
     if args.table is not None:
         table_angles(1.0 if args.step is None else args.step)
     check_output_paths([(f"--{opt}", getattr(args, opt)) for opt in OUTPUTS], inputs=[("FILE", args.file)])
+    if args.max_accel_error is not None:
+        from cams.manufacture.motion import check_share
+
+        check_share(args.max_accel_error)
+        if not any(getattr(args, f) is not None for f in MOTION_FORMATS):
+            raise InputError("--max-accel-error", "measures a drawing's curve: give --dxf OUT or --svg OUT too")
+        if args.tolerance is not None:
+            raise InputError("--max-accel-error", "chooses the tolerance: give it or --tolerance, not both")
+
+
+def _render(fmt: str, prof, path, bore, failing: str = "", drawing: dict | None = None):
+    """Write the drawing ``fmt`` (``"dxf"``, ``"svg"``) of ``prof`` to ``path``: the one call of each writer, for
+    the files asked for and for the copies the export's motion is measured on."""
+    from cams.manufacture.dxf import write_dxf
+    from cams.manufacture.svg import write_svg
+
+    writer = {"dxf": write_dxf, "svg": write_svg}[fmt]
+    return writer(prof, path, bore_radius=bore, failing=failing, field=f"--{fmt}", **(drawing or {}))
 
 
 def _write(args, cam, prof, bore, failing: str = "", drawing: dict | None = None) -> list[str]:
@@ -43,9 +64,7 @@ def _write(args, cam, prof, bore, failing: str = "", drawing: dict | None = None
     lift table) is never marked. ``drawing``: the DXF's and SVG's fitted ``curves``, ``datum`` and ``keyway``.
     """
     from cams.io.files import STDOUT, all_or_nothing
-    from cams.manufacture.dxf import write_dxf
     from cams.manufacture.points import write_csv
-    from cams.manufacture.svg import write_svg
     from cams.manufacture.table import table_angles, write_table
 
     written = []
@@ -57,11 +76,65 @@ def _write(args, cam, prof, bore, failing: str = "", drawing: dict | None = None
             written.append(str(write_table(cols, args.table)))
         if args.csv is not None:
             written.append(str(write_csv(prof, args.csv)))
-        if args.dxf is not None:
-            written.append(str(write_dxf(prof, args.dxf, bore_radius=bore, failing=failing, **(drawing or {}))))
-        if args.svg is not None:
-            written.append(str(write_svg(prof, args.svg, bore_radius=bore, failing=failing, **(drawing or {}))))
+        for fmt in MOTION_FORMATS:
+            if getattr(args, fmt) is not None:
+                written.append(str(_render(fmt, prof, getattr(args, fmt), bore, failing, drawing)))
     return [f"{w} (standard output)" if w == STDOUT else w for w in written]
+
+
+def _measured(args, cam, prof, bore, failing: str, drawing: dict | None = None) -> list[tuple[dict, Any]]:
+    """The motion each drawing asked for gives: its ``export_motion`` entry and its
+    :class:`cams.kinematics.exported.ExportMotion`, read back from a copy the same writer draws first (so that a
+    drawing whose curve cannot be followed stops the command before any file is written)."""
+    import tempfile
+
+    from cams.manufacture.motion import export_entry, measure
+
+    out = []
+    for fmt in MOTION_FORMATS:
+        if getattr(args, fmt) is None:
+            continue
+        with tempfile.TemporaryDirectory() as tmp:
+            path = _render(fmt, prof, f"{tmp}/copy.{fmt}", bore, failing, drawing)
+            els, motion = measure(cam.design, cam.solution, path, f"--{fmt}")
+        out.append((export_entry(fmt, prof.tolerance, els, motion), motion))
+    return out
+
+
+def _search(args, cam):
+    """``--max-accel-error``: the coarsest tolerance whose drawing keeps the acceleration error within the share
+    (:func:`cams.manufacture.motion.coarsest_tolerance`), measured on the first drawing asked for (a DXF)."""
+    import tempfile
+
+    from cams.manufacture.curves import fit_curves
+    from cams.manufacture.motion import Trial, coarsest_tolerance, curve_kind, measure
+    from cams.model.options import profile_options
+    from cams.profile.roller import DEFAULT_TOLERANCE_FRACTION, MAX_TOLERANCE_FRACTION
+
+    fmt = next(f for f in MOTION_FORMATS if getattr(args, f) is not None)  # one is given (_check_outputs)
+    design, sol = cam.design, cam.solution
+    exact = cam.face.exact(design, sol)
+    base = cam.profile  # the default tolerance's: its exact smallest radius sets the range searched
+    smallest = float(base.min_work_radius)
+    coarsest = 0.999 * MAX_TOLERANCE_FRACTION * smallest  # just inside the cap (cap_tolerance)
+    finest = min(base.tolerance, DEFAULT_TOLERANCE_FRACTION * smallest) / 10.0
+    kinds: list[str] = []
+    done: dict[float, Trial] = {}
+
+    def evaluate(tol: float) -> Trial:
+        if tol in done:
+            return done[tol]
+        prof = cam.face.profile(design, sol, profile_options(design, tolerance=tol))
+        drawing = {"curves": fit_curves(exact, prof.tolerance, args.curve)}  # the curve --curve asks for
+        with tempfile.TemporaryDirectory() as tmp:
+            els, motion = measure(design, sol, _render(fmt, prof, f"{tmp}/trial.{fmt}", None, "", drawing),
+                                  f"--{fmt}")
+        kinds.append(curve_kind(els))
+        done[tol] = Trial(tol, motion.da_ratio, len(els))
+        return done[tol]
+
+    evaluate(coarsest)  # the curve kind the writer draws, for the message
+    return coarsest_tolerance(evaluate, coarsest, finest, args.max_accel_error, curve=kinds[0]).tolerance
 
 
 def _summary_stream(args):
@@ -143,6 +216,12 @@ def run(args) -> int:
 
     # the motion design of [optimize] runs for seconds: its progress on a terminal
     with progress(wanted(args) and design.optimize is not None, "designing the motion"):
+        if args.max_accel_error is not None and cam.face.no_profile(design) is None:
+            from cams.cam import Cam
+
+            chosen = _search(args, cam)
+            cam = Cam(design, method=args.method, tolerance=chosen, solution=cam.solution)
+            opts = cam.options
         a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
         prof = None if cam.face.no_profile(design) is not None else cam.profile
     bore = None
@@ -155,6 +234,7 @@ def run(args) -> int:
     asked = any(getattr(args, o) is not None for o in OUTPUTS)
     refused = ""
     written: list[str] = []
+    measured: list[tuple[dict, Any]] = []
     if asked and prof is None:
         refused = "no profile to write"
     elif asked and not a.usable and not args.allow_failed:
@@ -165,9 +245,12 @@ def run(args) -> int:
 
             drawing["curves"] = fit_curves(exact, prof.tolerance, args.curve)
         # a suggested bore is not drawn: only a given one
-        written = _write(args, cam, prof, opts.bore_radius, failing="" if a.usable else "; ".join(a.failures),
-                         drawing=drawing)
+        failing = "" if a.usable else "; ".join(a.failures)
+        measured = _measured(args, cam, prof, opts.bore_radius, failing, drawing)
+        written = _write(args, cam, prof, opts.bore_radius, failing=failing, drawing=drawing)
+        rep["export_motion"] = [entry for entry, _ in measured]
     rep["written"] = written
+    rep.setdefault("export_motion", [])
     drawn = written and (args.dxf is not None or args.svg is not None)
     rep["curves"] = _curves_report(args.curve, prof, drawing["curves"]) if drawn else None
     if args.json:
@@ -190,11 +273,31 @@ def run(args) -> int:
             print(f"  {_curves_line(rep['curves'])}", file=out)
         for w in written:
             print(f"  wrote {w}{'' if a.usable else ' (marked as failing where the format allows)'}", file=out)
+        for entry, motion in measured:
+            print(f"  {_motion_words(entry, motion)}", file=out)
         if not asked:
             print(f"  {NOTHING_ASKED}", file=out)
     if refused:
         print(f"cams profile: no file written: {refused}", file=sys.stderr)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
+
+
+def _motion_words(entry: dict, motion) -> str:
+    """One line of an ``export_motion`` entry, units beside every number, with its shares of the law's lift and
+    peaks (``motion``: its :class:`cams.kinematics.exported.ExportMotion`)."""
+    u = "deg" if motion.rocker else "mm"
+
+    def num(v: float | None, unit: str, ratio: float, of: str) -> str:
+        if v is None or not np.isfinite(ratio):
+            return "unbounded (a knife edge on a corner)" if v is None else f"{v:.3g} {unit}"
+        pct = 100 * ratio
+        return f"{v:.3g} {unit} ({pct:{'.0f' if pct >= 100 else '.3g'}} % of the law's {of})"
+
+    return (f"the motion the {entry['format'].upper()}'s {entry['curve']} gives (tolerance {entry['tolerance']:.3g} "
+            f"mm, {entry['elements']} elements), largest errors against the law: displacement "
+            f"{num(entry['max_ds'], u, motion.ds_ratio, 'lift')}, velocity "
+            f"{num(entry['max_dv'], u + '/rad', motion.dv_ratio, 'peak')}, acceleration "
+            f"{num(entry['max_da'], u + '/rad²', motion.da_ratio, 'peak')}")
 
 
 def register(sub) -> None:
@@ -215,16 +318,19 @@ def register(sub) -> None:
     q.add_argument("--table", metavar="OUT", help="write the lift table (CSV, units in the header) every --step "
                    "from cam angle 0")
     q.add_argument("--step", type=float, metavar="DEG", help="lift table step, degrees dividing 360 (default 1)")
-    q.add_argument("--tolerance", type=float, help="chord tolerance in mm (default [profile] tolerance or 0.001), "
-                   "the curves' certified distance to the exact one")
+    q.add_argument("--tolerance", type=float, help="chord tolerance and certified curve distance, mm (default "
+                   "[profile] tolerance)")
     q.add_argument("--curve", default="arcs", metavar="KIND",
                    help="the DXF's and SVG's curves: arcs (default; a biarc fit), spline "
                    "(cubic B-spline) or polyline")
+    q.add_argument("--max-accel-error", type=float, metavar="SHARE",
+                   help="the coarsest tolerance whose drawing keeps the follower's acceleration error within SHARE "
+                        "of the law's peak (0.05: 5 %%)")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"),
                    help="override [solve] method (roller followers)")
     q.add_argument("--allow-failed", action="store_true", help="write the files of a cam that fails a check, "
                    "marked as failing (exit code 1)")
     q.add_argument("--json", action="store_true", help="print the summary as JSON")
     q.add_argument("--quiet", action="store_true",
-                   help="no progress bar (drawn on a terminal while [optimize] runs)")
+                   help="no progress bar")
     q.set_defaults(func=run)

@@ -1,0 +1,29 @@
+"""The export-motion benchmark runs on one example at one tolerance and writes its figures."""
+
+import json
+import subprocess
+import sys
+
+from tests.conftest import ROOT
+
+
+def test_bench_export_motion_quick_writes_json(tmp_path):
+    r = subprocess.run(
+        [sys.executable, str(ROOT / "benchmarks" / "bench_export_motion.py"), "--quick", "--out", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert r.returncode == 0, r.stderr
+    res = json.loads((tmp_path / "export_motion.json").read_text())
+    assert res["examples"] == ["translating_force.toml"] and res["tolerances_mm"] == [0.01]
+    formats = {row["format"] for row in res["rows"]}
+    assert formats == {"dxf", "svg"}
+    for row in res["rows"]:
+        assert row["unit"] == "mm" and row["tolerance"] == 0.01 and row["elements"] > 0
+        assert row["max_da_ratio"] == row["max_da"] / res["rows"][0]["max_da"] * res["rows"][0]["max_da_ratio"]
+        if row["curve"] == "polyline":  # the roller rounds each vertex: the acceleration's error is above the peak
+            assert row["max_da_ratio"] > 1
+        # within a chord tolerance of the curve, the roller is off by at most tol / cos(gamma) (gamma < 60 deg here)
+        assert row["max_ds"] <= 2 * row["tolerance"]
+    assert {"cpu", "cores", "python", "numpy"} <= set(res["machine"])
