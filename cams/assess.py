@@ -99,7 +99,8 @@ def _dynamics_failure(forces) -> str | None:
     return "dynamics: " + "; ".join(why or ["the forces fail"])
 
 
-def assess(design, solution, *, checks=None, forces=None, no_profile: str | None = None) -> Assessment:
+def assess(design, solution, *, checks=None, forces=None, no_profile: str | None = None,
+           vibration=None) -> Assessment:
     """Assess a sized cam from its parts.
 
     Parameters
@@ -113,6 +114,9 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     forces : cams.dynamics.forces.DesignForces, optional
         The ``[dynamics]`` results (None without a ``[dynamics]`` table or where
         it does not apply).
+    vibration : cams.dynamics.vibration.Vibration, optional
+        The elastic train's response (``[dynamics] train_stiffness``): a loss of contact under force closure
+        fails the cam, like the rigid one.
     no_profile : str, optional
         Why no profile could be built at the chord tolerance (then ``checks``
         is None and the cam is not buildable).
@@ -171,6 +175,12 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
         why = _dynamics_failure(forces.forces)
         if why is not None:
             fail("dynamics", why)
+    if vibration is not None:
+        from cams.dynamics.vibration import vibration_failure
+
+        why = vibration_failure(vibration)
+        if why is not None:
+            fail("dynamics", why)
     return Assessment(verified, buildable, tuple(f for _, f in failures), tuple(s for s, _ in failures), certified)
 
 
@@ -186,4 +196,4 @@ def assess_cam(cam) -> Assessment:
             no_profile = str(e)
     has_dynamics = cam.design.dynamics is not None  # else no forces module to import
     return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None,
-                  no_profile=no_profile)
+                  no_profile=no_profile, vibration=cam.vibration if has_dynamics else None)

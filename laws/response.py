@@ -51,7 +51,7 @@ from laws.standard import Cycloidal, Harmonic, Linear, Parabolic, Poly345, Poly4
 from laws.table import TableLaw
 
 __all__ = ["Train", "Piece", "Span", "pieces", "spans", "cycle_map", "steady_state", "rest_state",
-           "Response", "response", "residual_amplitude", "phase_residuals"]
+           "Response", "response", "grid_response", "residual_amplitude", "phase_residuals"]
 
 PI = np.pi
 _W = 4 * PI
@@ -333,6 +333,39 @@ def response(program: Program, train: Train, phi, y0: np.ndarray, *, start: floa
     load = r * (S[0] - X[0]) + 2 * zeta * (S[1] - X[1]) / rho
     shape = phi.shape
     return Response(phi, *(a.reshape(shape) for a in (X[0], X[1], X[2], S[0], S[1], load)))
+
+
+def grid_response(program: Program, train: Train, y0: np.ndarray, samples: int) -> Response:
+    """The response at ``samples`` equally spaced cam angles ``2 pi k / samples`` from ``y0`` at angle 0.
+
+    The same exact solution as :func:`response`, faster: per span one exponential for the first sample's offset
+    and one for the grid's step, applied repeatedly (the rounding grows by about one unit per step).
+    """
+    step = 2 * PI / samples
+    phi = step * np.arange(samples)
+    X = np.empty((3, samples))
+    S = np.empty((2, samples))
+    rho, r, zeta, f = train.rho, train.ratio, train.zeta, train.offset
+    y = np.asarray(y0, float)
+    for sp in spans(program):
+        m = _augmented(sp, train)
+        start = _start(sp, y)
+        k0 = int(np.ceil(sp.start / step - 1e-9))
+        k1 = int(np.ceil(sp.end / step - 1e-9))
+        if k1 > k0:
+            Y = np.empty((k1 - k0, start.size))
+            Y[0] = _expm(m * (phi[k0] - sp.start)) @ start
+            e = _expm(m * step)
+            for j in range(1, k1 - k0):
+                Y[j] = e @ Y[j - 1]
+            x, v, s0 = Y[:, 0], Y[:, 1], Y[:, 2]
+            s1 = Y[:, 3] if sp.generator.shape[0] >= 2 else np.zeros_like(x)
+            acc = r * s0 + 2 * zeta * s1 / rho - f - x - 2 * zeta * v
+            X[:, k0:k1] = x, rho * v, rho**2 * acc
+            S[:, k0:k1] = s0, s1
+        y = (_expm(m * (sp.end - sp.start)) @ start)[:2]
+    load = r * (S[0] - X[0]) + 2 * zeta * (S[1] - X[1]) / rho
+    return Response(phi, X[0], X[1], X[2], S[0], S[1], load)
 
 
 def residual_amplitude(train: Train, level: float, y: np.ndarray) -> float:

@@ -72,6 +72,10 @@ def _work(cam, design, bar):
                 rep["notes"].append(note)
     if cam.face.forces_computed:
         rep["forces"] = forces
+    if design.dynamics is not None and design.dynamics.dynamics.train_stiffness is not None:
+        bar.stage("the follower train's vibration")
+        v = cam.vibration
+        rep["vibration"] = None if v is None else v.to_dict()
     # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
     a = cam.assessment
     rep.update(a.to_dict())
