@@ -19,7 +19,7 @@ PICTURES = tuple(RollerPresenter.pictures)
 #: A flat-faced follower's pictures: no zone; the radius of curvature with the contact's travel instead.
 FLAT_PICTURES = tuple(FlatPresenter.pictures)
 #: Every picture name ``--only`` takes ("optimized": a design with an [optimize] table, drawn for it by default).
-NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "optimized")
+NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "vibration", "optimized")
 
 def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progress | None = None) -> list[Path]:
     """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.
@@ -76,6 +76,7 @@ def run(args) -> int:
     which = _only(args.only)
     from cams.present.faces import presenter
     from cams.present.plots import no_forces
+    from cams.present.vibration_plots import no_vibration
 
     cam = Cam.from_file(args.file)
     designed = cam.given.optimize is not None
@@ -83,8 +84,12 @@ def run(args) -> int:
         which = (*presenter(cam).pictures, *(("optimized",) if designed else ()))
         if no_forces(cam) is not None:
             which = tuple(w for w in which if w != "forces")
+        if no_vibration(cam) is not None:
+            which = tuple(w for w in which if w != "vibration")
     elif "forces" in which and (why := no_forces(cam)) is not None:
         raise InputError("--only", f"forces: {why}")
+    elif "vibration" in which and (why := no_vibration(cam)) is not None:
+        raise InputError("--only", f"vibration: {why}")
     elif "optimized" in which and not designed:
         which = tuple(w for w in which if w != "optimized")
         print("cams plot: note: optimized: the design has no [optimize] table, no motion was designed; skipped",

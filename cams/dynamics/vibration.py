@@ -131,6 +131,8 @@ class Flight:
     load: np.ndarray
     intervals: tuple[tuple[float, float | None], ...]
     max_gap: float
+    turns: int = 6
+    rocker: bool = False
 
 
 def simulate(program: Program, tm: TrainModel, omega: float, y0, *, turns: int = 6, samples: int = 720) -> Flight:
@@ -216,7 +218,7 @@ def simulate(program: Program, tm: TrainModel, omega: float, y0, *, turns: int =
         else:
             flights.append((_angle(omega * start), _angle(omega * ts_)))
     gap = float(np.max(Y[0] - s)) / si
-    return Flight(phi, Y[0] / si, Q, tuple(flights), gap)
+    return Flight(phi, Y[0] / si, Q, tuple(flights), gap, turns, si == 1.0)
 
 
 def _angle(phi: float) -> float:
@@ -447,8 +449,16 @@ def vibration_failure(v: Vibration | None) -> str | None:
     """Why the elastic train fails (the follower leaves the cam under force closure), or None."""
     if v is None or not v.contact_lost or v.contact_lost_at is None:
         return None
-    return (f"dynamics: the elastic follower train leaves the cam at {np.degrees(v.contact_lost_at):.2f} deg "
+    said = (f"dynamics: the elastic follower train leaves the cam at {np.degrees(v.contact_lost_at):.2f} deg "
             f"(dynamic contact force down to {float(np.min(v.contact)):.4g} N at {v.rpm:.6g} rpm)")
+    f = v.flight
+    if f is not None and f.intervals:
+        unit = "deg" if f.rocker else "mm"
+        gap = np.degrees(f.max_gap) if f.rocker else f.max_gap
+        flights = ", ".join(f"{np.degrees(a):.1f} to " + ("the turn's end" if b is None else f"{np.degrees(b):.1f}")
+                            for a, b in f.intervals)
+        said += f"; followed over {f.turns} turns, the last one flies {flights} deg, gap up to {gap:.4g} {unit}"
+    return said
 
 
 def vibration_lines(vi: dict, *, rigid_jump_rpm: float | None, rocker: bool, indent: str = "  ") -> list[str]:
@@ -456,9 +466,11 @@ def vibration_lines(vi: dict, *, rigid_jump_rpm: float | None, rocker: bool, ind
     from cams.words import force
 
     lines = [f"{indent}follower train: natural frequency {vi['natural_frequency_hz']:.6g} Hz"]
+    from cams.words import phase_words
+
     for p in vi["phases"]:
         steady = "none (undamped)" if p["residual"] is None else f"{p['residual']:.4g}"
-        lines.append(f"{indent}  phase {p['phase']} ({p['kind']}): period ratio lambda {p['period_ratio']:.4g}; "
+        lines.append(f"{indent}  {phase_words(p['kind'], p['phase'])}: period ratio lambda {p['period_ratio']:.4g}; "
                      f"residual vibration / height: {p['residual_from_rest']:.4g} from rest, {steady} steady")
     lines.append(f"{indent}  dynamic contact force: max {force(vi['dynamic_max_contact_force'])}, "
                  f"min {force(vi['dynamic_min_contact_force'])}")

@@ -565,7 +565,14 @@ PICTURES = {
     "curvature": lambda cam: plot_curvature(cam.solution),
     "profile": lambda cam: plot_profile(cam),
     "forces": lambda cam: plot_forces(cam),
+    "vibration": lambda cam: _plot_vibration(cam),
 }
+
+
+def _plot_vibration(cam):
+    from cams.present.vibration_plots import plot_vibration
+
+    return plot_vibration(cam)
 
 
 def picture(kind: str, cam):

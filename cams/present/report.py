@@ -68,6 +68,10 @@ def _figures(cam):
             return cam.face.no_profile(cam.design) is None
         if kind == "forces":
             return plots.no_forces(cam) is None
+        if kind == "vibration":
+            from cams.present.vibration_plots import no_vibration
+
+            return no_vibration(cam) is None
         return True
 
     figs = [(title, plots.picture(kind, cam)) for title, kind in presenter(cam).report_pictures if drawn(kind)]
