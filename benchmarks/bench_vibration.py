@@ -48,53 +48,74 @@ def _designs(tmp: Path):
     from cams.cam import Cam
     from cams.io.designfile import load_design
 
-    feed = (ROOT / "examples" / "slotting_feed_cam.toml").read_text().replace(
-        "journal_radius = 8.0", "journal_radius = 8.0\ntrain_stiffness = 2000.0\ndamping_ratio = 0.02")
+    feed = (
+        (ROOT / "examples" / "slotting_feed_cam.toml")
+        .read_text()
+        .replace("journal_radius = 8.0", "journal_radius = 8.0\ntrain_stiffness = 2000.0\ndamping_ratio = 0.02")
+    )
     p = tmp / "feed_train.toml"
     p.write_text(feed)
-    return [("translating_train", Cam(load_design(ROOT / "examples" / "translating_train.toml"))),
-            ("slotting_feed_cam with a train", Cam(load_design(p)))]
+    return [
+        ("translating_train", Cam(load_design(ROOT / "examples" / "translating_train.toml"))),
+        ("slotting_feed_cam with a train", Cam(load_design(p))),
+    ]
 
 
-def run(repeats: int, tmp: Path) -> dict:
+def _row(name: str, cam, repeats: int) -> dict:
+    """One design's figures (see the module)."""
     from cams.dynamics import vibration as vib
     from laws.response import grid_response, spans, steady_state
     from laws.units import rpm_to_omega
 
-    rows = []
-    for name, cam in _designs(tmp):
-        d, df = cam.design, cam.forces
-        dyn = d.dynamics.dynamics.with_spring(df.spring)
-        tm = vib.train_model(d, dyn)
-        w = rpm_to_omega(d.rpm)
-        tr = tm.train(w)
-        steady_state(d.program, tr)  # warm the imports
-        t_ss, y0 = _median(lambda: steady_state(d.program, tr), repeats)
-        t_grid, _ = _median(lambda: grid_response(d.program, tr, y0, 720), repeats)
-        calls = [0]
-        inner = vib._min_load
+    d, df = cam.design, cam.forces
+    dyn = d.dynamics.dynamics.with_spring(df.spring)
+    tm = vib.train_model(d, dyn)
+    w = rpm_to_omega(d.rpm)
+    tr = tm.train(w)
+    steady_state(d.program, tr)  # warm the imports
+    t_ss, y0 = _median(lambda: steady_state(d.program, tr), repeats)
+    t_grid, _ = _median(lambda: grid_response(d.program, tr, y0, 720), repeats)
+    calls = [0]
+    inner = vib._min_load
 
-        def counted(*a, **k):
-            calls[0] += 1
-            return inner(*a, **k)
+    def counted(*a, **k):
+        calls[0] += 1
+        return inner(*a, **k)
 
-        vib._min_load = counted
-        try:
-            t_jump, jump = _median(lambda: vib.dynamic_jump_rpm(
-                d.program, tm, start_rpm=0.05 * d.rpm, top_rpm=3 * max(d.rpm, df.jump.rpm), samples=720), 1)
-        finally:
-            vib._min_load = inner
-        above = 1.05 * jump
-        wa = rpm_to_omega(above)
-        tra = tm.train(wa)
-        ya = steady_state(d.program, tra)
-        t_sim, flight = _median(lambda: vib.simulate(d.program, tm, wa, (ya[0], ya[1] * tra.rho * wa)), 1)
-        rows.append({"design": name, "spans": len(spans(d.program)), "rpm": d.rpm,
-                     "natural_frequency_hz": tm.omega_n / (2 * np.pi),
-                     "steady_state_ms": 1e3 * t_ss, "response_720_ms": 1e3 * t_grid,
-                     "jump_search_s": t_jump, "jump_search_speeds": calls[0], "dynamic_jump_rpm": jump,
-                     "rigid_jump_rpm": df.jump.rpm, "flight_rpm": above, "flight_6_turns_s": t_sim,
-                     "flights_last_turn": len(flight.intervals)})
+    vib._min_load = counted
+    try:
+        t_jump, jump = _median(
+            lambda: vib.dynamic_jump_rpm(
+                d.program, tm, start_rpm=0.05 * d.rpm, top_rpm=3 * max(d.rpm, df.jump.rpm), samples=720
+            ),
+            1,
+        )
+    finally:
+        vib._min_load = inner
+    above = 1.05 * jump
+    wa = rpm_to_omega(above)
+    tra = tm.train(wa)
+    ya = steady_state(d.program, tra)
+    t_sim, flight = _median(lambda: vib.simulate(d.program, tm, wa, (ya[0], ya[1] * tra.rho * wa)), 1)
+    return {
+        "design": name,
+        "spans": len(spans(d.program)),
+        "rpm": d.rpm,
+        "natural_frequency_hz": tm.omega_n / (2 * np.pi),
+        "steady_state_ms": 1e3 * t_ss,
+        "response_720_ms": 1e3 * t_grid,
+        "jump_search_s": t_jump,
+        "jump_search_speeds": calls[0],
+        "dynamic_jump_rpm": jump,
+        "rigid_jump_rpm": df.jump.rpm,
+        "flight_rpm": above,
+        "flight_6_turns_s": t_sim,
+        "flights_last_turn": len(flight.intervals),
+    }
+
+
+def run(repeats: int, tmp: Path) -> dict:
+    rows = [_row(name, cam, repeats) for name, cam in _designs(tmp)]
     return {"machine": machine(), "repeats": repeats, "rows": rows}
 
 
@@ -111,9 +132,11 @@ def main(argv=None) -> int:
     out.mkdir(parents=True, exist_ok=True)
     (out / "vibration.json").write_text(json.dumps(res, indent=2) + "\n", encoding="utf-8")
     for r in res["rows"]:
-        print(f"{r['design']}: steady state {r['steady_state_ms']:.3g} ms, 720 angles {r['response_720_ms']:.3g} ms, "
-              f"jump search {r['jump_search_s']:.3g} s ({r['jump_search_speeds']} speeds), "
-              f"6 turns with flights {r['flight_6_turns_s']:.3g} s")
+        print(
+            f"{r['design']}: steady state {r['steady_state_ms']:.3g} ms, 720 angles {r['response_720_ms']:.3g} ms, "
+            f"jump search {r['jump_search_s']:.3g} s ({r['jump_search_speeds']} speeds), "
+            f"6 turns with flights {r['flight_6_turns_s']:.3g} s"
+        )
     print(f"wrote {out / 'vibration.json'}")
     return 0
 

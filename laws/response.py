@@ -50,8 +50,21 @@ from laws.spline import SplineLaw
 from laws.standard import Cycloidal, Harmonic, Linear, Parabolic, Poly345, Poly4567
 from laws.table import TableLaw
 
-__all__ = ["Train", "Piece", "Span", "pieces", "spans", "cycle_map", "steady_state", "rest_state",
-           "Response", "response", "grid_response", "residual_amplitude", "phase_residuals"]
+__all__ = [
+    "Train",
+    "Piece",
+    "Span",
+    "pieces",
+    "spans",
+    "cycle_map",
+    "steady_state",
+    "rest_state",
+    "Response",
+    "response",
+    "grid_response",
+    "residual_amplitude",
+    "phase_residuals",
+]
 
 PI = np.pi
 _W = 4 * PI
@@ -62,8 +75,14 @@ _SHAPES: dict[type, tuple[tuple[float, float, int, float | None], ...]] = {
     Parabolic: ((0.0, 0.5, 2, None), (0.5, 1.0, 2, None)),
     Harmonic: ((0.0, 1.0, 0, PI),),
     Cycloidal: ((0.0, 1.0, 1, 2 * PI),),
-    ModifiedTrapezoid: ((0.0, 0.125, 1, _W), (0.125, 0.375, 2, None), (0.375, 0.5, 1, _W),
-                        (0.5, 0.625, 1, _W), (0.625, 0.875, 2, None), (0.875, 1.0, 1, _W)),
+    ModifiedTrapezoid: (
+        (0.0, 0.125, 1, _W),
+        (0.125, 0.375, 2, None),
+        (0.375, 0.5, 1, _W),
+        (0.5, 0.625, 1, _W),
+        (0.625, 0.875, 2, None),
+        (0.875, 1.0, 1, _W),
+    ),
     ModifiedSine: ((0.0, 0.125, 1, _W), (0.125, 0.5, 1, _W / 3), (0.5, 0.875, 1, _W / 3), (0.875, 1.0, 1, _W)),
     ModifiedCycloid: ((0.0, 0.25, 1, _W), (0.25, 0.5, 1, None), (0.5, 0.75, 1, None), (0.75, 1.0, 1, _W)),
 }
@@ -103,8 +122,12 @@ class Train:
     offset: float = 0.0
 
     def __post_init__(self) -> None:
-        for key, v, ok in (("rho", self.rho, lambda x: x > 0), ("ratio", self.ratio, lambda x: 0 < x <= 1),
-                           ("zeta", self.zeta, lambda x: x >= 0), ("offset", self.offset, lambda x: True)):
+        for key, v, ok in (
+            ("rho", self.rho, lambda x: x > 0),
+            ("ratio", self.ratio, lambda x: 0 < x <= 1),
+            ("zeta", self.zeta, lambda x: x >= 0),
+            ("offset", self.offset, lambda x: True),
+        ):
             if not (isinstance(v, (int, float, np.floating)) and np.isfinite(v) and ok(v)):
                 raise InputError(f"train.{key}", f"out of range: {v!r}")
 
@@ -168,12 +191,13 @@ def pieces(law: Law) -> tuple[Piece, ...]:
 
         m = to_power(law.degree)
         b = law.breaks
-        return tuple(_poly_pieces(m @ np.asarray(row), b[j], b[j + 1], b[j + 1] - b[j])
-                     for j, row in enumerate(law.coefficients))
+        return tuple(
+            _poly_pieces(m @ np.asarray(row), b[j], b[j + 1], b[j + 1] - b[j]) for j, row in enumerate(law.coefficients)
+        )
     if isinstance(law, TableLaw):
         from scipy.interpolate import PPoly
 
-        pp = PPoly.from_spline(law._spline)
+        pp = PPoly.from_spline(law._spline)  # type: ignore[arg-type]
         out = []
         x = pp.x
         for j in range(len(x) - 1):
@@ -182,14 +206,14 @@ def pieces(law: Law) -> tuple[Piece, ...]:
             out.append(_poly_pieces(pp.c[::-1, j], float(x[j]), float(x[j + 1])))
         return tuple(out)
     if kind in _SHAPES:
-        out = []
-        for a, b, d, w in _SHAPES[kind]:
+        shaped = []
+        for u0, u1, d, w in _SHAPES[kind]:
             g = _companion(d, w)
             n = g.shape[0]
-            mid = 0.5 * (a + b)  # inside the piece: no one-sided question; its state carried back exactly
+            mid = 0.5 * (u0 + u1)  # inside the piece: no one-sided question; its state carried back exactly
             zm = law.evaluate(mid)[:n]
-            out.append(Piece(a, b, g, _expm(g * (a - mid)) @ zm))
-        return tuple(out)
+            shaped.append(Piece(u0, u1, g, _expm(g * (u0 - mid)) @ zm))
+        return tuple(shaped)
     raise InputError("law", f"the exact response knows no pieces of a {kind.__name__} law")
 
 
@@ -240,7 +264,7 @@ def _augmented(span: Span, train: Train) -> np.ndarray:
     m[1, 0], m[1, 1], m[1, 2], m[1, n + 2] = -rho, -2 * zeta * rho, rho * train.ratio, -rho * train.offset
     if n >= 2:
         m[1, 3] = 2 * zeta  # 2 zeta rho ds/dtau = 2 zeta ds/dphi
-    m[2:n + 2, 2:n + 2] = span.generator
+    m[2 : n + 2, 2 : n + 2] = span.generator
     return m
 
 
@@ -272,8 +296,11 @@ def steady_state(program: Program, train: Train) -> np.ndarray:
     phi, g, _ = cycle_map(program, train)
     a = np.eye(2) - phi
     if abs(np.linalg.det(a)) < 1e-12 * max(1.0, float(np.max(np.abs(phi)))):
-        raise InputError("dynamics.damping_ratio", "an undamped train at a whole multiple of the cam speed "
-                         f"(omega_n / omega = {train.rho:.6g}) has no periodic steady state: give a damping ratio > 0")
+        raise InputError(
+            "dynamics.damping_ratio",
+            "an undamped train at a whole multiple of the cam speed "
+            f"(omega_n / omega = {train.rho:.6g}) has no periodic steady state: give a damping ratio > 0",
+        )
     return np.linalg.solve(a, g)
 
 
@@ -310,9 +337,9 @@ def response(program: Program, train: Train, phi, y0: np.ndarray, *, start: floa
     two_pi = 2 * PI
     rel = np.mod(phi - start, two_pi) + start
     sp_all = spans(program)
-    ordered = [s for s in sp_all if s.start >= start - 1e-12] + \
-              [Span(s.phase, s.start + two_pi, s.end + two_pi, s.generator, s.state) for s in sp_all
-               if s.start < start - 1e-12]
+    ordered = [s for s in sp_all if s.start >= start - 1e-12] + [
+        Span(s.phase, s.start + two_pi, s.end + two_pi, s.generator, s.state) for s in sp_all if s.start < start - 1e-12
+    ]
     rho, r, zeta, f = train.rho, train.ratio, train.zeta, train.offset
     X = np.empty((3, rel.size))
     S = np.empty((2, rel.size))
@@ -390,8 +417,9 @@ def _phase_end(program: Program, train: Train, i: int, y: np.ndarray) -> np.ndar
     return y
 
 
-def phase_residuals(program: Program, train: Train, y0: np.ndarray | None = None,
-                    *, steady: bool = True) -> list[tuple[int, float, float | None]]:
+def phase_residuals(
+    program: Program, train: Train, y0: np.ndarray | None = None, *, steady: bool = True
+) -> list[tuple[int, float, float | None]]:
     """``(phase, residual from rest, residual in the steady state)`` of every rise and return.
 
     Each an amplitude (:func:`residual_amplitude`) at the phase's end about the equilibrium of its end level, over
@@ -409,7 +437,12 @@ def phase_residuals(program: Program, train: Train, y0: np.ndarray | None = None
             h = program.height_of(i)
             end_level = float(program.levels[i]) + program.signed_height(i)
             rest = _phase_end(program, train, i, rest_state(program, train, i))
-            out.append((i, residual_amplitude(train, end_level, rest) / h,
-                        None if y_end is None else residual_amplitude(train, end_level, y_end) / h))
+            out.append(
+                (
+                    i,
+                    residual_amplitude(train, end_level, rest) / h,
+                    None if y_end is None else residual_amplitude(train, end_level, y_end) / h,
+                )
+            )
         y = y_end
     return out

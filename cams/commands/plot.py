@@ -75,8 +75,7 @@ def run(args) -> int:
 
     which = _only(args.only)
     from cams.present.faces import presenter
-    from cams.present.plots import no_forces
-    from cams.present.vibration_plots import no_vibration
+    from cams.present.plots import no_forces, no_vibration
 
     cam = Cam.from_file(args.file)
     designed = cam.given.optimize is not None

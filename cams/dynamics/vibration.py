@@ -48,8 +48,19 @@ from laws.program import Program
 from laws.response import Train, grid_response, phase_residuals, steady_state
 from laws.units import TWO_PI, omega_to_rpm, rpm_to_omega
 
-__all__ = ["TrainModel", "train_model", "Flight", "simulate", "Vibration", "PhaseVibration", "vibration",
-           "dynamic_jump_rpm", "design_vibration", "vibration_failure", "vibration_lines"]
+__all__ = [
+    "TrainModel",
+    "train_model",
+    "Flight",
+    "simulate",
+    "Vibration",
+    "PhaseVibration",
+    "vibration",
+    "dynamic_jump_rpm",
+    "design_vibration",
+    "vibration_failure",
+    "vibration_lines",
+]
 
 
 @dataclass(frozen=True)
@@ -98,8 +109,12 @@ class TrainModel:
 
     def train(self, omega: float) -> Train:
         """The dimensionless train at the cam speed ``omega`` (rad/s), the program's displacement unit."""
-        return Train(rho=self.omega_n / omega, ratio=self.stiffness / self.total, zeta=self.damping_ratio,
-                     offset=(self.preload + self.load) / self.total / self.si)
+        return Train(
+            rho=self.omega_n / omega,
+            ratio=self.stiffness / self.total,
+            zeta=self.damping_ratio,
+            offset=(self.preload + self.load) / self.total / self.si,
+        )
 
 
 def train_model(design, dyn) -> TrainModel | None:
@@ -112,9 +127,16 @@ def train_model(design, dyn) -> TrainModel | None:
     if force and spring is None:
         raise InputError("dynamics.spring_rate", "the train's vibration under force closure needs the spring")
     si = 1.0 if design.follower.kind == "rocker" else dyn.length_unit
-    return TrainModel(dyn.mass, float(dyn.train_stiffness), dyn.damping_ratio,
-                      spring.rate if spring else 0.0, spring.preload if spring else 0.0,
-                      dyn.load, si, force)
+    return TrainModel(
+        dyn.mass,
+        float(dyn.train_stiffness),
+        dyn.damping_ratio,
+        spring.rate if spring else 0.0,
+        spring.preload if spring else 0.0,
+        dyn.load,
+        si,
+        force,
+    )
 
 
 @dataclass(frozen=True)
@@ -163,6 +185,7 @@ def simulate(program: Program, tm: TrainModel, omega: float, y0, *, turns: int =
         def f(t, y):
             q = transmitted(t, y) if contact else 0.0
             return [y[1], (q - hold - tm.spring_rate * y[0]) / m]
+
         return f
 
     leave = lambda t, y: press(t, y)  # noqa: E731
@@ -180,11 +203,21 @@ def simulate(program: Program, tm: TrainModel, omega: float, y0, *, turns: int =
         ev = leave if contact else land
         grid = np.arange(np.ceil(t / step - 1e-9), np.floor(t_end / step + 1e-9) + 1) * step
         grid = grid[(grid >= t) & (grid <= t_end)]
-        sol = solve_ivp(rhs(contact), (t, t_end), y, method="DOP853", rtol=1e-10, atol=1e-14 + 1e-12 * abs(y[0]),
-                        events=ev if tm.force_closed else None, dense_output=True, max_step=step * 4)
+        sol = solve_ivp(
+            rhs(contact),
+            (t, t_end),
+            y,
+            method="DOP853",
+            rtol=1e-10,
+            atol=1e-14 + 1e-12 * abs(y[0]),
+            events=ev if tm.force_closed else None,
+            dense_output=True,
+            max_step=step * 4,
+        )
         t_stop = sol.t[-1]
         keep = grid[grid <= t_stop]
         if keep.size:
+            assert sol.sol is not None  # dense_output=True
             ts.append(keep)
             ys.append(sol.sol(keep))
             modes.append(np.full(keep.size, contact))
@@ -253,8 +286,9 @@ def _min_load(program: Program, tm: TrainModel, omega: float, samples: int) -> t
     return float(r.load[k]) * tm.total * tm.si, float(r.phi[k])
 
 
-def dynamic_jump_rpm(program: Program, tm: TrainModel, *, start_rpm: float, top_rpm: float, samples: int = 720,
-                     step: float = 0.01) -> float | None:
+def dynamic_jump_rpm(
+    program: Program, tm: TrainModel, *, start_rpm: float, top_rpm: float, samples: int = 720, step: float = 0.01
+) -> float | None:
     """The least cam speed (rev/min) at which the steady state's ``Q`` turns negative somewhere, or None up to
     ``top_rpm``.
 
@@ -354,8 +388,16 @@ class Vibration:
         finite = np.isfinite(self.contact)
         return {
             "natural_frequency_hz": self.natural_frequency,
-            "phases": [{"phase": p.phase, "kind": p.kind, "period_ratio": p.period_ratio,
-                        "residual_from_rest": p.residual_from_rest, "residual": p.residual} for p in self.phases],
+            "phases": [
+                {
+                    "phase": p.phase,
+                    "kind": p.kind,
+                    "period_ratio": p.period_ratio,
+                    "residual_from_rest": p.residual_from_rest,
+                    "residual": p.residual,
+                }
+                for p in self.phases
+            ],
             "dynamic_max_contact_force": float(np.max(self.contact[finite])),
             "dynamic_min_contact_force": float(np.min(self.contact[finite])),
             "contact_lost": self.contact_lost,
@@ -364,8 +406,9 @@ class Vibration:
         }
 
 
-def vibration(design, dyn, amplification: np.ndarray, *, rigid_jump_rpm: float | None = None,
-              rpm: float | None = None) -> Vibration | None:
+def vibration(
+    design, dyn, amplification: np.ndarray, *, rigid_jump_rpm: float | None = None, rpm: float | None = None
+) -> Vibration | None:
     """The train's response at the design's speed; None without ``train_stiffness``.
 
     Parameters
@@ -412,9 +455,25 @@ def vibration(design, dyn, amplification: np.ndarray, *, rigid_jump_rpm: float |
     if lost_at is not None:
         flight = simulate(prog, tm, omega, (y0[0], y0[1] * rho * omega), samples=samples)
     to_t = omega
-    return Vibration(r.phi, omega, r.x, r.dx * to_t, r.d2x * to_t**2, r.s, r.ds * to_t,
-                     prog.evaluate(r.phi).d2s * to_t**2, load, contact, tm.omega_n / TWO_PI, tuple(phases),
-                     lost_at, jump, top, flight, tm.force_closed)
+    return Vibration(
+        r.phi,
+        omega,
+        r.x,
+        r.dx * to_t,
+        r.d2x * to_t**2,
+        r.s,
+        r.ds * to_t,
+        prog.evaluate(r.phi).d2s * to_t**2,
+        load,
+        contact,
+        tm.omega_n / TWO_PI,
+        tuple(phases),
+        lost_at,
+        jump,
+        top,
+        flight,
+        tm.force_closed,
+    )
 
 
 def design_vibration(design, forces, amplification: np.ndarray | None = None) -> Vibration | None:
@@ -449,14 +508,18 @@ def vibration_failure(v: Vibration | None) -> str | None:
     """Why the elastic train fails (the follower leaves the cam under force closure), or None."""
     if v is None or not v.contact_lost or v.contact_lost_at is None:
         return None
-    said = (f"dynamics: the elastic follower train leaves the cam at {np.degrees(v.contact_lost_at):.2f} deg "
-            f"(dynamic contact force down to {float(np.min(v.contact)):.4g} N at {v.rpm:.6g} rpm)")
+    said = (
+        f"dynamics: the elastic follower train leaves the cam at {np.degrees(v.contact_lost_at):.2f} deg "
+        f"(dynamic contact force down to {float(np.min(v.contact)):.4g} N at {v.rpm:.6g} rpm)"
+    )
     f = v.flight
     if f is not None and f.intervals:
         unit = "deg" if f.rocker else "mm"
         gap = np.degrees(f.max_gap) if f.rocker else f.max_gap
-        flights = ", ".join(f"{np.degrees(a):.1f} to " + ("the turn's end" if b is None else f"{np.degrees(b):.1f}")
-                            for a, b in f.intervals)
+        flights = ", ".join(
+            f"{np.degrees(a):.1f} to " + ("the turn's end" if b is None else f"{np.degrees(b):.1f}")
+            for a, b in f.intervals
+        )
         said += f"; followed over {f.turns} turns, the last one flies {flights} deg, gap up to {gap:.4g} {unit}"
     return said
 
@@ -470,10 +533,14 @@ def vibration_lines(vi: dict, *, rigid_jump_rpm: float | None, rocker: bool, ind
 
     for p in vi["phases"]:
         steady = "none (undamped)" if p["residual"] is None else f"{p['residual']:.4g}"
-        lines.append(f"{indent}  {phase_words(p['kind'], p['phase'])}: period ratio lambda {p['period_ratio']:.4g}; "
-                     f"residual vibration / height: {p['residual_from_rest']:.4g} from rest, {steady} steady")
-    lines.append(f"{indent}  dynamic contact force: max {force(vi['dynamic_max_contact_force'])}, "
-                 f"min {force(vi['dynamic_min_contact_force'])}")
+        lines.append(
+            f"{indent}  {phase_words(p['kind'], p['phase'])}: period ratio lambda {p['period_ratio']:.4g}; "
+            f"residual vibration / height: {p['residual_from_rest']:.4g} from rest, {steady} steady"
+        )
+    lines.append(
+        f"{indent}  dynamic contact force: max {force(vi['dynamic_max_contact_force'])}, "
+        f"min {force(vi['dynamic_min_contact_force'])}"
+    )
     rigid = "none" if rigid_jump_rpm is None or not np.isfinite(rigid_jump_rpm) else f"{rigid_jump_rpm:.6g} rpm"
     dyn = "none found" if vi["dynamic_jump_rpm"] is None else f"{vi['dynamic_jump_rpm']:.6g} rpm"
     lost = "no" if not vi["contact_lost"] else f"YES, at {vi['contact_lost_at_deg']:.2f} deg"

@@ -69,7 +69,7 @@ def _figures(cam):
         if kind == "forces":
             return plots.no_forces(cam) is None
         if kind == "vibration":
-            from cams.present.vibration_plots import no_vibration
+            from cams.present.plots import no_vibration
 
             return no_vibration(cam) is None
         return True

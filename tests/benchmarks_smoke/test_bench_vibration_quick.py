@@ -8,8 +8,12 @@ from tests.conftest import ROOT
 
 
 def test_bench_vibration_quick_writes_json(tmp_path):
-    r = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_vibration.py"), "--repeats", "1", "--out",
-                        str(tmp_path)], capture_output=True, text=True, timeout=300)
+    r = subprocess.run(
+        [sys.executable, str(ROOT / "benchmarks" / "bench_vibration.py"), "--repeats", "1", "--out", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert r.returncode == 0, r.stderr
     res = json.loads((tmp_path / "vibration.json").read_text())
     assert len(res["rows"]) == 2 and {"cpu", "cores", "python", "numpy"} <= set(res["machine"])

@@ -12,8 +12,15 @@ import pytest
 from cams.cli import main
 from tests.conftest import EXAMPLES
 
-KEYS = {"natural_frequency_hz", "phases", "dynamic_max_contact_force", "dynamic_min_contact_force", "contact_lost",
-        "contact_lost_at_deg", "dynamic_jump_rpm"}
+KEYS = {
+    "natural_frequency_hz",
+    "phases",
+    "dynamic_max_contact_force",
+    "dynamic_min_contact_force",
+    "contact_lost",
+    "contact_lost_at_deg",
+    "dynamic_jump_rpm",
+}
 PHASE_KEYS = {"phase", "kind", "period_ratio", "residual_from_rest", "residual"}
 TRAIN = EXAMPLES / "translating_train.toml"
 
@@ -63,8 +70,13 @@ def test_vibration_no_train_no_key(capsys):
 
 def test_vibration_lost_contact_fails_the_cam(tmp_path, capsys):
     """A spring that holds the rigid follower at 345 rpm (its rigid jump speed is above) but not the elastic one."""
-    p = _edited(tmp_path, TRAIN, "lost.toml", ("margin = 1.5", "spring_rate = 425.6\npreload = 12.77"),
-                ("rpm = 300", "rpm = 345"))
+    p = _edited(
+        tmp_path,
+        TRAIN,
+        "lost.toml",
+        ("margin = 1.5", "spring_rate = 425.6\npreload = 12.77"),
+        ("rpm = 300", "rpm = 345"),
+    )
     rc, out, _ = _run(capsys, "solve", p, "--json")
     rep = json.loads(out)
     assert rc == 1
@@ -75,10 +87,15 @@ def test_vibration_lost_contact_fails_the_cam(tmp_path, capsys):
     assert rc == 1 and "FAIL: dynamics: the elastic follower train leaves the cam" in out
 
 
-@pytest.mark.parametrize("line, field", [("train_stiffness = 2.0e5", "train_stiffness = 0"),
-                                         ("train_stiffness = 2.0e5", "train_stiffness = -3.0"),
-                                         ("damping_ratio = 0.05", "damping_ratio = -0.01"),
-                                         ("mass = 0.5", "mass = 0.0")])
+@pytest.mark.parametrize(
+    "line, field",
+    [
+        ("train_stiffness = 2.0e5", "train_stiffness = 0"),
+        ("train_stiffness = 2.0e5", "train_stiffness = -3.0"),
+        ("damping_ratio = 0.05", "damping_ratio = -0.01"),
+        ("mass = 0.5", "mass = 0.0"),
+    ],
+)
 def test_vibration_bad_input(tmp_path, capsys, line, field):
     key = field.split(" = ")[0]
     src = TRAIN.read_text()
@@ -107,14 +124,19 @@ def test_vibration_damping_without_train_is_refused(tmp_path, capsys):
 
 def test_vibration_slotting_feed_cam_with_a_train(tmp_path, capsys):
     """The slotting machine's feed cam (a roller rocker) with a torsional train: 2000 N m/rad about the pivot."""
-    p = _edited(tmp_path, EXAMPLES / "slotting_feed_cam.toml", "feed.toml",
-                ("journal_radius = 8.0", "journal_radius = 8.0\ntrain_stiffness = 2000.0\ndamping_ratio = 0.02"))
+    p = _edited(
+        tmp_path,
+        EXAMPLES / "slotting_feed_cam.toml",
+        "feed.toml",
+        ("journal_radius = 8.0", "journal_radius = 8.0\ntrain_stiffness = 2000.0\ndamping_ratio = 0.02"),
+    )
     rc, out, _ = _run(capsys, "solve", p, "--json")
     rep = json.loads(out)
     vi = rep["vibration"]
     assert set(vi) == KEYS
     assert vi["natural_frequency_hz"] == pytest.approx(
-        np.sqrt((2000.0 + rep["forces"]["spring"]["rate"]) / 0.003) / (2 * np.pi), rel=1e-12)
+        np.sqrt((2000.0 + rep["forces"]["spring"]["rate"]) / 0.003) / (2 * np.pi), rel=1e-12
+    )
     # the rise lasts 60 deg of a turn at 60 rpm: 1/6 s
     assert vi["phases"][0]["period_ratio"] == pytest.approx(vi["natural_frequency_hz"] / 6, rel=1e-12)
     assert vi["dynamic_jump_rpm"] is not None and rep["forces"]["jump_rpm"] > 0

@@ -35,8 +35,9 @@ BETA = np.pi / 2
 
 def _program(law, *, beta=BETA) -> Program:
     rest = (2 * np.pi - 2 * beta) / 2
-    return Program((Phase("rise", beta, law), Phase("dwell", rest), Phase("return", beta, law),
-                    Phase("dwell", rest)), 1.0)
+    return Program(
+        (Phase("rise", beta, law), Phase("dwell", rest), Phase("return", beta, law), Phase("dwell", rest)), 1.0
+    )
 
 
 def _cycloidal_reference(lam: float) -> float:
@@ -91,8 +92,9 @@ def _ivp(prog: Program, tr: Train, y0, phi_eval):
     for i in range(len(prog.phases)):
         a, b = prog.starts[i], prog.starts[i + 1]
         sel = (phi_eval >= a) & (phi_eval < b)
-        sol = solve_ivp(rhs, (a, b), y, method="DOP853", rtol=1e-11, atol=1e-13, t_eval=phi_eval[sel],
-                        dense_output=False)
+        sol = solve_ivp(
+            rhs, (a, b), y, method="DOP853", rtol=1e-11, atol=1e-13, t_eval=phi_eval[sel], dense_output=False
+        )
         out[:, sel] = sol.y
         y = solve_ivp(rhs, (a, b), y, method="DOP853", rtol=1e-11, atol=1e-13).y[:, -1]
     return out, y

@@ -84,8 +84,12 @@ def test_rigid_limit(cam):
     rigid = cam.forces.forces.contact
     errs = []
     for kt in (1e6, 1e8, 1e10):
-        v = vibration(cam.design, _dyn(cam, train_stiffness=kt), cam.forces.forces.amplification,
-                      rigid_jump_rpm=cam.forces.jump.rpm)
+        v = vibration(
+            cam.design,
+            _dyn(cam, train_stiffness=kt),
+            cam.forces.forces.amplification,
+            rigid_jump_rpm=cam.forces.jump.rpm,
+        )
         errs.append(np.max(np.abs(v.contact - rigid)) / np.max(rigid))
         last = v
     assert errs[0] > errs[1] > errs[2] and errs[2] < 2e-3
@@ -144,11 +148,17 @@ def test_form_closure_never_loses_contact(tmp_path):
     assert np.min(v.load) < 0  # the groove pulls the follower back on the return
 
 
-@pytest.mark.parametrize("kw, field", [({"mass": 0.0}, "dynamics.mass"), ({"mass": -1.0}, "dynamics.mass"),
-                                       ({"train_stiffness": 0.0}, "dynamics.train_stiffness"),
-                                       ({"train_stiffness": -5.0}, "dynamics.train_stiffness"),
-                                       ({"damping_ratio": -0.1, "train_stiffness": 1e5}, "dynamics.damping_ratio"),
-                                       ({"damping_ratio": 0.1}, "dynamics.damping_ratio")])
+@pytest.mark.parametrize(
+    "kw, field",
+    [
+        ({"mass": 0.0}, "dynamics.mass"),
+        ({"mass": -1.0}, "dynamics.mass"),
+        ({"train_stiffness": 0.0}, "dynamics.train_stiffness"),
+        ({"train_stiffness": -5.0}, "dynamics.train_stiffness"),
+        ({"damping_ratio": -0.1, "train_stiffness": 1e5}, "dynamics.damping_ratio"),
+        ({"damping_ratio": 0.1}, "dynamics.damping_ratio"),
+    ],
+)
 def test_bad_train_inputs(kw, field):
     args = {"mass": 0.5, "spring": Spring(100.0, 5.0)} | kw
     with pytest.raises(InputError) as e:
