@@ -37,6 +37,7 @@ and Manufacturing Handbook*, ch. 10 (dynamics of the follower train); Koster, *V
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from math import factorial
 
 import numpy as np
@@ -162,6 +163,7 @@ def _poly_pieces(coeffs, a: float, b: float, scale: float = 1.0) -> Piece:
     return Piece(a, b, _companion(n - 1, None), z)
 
 
+@lru_cache(maxsize=256)
 def pieces(law: Law) -> tuple[Piece, ...]:
     """The exact pieces of a law: each a polynomial, or a polynomial plus one sinusoid.
 
@@ -212,7 +214,7 @@ def pieces(law: Law) -> tuple[Piece, ...]:
             n = g.shape[0]
             mid = 0.5 * (u0 + u1)  # inside the piece: no one-sided question; its state carried back exactly
             zm = law.evaluate(mid)[:n]
-            shaped.append(Piece(u0, u1, g, _expm(g * (u0 - mid)) @ zm))
+            shaped.append(Piece(u0, u1, g, _expm_series((g * (u0 - mid))[None])[0] @ zm))
         return tuple(shaped)
     raise InputError("law", f"the exact response knows no pieces of a {kind.__name__} law")
 
@@ -232,6 +234,7 @@ class Span:
     state: np.ndarray
 
 
+@lru_cache(maxsize=256)
 def spans(program: Program) -> tuple[Span, ...]:
     """The cycle's spans: each rise or return's pieces, scaled to cam angles, and one span per dwell."""
     out = []
@@ -268,6 +271,86 @@ def _augmented(span: Span, train: Train) -> np.ndarray:
     return m
 
 
+def _expm_series(a: np.ndarray) -> np.ndarray:
+    """``exp(a)`` of a stack of small matrices of modest norm (the forcing's generators times a span): Taylor's
+    series to 18 terms after scaling by ``2^-s`` to a norm <= 1/4 (truncation below 1e-28), then ``s`` squarings."""
+    a = np.asarray(a, float)
+    norm = float(np.max(np.sum(np.abs(a), axis=-1))) if a.size else 0.0
+    s = max(0, int(np.ceil(np.log2(norm / 0.25)))) if norm > 0.25 else 0
+    x = a / 2.0**s
+    eye = np.broadcast_to(np.eye(a.shape[-1]), a.shape)
+    out, term = eye.copy(), eye.copy()
+    for j in range(1, 19):
+        term = term @ x / j
+        out = out + term
+    for _ in range(s):
+        out = out @ out
+    return out
+
+
+def _oscillator(rho: float, zeta: float, t: np.ndarray) -> np.ndarray:
+    """``exp(A t)`` of ``A = [[0, rho], [-rho, -2 zeta rho]]`` in closed form, stacked over ``t`` (shape (k, 2, 2)).
+
+    ``exp(A t) = exp(mu t) (c(t) I + s(t) (A - mu I))`` with ``mu = -zeta rho`` and, for ``d = rho^2 (1 - zeta^2)``:
+    ``c = cos(w t), s = sin(w t) / w`` (``w = sqrt(d)``, d > 0), ``cosh``/``sinh`` (d < 0), ``1, t`` (d = 0).
+    """
+    t = np.asarray(t, float).reshape(-1)
+    mu = -zeta * rho
+    a = np.array([[0.0, rho], [-rho, -2 * zeta * rho]])
+    d = rho**2 * (1 - zeta**2)
+    if d > 0:
+        w = np.sqrt(d)
+        c, sn = np.cos(w * t), np.sin(w * t) / w
+    elif d < 0:
+        w = np.sqrt(-d)
+        c, sn = np.cosh(w * t), np.sinh(w * t) / w
+    else:
+        c, sn = np.ones_like(t), t.copy()
+    n = a - mu * np.eye(2)
+    return np.exp(mu * t)[:, None, None] * (c[:, None, None] * np.eye(2) + sn[:, None, None] * n)
+
+
+class _Flow:
+    """``exp(M t)`` of a span's augmented generator, by blocks: the oscillator's in closed form, the forcing's
+    (small norm) by a matrix exponential, and the coupling ``X(t) = exp(A t) Y - Y exp(G t)`` with ``Y`` the
+    solution of the Sylvester equation ``A Y - Y G = B`` -- the particular solution of the forcing plus the
+    homogeneous part. Where ``A`` and ``G`` share an eigenvalue (an undamped train whose frequency is a sinusoid's
+    of the law) or ``Y`` is ill-conditioned, the whole exponential is taken instead."""
+
+    def __init__(self, span: Span, train: Train) -> None:
+        from scipy.linalg import solve_sylvester
+
+        self.m = _augmented(span, train)
+        self.rho, self.zeta = train.rho, train.zeta
+        n = self.m.shape[0]
+        self.a, self.b, self.g = self.m[:2, :2], self.m[:2, 2:], self.m[2:, 2:]
+        self.y: np.ndarray | None = None
+        y = solve_sylvester(self.a, -self.g, self.b)
+        scale = float(np.max(np.abs(self.b))) or 1.0
+        if (
+            np.all(np.isfinite(y))
+            and np.max(np.abs(self.a @ y - y @ self.g - self.b))
+            <= 1e-12 * scale * max(1.0, float(np.max(np.abs(y)))) * n
+            and float(np.max(np.abs(y))) < 1e8 * scale
+        ):
+            self.y = y
+
+    def __call__(self, t) -> np.ndarray:
+        """``exp(M t)``, shape (N, N) for a scalar ``t``, (k, N, N) for an array."""
+        scalar = np.ndim(t) == 0
+        tt = np.asarray(t, float).reshape(-1)
+        if self.y is None:
+            out = _expm(self.m[None] * tt[:, None, None])
+        else:
+            ea = _oscillator(self.rho, self.zeta, tt)
+            eg = _expm_series(self.g[None] * tt[:, None, None])
+            out = np.zeros((tt.size, *self.m.shape))
+            out[:, :2, :2] = ea
+            out[:, 2:, 2:] = eg
+            out[:, :2, 2:] = ea @ self.y - self.y @ eg
+        return out[0] if scalar else out
+
+
 def _start(span: Span, y: np.ndarray) -> np.ndarray:
     return np.concatenate([y, span.state, [1.0]])
 
@@ -277,7 +360,7 @@ def cycle_map(program: Program, train: Train) -> tuple[np.ndarray, np.ndarray, l
     phi, g = np.eye(2), np.zeros(2)
     exps = []
     for sp in spans(program):
-        e = _expm(_augmented(sp, train) * (sp.end - sp.start))
+        e = _Flow(sp, train)(sp.end - sp.start)
         exps.append(e)
         a, b = e[:2, :2], e[:2, 2:] @ np.concatenate([sp.state, [1.0]])
         phi, g = a @ phi, a @ g + b
@@ -347,16 +430,16 @@ def response(program: Program, train: Train, phi, y0: np.ndarray, *, start: floa
     y = np.asarray(y0, float)
     for k, sp in enumerate(ordered):
         last = k == len(ordered) - 1
-        m = _augmented(sp, train)
+        flow = _Flow(sp, train)
         sel = (flat >= sp.start - 1e-12) & ((flat < sp.end) | (last & (flat <= sp.end + 1e-12)))
         if np.any(sel):
-            Y = _expm(m[None] * (flat[sel] - sp.start)[:, None, None]) @ _start(sp, y)
+            Y = flow(flat[sel] - sp.start) @ _start(sp, y)
             x, v, s0 = Y[:, 0], Y[:, 1], Y[:, 2]
             s1 = Y[:, 3] if sp.generator.shape[0] >= 2 else np.zeros_like(x)
             acc = r * s0 + 2 * zeta * s1 / rho - f - x - 2 * zeta * v  # d2x/dtau2
             X[:, sel] = x, rho * v, rho**2 * acc
             S[:, sel] = s0, s1
-        y = (_expm(m * (sp.end - sp.start)) @ _start(sp, y))[:2]
+        y = (flow(sp.end - sp.start) @ _start(sp, y))[:2]
     load = r * (S[0] - X[0]) + 2 * zeta * (S[1] - X[1]) / rho
     shape = phi.shape
     return Response(phi, *(a.reshape(shape) for a in (X[0], X[1], X[2], S[0], S[1], load)))
@@ -375,14 +458,14 @@ def grid_response(program: Program, train: Train, y0: np.ndarray, samples: int) 
     rho, r, zeta, f = train.rho, train.ratio, train.zeta, train.offset
     y = np.asarray(y0, float)
     for sp in spans(program):
-        m = _augmented(sp, train)
+        flow = _Flow(sp, train)
         start = _start(sp, y)
         k0 = int(np.ceil(sp.start / step - 1e-9))
         k1 = int(np.ceil(sp.end / step - 1e-9))
         if k1 > k0:
             Y = np.empty((k1 - k0, start.size))
-            Y[0] = _expm(m * (phi[k0] - sp.start)) @ start
-            e = _expm(m * step)
+            Y[0] = flow(phi[k0] - sp.start) @ start
+            e = flow(step)
             for j in range(1, k1 - k0):
                 Y[j] = e @ Y[j - 1]
             x, v, s0 = Y[:, 0], Y[:, 1], Y[:, 2]
@@ -390,7 +473,7 @@ def grid_response(program: Program, train: Train, y0: np.ndarray, samples: int) 
             acc = r * s0 + 2 * zeta * s1 / rho - f - x - 2 * zeta * v
             X[:, k0:k1] = x, rho * v, rho**2 * acc
             S[:, k0:k1] = s0, s1
-        y = (_expm(m * (sp.end - sp.start)) @ start)[:2]
+        y = (flow(sp.end - sp.start) @ start)[:2]
     load = r * (S[0] - X[0]) + 2 * zeta * (S[1] - X[1]) / rho
     return Response(phi, X[0], X[1], X[2], S[0], S[1], load)
 
@@ -413,7 +496,7 @@ def _phase_end(program: Program, train: Train, i: int, y: np.ndarray) -> np.ndar
     """``y`` at the end of phase ``i`` from ``y`` at its start."""
     for sp in spans(program):
         if sp.phase == i:
-            y = (_expm(_augmented(sp, train) * (sp.end - sp.start)) @ _start(sp, y))[:2]
+            y = (_Flow(sp, train)(sp.end - sp.start) @ _start(sp, y))[:2]
     return y
 
 

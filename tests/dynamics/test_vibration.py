@@ -172,3 +172,22 @@ def test_train_without_rpm_names_it(tmp_path):
     with pytest.raises(InputError) as e:
         load_design(p)
     assert e.value.field == "cam.rpm" and "train_stiffness" in str(e.value)
+
+
+@pytest.mark.parametrize("name", ["translating_flat", "rocker_flat"])
+def test_flat_faces_take_the_forces_stage_geometry_and_tend_to_the_rigid_forces(tmp_path, name):
+    """A flat face (translating: the normal along the motion; rocker: the lever along the face, torsional train
+    about the pivot): the dynamic contact force is Q times the forces stage's geometry, and with a very stiff,
+    well damped train it is the rigid one."""
+    src = ROOT / "examples" / f"{name}.toml"
+    lines = src.read_text().splitlines()
+    k = next(i for i, line in enumerate(lines) if line.startswith("face_friction"))
+    stiff = "1.0e10" if name == "translating_flat" else "1.0e7"  # N/m; N m/rad about the pivot
+    lines.insert(k + 1, f"train_stiffness = {stiff}\ndamping_ratio = 0.3")
+    p = tmp_path / f"{name}.toml"
+    p.write_text("\n".join(lines) + "\n")
+    c = Cam(load_design(p))
+    v, cf = c.vibration, c.forces.forces
+    assert np.allclose(v.contact, v.load * cf.amplification, rtol=1e-12, atol=0)
+    assert np.max(np.abs(v.contact - cf.contact)) < 5e-3 * np.max(np.abs(cf.contact))
+    assert v.jump_rpm == pytest.approx(c.forces.jump.rpm, rel=5e-3)
