@@ -449,7 +449,8 @@ def vibration(
     top = 3 * max(n_rpm, rigid_jump_rpm if rigid_jump_rpm and np.isfinite(rigid_jump_rpm) else 0.0)
     jump = None
     if tm.force_closed:
-        start = min(n_rpm, rigid_jump_rpm or n_rpm) * 0.05
+        speeds = [n for n in (n_rpm, rigid_jump_rpm) if n is not None and 0 < n < np.inf]
+        start = 0.05 * min(speeds)  # a rigid jump speed of 0 (a velocity drop) is no place to start
         jump = dynamic_jump_rpm(prog, tm, start_rpm=start, top_rpm=top, samples=samples)
     flight = None
     if lost_at is not None:
@@ -517,10 +518,10 @@ def vibration_failure(v: Vibration | None) -> str | None:
         unit = "deg" if f.rocker else "mm"
         gap = np.degrees(f.max_gap) if f.rocker else f.max_gap
         flights = ", ".join(
-            f"{np.degrees(a):.1f} to " + ("the turn's end" if b is None else f"{np.degrees(b):.1f}")
-            for a, b in f.intervals
-        )
-        said += f"; followed over {f.turns} turns, the last one flies {flights} deg, gap up to {gap:.4g} {unit}"
+            f"{np.degrees(a):.1f} to " + ("the turn's end" if b is None else f"{np.degrees(b):.1f} deg")
+            for a, b in f.intervals[:3]
+        ) + (f" and {len(f.intervals) - 3} more flights" if len(f.intervals) > 3 else "")
+        said += f"; followed over {f.turns} turns, the last one flies {flights}, gap up to {gap:.4g} {unit}"
     return said
 
 
