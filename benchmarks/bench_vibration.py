@@ -6,7 +6,7 @@ Usage (from the project folder, after ``pip install -e .``)::
 
 Writes ``vibration.json`` into ``--out``: for ``examples/translating_train.toml`` (a 4-5-6-7 rise and a cycloidal
 return, 100.8 Hz train) and the slotting feed cam with a torsional train (2000 N m/rad), the median time (one core)
-of the steady state's start (:func:`laws.response.steady_state`: one matrix exponential a span and a 2 x 2 solve),
+of the steady state's start (:func:`laws.response.steady_state`: one exponential a span and a 2 x 2 solve),
 of the response at 720 cam angles (:func:`laws.response.grid_response`), of the elastic jump-speed search
 (:func:`cams.dynamics.vibration.dynamic_jump_rpm`, 720 angles a speed) with the number of speeds it tried, and of
 the event-driven integrator over 6 turns (:func:`cams.dynamics.vibration.simulate`) at a speed above the elastic
