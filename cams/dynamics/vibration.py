@@ -383,7 +383,7 @@ class Vibration:
     def to_dict(self) -> dict:
         """JSON-ready: ``natural_frequency_hz`` (Hz), ``phases`` (``phase``, ``kind``, ``period_ratio``,
         ``residual_from_rest``, ``residual``: over the phase's height, dimensionless), ``dynamic_max_contact_force``
-        and ``dynamic_min_contact_force`` (N; N m for a rocker's... at the face: N), ``contact_lost``,
+        and ``dynamic_min_contact_force`` (the contact force at the face, N, a rocker's too), ``contact_lost``,
         ``contact_lost_at_deg`` (cam angle, deg), ``dynamic_jump_rpm`` (rev/min)."""
         finite = np.isfinite(self.contact)
         return {

@@ -74,7 +74,8 @@ def _figures(cam):
     from cams.present.faces import presenter
 
     return {name: plots.picture(kind, cam) for name, kind in presenter(cam).pictures.items()
-            if kind != "forces" or plots.no_forces(cam) is None}  # the forces: only a cam with [dynamics]
+            if (kind != "forces" or plots.no_forces(cam) is None)  # the forces: only a cam with [dynamics]
+            and (kind != "vibration" or plots.no_vibration(cam) is None)}  # the vibration: only with a train
 
 
 @pytest.mark.parametrize("name", ALL_EXAMPLES)
