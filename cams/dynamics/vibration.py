@@ -525,7 +525,7 @@ def vibration_failure(v: Vibration | None) -> str | None:
     return said
 
 
-def vibration_lines(vi: dict, *, rigid_jump_rpm: float | None, rocker: bool, indent: str = "  ") -> list[str]:
+def vibration_lines(vi: dict, *, rigid_jump_rpm: float | None, indent: str = "  ") -> list[str]:
     """The ``vibration`` part of a report (from :meth:`Vibration.to_dict`) in words, units beside."""
     from cams.words import force
 
@@ -545,5 +545,8 @@ def vibration_lines(vi: dict, *, rigid_jump_rpm: float | None, rocker: bool, ind
     rigid = "none" if rigid_jump_rpm is None or not np.isfinite(rigid_jump_rpm) else f"{rigid_jump_rpm:.6g} rpm"
     dyn = "none found" if vi["dynamic_jump_rpm"] is None else f"{vi['dynamic_jump_rpm']:.6g} rpm"
     lost = "no" if not vi["contact_lost"] else f"YES, at {vi['contact_lost_at_deg']:.2f} deg"
-    lines.append(f"{indent}  jump speed: elastic {dyn} (rigid {rigid}); contact lost: {lost}")
+    if rigid_jump_rpm is None and vi["dynamic_jump_rpm"] is None:  # no rigid forces: a groove
+        lines.append(f"{indent}  jump speed: none (form closure: the groove drives both ways); contact lost: {lost}")
+    else:
+        lines.append(f"{indent}  jump speed: elastic {dyn} (rigid {rigid}); contact lost: {lost}")
     return lines

@@ -221,8 +221,7 @@ def print_vibration(rep: dict, indent: str = "  ") -> None:
     from cams.dynamics.vibration import vibration_lines
 
     fo = rep.get("forces") or {}
-    for line in vibration_lines(vi, rigid_jump_rpm=fo.get("jump_rpm"), rocker=rep["follower"] == "rocker",
-                                indent=indent):
+    for line in vibration_lines(vi, rigid_jump_rpm=fo.get("jump_rpm"), indent=indent):
         print(line)
 
 
