@@ -147,3 +147,32 @@ def test_damped_steady_state_forgets_the_start():
         _, y = _ivp(prog, tr, y, np.array([]))
         y = np.array([y[0], y[1] / tr.rho])
     assert np.allclose(y, y0, atol=1e-8)
+
+
+def test_a_phase_from_rest_runs_on_into_the_next_turn():
+    """The response from rest at the return's start (a phase's own figure), over the rest of the turn and on into
+    the next one's rise, against solve_ivp phase by phase in that order."""
+    from laws.response import rest_state
+
+    prog = _program("modified_sine", beta=1.2)
+    tr = Train(rho=13.1, ratio=0.85, zeta=0.02, offset=0.03)
+    start = prog.starts[2]
+    y0 = rest_state(prog, tr, 2)
+    assert y0[0] == pytest.approx(0.85 * 1.0 - 0.03) and y0[1] == 0.0
+    phi = start + np.linspace(0.0, 2 * np.pi, 240, endpoint=False)
+    got = response(prog, tr, np.mod(phi, 2 * np.pi), y0, start=start)
+    y = np.array([y0[0], 0.0])
+    ref = np.empty(phi.size)
+    for k, i in enumerate((2, 3, 0, 1)):
+        a = prog.starts[i] + (2 * np.pi if k >= 2 else 0.0)
+        b = a + prog.phases[i].angle
+
+        def rhs(p, yy, i=i, a=a):
+            mo = prog.evaluate_phase(i, (p - a) / prog.phases[i].angle)
+            return [yy[1], tr.rho**2 * (tr.ratio * mo.s - yy[0] - tr.offset) + 2 * tr.zeta * tr.rho * (mo.ds - yy[1])]
+
+        sel = (phi >= a) & (phi < b)
+        sol = solve_ivp(rhs, (a, b), y, method="DOP853", rtol=1e-11, atol=1e-13, dense_output=True)
+        ref[sel] = sol.sol(phi[sel])[0]
+        y = sol.y[:, -1]
+    assert np.max(np.abs(got.x - ref)) < 1e-8
