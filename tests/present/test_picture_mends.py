@@ -37,7 +37,8 @@ def cams_by_name():
 def _figures(cam):
     # the forces are drawn only for a design that has them (cams plot skips them otherwise)
     return {name: plots.picture(kind, cam) for name, kind in presenter(cam).pictures.items()
-            if kind != "forces" or plots.no_forces(cam) is None}
+            if (kind != "forces" or plots.no_forces(cam) is None)
+            and (kind != "vibration" or plots.no_vibration(cam) is None)}
 
 
 def _rollers(cams_by_name):
