@@ -133,6 +133,12 @@ class Train:
                 raise InputError(f"train.{key}", f"out of range: {v!r}")
 
 
+def _frozen(a: np.ndarray) -> np.ndarray:
+    """``a`` read-only (the cached pieces and spans are shared)."""
+    a.setflags(write=False)
+    return a
+
+
 @dataclass(frozen=True)
 class Piece:
     """A piece of a normalized law on ``[start, end]`` in ``u``: ``z = (S, ..., S^(n-1))`` obeys ``z' = G z``.
@@ -144,6 +150,10 @@ class Piece:
     end: float
     generator: np.ndarray
     state: np.ndarray
+
+    def __post_init__(self) -> None:
+        _frozen(self.generator)
+        _frozen(self.state)
 
 
 def _companion(d: int, w: float | None) -> np.ndarray:
@@ -232,6 +242,10 @@ class Span:
     end: float
     generator: np.ndarray
     state: np.ndarray
+
+    def __post_init__(self) -> None:
+        _frozen(self.generator)
+        _frozen(self.state)
 
 
 @lru_cache(maxsize=256)
