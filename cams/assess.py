@@ -103,7 +103,7 @@ def _dynamics_failure(forces) -> str | None:
 
 
 def assess(design, solution, *, checks=None, forces=None, no_profile: str | None = None,
-           contact=None) -> Assessment:
+           contact=None, vibration=None) -> Assessment:
     """Assess a sized cam from its parts.
 
     Parameters
@@ -117,6 +117,9 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     forces : cams.dynamics.forces.DesignForces, optional
         The ``[dynamics]`` results (None without a ``[dynamics]`` table or where
         it does not apply).
+    vibration : cams.dynamics.vibration.Vibration, optional
+        The elastic train's response (``[dynamics] train_stiffness``): a loss of contact under force closure
+        fails the cam, like the rigid one.
     no_profile : str, optional
         Why no profile could be built at the chord tolerance (then ``checks``
         is None and the cam is not buildable).
@@ -181,6 +184,12 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
     if contact is not None:
         for short, line in contact.failures():
             fail(short, line)
+    if vibration is not None:
+        from cams.dynamics.vibration import vibration_failure
+
+        why = vibration_failure(vibration)
+        if why is not None:
+            fail("dynamics", why)
     return Assessment(verified, buildable, tuple(f for _, f in failures), tuple(s for s, _ in failures), certified)
 
 
@@ -197,4 +206,5 @@ def assess_cam(cam) -> Assessment:
     has_dynamics = cam.design.dynamics is not None  # else no forces module to import
     has_contact = cam.design.contact is not None
     return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None,
-                  no_profile=no_profile, contact=cam.contact if has_contact else None)
+                  no_profile=no_profile, contact=cam.contact if has_contact else None,
+                  vibration=cam.vibration if has_dynamics else None)

@@ -140,6 +140,15 @@ class Cam:
         return self._contact[1]
 
     @cached_property
+    def vibration(self):
+        """The elastic follower train's response (:class:`cams.dynamics.vibration.Vibration`); None without
+        ``[dynamics] train_stiffness``."""
+        spec = self.design.dynamics
+        if spec is None or spec.dynamics.train_stiffness is None:
+            return None
+        return self.face.vibration(self.design, self.solution, self.forces)
+
+    @cached_property
     def assessment(self):
         """Verified and buildable, with the reasons (:func:`cams.assess.assess_cam`)."""
         from cams.assess import assess_cam

@@ -19,7 +19,7 @@ PICTURES = tuple(RollerPresenter.pictures)
 #: A flat-faced follower's pictures: no zone; the radius of curvature with the contact's travel instead.
 FLAT_PICTURES = tuple(FlatPresenter.pictures)
 #: Every picture name ``--only`` takes ("optimized": a design with an [optimize] table, drawn for it by default).
-NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "contact", "optimized")
+NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "contact", "vibration", "optimized")
 
 def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progress | None = None) -> list[Path]:
     """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.

@@ -77,6 +77,10 @@ def _work(cam, design, bar):
         rep["contact"] = None if c is None else c.to_dict()
         for n in ([note] if note else []) + ([] if c is None else c.notes()):
             rep["notes"].append(n)
+    if design.dynamics is not None and design.dynamics.dynamics.train_stiffness is not None:
+        bar.stage("the follower train's vibration")
+        v = cam.vibration
+        rep["vibration"] = None if v is None else v.to_dict()
     # one rule for every command (cams.assess): verified, and buildable (a working profile, its checks, dynamics)
     a = cam.assessment
     rep.update(a.to_dict())

@@ -144,6 +144,13 @@ class Face(ABC):
         """The contact's geometry at cam angles ``phi`` (:class:`cams.strength.along.ContactGeometry`)."""
         raise InputError("contact", f"a {self.name} follower's contact stress is not computed")
 
+    def vibration(self, design, solution: SolveResult, forces) -> Any:
+        """The elastic follower train's response (:class:`cams.dynamics.vibration.Vibration`) from the forces
+        stage's ``DesignForces`` (``forces``), or None without ``[dynamics] train_stiffness``."""
+        from cams.dynamics.vibration import design_vibration
+
+        return design_vibration(design, forces)
+
     def tradeoff(self, design) -> Any:
         """The R0-L trade-off of the cam (a rocker roller's), or None where the face has none."""
         return None

@@ -355,6 +355,18 @@ class RollerFace(Face):
 
         return roller_geometry(design, solution.centre, phi, length_unit)
 
+    def vibration(self, design, solution: SolveResult, forces):
+        from cams.dynamics.vibration import design_vibration
+
+        if forces is None and design.dynamics is not None and design.limits.closure == "form" and design.rpm:
+            # a groove: no rigid forces; the contact geometry of the forces stage with no closing spring
+            from cams.dynamics.forces import cam_forces
+            from cams.model.dynamics import Spring
+
+            dyn = design.dynamics.dynamics.with_spring(Spring(0.0, 0.0))
+            return design_vibration(design, None, cam_forces(design, solution.centre, dyn).amplification)
+        return design_vibration(design, forces)
+
     def tradeoff(self, design):
         if design.follower.kind != "rocker":
             return None

@@ -139,7 +139,7 @@ _ONLY_FLAT = {
 
 #: The keys of a design file's [dynamics] table, in their documented order.
 DYNAMICS_KEYS = ("mass", "load", "spring_rate", "preload", "friction", "face_friction", "journal_radius", "margin",
-                 "max_spring_force",
+                 "max_spring_force", "train_stiffness", "damping_ratio",
                  "min_installed_compression", "max_installed_compression", "min_installed_twist", "max_installed_twist")
 
 
@@ -519,7 +519,9 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
     ``margin`` (>= 1, default 1.2), ``max_spring_force`` (N; N m),
     ``min_installed_compression`` and ``max_installed_compression``
     (mm; translating only), ``min_installed_twist`` and
-    ``max_installed_twist`` (degrees; rocker only: radians in the spec).
+    ``max_installed_twist`` (degrees; rocker only: radians in the spec),
+    ``train_stiffness`` (N/m; N m/rad) and ``damping_ratio`` (dimensionless):
+    the elastic follower train (:mod:`cams.dynamics.vibration`).
     A spring is set when ``spring_rate`` and ``preload`` are both
     given; with only the rate, the preload is left to
     :func:`cams.dynamics.forces.spring_for_contact`.
@@ -586,6 +588,8 @@ def dynamics_from_dict(table: dict, units: str = "mm", *, follower: str | None =
             length_unit=LENGTH_UNITS[units],
             max_spring_force=v.get("max_spring_force"),
             face_friction=v.get("face_friction", 0.0),
+            train_stiffness=v.get("train_stiffness"),
+            damping_ratio=v.get("damping_ratio", 0.0),
         ),
         margin=v.get("margin", 1.2),
         rate=None if both else v.get("spring_rate"),

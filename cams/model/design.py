@@ -175,6 +175,9 @@ class Design:
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
             raise InputError("cam.rpm", f"must be > 0, got {self.rpm!r}")
+        if self.rpm is None and self.dynamics is not None and self.dynamics.dynamics.train_stiffness is not None:
+            raise InputError("cam.rpm", "is missing: [dynamics] train_stiffness (the follower train's vibration) "
+                             "needs the cam's speed; give cam.rpm (rev/min)")
         check_constraints(self.constraints)
 
     def _check_keyway(self) -> None:

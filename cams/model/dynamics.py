@@ -126,6 +126,14 @@ class FollowerDynamics:
         face and the cam, ``mu_f N`` along the face opposing the sliding
         (:mod:`cams.dynamics.flat_forces`); a roller turns freely and a roller
         design refuses it (:func:`check_dynamics_follower`).
+    train_stiffness : float or None
+        k_t > 0: the follower train's stiffness between the cam and the mass
+        ``mass`` (N/m; a rocker's torsional stiffness about its pivot, N m/rad);
+        None: a rigid follower (no vibration, :mod:`cams.dynamics.vibration`).
+    damping_ratio : float, optional
+        zeta >= 0 (dimensionless) of the train's damper, defined against the
+        total stiffness: ``zeta = c / (2 sqrt((k_t + k_s) m))``; the damper
+        acts across the train, on the relative velocity of cam and mass.
     """
 
     mass: float
@@ -136,6 +144,8 @@ class FollowerDynamics:
     length_unit: float = 1e-3
     max_spring_force: float | None = None
     face_friction: float = 0.0
+    train_stiffness: float | None = None
+    damping_ratio: float = 0.0
 
     def __post_init__(self) -> None:
         _num("dynamics.mass", self.mass, lo=0.0, strict=True)
@@ -145,6 +155,10 @@ class FollowerDynamics:
         _num("dynamics.length_unit", self.length_unit, lo=0.0, strict=True)
         _num("dynamics.max_spring_force", self.max_spring_force, lo=0.0, strict=True, allow_none=True)
         _num("dynamics.face_friction", self.face_friction, lo=0.0)
+        _num("dynamics.train_stiffness", self.train_stiffness, lo=0.0, strict=True, allow_none=True)
+        _num("dynamics.damping_ratio", self.damping_ratio, lo=0.0)
+        if self.damping_ratio and self.train_stiffness is None:
+            raise InputError("dynamics.damping_ratio", "is the follower train's damping: give train_stiffness too")
         if self.spring is not None and not isinstance(self.spring, Spring):
             raise InputError("dynamics.spring", f"must be a Spring, got {type(self.spring).__name__}")
 

@@ -84,10 +84,12 @@ class RollerPresenter(Presenter):
         print_summary(rep)
 
     pictures: ClassVar[dict[str, str]] = {"motion": "motion", "zone": "zone", "pressure": "pressure",
-                                          "profile": "profile", "forces": "forces", "contact": "contact"}
+                                          "profile": "profile", "forces": "forces", "contact": "contact",
+                                          "vibration": "vibration"}
     report_pictures: ClassVar[tuple[tuple[str, str], ...]] = (
         ("Allowable-centre zone", "zone"), ("Motion diagrams", "motion"), ("Pressure angle", "pressure"),
-        ("Cam profile", "profile"), ("Forces at the cam", "forces"), ("Contact stress and film", "contact"))
+        ("Cam profile", "profile"), ("Forces at the cam", "forces"), ("Contact stress and film", "contact"),
+        ("Follower train: vibration and dynamic contact force", "vibration"))
 
     def report_sections(self, cam):
         from cams.present.tables import roller_sections
@@ -164,11 +166,12 @@ class FlatPresenter(Presenter):
 
     pictures: ClassVar[dict[str, str]] = {"motion": "motion", "pressure": "flat_pressure",
                                           "curvature": "curvature", "profile": "profile", "forces": "forces",
-                                          "contact": "contact"}
+                                          "contact": "contact", "vibration": "vibration"}
     report_pictures: ClassVar[tuple[tuple[str, str], ...]] = (
         ("Motion diagrams", "motion"), ("Pressure angle", "flat_pressure"),
         ("Radius of curvature and contact on the face", "curvature"), ("Cam profile", "profile"),
-        ("Forces at the cam", "forces"), ("Contact stress and film", "contact"))
+        ("Forces at the cam", "forces"), ("Contact stress and film", "contact"),
+        ("Follower train: vibration and dynamic contact force", "vibration"))
 
     def report_sections(self, cam):
         from cams.present.tables import flat_sections

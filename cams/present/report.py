@@ -70,6 +70,10 @@ def _figures(cam):
             return plots.no_forces(cam) is None
         if kind == "contact":
             return plots.no_contact(cam) is None
+        if kind == "vibration":
+            from cams.present.plots import no_vibration
+
+            return no_vibration(cam) is None
         return True
 
     figs = [(title, plots.picture(kind, cam)) for title, kind in presenter(cam).report_pictures if drawn(kind)]

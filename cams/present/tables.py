@@ -70,7 +70,7 @@ def flat_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     results += [("note", n) for n in r["notes"]]
     return [("Inputs", inputs), ("Results", results), _blank_section(r, ".6f"), *_lift_table_section(cam),
             ("Checks", _check_rows(cam)), *_motion_section(cam), *_forces_section(cam),
-            *_contact_section(cam)]
+            *_contact_section(cam), *_vibration_section(cam)]
 
 
 def _part_rows(r: dict, fl: str) -> list[tuple[str, str]]:
@@ -168,7 +168,7 @@ def roller_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     results += [("note", n) for n in r["notes"] if not any(n in f for f in cam.assessment.failures)]  # said once
     return [("Inputs", inputs), ("Results", results), _blank_section(r, fl), *_lift_table_section(cam),
             ("Checks", _check_rows(cam)), *_motion_section(cam), *_forces_section(cam),
-            *_contact_section(cam)]
+            *_contact_section(cam), *_vibration_section(cam)]
 
 
 def _dynamics_inputs(d, *, sliding_face: bool = False) -> list[tuple[str, str]]:
@@ -258,6 +258,39 @@ def _forces_section(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     """The forces' table (a design with ``[dynamics]`` and forces), else nothing."""
     df = cam.forces if cam.design.dynamics is not None else None
     return [] if df is None else [("Forces at the cam", _force_rows(df, cam.design.follower.kind))]
+
+
+def _vibration_section(cam) -> list[tuple[str, list[tuple[str, str]]]]:
+    """The follower train's table (``[dynamics] train_stiffness``), else nothing."""
+    spec = cam.design.dynamics
+    v = cam.vibration if spec is not None and spec.dynamics.train_stiffness is not None else None
+    if v is None:
+        return []
+    from cams.dynamics.vibration import vibration_failure
+    from cams.words import phase_words
+
+    vi = v.to_dict()
+    dyn = spec.dynamics
+    rocker = cam.design.follower.kind == "rocker"
+    rows = [("train stiffness", f"{dyn.train_stiffness:.6g} {'N m/rad' if rocker else 'N/m'}"),
+            ("damping ratio", f"{dyn.damping_ratio:g} (against the train's and the spring's stiffness)"),
+            ("natural frequency", f"{vi['natural_frequency_hz']:.6g} Hz at {v.rpm:.6g} rpm")]
+    for p in vi["phases"]:
+        steady = "none (undamped at resonance)" if p["residual"] is None else f"{p['residual']:.4g}"
+        rows.append((phase_words(p["kind"], p["phase"]),
+                     f"period ratio λ {p['period_ratio']:.4g}; residual vibration over the height "
+                     f"{p['residual_from_rest']:.4g} from rest, {steady} in the steady state"))
+    rows.append(("dynamic contact force", f"max {force(vi['dynamic_max_contact_force'])}, "
+                 f"min {force(vi['dynamic_min_contact_force'])}"))
+    rigid = cam.forces.jump.rpm if cam.forces is not None else None
+    from cams.dynamics.jump import jump_text
+
+    rows.append(("jump speed, elastic / rigid",
+                 ("none found" if vi["dynamic_jump_rpm"] is None else f"{vi['dynamic_jump_rpm']:.6g} rpm")
+                 + " / " + ("- (form closure)" if rigid is None else jump_text(rigid))))
+    why = vibration_failure(v)
+    rows.append(("contact lost", "no" if why is None else why.removeprefix("dynamics: ")))
+    return [("Follower train: vibration", rows)]
 
 
 def _force_rows(df, df_kind: str = "translating") -> list[tuple[str, str]]:

@@ -138,6 +138,7 @@ def print_summary(rep: dict) -> None:
         print_cam_forces(fo, follower=rep["follower"])
     if rep.get("contact"):
         print_contact(rep["contact"])
+    print_vibration(rep)
     failures = rep.get("failures", ())
     for n in rep["notes"]:
         said = any(n in f for f in failures) or (  # said once, on its FAIL line
@@ -213,6 +214,18 @@ def print_optimization(o: dict, R0: float | None = None) -> None:
     print("  motion design:")
     for label, value in optimization_rows(o, R0):
         print(f"    {label}: {value}")
+
+
+def print_vibration(rep: dict, indent: str = "  ") -> None:
+    """The ``vibration`` part of a report (the elastic follower train), when there is one."""
+    vi = rep.get("vibration")
+    if not vi:
+        return
+    from cams.dynamics.vibration import vibration_lines
+
+    fo = rep.get("forces") or {}
+    for line in vibration_lines(vi, rigid_jump_rpm=fo.get("jump_rpm"), indent=indent):
+        print(line)
 
 
 def print_cam_forces(fo: dict, indent: str = "  ", *, follower: str = "translating") -> None:
@@ -315,6 +328,7 @@ def print_flat_summary(rep: dict) -> None:
         print_cam_forces(fo, follower=rep["follower"])
     if rep.get("contact"):
         print_contact(rep["contact"])
+    print_vibration(rep)
     for n in rep["notes"]:
         print(f"  note: {n}")
 

@@ -108,6 +108,9 @@ TRANSLATING = {
 TRANSLATING_SPRING = {**TRANSLATING, "cam": {"rpm": 300},
                       "dynamics": {"mass": 0.5, "load": 5.0, "min_installed_compression": 5.0,
                                    "max_installed_compression": 25.0}}
+#: a translating roller with an elastic follower train (its keys need cam.rpm)
+TRANSLATING_TRAIN = {**TRANSLATING, "cam": {"rpm": 300},
+                     "dynamics": {"mass": 0.5, "load": 5.0, "train_stiffness": 2.0e5, "damping_ratio": 0.05}}
 FLAT_ROCKER = {
     "follower": {"kind": "rocker", "face": "flat", "swing": 15.0, "centre_distance": 120.0, "face_offset": 0.0},
     "cam": {"rpm": 60, "bore_radius": 5.0, "base_radius": 80.0},
@@ -209,6 +212,7 @@ HOMES = {
     ("`[profile]`", "", "min_curvature_radius"): (ROCKER_FORM, "profile.min_curvature_radius"),
     **{("`[dynamics]`", "", k): (ROCKER_FORCE, f"dynamics.{k}") for k in ROCKER_FORCE["dynamics"]},
     ("`[dynamics]`", "", "face_friction"): (FLAT_ROCKER_FORCE, "dynamics.face_friction"),
+    **{("`[dynamics]`", "", k): (TRANSLATING_TRAIN, f"dynamics.{k}") for k in ("train_stiffness", "damping_ratio")},
     **{("`[dynamics]`", "", k): (ROCKER_SPRING, f"dynamics.{k}") for k in ("min_installed_twist", "max_installed_twist")},
     **{("`[dynamics]`", "", k): (TRANSLATING_SPRING, f"dynamics.{k}")
        for k in ("min_installed_compression", "max_installed_compression")},

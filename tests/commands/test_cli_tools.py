@@ -36,6 +36,7 @@ def test_report_html_and_pdf(tmp_path, capsys, example):
     pictures = 4 + (cam.forces is not None if cam.design.dynamics is not None else 0)  # forces with [dynamics]
     pictures += getattr(cam.solution, "optimization", None) is not None  # a motion design adds its own
     pictures += cam.design.contact is not None and cam.contact is not None  # [contact]: p0 and the film
+    pictures += cam.vibration is not None  # a follower train's vibration
     pdf = (tmp_path / "report.pdf").read_bytes()
     assert pdf[:5] == b"%PDF-"
     with pdfplumber.open(tmp_path / "report.pdf") as doc:

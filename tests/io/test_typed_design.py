@@ -56,6 +56,11 @@ BUILT = {
     "translating_force": CamDesign(
         Translating(8.0, stroke_scale=30.0), program(30.0, *_cycle("poly4567", 150, 30, "cycloidal", 120)),
         Limits(np.radians(30.0)), cam_sense=CCW, name="translating roller cam"),
+    "translating_train": CamDesign(
+        Translating(8.0, stroke_scale=30.0), program(30.0, *_cycle("poly4567", 150, 30, "cycloidal", 120)),
+        Limits(np.radians(30.0)), cam_sense=CCW, rpm=300.0, name="translating roller cam with a train",
+        dynamics=DynamicsSpec(FollowerDynamics(0.5, load=5.0, train_stiffness=2.0e5, damping_ratio=0.05),
+                              margin=1.5)),
     "translating_designed_rise": CamDesign(
         Translating(8.0, stroke_scale=30.0), program(30.0, *_cycle("poly4567", 150, 30, "cycloidal", 120)),
         Limits(np.radians(30.0)), cam_sense=CCW, name="translating roller cam, rise designed",
@@ -120,7 +125,8 @@ def test_an_example_built_in_python_is_the_file_s_design(name):
 
 
 @pytest.mark.parametrize("name", ["rocker_force", "slotting_feed_cam", "translating_flat", "rocker_flat",
-                                  "translating_designed_rise", "rocker_contact", "translating_flat_contact"])
+                                  "translating_designed_rise", "rocker_contact", "translating_flat_contact",
+                                  "translating_train"])
 def test_an_example_built_in_python_gives_the_file_s_outputs(name):
     a, b = Cam(BUILT[name]), Cam(load_design(EXAMPLES / f"{name}.toml"))
     assert _solved(a) == _solved(b)
@@ -130,6 +136,8 @@ def test_an_example_built_in_python_gives_the_file_s_outputs(name):
         assert a.forces.to_dict() == b.forces.to_dict()
     if a.contact is not None or b.contact is not None:
         assert a.contact.to_dict() == b.contact.to_dict()
+    if a.vibration is not None or b.vibration is not None:
+        assert a.vibration.to_dict() == b.vibration.to_dict()
 
 
 def _solved(cam: Cam) -> dict:
