@@ -126,7 +126,9 @@ class Cam:
     @cached_property
     def _contact(self):
         """``(ContactCycle or None, note or None)`` of the face's contact stage, computed once."""
-        return self.face.contact(self.design, self.solution, self.forces)
+        c = self.design.contact
+        elastic = c is not None and c.force_model == "elastic"
+        return self.face.contact(self.design, self.solution, self.forces, self.vibration if elastic else None)
 
     @property
     def contact(self):

@@ -103,10 +103,12 @@ class Face(ABC):
         """``(DesignForces or None, note or None)``: the ``[dynamics]`` table's spring, forces and jump speed."""
         return None, None
 
-    def contact(self, design, solution: SolveResult, forces: Any) -> tuple[Any, str | None]:
+    def contact(self, design, solution: SolveResult, forces: Any, vibration: Any = None) -> tuple[Any, str | None]:
         """``(ContactCycle or None, note or None)``: the ``[contact]`` table's stresses, film and life along the
-        cycle (:mod:`cams.strength.along`) under the contact force of ``forces`` (:meth:`forces`' DesignForces;
-        ``force_model = "rigid"``). None without ``[contact]``; None with a note without forces."""
+        cycle (:mod:`cams.strength.along`) under the contact force ``[contact] force_model`` names: ``"rigid"``,
+        that of ``forces`` (:meth:`forces`' DesignForces); ``"elastic"``, the follower train's dynamic one of
+        ``vibration`` (:meth:`vibration`'s, at its periodic steady state; where it falls below 0 the contact is
+        lost and taken as unloaded). None without ``[contact]``; None with a note without forces."""
         if design.contact is None:
             return None, None
         if forces is None:
@@ -114,6 +116,11 @@ class Face(ABC):
         from cams.strength.along import contact_cycle
 
         f = forces.forces
+        if design.contact.force_model == "elastic":
+            if vibration is None:
+                return None, "[contact] force_model = 'elastic' needs the follower train's response"
+            return contact_cycle(design, self.contact_geometry(design, solution, vibration.phi, f.length_unit),
+                                 vibration.contact, vibration.omega), None
         return contact_cycle(design, self.contact_geometry(design, solution, f.phi, f.length_unit), f.contact,
                              f.omega), None
 
@@ -129,7 +136,8 @@ class Face(ABC):
         if allowable is None:
             return None
         forces, _ = self.forces(design, solution)
-        cycle, _ = self.contact(design, solution, forces)
+        elastic = design.contact.force_model == "elastic" and forces is not None
+        cycle, _ = self.contact(design, solution, forces, self.vibration(design, solution, forces) if elastic else None)
         if cycle is None:
             return None
         from cams.checks.base import Check

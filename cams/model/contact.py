@@ -35,7 +35,7 @@ CONTACT_KEYS = (
     "force_model",
 )
 #: The contact forces the stresses may be computed on: the rigid (kinetostatic) force of :mod:`cams.dynamics`.
-FORCE_MODELS = ("rigid",)
+FORCE_MODELS = ("rigid", "elastic")
 
 
 @dataclass(frozen=True)
@@ -67,8 +67,10 @@ class ContactSpec:
         ``"basic"``: ISO 281's basic dynamic rating C; ``"track_roller"``: the catalogue's effective rating.
     life_hours : float or None
         The bearing's target L10 life (hours, > 0); needs ``bearing_rating``.
-    force_model : {"rigid"}
-        The contact force the stresses are computed on: the rigid one of the ``[dynamics]`` table.
+    force_model : {"rigid", "elastic"}
+        The contact force the stresses are computed on: ``"rigid"``, the rigid (kinetostatic) one of the
+        ``[dynamics]`` table; ``"elastic"``, the follower train's dynamic one at its periodic steady state
+        (:mod:`cams.dynamics.vibration`; needs ``[dynamics] train_stiffness``).
     """
 
     cam_material: str | None = None
@@ -121,8 +123,7 @@ class ContactSpec:
         if self.force_model not in FORCE_MODELS:
             raise InputError(
                 "contact.force_model",
-                f"must be one of {', '.join(FORCE_MODELS)} (the elastic "
-                f"contact force is not computed yet), got {self.force_model!r}",
+                f"must be one of {', '.join(FORCE_MODELS)}, got {self.force_model!r}",
             )
         if self.life_hours is not None and self.bearing_rating is None:
             raise InputError(

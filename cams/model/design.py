@@ -171,6 +171,10 @@ class Design:
                 raise InputError("contact", f"must be a ContactSpec, got {type(self.contact).__name__}")
             if self.width is None:
                 raise InputError("cam.width", "the contact stress needs the cam's face width: give cam.width (mm)")
+            train = self.dynamics is not None and self.dynamics.dynamics.train_stiffness is not None
+            if self.contact.force_model == "elastic" and not train:
+                raise InputError("contact.force_model", "'elastic' takes the follower train's dynamic contact force: "
+                                 "give [dynamics] train_stiffness, or force_model = 'rigid'")
         if self.cam_sense not in (1, -1):
             raise InputError("cam.rotation", "must be 'cw' or 'ccw'")
         if self.rpm is not None and not (np.isfinite(self.rpm) and self.rpm > 0):
