@@ -9,8 +9,9 @@ Writes ``export_motion.json`` into ``--out``: for ``examples/rocker_force.toml``
 written by the product's exporter, read back (:mod:`cams.manufacture.readback`) and followed exactly
 (:func:`cams.kinematics.exported.export_motion`): the largest errors of displacement, velocity and acceleration
 against the law (per radian of cam angle; a rocker's in degrees), the acceleration's share of the law's peak, the
-number of elements and the time of the measure. The curves are those the exporters draw: the polyline, and the
-arcs and the spline where the DXF and SVG writers take a ``curve``. ``--quick``: one example, one tolerance.
+number of elements and the time of the measure. The curves are those ``cams profile --curve`` draws: the arcs, the
+spline (:func:`cams.manufacture.curves.fit_curves`) and the polyline.
+``--quick``: one example, one tolerance, no spline.
 """
 
 from __future__ import annotations
@@ -21,7 +22,6 @@ for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_v, "1")  # one core per process: must precede the first numpy import
 
 import argparse  # noqa: E402
-import inspect  # noqa: E402
 import json  # noqa: E402
 import sys  # noqa: E402
 import tempfile  # noqa: E402
@@ -38,14 +38,13 @@ from bench_solvers import machine  # noqa: E402
 EXAMPLES = ("rocker_force.toml", "translating_force.toml")
 
 
-def curves_of(writer) -> tuple[str, ...]:
-    """The curves a writer draws: ``("polyline",)``, or the three when it takes a ``curve``."""
-    return ("arcs", "spline", "polyline") if "curve" in inspect.signature(writer).parameters else ("polyline",)
+CURVES = ("arcs", "spline", "polyline")
 
 
-def run(examples: tuple[str, ...], tolerances: list[float]) -> dict[str, Any]:
+def run(examples: tuple[str, ...], tolerances: list[float], curves: tuple[str, ...] = CURVES) -> dict[str, Any]:
     from cams.cam import Cam
     from cams.kinematics.exported import export_motion
+    from cams.manufacture.curves import fit_curves
     from cams.manufacture.dxf import write_dxf
     from cams.manufacture.motion import export_entry
     from cams.manufacture.readback import read_profile
@@ -58,9 +57,10 @@ def run(examples: tuple[str, ...], tolerances: list[float]) -> dict[str, Any]:
         design, sol = cam.design, cam.solution
         for tol in tolerances:
             prof = cam.face.profile(design, sol, profile_options(design, tolerance=tol))
-            for fmt, writer in (("dxf", write_dxf), ("svg", write_svg)):
-                for curve in curves_of(writer):
-                    kw = {"curve": curve} if len(curves_of(writer)) > 1 else {}
+            exact = cam.face.exact(design, sol)
+            for curve in curves:
+                kw = {"curves": fit_curves(exact, prof.tolerance, curve)}
+                for fmt, writer in (("dxf", write_dxf), ("svg", write_svg)):
                     with tempfile.TemporaryDirectory() as tmp:
                         path = writer(prof, Path(tmp) / f"cam.{fmt}", **kw)
                         t0 = time.perf_counter()
@@ -85,12 +85,13 @@ def run(examples: tuple[str, ...], tolerances: list[float]) -> dict[str, Any]:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--tolerances", type=float, nargs="+", default=[0.01, 0.001, 0.0001])
-    ap.add_argument("--quick", action="store_true", help="one example (translating), one tolerance (0.01 mm)")
+    ap.add_argument("--tolerances", type=float, nargs="+", default=[0.01, 0.001])
+    ap.add_argument("--quick", action="store_true",
+                    help="one example (translating), one tolerance (0.01 mm), arcs and polyline (no spline)")
     ap.add_argument("--out", type=Path, default=ROOT / "benchmarks" / "results")
     a = ap.parse_args(argv)
     examples = EXAMPLES[1:] if a.quick else EXAMPLES
-    res = run(examples, [0.01] if a.quick else a.tolerances)
+    res = run(examples, [0.01] if a.quick else a.tolerances, ("arcs", "polyline") if a.quick else CURVES)
     a.out.mkdir(parents=True, exist_ok=True)
     (a.out / "export_motion.json").write_text(json.dumps(res, indent=2) + "\n", encoding="utf-8")
     print(f"wrote {a.out / 'export_motion.json'}")

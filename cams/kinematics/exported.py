@@ -849,7 +849,8 @@ def _start_curvature(e: Element) -> float:
 def _joint_turns(elements: list[Element]) -> np.ndarray:
     """The angle (radians, >= 0) by which the closed chain's tangent turns at each element's start (the joint with
     the element before it)."""
-    tangents = [_end_tangents(e) for e in elements]
+    with np.errstate(divide="ignore", invalid="ignore"):  # a zero-length line: no tangent, NaN, a corner
+        tangents = [_end_tangents(e) for e in elements]
     out = np.zeros(len(tangents))
     for i, (t_start, _) in enumerate(tangents):
         t_prev = tangents[i - 1][1]

@@ -11,7 +11,11 @@ profile, a groove's outer wall, the pitch curve), one of
   have the same length ``d``: ``Q0 = P0 + d T0``, ``Q1 = P1 - d T1``, ``|Q1 - Q0| = 2 d``, the joint the middle of
   ``Q0 Q1``; Meek and Walton, "Approximating smooth planar curves by arc splines", J. Comput. Appl. Math. 59
   (1995); Bolton, "Biarc curves", Computer-Aided Design 7 (1975)). A span whose certified distance exceeds the
-  tolerance is halved in its curve's parameter, and its halves fitted again;
+  tolerance is halved in its curve's parameter, and its halves fitted again; so is a span whose arcs' curvature
+  strays from the curve's by more than ``CURVATURE_SHARE (tolerance / size)^(1/3)`` of ``|curvature| + 1/size``
+  (the curve's turn between samples over their arc length; a rule of the fit, not part of the certificate): the
+  follower's acceleration follows the path's curvature, which biarcs fitted by distance alone leave in steps that
+  fall only as their length (:mod:`cams.kinematics.exported` measures what the written curve gives);
 * **spline** (:func:`fit_spline`): one periodic cubic B-spline interpolating exact points of the curve
   (chord-length parameter, C2 everywhere including the seam at cam angle 0), with a point added in the middle
   of every span whose certified distance exceeds the tolerance, and fitted again.
@@ -65,6 +69,10 @@ CURVES = ("arcs", "spline", "polyline")
 SAMPLES = 32
 #: The most elements of one curve (arcs, spline spans): guards against endless refinement at a cusp or a corner.
 MAX_ELEMENTS = 200_000
+#: The arcs' curvature follows the curve's within ``CURVATURE_SHARE (tolerance / size)^(1/3)`` of it (relative to
+#: ``|curvature| + 1/size``): the follower's acceleration is the path's curvature, which a fit by distance alone
+#: leaves piecewise constant with steps that fall only as the arcs' length (module notes).
+CURVATURE_SHARE = 0.3
 
 
 @dataclass(frozen=True, eq=False)
@@ -276,6 +284,30 @@ def _certify_biarcs(curve, piece, ua, ub, P0, T0, J, TJ, P1):
     return worst, b1, k1, b2, k2
 
 
+def _size(curve: ExactCurve) -> float:
+    """The curve's size (mm): its largest distance from the cam centre, on a coarse sampling of its pieces."""
+    u = np.linspace(0.0, 1.0, 9)
+    pts = [p.evaluate(u)[0] for p in curve.pieces]
+    return float(max(np.max(np.hypot(q[:, 0], q[:, 1])) for q in pts)) or 1.0
+
+
+def _curvature_error(curve, piece, ua, ub, J, TJ, k1, k2, size: float) -> np.ndarray:
+    """Per span, the largest difference between the curve's curvature (the turn of its exact tangent over the arc
+    length between samples) and the curvature of the biarc's arc on that side of the joint, relative to
+    ``|curvature| + 1 / size``."""
+    s = np.linspace(0.0, 1.0, SAMPLES + 1)
+    uu = ua[:, None] + (ub - ua)[:, None] * s[None]
+    X, T = _evaluate(curve, np.repeat(piece[:, None], SAMPLES + 1, 1), uu)
+    theta = np.unwrap(np.arctan2(T[..., 1], T[..., 0]), axis=1)
+    ds = np.hypot(*np.moveaxis(np.diff(X, axis=1), -1, 0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        kap = np.where(ds > 0, np.diff(theta, axis=1) / ds, 0.0)
+    mid = 0.5 * (X[:, 1:] + X[:, :-1])
+    second = _dot(mid - J[:, None], TJ[:, None]) > 0
+    k_arc = np.where(second, k2[:, None], k1[:, None])
+    return np.max(np.abs(kap - k_arc) / (np.abs(kap) + 1.0 / size), axis=1)
+
+
 def fit_arcs(curve: ExactCurve, tolerance: float, *, field: str = "--curve") -> ArcChain:
     """Fit a closed chain of biarcs to ``curve`` within ``tolerance`` (mm), certified (the module's notes).
 
@@ -286,6 +318,8 @@ def fit_arcs(curve: ExactCurve, tolerance: float, *, field: str = "--curve") -> 
         within it (a cusp of an undercut profile).
     """
     n0 = [8 if p.kind == "curve" else 1 for p in curve.pieces]
+    size = _size(curve)
+    share = CURVATURE_SHARE * (tolerance / size) ** (1.0 / 3.0)
     piece = np.concatenate([np.full(n, k) for k, n in enumerate(n0)])
     ua = np.concatenate([np.arange(n) / n for n in n0])
     ub = np.concatenate([np.arange(1, n + 1) / n for n in n0])
@@ -295,9 +329,11 @@ def fit_arcs(curve: ExactCurve, tolerance: float, *, field: str = "--curve") -> 
             break
         (P0, T0), (P1, T1) = _evaluate(curve, piece, ua), _evaluate(curve, piece, ub)
         J, TJ = _biarc(P0, T0, P1, T1)
-        worst, b1, _, b2, _ = _certify_biarcs(curve, piece, ua, ub, P0, T0, J, TJ, P1)
+        worst, b1, k1, b2, k2 = _certify_biarcs(curve, piece, ua, ub, P0, T0, J, TJ, P1)
         bad = ~(worst <= tolerance)
         stuck = bad & ((ub - ua) < 1e-9)
+        # the motion: a span is halved too while its arcs' curvature strays from the curve's (module notes)
+        bad |= (_curvature_error(curve, piece, ua, ub, J, TJ, k1, k2, size) > share) & ((ub - ua) > 1e-6)
         if np.any(stuck):
             raise InputError(
                 field,

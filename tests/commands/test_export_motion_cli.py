@@ -233,3 +233,16 @@ def test_an_svg_of_tangent_arcs_moves_the_follower_as_its_dxf(tmp_path, capsys):
     for key in ("max_ds", "max_dv", "max_da"):
         assert svg[key] == pytest.approx(dxf[key], rel=1e-6)
     assert svg["max_da_ratio"] < 1.0
+
+
+def test_rocker_force_arcs_keep_the_motion_where_its_polyline_cannot(tmp_path, capsys):
+    """Issue 25, done when: the arcs of rocker_force at the default tolerance move the follower within a few
+    percent of the law's peak acceleration (their curvature kept near the curve's: curves.CURVATURE_SHARE), while
+    the polyline's error, the roller rounding each vertex, is reported as what it is: several times the peak."""
+    rc, out, _ = _run(capsys, EXAMPLES / "rocker_force.toml", "--dxf", tmp_path / "a.dxf", "--curve", "arcs", "--json")
+    (arcs,) = json.loads(out)["export_motion"]
+    rc2, out, _ = _run(capsys, EXAMPLES / "rocker_force.toml", "--dxf", tmp_path / "p.dxf", "--json")
+    (poly,) = json.loads(out)["export_motion"]
+    assert rc == rc2 == 0 and arcs["curve"] == "arcs" and poly["curve"] == "polyline"
+    assert arcs["tolerance"] == poly["tolerance"] == pytest.approx(0.001)
+    assert arcs["max_da_ratio"] < 0.05 < 1.0 < poly["max_da_ratio"]
