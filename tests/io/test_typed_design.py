@@ -74,6 +74,11 @@ BUILT = {
         Limits(np.radians(40.0)), cam_sense=CCW, rpm=60.0, name="slotting machine feed cam",
         dynamics=DynamicsSpec(FollowerDynamics(0.003, load=0.5, friction=0.1, journal_radius=8.0), margin=1.5,
                               rate=3.0)),
+    "slotting_feed_cam_train": CamDesign(
+        Rocker(125.0, 15.0, sense=CW), program(np.radians(15.0), *_cycle("parabolic", 60, 10, "harmonic", 60)),
+        Limits(np.radians(40.0)), cam_sense=CCW, rpm=60.0, name="slotting machine feed cam with its follower train",
+        dynamics=DynamicsSpec(FollowerDynamics(0.003, load=0.5, friction=0.1, journal_radius=8.0,
+                                               train_stiffness=2000.0, damping_ratio=0.02), margin=1.5, rate=3.0)),
     "translating_flat": FlatFaceDesign(
         FlatTranslating(0.0, stroke_scale=20.0), program(20.0, *_cycle("cycloidal", 120, 60, "poly345", 120)),
         min_radius=10.0, cam_sense=CCW, rpm=120.0, name="translating flat-face cam",

@@ -37,6 +37,8 @@ def _drawn_texts(fig):
             continue
         texts += [ax.title, ax._left_title, ax._right_title, ax.xaxis.label, ax.yaxis.label, *ax.texts]
         for axis in (ax.xaxis, ax.yaxis):
+            if not axis.get_visible():  # a twin's shared axis: hidden, its labels not drawn
+                continue
             texts += [t.label1 for t in axis._update_ticks()] + [axis.get_offset_text()]
         if ax.get_legend() is not None:
             texts += ax.get_legend().get_texts()
