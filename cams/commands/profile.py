@@ -246,7 +246,9 @@ def run(args) -> int:
             drawing["curves"] = fit_curves(exact, prof.tolerance, args.curve)
         # a suggested bore is not drawn: only a given one
         failing = "" if a.usable else "; ".join(a.failures)
-        measured = _measured(args, cam, prof, opts.bore_radius, failing, drawing)
+        # a failing cam's drawings (--allow-failed: an undercut, a crossing profile) are written, not followed:
+        # the motion of a curve that is not a cam's profile is no measure of the export
+        measured = _measured(args, cam, prof, opts.bore_radius, failing, drawing) if a.usable else []
         written = _write(args, cam, prof, opts.bore_radius, failing=failing, drawing=drawing)
         rep["export_motion"] = [entry for entry, _ in measured]
     rep["written"] = written

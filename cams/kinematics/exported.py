@@ -282,7 +282,8 @@ class _Elements:
         # curvature (positive turning left) and tangent at its start are kept
         self.smooth = _joint_turns(self.items) <= SMOOTH_JOINT
         self.kappa = np.array([_start_curvature(e) for e in self.items])
-        self.tangent = np.array([_end_tangents(e)[0] for e in self.items]).reshape(-1, 2)
+        with np.errstate(divide="ignore", invalid="ignore"):  # a zero-length line: no tangent (a corner)
+            self.tangent = np.array([_end_tangents(e)[0] for e in self.items]).reshape(-1, 2)
         kinds = np.array([0 if isinstance(e, Line) else 1 if isinstance(e, Arc) else 2 for e in self.items])
         self.lines, self.arcs, self.splines = (np.flatnonzero(kinds == k) for k in range(3))
         self.la = np.zeros((len(self.items), 2))

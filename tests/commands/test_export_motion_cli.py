@@ -246,3 +246,15 @@ def test_rocker_force_arcs_keep_the_motion_where_its_polyline_cannot(tmp_path, c
     assert rc == rc2 == 0 and arcs["curve"] == "arcs" and poly["curve"] == "polyline"
     assert arcs["tolerance"] == poly["tolerance"] == pytest.approx(0.001)
     assert arcs["max_da_ratio"] < 0.05 < 1.0 < poly["max_da_ratio"]
+
+
+def test_a_failing_cam_written_anyway_is_not_followed(tmp_path, capsys):
+    """--allow-failed writes an undercut cam's drawings, marked; their curve is not a cam's working profile, so no
+    motion is measured on it (export_motion is empty)."""
+    from tests.commands.test_outputs_usable import UNDERCUT
+
+    f = tmp_path / "undercut.toml"
+    f.write_text(UNDERCUT, encoding="utf-8")
+    rc, out, _ = _run(capsys, f, "--dxf", tmp_path / "u.dxf", "--allow-failed", "--json")
+    rep = json.loads(out)
+    assert rc == 1 and (tmp_path / "u.dxf").exists() and rep["export_motion"] == []
