@@ -14,13 +14,12 @@ import datetime
 import re
 
 import numpy as np
+import pdfplumber  # the test extra installs it
 import pytest
 
-pdfplumber = pytest.importorskip("pdfplumber")
-
-from cams.cam import Cam  # noqa: E402
-from cams.cli import main  # noqa: E402
-from tests.conftest import EXAMPLES  # noqa: E402
+from cams.cam import Cam
+from cams.cli import main
+from tests.conftest import EXAMPLES
 
 MM = 72 / 25.4
 A4 = (210 * MM, 297 * MM)
