@@ -63,18 +63,10 @@ def _figures(cam):
     from cams.present import plots
     from cams.present.faces import presenter
 
-    def drawn(kind: str) -> bool:
+    def drawn(kind: str) -> bool:  # the pictures that need their data: the one table of plots.NEEDS
         if kind == "profile":
             return cam.face.no_profile(cam.design) is None
-        if kind == "forces":
-            return plots.no_forces(cam) is None
-        if kind == "contact":
-            return plots.no_contact(cam) is None
-        if kind == "vibration":
-            from cams.present.plots import no_vibration
-
-            return no_vibration(cam) is None
-        return True
+        return plots.missing(kind, cam) is None
 
     figs = [(title, plots.picture(kind, cam)) for title, kind in presenter(cam).report_pictures if drawn(kind)]
     if cam.solution.optimization is not None:

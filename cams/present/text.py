@@ -131,14 +131,7 @@ def print_summary(rep: dict) -> None:
     print(f"  {bound}{verified_words(rep)}; {duration(rep['seconds'])}")
     for line in peaks_lines(rep, rep.get("rpm")):
         print(line)
-    if rep.get("optimize"):
-        print_optimization(rep["optimize"], rep.get("R0"))
-    fo = rep.get("forces")
-    if fo:
-        print_cam_forces(fo, follower=rep["follower"])
-    if rep.get("contact"):
-        print_contact(rep["contact"])
-    print_vibration(rep)
+    print_designed_and_at_speed(rep)
     failures = rep.get("failures", ())
     for n in rep["notes"]:
         said = any(n in f for f in failures) or (  # said once, on its FAIL line
@@ -214,6 +207,19 @@ def print_optimization(o: dict, R0: float | None = None) -> None:
     print("  motion design:")
     for label, value in optimization_rows(o, R0):
         print(f"    {label}: {value}")
+
+
+def print_designed_and_at_speed(rep: dict) -> None:
+    """The part of a solve's summary both faces share: the motion design's certificate (``[optimize]``), the
+    forces (``[dynamics]``), the contact (``[contact]``) and the follower train's vibration, each when present."""
+    if rep.get("optimize"):
+        print_optimization(rep["optimize"], rep.get("R0"))
+    fo = rep.get("forces")
+    if fo:
+        print_cam_forces(fo, follower=rep["follower"])
+    if rep.get("contact"):
+        print_contact(rep["contact"])
+    print_vibration(rep)
 
 
 def print_vibration(rep: dict, indent: str = "  ") -> None:
@@ -321,14 +327,7 @@ def print_flat_summary(rep: dict) -> None:
     print(f"  {verified_words(rep)}; {duration(rep['seconds'])}")
     for line in peaks_lines(rep, rep.get("rpm")):
         print(line)
-    if rep.get("optimize"):
-        print_optimization(rep["optimize"], rep.get("R0"))
-    fo = rep.get("forces")
-    if fo:
-        print_cam_forces(fo, follower=rep["follower"])
-    if rep.get("contact"):
-        print_contact(rep["contact"])
-    print_vibration(rep)
+    print_designed_and_at_speed(rep)
     for n in rep["notes"]:
         print(f"  note: {n}")
 
