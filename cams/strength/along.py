@@ -21,6 +21,7 @@ from cams.model.contact import ContactSpec
 from cams.strength import film, hertz, life
 from cams.strength.materials import material
 from laws.errors import InputError
+from laws.units import omega_to_rpm
 
 __all__ = [
     "ContactGeometry",
@@ -477,7 +478,7 @@ def contact_cycle(design, geometry: ContactGeometry, force, omega: float) -> Con
         turns = np.abs(geometry.roller_turns) * dphi
         per_rev = float(np.sum(turns))
         if spec.bearing_rating is not None:
-            rpm = omega * 60.0 / (2.0 * np.pi)
+            rpm = omega_to_rpm(omega)
             hours = life.life_hours(float(spec.bearing_rating), N, turns, per_rev, rpm)
     elif spec.bearing_rating is not None:
         raise InputError("contact.bearing_rating", "applies to a roller follower's bearing; a flat face has none")
@@ -501,5 +502,5 @@ def contact_cycle(design, geometry: ContactGeometry, force, omega: float) -> Con
         spec=spec,
         life_hours=hours,
         roller_turns_per_rev=per_rev,
-        rpm=omega * 60.0 / (2.0 * np.pi),
+        rpm=omega_to_rpm(omega),
     )
