@@ -1,0 +1,302 @@
+"""The sweep's engine: chunks of combinations submitted to an executor, rows handed on as each chunk completes.
+
+Three seams, each one function:
+
+- :func:`executor` ``(spec, workers)``: a context manager yielding ``(executor, stop)``, a
+  :class:`concurrent.futures.Executor` and a function that cancels everything now (the pending chunks and the
+  running ones: Ctrl-C). ``spec`` None is this machine (a process pool; one worker: this process); another
+  ``spec`` is handed to ``cams.sweep.cluster.executor(spec, workers)``, which has the same shape (a Dask cluster:
+  ``Client.get_executor()`` is such an executor).
+- :func:`evaluate`: one chunk, in a worker: its designs built (:func:`build`), then sized together
+  (:func:`size`). A batch solver plugs in at :func:`size`, which takes every design of the chunk at once; today
+  each design is sized by itself (``per_design``, the comparison path).
+- :func:`run`: the loop. At most two chunks per worker are in flight, so an interrupted sweep loses at most
+  those; each completed chunk's rows go to ``sink(rows)`` at once.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+import signal
+import time
+from collections.abc import Callable, Iterable, Iterator
+from concurrent.futures import FIRST_COMPLETED, Executor, Future, ProcessPoolExecutor, wait
+from typing import Any
+
+from cams.sweep.grid import Grid
+from cams.sweep.output import COLUMNS
+from laws.errors import CamsError, InputError, SolverError
+
+__all__ = ["MAX_WORKERS_PER_CPU", "executor", "build", "size", "evaluate", "run", "chunk_size"]
+
+#: At most this many processes per core (and never more than designs).
+MAX_WORKERS_PER_CPU = 4
+
+#: Seconds of work a chunk aims at (rows reach the file about this often per worker).
+CHUNK_S = 2.0
+#: At most this many designs in one chunk.
+MAX_CHUNK = 64
+
+
+def _ignore_sigint() -> None:
+    """In the workers: Ctrl-C is the parent's to handle (it stops the pool); no traceback per process."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if hasattr(signal, "pthread_sigmask"):
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+
+
+@contextlib.contextmanager
+def _sigint_held():
+    """Hold SIGINT back (POSIX) while the pool forks its workers, so that none gets it before ignoring it."""
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
+def _stop(ex: ProcessPoolExecutor) -> None:
+    """Shut the pool down now: cancel the pending designs, end the running ones."""
+    procs = list((getattr(ex, "_processes", None) or {}).values())
+    for p in procs:
+        if p.is_alive():
+            p.terminate()
+    ex.shutdown(wait=True, cancel_futures=True)
+
+
+class _Here(Executor):
+    """One worker: the chunks run in this process when submitted (Ctrl-C reaches them directly)."""
+
+    def submit(self, fn, /, *args, **kwargs):  # type: ignore[override]
+        f: Future = Future()
+        try:
+            f.set_result(fn(*args, **kwargs))
+        except Exception as e:  # noqa: BLE001  # a fault of the product, passed on by the loop
+            f.set_exception(e)
+        return f
+
+
+class _Pool(ProcessPoolExecutor):
+    """A process pool whose workers ignore Ctrl-C; its workers start with SIGINT held back."""
+
+    def submit(self, fn, /, *args, **kwargs):  # type: ignore[override]
+        with _sigint_held():  # a Ctrl-C while a worker starts reaches this process only, just after
+            return super().submit(fn, *args, **kwargs)
+
+
+@contextlib.contextmanager
+def executor(spec: str | None, workers: int) -> Iterator[tuple[Executor, Callable[[], None]]]:
+    """The executor the sweep runs on, and how to stop it now.
+
+    Parameters
+    ----------
+    spec : str or None
+        None: this machine, ``workers`` processes (one: this process). Else a cluster, handed to
+        ``cams.sweep.cluster.executor(spec, workers)`` (same shape as this function).
+    workers : int
+
+    Yields
+    ------
+    (executor, stop)
+        ``stop()`` cancels the pending chunks and ends the running ones; leaving the block normally waits for
+        nothing left.
+    """
+    if spec is not None:
+        from cams.sweep import cluster  # type: ignore[attr-defined]  # the cluster's module (optional extra)
+
+        with cluster.executor(spec, workers) as pair:
+            yield pair
+        return
+    if workers == 1:
+        yield _Here(), lambda: None
+        return
+    ex = _Pool(max_workers=workers, initializer=_ignore_sigint)
+    try:
+        yield ex, lambda: _stop(ex)
+    finally:
+        ex.shutdown(wait=True, cancel_futures=True)
+
+
+def _empty(head: dict) -> dict:
+    row = dict(head)
+    row.update({c: None for c in COLUMNS})
+    return row
+
+
+def build(grid: Grid, indexes: Iterable[int]) -> list[tuple[dict, Any]]:
+    """The designs of combinations ``indexes``: ``(row, design)`` each, the row holding ``index``, ``file``, the
+    keys' values and empty results; ``design`` None where the design file's dict is refused (the row's
+    ``error`` says why)."""
+    from cams.io.designfile import design_from_dict
+
+    out = []
+    for i in indexes:
+        d, head = grid.design_dict(i)
+        row = _empty(head)
+        try:
+            out.append((row, design_from_dict(d)))
+        except CamsError as e:
+            row["error"] = str(e)
+            out.append((row, None))
+    return out
+
+
+def _rise_ca(design) -> float | None:
+    """Norton's ``Ca`` of the first rise: its normalized law's largest ``|S''|`` (:mod:`laws.characteristics`);
+    None where infinite (a velocity jump at a dwell) or without a rise."""
+    from laws.characteristics import characteristics
+    from laws.registry import get_law
+
+    for ph in design.program.phases:
+        if ph.kind == "rise":
+            law = get_law(ph.law) if isinstance(ph.law, str) else ph.law
+            ca = characteristics(law).ca
+            return float(ca) if math.isfinite(ca) else None
+    return None
+
+
+def _results(cam) -> dict:
+    """A sized cam's result cells, each read off the cam's own results (nothing computed again here)."""
+    r = cam.solution
+    rep = r.to_dict()
+    a = cam.assessment  # one rule for every command: the profile's checks and [dynamics] too
+    pa = rep.get("max_pressure_angle") or {}  # a roller's, by phase; a flat face's is the geometry's, not a limit
+    out: dict[str, Any] = dict(
+        R0=r.R0, L=r.L, offset=r.offset, centre_x=float(r.centre[0]), centre_y=float(r.centre[1]),
+        blank_diameter=2.0 * rep["largest_cam_radius"], max_pressure_angle_rise=pa.get("rise"),
+        max_pressure_angle_return=pa.get("return"), Ca_rise=_rise_ca(cam.design),
+        verified=a.verified, buildable=a.buildable, error_bound=None if rep.get("error_bound") is None else float(rep["error_bound"]),
+        failures="; ".join(a.failures) or None)
+    if cam.design.contact is not None and cam.contact is not None:
+        out["max_contact_stress"] = cam.contact.to_dict()["max_pressure"]
+    if cam.vibration is not None:
+        res = [p["residual"] for p in cam.vibration.to_dict()["phases"]]
+        out["residual_vibration"] = max(res) if res and all(x is not None for x in res) else None
+    return out
+
+
+def size(designs: list[tuple[dict, Any]], method: str | None) -> list[dict]:
+    """The rows of a chunk's designs: each sized, profiled and checked (:class:`cams.cam.Cam`, the one rule of
+    :mod:`cams.assess`). The seam of a batch solver, which would size the chunk's designs at once; today each
+    design is sized by itself. A design without a solution is a row with its ``error``."""
+    from cams.cam import Cam
+
+    rows = []
+    for row, design in designs:
+        if design is not None:
+            try:
+                row.update(_results(Cam(design, method=method)))
+            except CamsError as e:
+                row["error"] = str(e)
+            except SolverError as e:  # one design the solver failed on: a row that says so, not a lost batch
+                row["error"] = f"solver failure: {e}"
+        rows.append(row)
+    return rows
+
+
+def evaluate(job: tuple[Grid, list[int], bool]) -> list[dict]:
+    """One chunk: ``(grid, indexes, per_design)`` -> its rows, in ``indexes``' order."""
+    grid, indexes, per_design = job
+    del per_design  # the only path until a batch solver lands (see size)
+    return size(build(grid, indexes), grid.method)
+
+
+def chunk_size(todo: int, workers: int, seconds_each: float) -> int:
+    """Designs per chunk: about :data:`CHUNK_S` seconds of work, at least 8 chunks per worker, 1 to
+    :data:`MAX_CHUNK`."""
+    by_time = int(CHUNK_S / seconds_each) if seconds_each > 0 else MAX_CHUNK
+    return max(1, min(MAX_CHUNK, by_time, todo // (workers * 8) or 1))
+
+
+def workers_for(workers: int | None, n: int) -> int:
+    """Processes for ``n`` designs: ``workers`` (default the cores), never more than the designs nor
+    :data:`MAX_WORKERS_PER_CPU` per core."""
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
+        raise InputError("workers", f"must be an integer >= 1 (processes), got {workers!r}")
+    cpus = os.cpu_count() or 1
+    return max(1, min(workers or cpus, n, MAX_WORKERS_PER_CPU * cpus))
+
+
+def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]], None],
+        progress: Callable[[int, int], None] | None = None,
+        estimate: Callable[[float, int, int], None] | None = None, cluster: str | None = None,
+        per_design: bool = True) -> tuple[int, int]:
+    """Evaluate the combinations ``todo`` and hand each chunk's rows to ``sink`` as it completes.
+
+    A few designs are timed first in this process (the first of each base file's block still to do, and the
+    last of the first file's; ``[optimize]`` designs take seconds, plain ones milliseconds): their rows are the
+    first written, and ``estimate(seconds, timed, workers)`` is told the total expected.
+
+    Returns
+    -------
+    (rows, workers)
+        Rows written and the workers used.
+
+    Raises
+    ------
+    KeyboardInterrupt
+        Passed on after ``stop()``: the rows handed on stay; the chunks in flight are lost.
+    """
+    n = len(todo)
+    done = 0
+    if not n:
+        return 0, workers
+    per = grid.per_file
+    firsts: dict[int, int] = {}
+    for i in todo:
+        firsts.setdefault(i // per, i)
+    timed = list(firsts.values())
+    if len(todo) > len(timed) and todo[-1] not in timed:
+        timed.append(todo[-1])
+    timed = timed[: max(1, min(len(timed), 4))]
+    secs: dict[int, list[float]] = {}  # base file -> its timed designs' seconds
+    rows = []
+    for i in timed:
+        t0 = time.perf_counter()
+        rows += evaluate((grid, [i], per_design))
+        secs.setdefault(i // per, []).append(time.perf_counter() - t0)
+    sink(rows)
+    done = len(rows)
+    if progress:
+        progress(done, n)
+    each = sum(map(sum, secs.values())) / len(timed)
+    taken = set(timed)
+    rest = [i for i in todo if i not in taken]
+    if estimate:
+        # a file's designs take about its timed ones' time (an [optimize] design: seconds; a plain one: less)
+        mean = {f: sum(v) / len(v) for f, v in secs.items()}
+        estimate(sum(mean.get(i // per, each) for i in rest) / workers, len(timed), workers)
+    if not rest:
+        return done, workers
+    chunk = chunk_size(len(rest), workers, each)
+    chunks = [rest[k:k + chunk] for k in range(0, len(rest), chunk)]
+    with executor(cluster, workers) as (ex, stop):
+        try:
+            pending: set[Future] = set()
+            it = iter(chunks)
+            window = 2 * workers
+            for c in it:
+                pending.add(ex.submit(evaluate, (grid, c, per_design)))
+                if len(pending) >= window:
+                    break
+            while pending:
+                finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+                for f in finished:
+                    rows = f.result()
+                    sink(rows)
+                    done += len(rows)
+                    if progress:
+                        progress(done, n)
+                for c in it:
+                    pending.add(ex.submit(evaluate, (grid, c, per_design)))
+                    if len(pending) >= window:
+                        break
+        except BaseException:  # Ctrl-C included: no process, no pending design is left
+            stop()
+            raise
+    return done, workers
