@@ -1,9 +1,9 @@
-"""``cams sweep``: a table of sized cams over ranges of design-file keys."""
+"""``cams sweep``: a table of sized cams over design-file keys, streamed as it is solved, resumable."""
 
 from __future__ import annotations
 
-import csv
 import sys
+from pathlib import Path
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from laws.errors import InputError
@@ -11,66 +11,142 @@ from laws.errors import InputError
 __all__ = ["register", "run"]
 
 
-
-
 def run(args) -> int:
+    state: dict = {}
     try:
-        return _run(args)
+        return _run(args, state)
     except KeyboardInterrupt:
-        # the pool is stopped by cams.sweep.sweep; no CSV is written (atomic_write leaves no temporary)
-        print("cams sweep: interrupted", file=sys.stderr)
+        # the pool is stopped by the engine; the rows done stay in the file, whole lines only
+        out = state.get("out")
+        if out is not None and state.get("rows", 0):
+            print(f"cams sweep: interrupted; {out} holds {state['rows']} row(s): run again with --resume to go on",
+                  file=sys.stderr)
+        else:
+            print("cams sweep: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
 
 
-def _run(args) -> int:
+def _format(args, out: Path) -> str:
+    if args.format is not None:
+        return args.format
+    return "parquet" if out.suffix.lower() in (".parquet", ".pq") else "csv"
+
+
+def _grid(args):
     from cams.io.document import read_toml
-    from cams.io.files import atomic_write, check_output_paths
-    from cams.sweep import csv_header, csv_row, parse_vary, sweep
+    from cams.sweep.grid import BaseFile, file_hash, make_grid, parse_vary, read_sweep_file
+
+    if args.sweep_file is not None:
+        if args.files or args.vary or args.zip:
+            raise InputError("--sweep-file", "names the files, keys and mode itself: give no FILE, --vary or --zip "
+                             "with it")
+        files, vary, mode, method = read_sweep_file(args.sweep_file)
+        method = args.method or method
+    else:
+        if not args.files:
+            raise InputError("FILE", "give a design file (or several), or --sweep-file")
+        if not args.vary:
+            raise InputError("--vary", "give at least one KEY=a:b:n or KEY=v1,v2 (or a --sweep-file)")
+        files, mode, method = list(args.files), ("zip" if args.zip else "grid"), args.method
+        vary = [parse_vary(v) for v in args.vary]
+    bases = [BaseFile(f, read_toml(f), file_hash(f)) for f in files]
+    return files, make_grid(bases, vary, mode=mode, method=method)
+
+
+def _run(args, state: dict) -> int:
+    from cams.io.files import check_output_paths
+    from cams.sweep import run_grid
+    from cams.sweep.output import check_identity, csv_header, read_rows, sink_for, write_identity
 
     if args.jobs is not None and args.jobs < 1:
         raise InputError("--jobs", f"must be an integer >= 1 (processes), got {args.jobs}")
-    (out,) = check_output_paths([("--out", args.out)], inputs=[("FILE", args.file)])
-    base = read_toml(args.file)
-    vary = [parse_vary(v) for v in args.vary]
+    ins = [("FILE", f) for f in (args.files or [])] + ([("--sweep-file", args.sweep_file)] if args.sweep_file else [])
+    (out,) = check_output_paths([("--out", args.out)], inputs=ins)
+    fmt = _format(args, out)
+    if fmt == "parquet":
+        try:
+            import pyarrow  # noqa: F401
+        except ImportError:
+            raise InputError("--format", "parquet needs pyarrow: pip install 'cams[parquet]'") from None
+    files, grid = _grid(args)
+    check_output_paths([("--out", args.out)], inputs=[("FILE", f) for f in files])
+    identity = {**grid.identity(), "format": fmt, "columns": csv_header(grid.keys)}
+    done: set[int] = set()
+    before_failed = 0
+    if args.resume and (out.exists() or (fmt == "parquet" and out.with_name(out.name + ".parts").exists())):
+        check_identity(out, identity)
+        rows = read_rows(fmt, out, grid.keys)
+        done = {int(r["index"]) for r in rows}
+        before_failed = sum(1 for r in rows if r.get("error") not in (None, "") or
+                            r.get("failures") not in (None, ""))
+    else:
+        write_identity(out, identity)
+    append = bool(done) or (fmt == "parquet" and args.resume)
+    sink = sink_for(fmt, out, grid.keys, append=append)
+    state["out"], state["rows"] = out, len(done)
+
+    def write(rows: list[dict]) -> None:
+        sink.write(rows)
+        state["rows"] += len(rows)
+
+    def said(seconds: float, timed: int, workers: int) -> None:
+        t = "under a second" if seconds < 1 else f"{seconds:.0f} s" if seconds < 120 else f"{seconds / 60:.0f} min"
+        print(f"cams sweep: {grid.size - len(done)} designs to solve, about {t} to go on {workers} "
+              f"process(es) (estimated from {timed} timed designs)", file=sys.stderr)
+
     from cams.commands.progress import progress, wanted
 
-    with progress(wanted(args), "solving the designs", unit="design") as bar:  # none in a log file or a pipe
-        res = sweep(base, vary, method=args.method, workers=args.jobs, progress=bar.to)
-
-    def write(tmp):
-        with open(tmp, "w", newline="", encoding="utf-8") as fh:
-            w = csv.writer(fh)
-            w.writerow(csv_header(res.keys))
-            for r in res.rows:
-                w.writerow(csv_row(r))
-
-    atomic_write(out, "--out", write)
-    # one rule for every command (cams.assess): a row without a solution, or not usable (certified, verified, buildable)
-    none = sum(1 for r in res.rows if r["error"])
-    print(f"{out}: {len(res.rows)} designs ({res.failed} infeasible: {none} without a solution, "
-          f"{res.failed - none} not certified, not verified or not buildable) in {res.seconds:.2f} s, "
-          f"{res.per_second:.1f} designs/s on {res.workers} process(es)", file=sys.stderr)
-    return EXIT_OK if res.failed == 0 else EXIT_CHECK_FAILED
+    finished = False
+    try:
+        with progress(wanted(args), "solving the designs", unit="design") as bar:  # none in a log file or pipe
+            res = run_grid(grid, workers=args.jobs, done=done, sink=write, keep=False, progress=bar.to,
+                           estimate=None if args.quiet else said, per_design=args.per_design)
+        finished = True
+    finally:
+        sink.close(finished=finished)
+    failed = res.failed + before_failed
+    none = "" if not done else f", {len(done)} resumed"
+    # one rule for every command (cams.assess): a row without a solution, or not usable (certified, verified,
+    # buildable)
+    print(f"{out}: {grid.size} designs ({failed} infeasible: without a solution, or not certified, verified or "
+          f"buildable{none}); {res.solved} solved in {res.seconds:.2f} s, {res.per_second:.1f} designs/s on "
+          f"{res.workers} process(es)", file=sys.stderr)
+    return EXIT_OK if failed == 0 else EXIT_CHECK_FAILED
 
 
 def register(sub) -> None:
     """Add the ``sweep`` subcommand."""
     q = sub.add_parser(
         "sweep",
-        help="solve a grid of designs varying design-file keys; write a CSV table",
-        description="Solve every combination of the varied keys of a design file and write a CSV table: each "
-                    "row's sizes, verified and buildable (the profile's checks and [dynamics] included) and why "
-                    "not. Exit code 0: every row usable, 1: a row has no solution or fails, 2: bad input.",
-        epilog="example: cams sweep examples/rocker_force.toml --vary limits.pressure_angle=30:50:5 "
-        "--vary follower.arm=100:200:3 --out sweep.csv",
+        help="solve a grid of designs varying design-file keys; stream a CSV (or Parquet) table",
+        description="Solve every combination of the varied keys of one or several design files and write a table "
+                    "row by row as the designs are solved: each row's index, file, values, sizes, verified and "
+                    "buildable (the profile's checks and [dynamics] included) and why not. An interrupted sweep "
+                    "keeps its rows; --resume goes on. Exit code 0: every row usable, 1: a row has no solution or "
+                    "fails, 2: bad input.",
+        epilog="examples: cams sweep examples/rocker_force.toml --vary limits.pressure_angle=30:50:5 "
+        "--vary 'motion[0].law=cycloidal,poly345' --out sweep.csv; cams sweep A.toml B.toml --vary "
+        "follower.arm=100,150 --out s.parquet; cams sweep --sweep-file S.toml --out s.csv --resume",
     )
-    q.add_argument("file", help="design file (TOML)")
-    q.add_argument("--vary", action="append", required=True, metavar="KEY=a:b:n",
-                   help="dotted key (list items as motion.0.angle or motion[0].angle) and range (n values "
-                   "from a to b) or list v1,v2; repeatable, each key once")
-    q.add_argument("--out", required=True, help="CSV file to write")
+    q.add_argument("files", nargs="*", metavar="FILE", help="design file(s) (TOML); several: one more axis, the "
+                   "column file")
+    q.add_argument("--vary", action="append", metavar="KEY=a:b:n",
+                   help="dotted key (list items as motion.0.angle or motion[0].angle) and a range (n values from a "
+                   "to b) or a list v1,v2 of numbers or words (laws, closures, senses); repeatable, each key once")
+    q.add_argument("--zip", action="store_true", help="pair the keys' values (the k-th of each together; equal "
+                   "counts) instead of every combination")
+    q.add_argument("--sweep-file", metavar="S.toml", help="a sweep file naming the files, the keys and their "
+                   "values, and the mode (instead of FILE, --vary, --zip; docs/files.md)")
+    q.add_argument("--out", required=True, help="table to write, rows as they are solved (.csv; .parquet: Parquet)")
+    q.add_argument("--format", choices=("csv", "parquet"), help="the table's format (default: by --out's "
+                   "extension; parquet needs the extra cams[parquet])")
+    q.add_argument("--resume", action="store_true", help="go on with --out's sweep: the same files, keys, values, "
+                   "mode and method (OUT.sweep.json); the rows there are kept, the others solved")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override [solve] method")
     q.add_argument("--jobs", type=int, help="processes, an integer >= 1 (default: all cores; never more than the "
                    "designs)")
-    q.add_argument("--quiet", action="store_true", help="no progress bar (drawn only when stderr is a terminal)")
+    q.add_argument("--per-design", action="store_true", help="size each design by itself (the comparison path "
+                   "for a batch solver; today the only path)")
+    q.add_argument("--quiet", action="store_true", help="no estimate and no progress bar (a bar is drawn only "
+                   "when stderr is a terminal)")
     q.set_defaults(func=run)

@@ -264,13 +264,14 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
     done = len(rows)
     if progress:
         progress(done, n)
-    each = sum(map(sum, secs.values())) / len(timed)
+    # a file's designs take about its quickest timed one's time (the first in a process pays for the imports)
+    quick = {f: min(v) for f, v in secs.items()}
+    each = sum(quick.values()) / len(quick)
     taken = set(timed)
     rest = [i for i in todo if i not in taken]
     if estimate:
-        # a file's designs take about its timed ones' time (an [optimize] design: seconds; a plain one: less)
-        mean = {f: sum(v) / len(v) for f, v in secs.items()}
-        estimate(sum(mean.get(i // per, each) for i in rest) / workers, len(timed), workers)
+        # an [optimize] design takes seconds, a plain one milliseconds: each file's own time
+        estimate(sum(quick.get(i // per, each) for i in rest) / workers, len(timed), workers)
     if not rest:
         return done, workers
     chunk = chunk_size(len(rest), workers, each)

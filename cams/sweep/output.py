@@ -225,6 +225,7 @@ class ParquetSink:
 
         self.path, self.header, self.keys = path, header, keys
         self.parts = parts_dir(path)
+        self._old = append and path.exists()  # a finished sweep's table, resumed: its rows are kept
         if not append:
             shutil.rmtree(self.parts, ignore_errors=True)
         self.parts.mkdir(exist_ok=True)
@@ -255,7 +256,7 @@ class ParquetSink:
         from cams.io.files import atomic_write
 
         tables = [pq.read_table(p) for p in sorted(self.parts.glob("part-*.parquet"))]
-        if self.path.exists():
+        if self._old:
             tables.insert(0, pq.read_table(self.path))
         table = pa.concat_tables(tables) if tables else _typed(self.header, self.keys, [])
         table = table.sort_by("index")

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 import cams.sweep
+import cams.sweep.engine
 from cams.cli import main
 from cams.sweep import key_parts, parse_vary, sweep
 from laws.errors import InputError
@@ -51,21 +52,24 @@ def test_pool_never_larger_than_the_designs(monkeypatch):
     assert res.workers == 1
 
 
-def test_ctrl_c_is_one_line_and_writes_no_csv(tmp_path, capsys, monkeypatch):
+def test_ctrl_c_keeps_the_rows_done(tmp_path, capsys, monkeypatch):
     calls = []
-    real = cams.sweep._solve_one
+    real = cams.sweep.engine.evaluate
 
     def solve_then_interrupt(job):
         calls.append(job)
-        if len(calls) == 2:
+        if len(calls) == 3:  # the two timed designs are written, then Ctrl-C
             raise KeyboardInterrupt
         return real(job)
 
-    monkeypatch.setattr(cams.sweep, "_solve_one", solve_then_interrupt)
+    monkeypatch.setattr(cams.sweep.engine, "evaluate", solve_then_interrupt)
     out = tmp_path / "s.csv"
-    rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100:120:4", "--out", out, "--jobs", "1")
-    assert rc == 130 and err == "cams sweep: interrupted\n" and stdout == ""
-    assert os.listdir(tmp_path) == []
+    rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100:120:4", "--out", out, "--jobs", "1", "--quiet")
+    assert rc == 130 and stdout == ""
+    assert err == f"cams sweep: interrupted; {out} holds 2 row(s): run again with --resume to go on\n"
+    lines = out.read_text().splitlines()
+    assert len(lines) == 3 and {r["index"] for r in csv.DictReader(out.open())} == {"0", "3"}
+    assert sorted(os.listdir(tmp_path)) == ["s.csv", "s.csv.sweep.json"]
 
 
 @pytest.mark.skipif(not (sys.platform.startswith("linux") and Path("/proc").is_dir()), reason="needs /proc")
@@ -101,8 +105,9 @@ def test_ctrl_c_stops_the_pool(tmp_path):
         if p.poll() is None:
             p.kill()
             p.wait()
-    assert p.returncode == 130 and err == "cams sweep: interrupted\n"
-    assert os.listdir(tmp_path) == []
+    assert p.returncode == 130 and err.splitlines()[-1].startswith("cams sweep: interrupted")
+    text = out.read_text() if out.exists() else ""
+    assert text == "" or text.endswith("\n")  # whole lines only
     assert children() == []
 
 
@@ -145,14 +150,15 @@ def test_a_key_varied_twice_is_refused(tmp_path, capsys, second):
 def test_no_progress_bar_unless_stderr_is_a_terminal(tmp_path, capsys, monkeypatch):
     argv = [ROCKER, "--vary", "follower.arm=100,120", "--out", tmp_path / "s.csv", "--jobs", "1"]
     rc, _, err = _run(capsys, *argv)
-    assert rc == 0 and "\r" not in err and "solving the designs" not in err and len(err.splitlines()) == 1
+    assert rc == 0 and "\r" not in err and "solving the designs" not in err and len(err.splitlines()) == 2
+    assert err.startswith("cams sweep: 2 designs to solve, about ")  # the estimate, then the summary
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
     monkeypatch.setattr("cams.commands.progress.DELAY_S", 0.0)  # the bar at once, not after two seconds
     rc, _, err = _run(capsys, *argv)
     assert rc == 0 and "\rsolving the designs:" in err and "2/2" in err
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
     rc, _, err = _run(capsys, *argv, "--quiet")
-    assert rc == 0 and "\r" not in err
+    assert rc == 0 and "\r" not in err and len(err.splitlines()) == 1
 
 
 def test_list_items_by_index_in_either_form(tmp_path, capsys):

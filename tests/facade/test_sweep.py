@@ -18,7 +18,9 @@ def test_parse_vary():
     k, v = parse_vary("limits.pressure_angle=30:50:5")
     assert k == "limits.pressure_angle" and np.allclose(v, [30, 35, 40, 45, 50])
     assert np.allclose(parse_vary("follower.arm=100,150")[1], [100, 150])
-    for bad in ("limits.pressure_angle", "x=1:2", "x=a,b", "=1,2", "x=1:2:0"):
+    # words are values too (laws, closures...): checked against the design file's schema by the sweep
+    assert parse_vary("motion[0].law=cycloidal, poly345") == ("motion[0].law", ("cycloidal", "poly345"))
+    for bad in ("limits.pressure_angle", "x=1:2", "=1,2", "x=1:2:0", "x=1:2:2.5", "x=1,,2"):
         with pytest.raises(InputError, match="--vary"):
             parse_vary(bad)
 
