@@ -26,6 +26,10 @@ def run(args) -> int:
         return EXIT_INTERRUPTED
 
 
+def _n(k: int, what: str) -> str:
+    return f"{k} {what}{'' if k == 1 else 'es' if what.endswith('s') else 's'}"
+
+
 def _format(args, out: Path) -> str:
     if args.format is not None:
         return args.format
@@ -90,9 +94,10 @@ def _run(args, state: dict) -> int:
         state["rows"] += len(rows)
 
     def said(seconds: float, timed: int, workers: int) -> None:
-        t = "under a second" if seconds < 1 else f"{seconds:.0f} s" if seconds < 120 else f"{seconds / 60:.0f} min"
-        print(f"cams sweep: {grid.size - len(done)} designs to solve, about {t} to go on {workers} "
-              f"process(es) (estimated from {timed} timed designs)", file=sys.stderr)
+        todo = grid.size - len(done)
+        t = "a second" if seconds < 1 else f"{seconds:.0f} s" if seconds < 120 else f"{seconds / 60:.0f} min"
+        print(f"cams sweep: {_n(todo, 'design')}{' to go' if done else ''}, about {t} on {_n(workers, 'process')} "
+              f"(estimated from {_n(timed, 'timed design')})", file=sys.stderr)
 
     from cams.commands.progress import progress, wanted
 
@@ -108,7 +113,7 @@ def _run(args, state: dict) -> int:
     none = "" if not done else f", {len(done)} resumed"
     # one rule for every command (cams.assess): a row without a solution, or not usable (certified, verified,
     # buildable)
-    print(f"{out}: {grid.size} designs ({failed} infeasible: without a solution, or not certified, verified or "
+    print(f"{out}: {_n(grid.size, 'design')} ({failed} infeasible: without a solution, or not certified, verified or "
           f"buildable{none}); {res.solved} solved in {res.seconds:.2f} s, {res.per_second:.1f} designs/s on "
           f"{res.workers} process(es)", file=sys.stderr)
     return EXIT_OK if failed == 0 else EXIT_CHECK_FAILED

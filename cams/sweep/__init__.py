@@ -83,7 +83,8 @@ def run_grid(grid: Grid, *, workers: int | None = None, done: Sequence[int] | se
     progress : callable, optional
         ``progress(done, total)`` as designs are solved (the command's bar, :mod:`cams.commands.progress`).
     estimate : callable, optional
-        ``estimate(seconds, timed, workers)``: the time expected for the rest, from ``timed`` designs timed first.
+        ``estimate(seconds, timed, workers)``: the time expected for the designs to solve, from ``timed`` designs
+        timed first (their time included).
     cluster : str, optional
         Run on a cluster (``cams.sweep.cluster.executor``) instead of this machine's processes.
     per_design : bool

@@ -230,7 +230,8 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
 
     A few designs are timed first in this process (the first of each base file's block still to do, and the
     last of the first file's; ``[optimize]`` designs take seconds, plain ones milliseconds): their rows are the
-    first written, and ``estimate(seconds, timed, workers)`` is told the total expected.
+    first written, and ``estimate(seconds, timed, workers)`` is told the time expected for all of ``todo`` (the
+    timed designs' included).
 
     Returns
     -------
@@ -271,7 +272,8 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
     rest = [i for i in todo if i not in taken]
     if estimate:
         # an [optimize] design takes seconds, a plain one milliseconds: each file's own time
-        estimate(sum(quick.get(i // per, each) for i in rest) / workers, len(timed), workers)
+        spent = sum(map(sum, secs.values()))
+        estimate(spent + sum(quick.get(i // per, each) for i in rest) / workers, len(timed), workers)
     if not rest:
         return done, workers
     chunk = chunk_size(len(rest), workers, each)

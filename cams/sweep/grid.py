@@ -315,7 +315,7 @@ def _check_kinds(grid: Grid) -> None:
                     same = False
                 if same:
                     what = _message(e)
-                    raise InputError(key, f"{what} (--vary {key}={v})")
+                    raise InputError(key, f"{what} (--vary {key}={as_number(v)})")
 
 
 def make_grid(files: list[BaseFile], vary: list[tuple[str, Any]], *, mode: str = "grid",

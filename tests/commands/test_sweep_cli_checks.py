@@ -151,7 +151,7 @@ def test_no_progress_bar_unless_stderr_is_a_terminal(tmp_path, capsys, monkeypat
     argv = [ROCKER, "--vary", "follower.arm=100,120", "--out", tmp_path / "s.csv", "--jobs", "1"]
     rc, _, err = _run(capsys, *argv)
     assert rc == 0 and "\r" not in err and "solving the designs" not in err and len(err.splitlines()) == 2
-    assert err.startswith("cams sweep: 2 designs to solve, about ")  # the estimate, then the summary
+    assert err.startswith("cams sweep: 2 designs, about ")  # the estimate, then the summary
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
     monkeypatch.setattr("cams.commands.progress.DELAY_S", 0.0)  # the bar at once, not after two seconds
     rc, _, err = _run(capsys, *argv)
