@@ -67,6 +67,8 @@ DOCTEST_MODULES = [
     "cams.words",
     "cams.present.text",
     "cams.sweep",
+    "cams.sweep.grid",
+    "cams.sweep.output",
     "cams.profile.roller",
     # exports for manufacture
     "cams.manufacture.drawing",

@@ -72,11 +72,11 @@ def _stop(ex: ProcessPoolExecutor) -> None:
 class _Here(Executor):
     """One worker: the chunks run in this process when submitted (Ctrl-C reaches them directly)."""
 
-    def submit(self, fn, /, *args, **kwargs):  # type: ignore[override]
+    def submit(self, fn, /, *args, **kwargs):
         f: Future = Future()
         try:
             f.set_result(fn(*args, **kwargs))
-        except Exception as e:  # noqa: BLE001  # a fault of the product, passed on by the loop
+        except Exception as e:  # a fault of the product, passed on by the loop
             f.set_exception(e)
         return f
 
@@ -84,7 +84,7 @@ class _Here(Executor):
 class _Pool(ProcessPoolExecutor):
     """A process pool whose workers ignore Ctrl-C; its workers start with SIGINT held back."""
 
-    def submit(self, fn, /, *args, **kwargs):  # type: ignore[override]
+    def submit(self, fn, /, *args, **kwargs):
         with _sigint_held():  # a Ctrl-C while a worker starts reaches this process only, just after
             return super().submit(fn, *args, **kwargs)
 
@@ -107,8 +107,9 @@ def executor(spec: str | None, workers: int) -> Iterator[tuple[Executor, Callabl
         nothing left.
     """
     if spec is not None:
-        from cams.sweep import cluster  # type: ignore[attr-defined]  # the cluster's module (optional extra)
+        import importlib
 
+        cluster = importlib.import_module("cams.sweep.cluster")  # the cluster's executor (an optional extra)
         with cluster.executor(spec, workers) as pair:
             yield pair
         return
@@ -134,7 +135,7 @@ def build(grid: Grid, indexes: Iterable[int]) -> list[tuple[dict, Any]]:
     ``error`` says why)."""
     from cams.io.designfile import design_from_dict
 
-    out = []
+    out: list[tuple[dict, Any]] = []
     for i in indexes:
         d, head = grid.design_dict(i)
         row = _empty(head)
@@ -170,8 +171,8 @@ def _results(cam) -> dict:
         R0=r.R0, L=r.L, offset=r.offset, centre_x=float(r.centre[0]), centre_y=float(r.centre[1]),
         blank_diameter=2.0 * rep["largest_cam_radius"], max_pressure_angle_rise=pa.get("rise"),
         max_pressure_angle_return=pa.get("return"), Ca_rise=_rise_ca(cam.design),
-        verified=a.verified, buildable=a.buildable, error_bound=None if rep.get("error_bound") is None else float(rep["error_bound"]),
-        failures="; ".join(a.failures) or None)
+        verified=a.verified, buildable=a.buildable, failures="; ".join(a.failures) or None,
+        error_bound=None if rep.get("error_bound") is None else float(rep["error_bound"]))
     if cam.design.contact is not None and cam.contact is not None:
         out["max_contact_stress"] = cam.contact.to_dict()["max_pressure"]
     if cam.vibration is not None:

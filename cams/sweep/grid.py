@@ -69,13 +69,13 @@ def parse_vary(spec: str) -> tuple[str, Any]:
     key_parts(key)
     vals: Any
     if ":" in rng and all(_NUMBER.fullmatch(p.strip()) for p in rng.split(":")):
-        a, b, count = rng.split(":") if rng.count(":") == 2 else (None, None, None)
-        if count is None or not float(count).is_integer() or float(count) < 1:
+        ends = rng.split(":")
+        if len(ends) != 3 or not float(ends[2]).is_integer() or float(ends[2]) < 1:
             raise InputError("--vary", f"{spec!r}: a range is a:b:n with a count n >= 1")
-        n = int(float(count))
+        a, b, n = float(ends[0]), float(ends[1]), int(float(ends[2]))
         if n > MAX_DESIGNS:
             raise InputError("--vary", f"{spec!r}: at most {MAX_DESIGNS:,} values, got {n:,}")
-        vals = np.linspace(float(a), float(b), n)
+        vals = np.linspace(a, b, n)
     else:
         items = [p for p in rng.split(",")]
         if any(not p.strip() for p in items):
