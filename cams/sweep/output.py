@@ -100,8 +100,8 @@ def cell(name: str, v: Any, error_bound: float | None = None) -> str:
 def csv_row(row: dict) -> list[str]:
     """A row's cells in its own key order (:func:`csv_header`'s), each by :func:`cell`.
 
-    >>> csv_row({"R0": 13.240793033539259, "max_pressure_angle_rise": 29.999999999999996, "error": None})
-    ['13.2407930335393', '30', '']
+    >>> csv_row({"R0": 13.240793033539259, "max_pressure_angle_rise": 29.999999999999996, "error_bound": 1.4e-12})
+    ['13.2407930335393', '30', '1.4e-12']
     """
     eb = row.get("error_bound")
     return [cell(k, v, eb) for k, v in row.items()]
