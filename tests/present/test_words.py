@@ -252,11 +252,11 @@ def test_sweep_csv_headers_carry_units_and_no_round_off_tails(capsys, tmp_path, 
                  "--out", str(out), "--jobs", "1", "--quiet"]) == 0
     text = out.read_text()
     head = text.splitlines()[0].split(",")
-    assert head[:4] == ["limits.pressure_angle", "R0_mm", "L_mm", "offset_mm"]
-    assert "max_pressure_rise_deg" in head and "error_bound_mm" in head
+    assert head[:6] == ["index", "file", "limits.pressure_angle", "R0_mm", "L_mm", "offset_mm"]
+    assert "max_pressure_angle_rise_deg" in head and "error_bound_mm" in head
     rows = list(csv.DictReader(out.open()))
     # the binding rise angle is the limit: printed as 30 and 45, not 29.999999999999996
-    assert [r["max_pressure_rise_deg"] for r in rows] == ["30", "45"]
+    assert [r["max_pressure_angle_rise_deg"] for r in rows] == ["30", "45"]
     assert "9999999" not in text
 
 
