@@ -120,38 +120,24 @@ def _run(args, state: dict) -> int:
 
 
 def register(sub) -> None:
-    """Add the ``sweep`` subcommand."""
+    """Add the ``sweep`` subcommand (docs/files.md, Sweeps, says the rest)."""
     q = sub.add_parser(
         "sweep",
         help="solve a grid of designs varying design-file keys; stream a CSV (or Parquet) table",
-        description="Solve every combination of the varied keys of one or several design files and write a table "
-                    "row by row as the designs are solved: each row's index, file, values, sizes, verified and "
-                    "buildable (the profile's checks and [dynamics] included) and why not. An interrupted sweep "
-                    "keeps its rows; --resume goes on. Exit code 0: every row usable, 1: a row has no solution or "
-                    "fails, 2: bad input.",
-        epilog="examples: cams sweep examples/rocker_force.toml --vary limits.pressure_angle=30:50:5 "
-        "--vary 'motion[0].law=cycloidal,poly345' --out sweep.csv; cams sweep A.toml B.toml --vary "
-        "follower.arm=100,150 --out s.parquet; cams sweep --sweep-file S.toml --out s.csv --resume",
+        description="Solve every combination of the varied keys; rows written as solved, resumable. Exit 0: "
+                    "all usable, 1: a row fails, 2: bad input. docs/files.md, Sweeps",
+        epilog="example: cams sweep examples/rocker_force.toml --vary 'motion[0].law=cycloidal,poly345' --out s.csv",
     )
-    q.add_argument("files", nargs="*", metavar="FILE", help="design file(s) (TOML); several: one more axis, the "
-                   "column file")
-    q.add_argument("--vary", action="append", metavar="KEY=a:b:n",
-                   help="dotted key (list items as motion.0.angle or motion[0].angle) and a range (n values from a "
-                   "to b) or a list v1,v2 of numbers or words (laws, closures, senses); repeatable, each key once")
-    q.add_argument("--zip", action="store_true", help="pair the keys' values (the k-th of each together; equal "
-                   "counts) instead of every combination")
-    q.add_argument("--sweep-file", metavar="S.toml", help="a sweep file naming the files, the keys and their "
-                   "values, and the mode (instead of FILE, --vary, --zip; docs/files.md)")
-    q.add_argument("--out", required=True, help="table to write, rows as they are solved (.csv; .parquet: Parquet)")
-    q.add_argument("--format", choices=("csv", "parquet"), help="the table's format (default: by --out's "
-                   "extension; parquet needs the extra cams[parquet])")
-    q.add_argument("--resume", action="store_true", help="go on with --out's sweep: the same files, keys, values, "
-                   "mode and method (OUT.sweep.json); the rows there are kept, the others solved")
+    q.add_argument("files", nargs="*", metavar="FILE", help="design file(s); several: one more axis (column file)")
+    q.add_argument("--vary", action="append", metavar="KEY=a:b:n|v1,v2",
+                   help="a dotted key (motion[0].law) and a range or a list of numbers or words; repeatable")
+    q.add_argument("--zip", action="store_true", help="pair the keys' values instead of every combination")
+    q.add_argument("--sweep-file", metavar="S.toml", help="files, keys, values and mode from a TOML file")
+    q.add_argument("--out", required=True, help="the table, written as rows are solved (.csv, .parquet)")
+    q.add_argument("--format", choices=("csv", "parquet"), help="default: by --out's extension")
+    q.add_argument("--resume", action="store_true", help="go on with --out's sweep (the same: OUT.sweep.json)")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override [solve] method")
-    q.add_argument("--jobs", type=int, help="processes, an integer >= 1 (default: all cores; never more than the "
-                   "designs)")
-    q.add_argument("--per-design", action="store_true", help="size each design by itself (the comparison path "
-                   "for a batch solver; today the only path)")
-    q.add_argument("--quiet", action="store_true", help="no estimate and no progress bar (a bar is drawn only "
-                   "when stderr is a terminal)")
+    q.add_argument("--jobs", type=int, help="processes, >= 1 (default: all cores)")
+    q.add_argument("--per-design", action="store_true", help="size each design by itself (today's only path)")
+    q.add_argument("--quiet", action="store_true", help="no estimate, no progress bar")
     q.set_defaults(func=run)
