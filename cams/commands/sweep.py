@@ -66,6 +66,8 @@ def _run(args, state: dict) -> int:
         raise InputError("--jobs", f"must be an integer >= 1 (processes), got {args.jobs}")
     ins = [("FILE", f) for f in (args.files or [])] + ([("--sweep-file", args.sweep_file)] if args.sweep_file else [])
     (out,) = check_output_paths([("--out", args.out)], inputs=ins)
+    if str(args.out) == "-" or not (out.parent.is_dir() and (not out.exists() or out.is_file())):
+        raise InputError("--out", f"{args.out!r}: a sweep streams its rows into a regular file (to resume from it)")
     fmt = _format(args, out)
     if fmt == "parquet":
         try:

@@ -21,11 +21,11 @@ import math
 import os
 import signal
 import time
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Executor, Future, ProcessPoolExecutor, wait
 from typing import Any
 
-from cams.sweep.grid import Grid
+from cams.sweep.grid import Chunk, Grid
 from cams.sweep.output import COLUMNS
 from laws.errors import CamsError, InputError, SolverError
 
@@ -129,15 +129,15 @@ def _empty(head: dict) -> dict:
     return row
 
 
-def build(grid: Grid, indexes: Iterable[int]) -> list[tuple[dict, Any]]:
-    """The designs of combinations ``indexes``: ``(row, design)`` each, the row holding ``index``, ``file``, the
-    keys' values and empty results; ``design`` None where the design file's dict is refused (the row's
-    ``error`` says why)."""
+def build(chunk: Chunk) -> list[tuple[dict, Any]]:
+    """The designs of a chunk's combinations: ``(row, design)`` each, the row holding ``index``, ``file``, the
+    keys' values and empty results; ``design`` None where the design file's dict is refused (the row's ``error``
+    says why)."""
     from cams.io.designfile import design_from_dict
 
     out: list[tuple[dict, Any]] = []
-    for i in indexes:
-        d, head = grid.design_dict(i)
+    for k in range(len(chunk.items)):
+        d, head = chunk.design_dict(k)
         row = _empty(head)
         try:
             out.append((row, design_from_dict(d)))
@@ -196,15 +196,18 @@ def size(designs: list[tuple[dict, Any]], method: str | None) -> list[dict]:
                 row["error"] = str(e)
             except SolverError as e:  # one design the solver failed on: a row that says so, not a lost batch
                 row["error"] = f"solver failure: {e}"
+            except (ArithmeticError, ValueError, LookupError, TypeError) as e:  # a fault of the product on one
+                # design: its row says so (exit 1), the hours of the others are not lost
+                row["error"] = f"internal error: {type(e).__name__}: {e}"
         rows.append(row)
     return rows
 
 
-def evaluate(job: tuple[Grid, list[int], bool]) -> list[dict]:
-    """One chunk: ``(grid, indexes, per_design)`` -> its rows, in ``indexes``' order."""
-    grid, indexes, per_design = job
+def evaluate(job: tuple[Chunk, bool]) -> list[dict]:
+    """One chunk: ``(chunk, per_design)`` -> its rows, in the chunk's order."""
+    chunk, per_design = job
     del per_design  # the only path until a batch solver lands (see size)
-    return size(build(grid, indexes), grid.method)
+    return size(build(chunk), chunk.method)
 
 
 def chunk_size(todo: int, workers: int, seconds_each: float) -> int:
@@ -260,7 +263,7 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
     rows = []
     for i in timed:
         t0 = time.perf_counter()
-        rows += evaluate((grid, [i], per_design))
+        rows += evaluate((grid.chunk([i]), per_design))
         secs.setdefault(i // per, []).append(time.perf_counter() - t0)
     sink(rows)
     done = len(rows)
@@ -285,7 +288,7 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
             it = iter(chunks)
             window = 2 * workers
             for c in it:
-                pending.add(ex.submit(evaluate, (grid, c, per_design)))
+                pending.add(ex.submit(evaluate, (grid.chunk(c), per_design)))
                 if len(pending) >= window:
                     break
             while pending:
@@ -297,7 +300,7 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
                     if progress:
                         progress(done, n)
                 for c in it:
-                    pending.add(ex.submit(evaluate, (grid, c, per_design)))
+                    pending.add(ex.submit(evaluate, (grid.chunk(c), per_design)))
                     if len(pending) >= window:
                         break
         except BaseException:  # Ctrl-C included: no process, no pending design is left

@@ -27,7 +27,7 @@ import numpy as np
 from laws.errors import CamsError, InputError
 
 __all__ = ["MAX_DESIGNS", "MODES", "parse_vary", "parse_value", "key_parts", "set_key", "as_number", "BaseFile",
-           "Grid", "make_grid", "read_sweep_file"]
+           "Grid", "Chunk", "make_grid", "read_sweep_file"]
 
 #: At most this many designs in one sweep (files times the keys' combinations): about an hour on two cores.
 MAX_DESIGNS = 100_000
@@ -207,13 +207,7 @@ class Grid:
     def design_dict(self, index: int) -> tuple[dict, dict]:
         """The design-file dict of combination ``index`` and its row's first cells (``index``, ``file``, the keys'
         values)."""
-        f, vals = self.combination(index)
-        d = copy.deepcopy(self.files[f].design)
-        row: dict[str, Any] = {"index": index, "file": self.files[f].label}
-        for k, v in zip(self.keys, vals, strict=True):
-            set_key(d, k, as_number(v))
-            row[k] = as_number(v)
-        return d, row
+        return self.chunk([index]).design_dict(0)
 
     def identity(self) -> dict:
         """What makes this sweep this sweep (the sidecar file's content): its files with their hashes, keys,
@@ -221,6 +215,32 @@ class Grid:
         return {"files": [{"path": b.label, "sha256": b.sha256} for b in self.files], "keys": list(self.keys),
                 "values": [[as_number(v) for v in vals] for vals in self.values], "mode": self.mode,
                 "method": self.method}
+
+    def chunk(self, indexes: list[int]) -> Chunk:
+        """What a worker needs to build the designs of combinations ``indexes`` (not the whole grid's values)."""
+        return Chunk(self.files, self.keys, self.method, tuple((i, *self.combination(i)) for i in indexes))
+
+
+@dataclass(frozen=True)
+class Chunk:
+    """Combinations sent to a worker together: the base files, the keys, the method and, per combination,
+    ``(index, file number, the keys' values)``."""
+
+    files: tuple[BaseFile, ...]
+    keys: tuple[str, ...]
+    method: str | None
+    items: tuple[tuple[int, int, tuple], ...]
+
+    def design_dict(self, k: int) -> tuple[dict, dict]:
+        """The design-file dict of the chunk's ``k``-th combination and its row's first cells (``index``,
+        ``file``, the keys' values)."""
+        index, f, vals = self.items[k]
+        d = copy.deepcopy(self.files[f].design)
+        row: dict[str, Any] = {"index": index, "file": self.files[f].label}
+        for key, v in zip(self.keys, vals, strict=True):
+            set_key(d, key, as_number(v))
+            row[key] = as_number(v)
+        return d, row
 
 
 def _message(e: CamsError) -> str:
