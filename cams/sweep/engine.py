@@ -260,15 +260,14 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
         timed.append(todo[-1])
     timed = timed[: max(1, min(len(timed), 4))]
     secs: dict[int, list[float]] = {}  # base file -> its timed designs' seconds
-    rows = []
-    for i in timed:
+    for i in timed:  # each row written at once: an [optimize] design takes seconds
         t0 = time.perf_counter()
-        rows += evaluate((grid.chunk([i]), per_design))
+        rows = evaluate((grid.chunk([i]), per_design))
         secs.setdefault(i // per, []).append(time.perf_counter() - t0)
-    sink(rows)
-    done = len(rows)
-    if progress:
-        progress(done, n)
+        sink(rows)
+        done += len(rows)
+        if progress:
+            progress(done, n)
     # a file's designs take about its quickest timed one's time (the first in a process pays for the imports)
     quick = {f: min(v) for f, v in secs.items()}
     each = sum(quick.values()) / len(quick)

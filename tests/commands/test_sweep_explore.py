@@ -212,10 +212,10 @@ def test_parquet_round_trip_and_resume(tmp_path, capsys, monkeypatch):
             "--quiet"]
     rc, _ = _sweep(capsys, *argv, "--out", tmp_path / "s.csv")
     rows = _rows(tmp_path / "s.csv")
-    _interrupt_after(monkeypatch, 2)  # two designs timed and written as a part, then Ctrl-C
+    _interrupt_after(monkeypatch, 2)  # two designs timed and written, a part each, then Ctrl-C
     out = tmp_path / "s.parquet"
     rc, err = _sweep(capsys, *argv, "--out", out)
-    assert rc == 130 and not out.exists() and len(list((tmp_path / "s.parquet.parts").iterdir())) == 1
+    assert rc == 130 and not out.exists() and len(list((tmp_path / "s.parquet.parts").iterdir())) == 2
     monkeypatch.undo()
     rc, err = _sweep(capsys, *argv, "--out", out, "--resume")
     assert rc == 0 and not (tmp_path / "s.parquet.parts").exists()
