@@ -97,6 +97,8 @@ def test_laws_closures_arms(straight, tmp_path, capsys):
     assert [(r["motion[0].law"], r["limits.closure"], r["follower.arm"]) for r in rows[:5]] == [
         ("cycloidal", "force", a) for a in ("100", "120", "140", "160")] + [("cycloidal", "form", "100")]
     assert {r["file"] for r in rows} == {str(ROCKER)}
+    text = out.read_text(encoding="utf-8")
+    assert "0000000001" not in text and "99999999" not in text  # no float noise in any cell
     for r in rows:
         assert float(r["Ca_rise"]) == pytest.approx(CA[r["motion[0].law"]], rel=1e-9)
         assert r["max_contact_stress_MPa"] == r["residual_vibration"] == ""  # no [contact], no train
