@@ -30,12 +30,13 @@ def _run(args) -> int:
     if args.jobs is not None and args.jobs < 1:
         raise InputError("--jobs", f"must be an integer >= 1 (processes), got {args.jobs}")
     (out,) = check_output_paths([("--out", args.out)], inputs=[("FILE", args.file)])
+    engine = _before_sweep(args, out)
     base = read_toml(args.file)
     vary = [parse_vary(v) for v in args.vary]
     from cams.commands.progress import progress, wanted
 
     with progress(wanted(args), "solving the designs", unit="design") as bar:  # none in a log file or a pipe
-        res = sweep(base, vary, method=args.method, workers=args.jobs, progress=bar.to)
+        res = sweep(base, vary, method=args.method, workers=args.jobs, progress=bar.to, **engine)
 
     def write(tmp):
         with open(tmp, "w", newline="", encoding="utf-8") as fh:
@@ -50,7 +51,56 @@ def _run(args) -> int:
     print(f"{out}: {len(res.rows)} designs ({res.failed} infeasible: {none} without a solution, "
           f"{res.failed - none} not certified, not verified or not buildable) in {res.seconds:.2f} s, "
           f"{res.per_second:.1f} designs/s on {res.workers} process(es)", file=sys.stderr)
-    return EXIT_OK if res.failed == 0 else EXIT_CHECK_FAILED
+    code = EXIT_OK if res.failed == 0 else EXIT_CHECK_FAILED
+    return max(code, _after_sweep(args, out))
+
+
+def _add_front_arguments(q) -> None:
+    """The options of the front, the chart and the cluster: ``--pareto``, ``--plot``, ``--x``, ``--y``,
+    ``--colour`` (:mod:`cams.commands.front`, shared with ``cams front``) and ``--dask``."""
+    from cams.commands.front import add_front_arguments
+
+    add_front_arguments(q)
+    q.add_argument("--dask", metavar="ADDRESS|local",
+                   help="solve on a Dask cluster: its scheduler's address (tcp://host:8786; cams installed on every "
+                   "worker) or local (a local cluster of --jobs worker processes); needs pip install \"cams[dask]\"")
+
+
+def _before_sweep(args, out) -> dict:
+    """Check the front's, the chart's and the cluster's options before solving; the engine's extra arguments.
+
+    Returns
+    -------
+    dict
+        Keyword arguments for :func:`cams.sweep.sweep`: ``executor_factory`` (a callable of no argument
+        returning :func:`cams.sweep.cluster.executor`'s context manager) when ``--dask`` is given.
+    """
+    import functools
+    import inspect
+
+    from cams.commands.front import check_front_arguments
+    from cams.sweep import sweep
+    from cams.sweep.cluster import check_spec, executor
+
+    check_front_arguments(args, out, inputs=[("FILE", args.file)])
+    if args.dask is None:
+        return {}
+    check_spec(args.dask, args.jobs)
+    if "executor_factory" not in inspect.signature(sweep).parameters:
+        raise InputError("--dask", "this version's sweep engine runs on local processes only; leave out --dask")
+    return {"executor_factory": functools.partial(executor, args.dask, args.jobs)}
+
+
+def _after_sweep(args, out) -> int:
+    """The front (``--pareto``) and the chart (``--plot``) of the written table, read back from ``out``.
+
+    Returns 0, or 1 when a front is asked for and no row is usable.
+    """
+    if args.pareto is None and args.plot is None:
+        return EXIT_OK
+    from cams.commands.front import front_and_chart
+
+    return front_and_chart(args, out)
 
 
 def register(sub) -> None:
@@ -73,4 +123,5 @@ def register(sub) -> None:
     q.add_argument("--jobs", type=int, help="processes, an integer >= 1 (default: all cores; never more than the "
                    "designs)")
     q.add_argument("--quiet", action="store_true", help="no progress bar (drawn only when stderr is a terminal)")
+    _add_front_arguments(q)
     q.set_defaults(func=run)
