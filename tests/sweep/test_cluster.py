@@ -1,0 +1,104 @@
+"""The sweep on a Dask cluster: a local cluster of two workers gives the process pool's rows; stop() is prompt.
+
+One cluster is started for the module (it takes seconds): the fixture runs the whole scenario once and the tests
+read what it recorded.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+from concurrent.futures import ProcessPoolExecutor
+
+import psutil
+import pytest
+
+import cams
+import cams.sweep
+import cams.sweep.cluster as cluster
+from cams.io.document import read_toml
+from cams.sweep.cluster import check_spec, executor
+from laws.errors import InputError
+from tests.conftest import EXAMPLES
+
+KEYS = ("follower.arm", "limits.pressure_angle")
+GRID = [(a, p) for a in (100.0, 160.0) for p in (35.0, 50.0)]  # 4 designs
+
+
+def _jobs():
+    base = read_toml(EXAMPLES / "rocker_force.toml")
+    return [(base, KEYS, values, None) for values in GRID]
+
+
+def _alive(pid: int) -> bool:
+    try:
+        return psutil.Process(pid).status() != psutil.STATUS_ZOMBIE
+    except psutil.NoSuchProcess:
+        return False
+
+
+@pytest.fixture(scope="module")
+def scenario():
+    jobs = _jobs()
+    rec = {}
+    with executor("local", 2) as (ex, stop):
+        client = ex._client  # the executor's client: ask the workers who they are
+        rec["pids"] = list(client.run(os.getpid).values())
+        rec["cams"] = set(client.run(lambda: __import__("cams").__file__).values())
+        rec["rows"] = list(ex.map(cams.sweep._solve_one, jobs))
+        pending = [ex.submit(cams.sweep._solve_one, jobs[k % len(jobs)][:2] + ((100.0 + k, 45.0), None))
+                   for k in range(40)]
+        t0 = time.perf_counter()
+        stop()
+        rec["stop_seconds"] = time.perf_counter() - t0
+        rec["done"] = sum(1 for f in pending if f.done() and not f.cancelled())
+        rec["cancelled"] = sum(1 for f in pending if f.cancelled())
+        stop()  # a second call does nothing
+    rec["alive_after"] = [p for p in rec["pids"] if _alive(p)]
+    return rec
+
+
+def test_dask_rows_equal_the_process_pools(scenario):
+    with ProcessPoolExecutor(2) as pool:
+        expected = list(pool.map(cams.sweep._solve_one, _jobs()))
+    assert len(scenario["rows"]) == len(GRID)
+    assert scenario["rows"] == expected
+    assert sum(1 for r in expected if r["R0"] is not None) >= 3  # designs solved, not rows of errors compared
+
+
+def test_two_worker_processes_importing_this_cams(scenario):
+    assert len(scenario["pids"]) == 2 and os.getpid() not in scenario["pids"]
+    assert scenario["cams"] == {cams.__file__}
+
+
+def test_stop_cancels_pending_designs_promptly_and_leaves_no_worker(scenario):
+    # 40 designs take ~10 s on two workers: stop() returns well before, most of them never run
+    assert scenario["stop_seconds"] < 5.0
+    assert scenario["cancelled"] >= 30 and scenario["done"] + scenario["cancelled"] <= 40
+    assert scenario["alive_after"] == []
+
+
+def test_missing_dask_names_the_option_and_the_extra(monkeypatch):
+    monkeypatch.setitem(sys.modules, "distributed", None)
+    with pytest.raises(InputError, match=r'^--dask: needs dask\.distributed, an optional extra: pip install "cams\[dask\]"$'):
+        with executor("local", 1):
+            pass
+
+
+@pytest.mark.parametrize("spec", ["", "   ", "somewhere"])
+def test_malformed_address_refused(spec):
+    with pytest.raises(InputError, match="^--dask: "):
+        check_spec(spec)
+
+
+def test_workers_checked():
+    with pytest.raises(InputError, match=r"^--jobs: must be an integer >= 1"):
+        check_spec("local", 0)
+
+
+def test_unreachable_scheduler_is_one_line(monkeypatch):
+    monkeypatch.setattr(cluster, "CONNECT_TIMEOUT", 0.5)
+    with pytest.raises(InputError, match=r"^--dask: cannot reach the Dask scheduler at 'tcp://127\.0\.0\.1:9'"):
+        with executor("tcp://127.0.0.1:9"):
+            pass
