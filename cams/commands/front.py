@@ -26,18 +26,29 @@ def pareto_path(out: str | Path) -> Path:
 
 def add_front_arguments(q) -> None:
     """The options of a front and a chart: ``--pareto``, ``--plot``, ``--x``, ``--y``, ``--colour``."""
-    q.add_argument("--pareto", metavar="COL,COL[,...]",
-                   help="the non-dominated rows over these columns (minimised; max:COL to maximise one), usable rows "
-                   "only; printed and saved beside the table as NAME.pareto.csv. Columns with or without their unit "
-                   "suffix (R0 or R0_mm)")
-    q.add_argument("--plot", metavar="CHART.png",
-                   help="draw a chart of --y against --x (default: the first two --pareto columns) coloured by "
-                   "--colour, the unusable rows as grey x and the front highlighted; .png, .svg or .pdf")
+    q.add_argument(
+        "--pareto",
+        metavar="COL,COL[,...]",
+        help="the non-dominated rows over these columns (minimised; max:COL to maximise one), usable rows "
+        "only; printed and saved beside the table as NAME.pareto.csv. Columns with or without their unit "
+        "suffix (R0 or R0_mm)",
+    )
+    q.add_argument(
+        "--plot",
+        metavar="CHART.png",
+        help="draw a chart of --y against --x (default: the first two --pareto columns) coloured by "
+        "--colour, the unusable rows as grey x and the front highlighted; .png, .svg or .pdf",
+    )
     q.add_argument("--x", metavar="COL", help="the chart's horizontal axis (default: the first --pareto column)")
     q.add_argument("--y", metavar="COL", help="the chart's vertical axis (default: the second --pareto column)")
-    q.add_argument("--colour", "--color", dest="colour", metavar="COL",
-                   help="the column colouring the chart's points (a colour bar with its unit; default: the third "
-                   "--pareto column, if any)")
+    q.add_argument(
+        "--colour",
+        "--color",
+        dest="colour",
+        metavar="COL",
+        help="the column colouring the chart's points (a colour bar with its unit; default: the third "
+        "--pareto column, if any)",
+    )
 
 
 def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
@@ -59,8 +70,10 @@ def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
     if not asked:
         return []
     if table is None or str(table) == STDOUT or str(table).startswith("/dev/"):
-        raise InputError("--pareto" if args.pareto is not None else "--plot",
-                         "the front and the chart are read back from the table: give --out a file")
+        raise InputError(
+            "--pareto" if args.pareto is not None else "--plot",
+            "the front and the chart are read back from the table: give --out a file",
+        )
     if args.plot is not None:
         ext = Path(args.plot).suffix.lower().lstrip(".")
         if ext not in FORMATS:
@@ -118,14 +131,16 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
     if table.dropped:
         print(f"{path}: {table.dropped} line(s) cut short left out (an interrupted writer)", file=sys.stderr)
     if args.pareto is not None:
-        objectives = tuple(Objective(table.column(o.column, "--pareto"), o.maximise)
-                           for o in parse_objectives(args.pareto))
+        objectives = tuple(
+            Objective(table.column(o.column, "--pareto"), o.maximise) for o in parse_objectives(args.pareto)
+        )
         front = pareto_front(table.columns, objectives, usable=usable)
         saved = write_rows(pareto_path(path), table, front.rows, "--pareto")
-        names = ", ".join(f"{o} ({table.units[o.column]})" if table.units.get(o.column) else str(o)
-                          for o in objectives)
-        print(f"Pareto front over {names} (minimised unless max:): {len(front.rows)} of {n} rows "
-              f"({front.unusable} unusable and {front.empty} with an empty objective left out)")
+        names = ", ".join(f"{o} ({table.units[o.column]})" if table.units.get(o.column) else str(o) for o in objectives)
+        print(
+            f"Pareto front over {names} (minimised unless max:): {len(front.rows)} of {n} rows "
+            f"({front.unusable} unusable and {front.empty} with an empty objective left out)"
+        )
         if len(front.rows):
             _print_front(table, front, saved)
         for g in front.ties:
@@ -145,10 +160,18 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
         colour = table.column(args.colour, "--colour") if args.colour else (objs[2].column if len(objs) > 2 else None)
         by = {o.column: o.maximise for o in objs}
         step = len(objs) == 2 and {x, y} == set(by)  # the staircase is the front's edge in these two columns only
-        fig = sweep_chart(table.columns, table.units, x, y, colour=colour, usable=usable,
-                          front=None if front is None else front.rows, step=step,
-                          maximise=(by.get(x, False), by.get(y, False)),
-                          title=f"{Path(path).name}: {n} designs, {int(usable.sum())} usable")
+        fig = sweep_chart(
+            table.columns,
+            table.units,
+            x,
+            y,
+            colour=colour,
+            usable=usable,
+            front=None if front is None else front.rows,
+            step=step,
+            maximise=(by.get(x, False), by.get(y, False)),
+            title=f"{Path(path).name}: {n} designs, {int(usable.sum())} usable",
+        )
         print(f"wrote {save_chart(fig, args.plot)}", file=sys.stderr)
     return code
 
@@ -166,8 +189,8 @@ def register(sub) -> None:
         "front",
         help="the Pareto front and a chart of a sweep's table (CSV or Parquet), without solving again",
         description="Read a table written by cams sweep; print and save its Pareto front over the chosen columns "
-                    "(usable rows only: no error, no failures) and draw a chart of two columns coloured by a third. "
-                    "Exit code 0, 1: no usable row (the front is empty), 2: bad input.",
+        "(usable rows only: no error, no failures) and draw a chart of two columns coloured by a third. "
+        "Exit code 0, 1: no usable row (the front is empty), 2: bad input.",
         epilog="example: cams front sweep.csv --pareto R0,max_pressure_angle_rise --plot front.png",
     )
     q.add_argument("table", metavar="TABLE", help="the sweep's table (CSV, or .parquet through pyarrow)")

@@ -33,8 +33,9 @@ def _numbers(columns: Mapping[str, Sequence], name: str, field: str) -> np.ndarr
     if name not in columns:
         raise InputError(field, f"{name!r} is not a column; the columns are: {', '.join(columns)}")
     try:
-        return np.array([np.nan if v is None or (isinstance(v, str) and v == "") else v for v in columns[name]],
-                        dtype=float)
+        return np.array(
+            [np.nan if v is None or (isinstance(v, str) and v == "") else v for v in columns[name]], dtype=float
+        )
     except (TypeError, ValueError):
         raise InputError(field, f"{name!r} is not a column of numbers") from None
 
@@ -44,10 +45,19 @@ def _label(name: str, units: Mapping[str, str]) -> str:
     return f"{name} ({u})" if u else name
 
 
-def sweep_chart(columns: Mapping[str, Sequence], units: Mapping[str, str], x: str, y: str, *,
-                colour: str | None = None, usable: Sequence[bool] | None = None,
-                front: Sequence[int] | None = None, step: bool = False,
-                maximise: tuple[bool, bool] = (False, False), title: str | None = None):
+def sweep_chart(
+    columns: Mapping[str, Sequence],
+    units: Mapping[str, str],
+    x: str,
+    y: str,
+    *,
+    colour: str | None = None,
+    usable: Sequence[bool] | np.ndarray | None = None,
+    front: Sequence[int] | np.ndarray | None = None,
+    step: bool = False,
+    maximise: tuple[bool, bool] = (False, False),
+    title: str | None = None,
+):
     """A scatter of column ``y`` against column ``x`` of a sweep's rows.
 
     Parameters
@@ -103,18 +113,33 @@ def sweep_chart(columns: Mapping[str, Sequence], units: Mapping[str, str], x: st
     n_bad = int(np.sum(~ok))
     if n_bad:
         where = "" if np.all(bad == ~ok) else f", {int(np.sum(~ok & ~drawn))} without values not drawn"
-        ax.scatter(xs[bad], ys[bad], marker="x", color="0.6", s=26, linewidths=1.0, zorder=1,
-                   label=f"unusable ({n_bad}: error or failures{where})")
+        ax.scatter(
+            xs[bad],
+            ys[bad],
+            marker="x",
+            color="0.6",
+            s=26,
+            linewidths=1.0,
+            zorder=1,
+            label=f"unusable ({n_bad}: error or failures{where})",
+        )
     if front is not None and len(front):
         f = np.asarray(front, dtype=int)
         fx, fy = xs[f], ys[f]
-        ax.scatter(fx, fy, s=70, facecolors="none", edgecolors="tab:red", linewidths=1.6, zorder=3,
-                   label=f"Pareto front ({len(f)})")
+        ax.scatter(
+            fx,
+            fy,
+            s=70,
+            facecolors="none",
+            edgecolors="tab:red",
+            linewidths=1.6,
+            zorder=3,
+            label=f"Pareto front ({len(f)})",
+        )
         if step:
             # the edge of the dominated region: level at each point's y until the next point's x
             order = np.argsort(-fx if maximise[0] else fx, kind="stable")
-            ax.step(fx[order], fy[order], where="post", color="tab:red", linewidth=1.0, zorder=2,
-                    label="front (step)")
+            ax.step(fx[order], fy[order], where="post", color="tab:red", linewidth=1.0, zorder=2, label="front (step)")
     ax.set_xlabel(_label(x, units))
     ax.set_ylabel(_label(y, units))
     if title:

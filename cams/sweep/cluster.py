@@ -83,13 +83,25 @@ def executor(spec: str, workers: int | None = None) -> Iterator[tuple[Executor, 
 
     spec = spec.strip()
     cluster = None
-    for name in ("distributed", "distributed.scheduler", "distributed.nanny", "distributed.worker",
-                 "distributed.core", "distributed.batched", "distributed.comm"):
+    for name in (
+        "distributed",
+        "distributed.scheduler",
+        "distributed.nanny",
+        "distributed.worker",
+        "distributed.core",
+        "distributed.batched",
+        "distributed.comm",
+    ):
         logging.getLogger(name).setLevel(logging.ERROR)  # quiet: a sweep's table, not the cluster's log
     try:
         if spec == "local":
-            cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
-                                   dashboard_address=None, silence_logs=logging.ERROR)
+            cluster = LocalCluster(
+                n_workers=workers or os.cpu_count() or 1,
+                threads_per_worker=1,
+                processes=True,
+                dashboard_address=None,
+                silence_logs=logging.ERROR,
+            )
             client = Client(cluster)
         else:
             client = Client(spec, timeout=CONNECT_TIMEOUT)

@@ -24,8 +24,26 @@ from laws.errors import InputError
 __all__ = ["UNITS", "SweepTable", "split_unit", "read_table", "write_rows"]
 
 #: The unit suffixes a result column's name may end with (``_mm``, ``_deg``...), longest tried first.
-UNITS = ("mm", "deg", "MPa", "GPa", "um", "µm", "m", "s", "ms", "N", "Nm", "N_mm", "rpm", "Hz", "J", "kg", "W",
-         "percent")
+UNITS = (
+    "mm",
+    "deg",
+    "MPa",
+    "GPa",
+    "um",
+    "µm",
+    "m",
+    "s",
+    "ms",
+    "N",
+    "Nm",
+    "N_mm",
+    "rpm",
+    "Hz",
+    "J",
+    "kg",
+    "W",
+    "percent",
+)
 
 
 def split_unit(header: str) -> tuple[str, str]:
@@ -92,8 +110,11 @@ class SweepTable:
             return name
         if name in self.headers:
             return self.names[self.headers.index(name)]
-        raise InputError(field, f"{name!r} is not a column of {self.path}; the columns are: "
-                                f"{', '.join(self.names)} (with or without the unit suffix)")
+        raise InputError(
+            field,
+            f"{name!r} is not a column of {self.path}; the columns are: "
+            f"{', '.join(self.names)} (with or without the unit suffix)",
+        )
 
     def label(self, name: str) -> str:
         """``"R0 (mm)"``: the column with its unit, for a table's header or a chart's axis."""
@@ -127,8 +148,10 @@ def _read_csv(path: Path, field: str) -> tuple[list[str], list[list[str]], int]:
 
 
 def _read_parquet(path: Path, field: str) -> tuple[list[str], list[list[str]], int]:
+    import importlib
+
     try:
-        import pyarrow.parquet as pq
+        pq = importlib.import_module("pyarrow.parquet")  # optional: a module of no type stubs
     except ImportError:
         raise InputError(field, f"{path} is Parquet: install pyarrow (pip install pyarrow) to read it") from None
     try:
@@ -165,11 +188,12 @@ def read_table(path: str | os.PathLike, field: str = "--from") -> SweepTable:
         names = list(header)
     units = {n: (split_unit(h)[1] if n != h else "") for n, h in zip(names, header, strict=True)}
     columns = {n: _cells_to_column([r[j] for r in cells]) for j, n in enumerate(names)}
-    return SweepTable(path=p, headers=tuple(header), names=tuple(names), units=units, columns=columns,
-                      cells=cells, dropped=dropped)
+    return SweepTable(
+        path=p, headers=tuple(header), names=tuple(names), units=units, columns=columns, cells=cells, dropped=dropped
+    )
 
 
-def write_rows(path: str | os.PathLike, table: SweepTable, rows: Sequence[int], field: str) -> Path:
+def write_rows(path: str | os.PathLike, table: SweepTable, rows: Sequence[int] | np.ndarray, field: str) -> Path:
     """Write ``table``'s header and the ``rows`` (positions, in that order) as a CSV, whole or not at all."""
     from cams.io.files import atomic_write
 

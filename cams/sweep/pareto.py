@@ -172,8 +172,9 @@ class Front:
     ties: tuple[tuple[int, ...], ...]
 
 
-def pareto_front(columns: Mapping[str, Sequence], objectives: Sequence[Objective], *,
-                 usable: np.ndarray | None = None) -> Front:
+def pareto_front(
+    columns: Mapping[str, Sequence], objectives: Sequence[Objective], *, usable: np.ndarray | None = None
+) -> Front:
     """The front of a table given as columns (name -> values), over ``objectives`` named as its columns.
 
     Parameters
@@ -219,5 +220,11 @@ def pareto_front(columns: Mapping[str, Sequence], objectives: Sequence[Objective
     for i in front:
         groups.setdefault(tuple(p[i]), []).append(int(i))
     ties = tuple(tuple(g) for g in groups.values() if len(g) > 1)
-    return Front(objectives=tuple(objectives), rows=front, unusable=int(np.sum(~usable)),
-                 empty=int(np.sum(usable & ~finite)), compared=len(cand), ties=ties)
+    return Front(
+        objectives=tuple(objectives),
+        rows=front,
+        unusable=int(np.sum(~usable)),
+        empty=int(np.sum(usable & ~finite)),
+        compared=len(cand),
+        ties=ties,
+    )

@@ -28,16 +28,36 @@ def _brute(rows, cols):
     """The definition over usable rows: no other row <= on every column and < on one."""
     ok = [r for r in rows if not r["error"] and not r["failures"]]
     pts = [tuple(float(r[c]) for c in cols) for r in ok]
-    return [r for r, a in zip(ok, pts)
-            if not any(all(b_ <= a_ for a_, b_ in zip(a, b)) and any(b_ < a_ for a_, b_ in zip(a, b)) for b in pts)]
+    return [
+        r
+        for r, a in zip(ok, pts, strict=True)
+        if not any(
+            all(b_ <= a_ for a_, b_ in zip(a, b, strict=True)) and any(b_ < a_ for a_, b_ in zip(a, b, strict=True))
+            for b in pts
+        )
+    ]
 
 
 @pytest.fixture(scope="module")
 def swept(tmp_path_factory):
     d = tmp_path_factory.mktemp("front")
     out = d / "s.csv"
-    code = main(["sweep", str(EXAMPLES / "rocker_force.toml"), *VARY, "--out", str(out), "--pareto", "R0,L",
-                 "--plot", str(d / "s.png"), "--quiet", "--jobs", "1"])
+    code = main(
+        [
+            "sweep",
+            str(EXAMPLES / "rocker_force.toml"),
+            *VARY,
+            "--out",
+            str(out),
+            "--pareto",
+            "R0,L",
+            "--plot",
+            str(d / "s.png"),
+            "--quiet",
+            "--jobs",
+            "1",
+        ]
+    )
     return d, out, code
 
 
@@ -59,15 +79,16 @@ def test_front_of_a_written_table_printed_with_units(swept, capsys):
     header = list(rows[0])
     rise = next(h for h in header if h.startswith("max_pressure") and "rise" in h)  # the rise's peak pressure angle
     name = rise.removesuffix("_deg")
-    code, text, err = _run(capsys, "front", out, "--pareto", f"R0,{name}", "--plot", d / "f.svg",
-                           "--colour", "follower.arm")
+    code, text, err = _run(
+        capsys, "front", out, "--pareto", f"R0,{name}", "--plot", d / "f.svg", "--colour", "follower.arm"
+    )
     assert code == 0, err
     expected = _brute(rows, ["R0_mm", rise])
     lines = text.splitlines()
     assert lines[0].startswith(f"Pareto front over R0 (mm), {name} (deg)")
     assert f"{len(expected)} of 6 rows" in lines[0]
     assert "R0 (mm)" in lines[1] and f"{name} (deg)" in lines[1]
-    printed = [ln.split() for ln in lines[2:2 + len(expected)]]
+    printed = [ln.split() for ln in lines[2 : 2 + len(expected)]]
     assert sorted(p[-2] for p in printed) == sorted(r["R0_mm"] for r in expected)  # the written digits
     assert sorted(p[-1] for p in printed) == sorted(r[rise] for r in expected)
     assert "wrote" in err and (d / "f.svg").read_bytes().startswith(b"<?xml")
@@ -92,13 +113,16 @@ def test_an_all_unusable_table_has_an_empty_front(tmp_path, capsys):
     assert _read(tmp_path / "t.pareto.csv") == []
 
 
-@pytest.mark.parametrize(("extra", "field"), [
-    (["--plot", "c.jpg", "--pareto", "R0,L"], "--plot"),
-    (["--plot", "c.png"], "--plot"),  # no axes
-    (["--x", "R0"], "--x"),  # an axis without a chart
-    (["--pareto", "R0,,L"], "--pareto"),
-    (["--dask", "somewhere"], "--dask"),
-])
+@pytest.mark.parametrize(
+    ("extra", "field"),
+    [
+        (["--plot", "c.jpg", "--pareto", "R0,L"], "--plot"),
+        (["--plot", "c.png"], "--plot"),  # no axes
+        (["--x", "R0"], "--x"),  # an axis without a chart
+        (["--pareto", "R0,,L"], "--pareto"),
+        (["--dask", "somewhere"], "--dask"),
+    ],
+)
 def test_bad_options_refused_before_solving(tmp_path, capsys, monkeypatch, extra, field):
     import cams.sweep
 
@@ -106,8 +130,15 @@ def test_bad_options_refused_before_solving(tmp_path, capsys, monkeypatch, extra
         raise AssertionError("solved before checking the options")
 
     monkeypatch.setattr(cams.sweep, "sweep", never)
-    code, _, err = _run(capsys, "sweep", EXAMPLES / "rocker_force.toml", *VARY, "--out", tmp_path / "s.csv",
-                        *[str(tmp_path / e) if e.endswith((".jpg", ".png")) else e for e in extra])
+    code, _, err = _run(
+        capsys,
+        "sweep",
+        EXAMPLES / "rocker_force.toml",
+        *VARY,
+        "--out",
+        tmp_path / "s.csv",
+        *[str(tmp_path / e) if e.endswith((".jpg", ".png")) else e for e in extra],
+    )
     assert code == 2, err
     assert err.count("\n") == 1 and f" {field}: " in err, err
     assert not (tmp_path / "s.csv").exists()

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from cams.present.sweepplot import save_chart, sweep_chart
-from cams.sweep.pareto import parse_objectives, pareto_front, usable_mask
+from cams.sweep.pareto import pareto_front, parse_objectives, usable_mask
 from laws.errors import InputError
 
 COLS = {
@@ -27,8 +27,9 @@ def _by_label(ax, start):
 def chart():
     usable = usable_mask(COLS["error"], COLS["failures"])
     front = pareto_front(COLS, parse_objectives("R0,max_pressure_angle_rise"), usable=usable)
-    fig = sweep_chart(COLS, UNITS, "R0", "max_pressure_angle_rise", colour="L", usable=usable, front=front.rows,
-                      step=True)
+    fig = sweep_chart(
+        COLS, UNITS, "R0", "max_pressure_angle_rise", colour="L", usable=usable, front=front.rows, step=True
+    )
     return fig, front
 
 
@@ -60,7 +61,8 @@ def test_front_points_and_staircase_are_paretos(chart):
     assert sorted(front.rows.tolist()) == [0, 1, 2, 5]
     (pts,) = _by_label(ax, "Pareto front")
     assert sorted(map(tuple, pts.get_offsets().tolist())) == sorted(
-        (COLS["R0"][i], COLS["max_pressure_angle_rise"][i]) for i in front.rows)
+        (COLS["R0"][i], COLS["max_pressure_angle_rise"][i]) for i in front.rows
+    )
     (step,) = _by_label(ax, "front (step)")
     assert step.get_xdata().tolist() == [12.0, 15.0, 20.0, 25.0]  # by R0, increasing
     assert step.get_ydata().tolist() == [43.0, 36.0, 30.0, 28.0]

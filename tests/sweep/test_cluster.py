@@ -47,8 +47,9 @@ def scenario():
         rec["pids"] = list(client.run(os.getpid).values())
         rec["cams"] = set(client.run(lambda: __import__("cams").__file__).values())
         rec["rows"] = list(ex.map(cams.sweep._solve_one, jobs))
-        pending = [ex.submit(cams.sweep._solve_one, jobs[k % len(jobs)][:2] + ((100.0 + k, 45.0), None))
-                   for k in range(40)]
+        pending = [
+            ex.submit(cams.sweep._solve_one, (*jobs[k % len(jobs)][:2], (100.0 + k, 45.0), None)) for k in range(40)
+        ]
         t0 = time.perf_counter()
         stop()
         rec["stop_seconds"] = time.perf_counter() - t0
@@ -81,7 +82,9 @@ def test_stop_cancels_pending_designs_promptly_and_leaves_no_worker(scenario):
 
 def test_missing_dask_names_the_option_and_the_extra(monkeypatch):
     monkeypatch.setitem(sys.modules, "distributed", None)
-    with pytest.raises(InputError, match=r'^--dask: needs dask\.distributed, an optional extra: pip install "cams\[dask\]"$'):
+    with pytest.raises(
+        InputError, match=r'^--dask: needs dask\.distributed, an optional extra: pip install "cams\[dask\]"$'
+    ):
         with executor("local", 1):
             pass
 

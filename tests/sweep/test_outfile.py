@@ -47,8 +47,11 @@ def test_columns_typed_and_the_cut_line_dropped(table):
 
 def test_a_column_named_with_or_without_its_unit(table):
     assert table.column("R0") == "R0" == table.column("R0_mm")
-    with pytest.raises(InputError, match=r"^--pareto: 'Rb' is not a column of .*s\.csv; the columns are: index, "
-                                         r"follower\.arm, R0, max_pressure_angle_rise, verified, failures, error"):
+    with pytest.raises(
+        InputError,
+        match=r"^--pareto: 'Rb' is not a column of .*s\.csv; the columns are: index, "
+        r"follower\.arm, R0, max_pressure_angle_rise, verified, failures, error",
+    ):
         table.column("Rb")
 
 

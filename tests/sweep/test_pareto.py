@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from cams.sweep.pareto import Objective, non_dominated, parse_objectives, pareto_front, usable_mask
+from cams.sweep.pareto import Objective, non_dominated, pareto_front, parse_objectives, usable_mask
 from laws.errors import InputError
 
 
@@ -16,7 +16,10 @@ def brute_front(p: np.ndarray, maximise=None) -> np.ndarray:
     q = [[(-v if maximise and maximise[j] else v) for j, v in enumerate(row)] for row in p.tolist()]
     on = []
     for a in q:
-        dominated = any(all(bj <= aj for aj, bj in zip(a, b)) and any(bj < aj for aj, bj in zip(a, b)) for b in q)
+        dominated = any(
+            all(bj <= aj for aj, bj in zip(a, b, strict=True)) and any(bj < aj for aj, bj in zip(a, b, strict=True))
+            for b in q
+        )
         on.append(not dominated)
     return np.array(on, dtype=bool)
 
