@@ -67,6 +67,8 @@ DOCTEST_MODULES = [
     "cams.words",
     "cams.present.text",
     "cams.sweep",
+    "cams.sweep.pareto",
+    "cams.sweep.outfile",
     "cams.profile.roller",
     # exports for manufacture
     "cams.manufacture.drawing",

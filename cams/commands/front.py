@@ -12,7 +12,15 @@ from pathlib import Path
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
 from laws.errors import InputError
 
-__all__ = ["register", "run", "add_front_arguments", "check_front_arguments", "pareto_path", "front_and_chart"]
+__all__ = [
+    "register",
+    "run",
+    "add_front_arguments",
+    "parse_axes",
+    "check_front_arguments",
+    "pareto_path",
+    "front_and_chart",
+]
 
 #: Rows of the front printed on the terminal (all of them are in the saved CSV).
 PRINTED_ROWS = 20
@@ -25,30 +33,33 @@ def pareto_path(out: str | Path) -> Path:
 
 
 def add_front_arguments(q) -> None:
-    """The options of a front and a chart: ``--pareto``, ``--plot``, ``--x``, ``--y``, ``--colour``."""
+    """The options of a front and a chart: ``--pareto``, ``--plot``, ``--axes`` (short helps: ``cams sweep``'s
+    help stays on one screen; the README and docs/files.md say the rest)."""
     q.add_argument(
         "--pareto",
-        metavar="COL,COL[,...]",
-        help="the non-dominated rows over these columns (minimised; max:COL to maximise one), usable rows "
-        "only; printed and saved beside the table as NAME.pareto.csv. Columns with or without their unit "
-        "suffix (R0 or R0_mm)",
+        metavar="COLS",
+        help="the Pareto front over COLS (R0,L; max:COL maximises), usable rows: printed, saved as NAME.pareto.csv",
     )
-    q.add_argument(
-        "--plot",
-        metavar="CHART.png",
-        help="draw a chart of --y against --x (default: the first two --pareto columns) coloured by "
-        "--colour, the unusable rows as grey x and the front highlighted; .png, .svg or .pdf",
-    )
-    q.add_argument("--x", metavar="COL", help="the chart's horizontal axis (default: the first --pareto column)")
-    q.add_argument("--y", metavar="COL", help="the chart's vertical axis (default: the second --pareto column)")
-    q.add_argument(
-        "--colour",
-        "--color",
-        dest="colour",
-        metavar="COL",
-        help="the column colouring the chart's points (a colour bar with its unit; default: the third "
-        "--pareto column, if any)",
-    )
+    q.add_argument("--plot", metavar="CHART", help="a chart (.png/.svg/.pdf) of --axes with the front")
+    q.add_argument("--axes", metavar="X,Y[,C]", help="the chart's x,y[,colour] (default: --pareto's)")
+
+
+def parse_axes(args) -> tuple[str | None, str | None, str | None]:
+    """``--axes X,Y[,C]`` -> (x, y, colour); (None, None, None) when not given.
+
+    Raises
+    ------
+    InputError
+        Naming ``--axes``: not two or three columns, or given without ``--plot``.
+    """
+    if args.axes is None:
+        return None, None, None
+    if args.plot is None:
+        raise InputError("--axes", "are the chart's: give --plot CHART.png too")
+    parts = [a.strip() for a in args.axes.split(",")]
+    if len(parts) not in (2, 3) or not all(parts):
+        raise InputError("--axes", f"{args.axes!r}: give X,Y or X,Y,COLOUR (column names)")
+    return parts[0], parts[1], parts[2] if len(parts) == 3 else None
 
 
 def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
@@ -64,9 +75,7 @@ def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
     if args.pareto is not None:
         parse_objectives(args.pareto)
     asked = args.pareto is not None or args.plot is not None
-    for opt in ("x", "y", "colour"):
-        if getattr(args, opt) is not None and args.plot is None:
-            raise InputError(f"--{opt}", "is an axis of the chart: give --plot CHART.png too")
+    x, _, _ = parse_axes(args)
     if not asked:
         return []
     if table is None or str(table) == STDOUT or str(table).startswith("/dev/"):
@@ -78,8 +87,8 @@ def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
         ext = Path(args.plot).suffix.lower().lstrip(".")
         if ext not in FORMATS:
             raise InputError("--plot", f"{args.plot!r}: the chart is written as .png, .svg or .pdf")
-        if args.pareto is None and (args.x is None or args.y is None):
-            raise InputError("--plot", "give --x and --y, or --pareto with two columns (the chart's axes)")
+        if args.pareto is None and x is None:
+            raise InputError("--plot", "give --axes X,Y, or --pareto with two columns (the chart's axes)")
     outs = [("--pareto", pareto_path(table) if args.pareto is not None else None), ("--plot", args.plot)]
     return check_output_paths(outs, inputs=[*inputs, ("--out", table)])
 
@@ -153,11 +162,15 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
         from cams.present.sweepplot import save_chart, sweep_chart
 
         objs = front.objectives if front is not None else ()
-        x = table.column(args.x, "--x") if args.x else (objs[0].column if objs else None)
-        y = table.column(args.y, "--y") if args.y else (objs[1].column if len(objs) > 1 else None)
-        if x is None or y is None:
-            raise InputError("--plot", "give --x and --y, or --pareto with two columns (the chart's axes)")
-        colour = table.column(args.colour, "--colour") if args.colour else (objs[2].column if len(objs) > 2 else None)
+        ax, ay, ac = parse_axes(args)
+        if ax is not None and ay is not None:
+            x, y = table.column(ax, "--axes"), table.column(ay, "--axes")
+            colour = table.column(ac, "--axes") if ac else None
+        elif len(objs) >= 2:
+            x, y = objs[0].column, objs[1].column
+            colour = objs[2].column if len(objs) > 2 else None
+        else:
+            raise InputError("--plot", "give --axes X,Y, or --pareto with two columns (the chart's axes)")
         by = {o.column: o.maximise for o in objs}
         step = len(objs) == 2 and {x, y} == set(by)  # the staircase is the front's edge in these two columns only
         fig = sweep_chart(

@@ -56,14 +56,13 @@ def _run(args) -> int:
 
 
 def _add_front_arguments(q) -> None:
-    """The options of the front, the chart and the cluster: ``--pareto``, ``--plot``, ``--x``, ``--y``,
-    ``--colour`` (:mod:`cams.commands.front`, shared with ``cams front``) and ``--dask``."""
+    """The options of the front, the chart and the cluster: ``--pareto``, ``--plot``, ``--axes``
+    (:mod:`cams.commands.front`, shared with ``cams front``) and ``--dask``."""
     from cams.commands.front import add_front_arguments
 
     add_front_arguments(q)
-    q.add_argument("--dask", metavar="ADDRESS|local",
-                   help="solve on a Dask cluster: its scheduler's address (tcp://host:8786; cams installed on every "
-                   "worker) or local (a local cluster of --jobs worker processes); needs pip install \"cams[dask]\"")
+    q.add_argument("--dask", metavar="ADDRESS", help="solve on a Dask cluster: tcp://host:8786, or local (--jobs "
+                   "workers); pip install \"cams[dask]\"")
 
 
 def _before_sweep(args, out) -> dict:

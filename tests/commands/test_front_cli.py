@@ -80,7 +80,7 @@ def test_front_of_a_written_table_printed_with_units(swept, capsys):
     rise = next(h for h in header if h.startswith("max_pressure") and "rise" in h)  # the rise's peak pressure angle
     name = rise.removesuffix("_deg")
     code, text, err = _run(
-        capsys, "front", out, "--pareto", f"R0,{name}", "--plot", d / "f.svg", "--colour", "follower.arm"
+        capsys, "front", out, "--pareto", f"R0,{name}", "--plot", d / "f.svg", "--axes", f"R0_mm,{name},follower.arm"
     )
     assert code == 0, err
     expected = _brute(rows, ["R0_mm", rise])
@@ -118,7 +118,8 @@ def test_an_all_unusable_table_has_an_empty_front(tmp_path, capsys):
     [
         (["--plot", "c.jpg", "--pareto", "R0,L"], "--plot"),
         (["--plot", "c.png"], "--plot"),  # no axes
-        (["--x", "R0"], "--x"),  # an axis without a chart
+        (["--axes", "R0,L"], "--axes"),  # axes without a chart
+        (["--plot", "c.png", "--axes", "R0"], "--axes"),  # one axis
         (["--pareto", "R0,,L"], "--pareto"),
         (["--dask", "somewhere"], "--dask"),
     ],
