@@ -154,7 +154,7 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
             _print_front(table, front, saved)
         for g in front.ties:
             print(f"rows {', '.join(map(str, g))} have equal objectives: all on the front")
-        print(f"wrote {saved}: the {len(front.rows)} rows of the front, the table's columns", file=sys.stderr)
+        print(f"wrote {saved}: the front's {len(front.rows)} row(s), the table's columns", file=sys.stderr)
         if not len(front.rows):
             print(f"{path}: no usable row, the front is empty", file=sys.stderr)
             code = EXIT_CHECK_FAILED

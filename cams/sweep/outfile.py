@@ -164,7 +164,10 @@ def _read_parquet(path: Path, field: str) -> tuple[list[str], list[list[str]], i
     def cell(v) -> str:
         if v is None or (isinstance(v, float) and math.isnan(v)):
             return ""
-        return repr(float(v)) if isinstance(v, float) else str(v)
+        if isinstance(v, float):
+            r = repr(v)  # the shortest text that reads back the same number, as the CSV writer's
+            return r[:-2] if r.endswith(".0") else r
+        return str(v)
 
     cells = [[cell(data[h][i]) for h in header] for i in range(t.num_rows)]
     return header, cells, 0

@@ -148,3 +148,33 @@ def test_bad_options_refused_before_solving(tmp_path, capsys, monkeypatch, extra
 def test_front_needs_a_file_to_read_back(capsys):
     code, _, err = _run(capsys, "sweep", EXAMPLES / "rocker_force.toml", *VARY, "--out", "-", "--pareto", "R0,L")
     assert code == 2 and "--pareto: the front and the chart are read back from the table" in err
+
+
+def test_dask_reaches_the_engine_as_an_executor_factory(tmp_path, capsys, monkeypatch):
+    """The seam: ``--dask local --jobs 2`` gives the engine ``executor_factory``, cluster.executor bound to both."""
+    import cams.sweep
+    import cams.sweep.cluster
+
+    seen = {}
+
+    def engine(base, vary, *, executor_factory=None, **other):  # other: the options of the engine of the day
+        seen["factory"] = executor_factory
+        return cams.sweep.SweepResult(keys=(), rows=[], seconds=1.0, workers=1)
+
+    monkeypatch.setattr(cams.sweep, "sweep", engine)
+    code, _, err = _run(
+        capsys,
+        "sweep",
+        EXAMPLES / "rocker_force.toml",
+        *VARY,
+        "--out",
+        tmp_path / "s.csv",
+        "--dask",
+        "local",
+        "--jobs",
+        "2",
+        "--quiet",
+    )
+    assert code == 0, err
+    f = seen["factory"]
+    assert f.func is cams.sweep.cluster.executor and f.args == ("local", 2) and not f.keywords

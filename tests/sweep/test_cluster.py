@@ -105,3 +105,14 @@ def test_unreachable_scheduler_is_one_line(monkeypatch):
     with pytest.raises(InputError, match=r"^--dask: cannot reach the Dask scheduler at 'tcp://127\.0\.0\.1:9'"):
         with executor("tcp://127.0.0.1:9"):
             pass
+
+
+def test_job_function_travels_by_reference():
+    """cloudpickle sends the job function as its module and name (the workers import cams), not as code."""
+    import cloudpickle
+
+    blob = cloudpickle.dumps(cams.sweep._solve_one)
+    assert b"cams.sweep" in blob and b"_solve_one" in blob and len(blob) < 200
+    assert cloudpickle.loads(blob) is cams.sweep._solve_one
+    job = _jobs()[0]
+    assert cloudpickle.loads(cloudpickle.dumps(job)) == job  # plain data: the design file's dict
