@@ -40,7 +40,7 @@ ALLOWED = {
     # the file schema read before any design exists, refusing what the command does not take
     "cams/machine/machinefile.py": "a machine file's follower table: a feed cam is a roller's (refused before a "
                                    "design is built)",
-    "cams/sweep.py": "a sweep's base file: the sweep solves roller designs (refused before a design is built)",
+    "cams/sweep/__init__.py": "a sweep's base file: the sweep solves roller designs (refused before a design is built)",
     # the solvers below the pipelines: the motion design's entry picks its model by face and kind
     "optimize/motion/design.py": "the motion design's models: one program per face and follower kind, chosen in "
                                  "its entry (the optimize layer sits below the pipelines)",
