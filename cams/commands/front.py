@@ -87,7 +87,7 @@ def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
         ext = Path(args.plot).suffix.lower().lstrip(".")
         if ext not in FORMATS:
             raise InputError("--plot", f"{args.plot!r}: the chart is written as .png, .svg or .pdf")
-        if args.pareto is None and x is None:
+        if x is None and (args.pareto is None or len(parse_objectives(args.pareto)) < 2):
             raise InputError("--plot", "give --axes X,Y, or --pareto with two columns (the chart's axes)")
     outs = [("--pareto", pareto_path(table) if args.pareto is not None else None), ("--plot", args.plot)]
     return check_output_paths(outs, inputs=[*inputs, ("--out", table)])
@@ -126,8 +126,8 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
     Raises
     ------
     InputError
-        Naming ``--pareto``, ``--x``, ``--y`` or ``--colour``: a column the table does not have (the message lists
-        them) or that holds no numbers; naming ``field``: the table cannot be read.
+        Naming ``--pareto`` or ``--axes``: a column the table does not have (the message lists them) or that
+        holds no numbers; naming ``field``: the table cannot be read. Nothing is written then.
     """
     from cams.sweep.outfile import read_table, write_rows
     from cams.sweep.pareto import Objective, pareto_front, parse_objectives, usable_mask
@@ -135,33 +135,15 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
     table = read_table(path, field)
     n = len(table)
     usable = usable_mask(table.columns.get("error", [None] * n), table.columns.get("failures", [None] * n))
-    front = None
-    code = EXIT_OK
-    if table.dropped:
-        print(f"{path}: {table.dropped} line(s) cut short left out (an interrupted writer)", file=sys.stderr)
+    # every column named is resolved, the front computed and the chart built before anything is written
+    objs: tuple[Objective, ...] = ()
     if args.pareto is not None:
-        objectives = tuple(
-            Objective(table.column(o.column, "--pareto"), o.maximise) for o in parse_objectives(args.pareto)
-        )
-        front = pareto_front(table.columns, objectives, usable=usable)
-        saved = write_rows(pareto_path(path), table, front.rows, "--pareto")
-        names = ", ".join(f"{o} ({table.units[o.column]})" if table.units.get(o.column) else str(o) for o in objectives)
-        print(
-            f"Pareto front over {names} (minimised unless max:): {len(front.rows)} of {n} rows "
-            f"({front.unusable} unusable and {front.empty} with an empty objective left out)"
-        )
-        if len(front.rows):
-            _print_front(table, front, saved)
-        for g in front.ties:
-            print(f"rows {', '.join(map(str, g))} have equal objectives: all on the front")
-        print(f"wrote {saved}: the front's {len(front.rows)} row(s), the table's columns", file=sys.stderr)
-        if not len(front.rows):
-            print(f"{path}: no usable row, the front is empty", file=sys.stderr)
-            code = EXIT_CHECK_FAILED
+        objs = tuple(Objective(table.column(o.column, "--pareto"), o.maximise) for o in parse_objectives(args.pareto))
+    front = pareto_front(table.columns, objs, usable=usable) if objs else None
+    fig = None
     if args.plot is not None:
-        from cams.present.sweepplot import save_chart, sweep_chart
+        from cams.present.sweepplot import sweep_chart
 
-        objs = front.objectives if front is not None else ()
         ax, ay, ac = parse_axes(args)
         if ax is not None and ay is not None:
             x, y = table.column(ax, "--axes"), table.column(ay, "--axes")
@@ -185,6 +167,27 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
             maximise=(by.get(x, False), by.get(y, False)),
             title=f"{Path(path).name}: {n} designs, {int(usable.sum())} usable",
         )
+    if table.dropped:
+        print(f"{path}: {table.dropped} line(s) cut short left out (an interrupted writer)", file=sys.stderr)
+    code = EXIT_OK
+    if front is not None:
+        saved = write_rows(pareto_path(path), table, front.rows, "--pareto")
+        names = ", ".join(f"{o} ({table.units[o.column]})" if table.units.get(o.column) else str(o) for o in objs)
+        print(
+            f"Pareto front over {names} (minimised unless max:): {len(front.rows)} of {n} rows "
+            f"({front.unusable} unusable and {front.empty} with an empty objective left out)"
+        )
+        if len(front.rows):
+            _print_front(table, front, saved)
+        for g in front.ties:
+            print(f"rows {', '.join(map(str, g))} have equal objectives: all on the front")
+        print(f"wrote {saved}: the front's {len(front.rows)} row(s), the table's columns", file=sys.stderr)
+        if not len(front.rows):
+            print(f"{path}: no usable row, the front is empty", file=sys.stderr)
+            code = EXIT_CHECK_FAILED
+    if fig is not None:
+        from cams.present.sweepplot import save_chart
+
         print(f"wrote {save_chart(fig, args.plot)}", file=sys.stderr)
     return code
 

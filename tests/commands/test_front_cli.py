@@ -118,6 +118,7 @@ def test_an_all_unusable_table_has_an_empty_front(tmp_path, capsys):
     [
         (["--plot", "c.jpg", "--pareto", "R0,L"], "--plot"),
         (["--plot", "c.png"], "--plot"),  # no axes
+        (["--plot", "c.png", "--pareto", "R0"], "--plot"),  # one objective: no axes either
         (["--axes", "R0,L"], "--axes"),  # axes without a chart
         (["--plot", "c.png", "--axes", "R0"], "--axes"),  # one axis
         (["--pareto", "R0,,L"], "--pareto"),
@@ -178,3 +179,12 @@ def test_dask_reaches_the_engine_as_an_executor_factory(tmp_path, capsys, monkey
     assert code == 0, err
     f = seen["factory"]
     assert f.func is cams.sweep.cluster.executor and f.args == ("local", 2) and not f.keywords
+
+
+def test_a_bad_axis_writes_nothing(swept, capsys, tmp_path):
+    _, out, _ = swept
+    t = tmp_path / "t.csv"
+    t.write_bytes(out.read_bytes())
+    code, text, err = _run(capsys, "front", t, "--pareto", "R0,L", "--plot", tmp_path / "c.png", "--axes", "R0,zz")
+    assert code == 2 and text == "" and "--axes: 'zz' is not a column of" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["t.csv"]
