@@ -199,7 +199,8 @@ def pareto_front(
         if o.column not in columns:
             raise InputError("--pareto", f"{o.column!r} is not a column; the columns are: {', '.join(names)}")
         try:
-            vals.append(np.array([np.nan if v is None or v == "" else v for v in columns[o.column]], dtype=float))
+            cells = columns[o.column]
+            vals.append(np.array([np.nan if v is None or (isinstance(v, str) and not v) else v for v in cells], float))
         except (TypeError, ValueError):
             raise InputError("--pareto", f"{o.column!r} is not a column of numbers") from None
     if usable is None:
