@@ -99,7 +99,8 @@ def executor(spec: str, workers: int | None = None) -> Iterator[tuple[Executor, 
                 n_workers=workers or os.cpu_count() or 1,
                 threads_per_worker=1,
                 processes=True,
-                dashboard_address=None,
+                dashboard_address=None,  # no dashboard; its bare HTTP server (always started) on a free port:
+                scheduler_kwargs={"dashboard_address": ":0"},  # not 8787, which another cluster may hold
                 silence_logs=logging.ERROR,
             )
             client = Client(cluster)

@@ -1,7 +1,7 @@
 """The sweep on a Dask cluster: a local cluster of two workers gives the process pool's rows; stop() is prompt.
 
-One cluster is started for the module (it takes seconds): the fixture runs the whole scenario once and the tests
-read what it recorded.
+One cluster is started for the module (it takes seconds): the fixture runs the whole scenario once and one test
+reads what it recorded.
 """
 
 from __future__ import annotations
@@ -60,21 +60,19 @@ def scenario():
     return rec
 
 
-def test_dask_rows_equal_the_process_pools(scenario):
+def test_local_cluster_of_two_workers(scenario):
+    """One test for the one cluster (xdist could send a second test to another process, which would start its own).
+
+    The rows equal the process pool's; two worker processes import this checkout's cams; stop() with designs
+    pending returns promptly (40 designs take ~10 s on two workers), cancels most of them and leaves no worker.
+    """
     with ProcessPoolExecutor(2) as pool:
         expected = list(pool.map(cams.sweep._solve_one, _jobs()))
     assert len(scenario["rows"]) == len(GRID)
     assert scenario["rows"] == expected
     assert sum(1 for r in expected if r["R0"] is not None) >= 3  # designs solved, not rows of errors compared
-
-
-def test_two_worker_processes_importing_this_cams(scenario):
     assert len(scenario["pids"]) == 2 and os.getpid() not in scenario["pids"]
     assert scenario["cams"] == {cams.__file__}
-
-
-def test_stop_cancels_pending_designs_promptly_and_leaves_no_worker(scenario):
-    # 40 designs take ~10 s on two workers: stop() returns well before, most of them never run
     assert scenario["stop_seconds"] < 5.0
     assert scenario["cancelled"] >= 30 and scenario["done"] + scenario["cancelled"] <= 40
     assert scenario["alive_after"] == []

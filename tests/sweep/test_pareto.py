@@ -39,7 +39,7 @@ def tables(draw):
     return np.array(rows, dtype=float).reshape(len(rows), k), maximise
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(tables())
 def test_front_is_the_definitions(t):
     p, maximise = t
