@@ -69,6 +69,8 @@ DOCTEST_MODULES = [
     "cams.sweep",
     "cams.sweep.grid",
     "cams.sweep.output",
+    "cams.sweep.pareto",
+    "cams.sweep.outfile",
     "cams.profile.roller",
     # exports for manufacture
     "cams.manufacture.drawing",

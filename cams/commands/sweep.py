@@ -75,6 +75,7 @@ def _run(args, state: dict) -> int:
         except ImportError:
             raise InputError("--format", "parquet needs pyarrow: pip install 'cams[parquet]'") from None
     files, grid = _grid(args)
+    cluster = _before_sweep(args, out, files)
     check_output_paths([("--out", args.out)], inputs=[("FILE", f) for f in files])
     identity = {**grid.identity(), "format": fmt, "columns": csv_header(grid.keys)}
     done: set[int] = set()
@@ -107,7 +108,8 @@ def _run(args, state: dict) -> int:
     try:
         with progress(wanted(args), "solving the designs", unit="design") as bar:  # none in a log file or pipe
             res = run_grid(grid, workers=args.jobs, done=done, sink=write, keep=False, progress=bar.to,
-                           estimate=None if args.quiet else said, per_design=args.per_design)
+                           estimate=None if args.quiet else said, per_design=args.per_design,
+                           cluster=cluster)
         finished = True
     finally:
         sink.close(finished=finished)
@@ -118,7 +120,49 @@ def _run(args, state: dict) -> int:
     print(f"{out}: {_n(grid.size, 'design')} ({failed} infeasible: without a solution, or not certified, verified or "
           f"buildable{none}); {res.solved} solved in {res.seconds:.2f} s, {res.per_second:.1f} designs/s on "
           f"{res.workers} process(es)", file=sys.stderr)
-    return EXIT_OK if failed == 0 else EXIT_CHECK_FAILED
+    code = EXIT_OK if failed == 0 else EXIT_CHECK_FAILED
+    return max(code, _after_sweep(args, out))
+
+
+def _add_front_arguments(q) -> None:
+    """The options of the front, the chart and the cluster: ``--pareto``, ``--plot``, ``--axes``
+    (:mod:`cams.commands.front`, shared with ``cams front``) and ``--dask``."""
+    from cams.commands.front import add_front_arguments
+
+    add_front_arguments(q)
+    q.add_argument("--dask", metavar="ADDRESS", help="solve on a Dask cluster: tcp://host:8786, or local (--jobs "
+                   "workers); pip install \"cams[dask]\"")
+
+
+def _before_sweep(args, out, files) -> str | None:
+    """Check the front's, the chart's and the cluster's options before solving; the cluster's address, if any.
+
+    Returns
+    -------
+    str or None
+        ``--dask``'s value (``local`` or a scheduler's address) for the engine's ``cluster``; None: this
+        machine's processes.
+    """
+    from cams.commands.front import check_front_arguments
+    from cams.sweep.cluster import check_spec
+
+    check_front_arguments(args, out, inputs=[("FILE", f) for f in files])
+    if args.dask is None:
+        return None
+    check_spec(args.dask, args.jobs)
+    return str(args.dask)
+
+
+def _after_sweep(args, out) -> int:
+    """The front (``--pareto``) and the chart (``--plot``) of the written table, read back from ``out``.
+
+    Returns 0, or 1 when a front is asked for and no row is usable.
+    """
+    if args.pareto is None and args.plot is None:
+        return EXIT_OK
+    from cams.commands.front import front_and_chart
+
+    return front_and_chart(args, out)
 
 
 def register(sub) -> None:
@@ -142,4 +186,5 @@ def register(sub) -> None:
     q.add_argument("--jobs", type=int, help="processes, >= 1 (default: all cores)")
     q.add_argument("--per-design", action="store_true", help="size each design by itself (today's only path)")
     q.add_argument("--quiet", action="store_true", help="no estimate, no progress bar")
+    _add_front_arguments(q)
     q.set_defaults(func=run)

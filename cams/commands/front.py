@@ -1,0 +1,214 @@
+"""``cams front``: the Pareto front and the chart of a sweep's written table, without solving again.
+
+``cams sweep ... --pareto COL,COL --plot F.png`` does the same at the end of a sweep, from the file it
+has just written (:func:`front_and_chart`, shared by both commands).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+from laws.errors import InputError
+
+__all__ = [
+    "register",
+    "run",
+    "add_front_arguments",
+    "parse_axes",
+    "check_front_arguments",
+    "pareto_path",
+    "front_and_chart",
+]
+
+#: Rows of the front printed on the terminal (all of them are in the saved CSV).
+PRINTED_ROWS = 20
+
+
+def pareto_path(out: str | Path) -> Path:
+    """Where the front of the table ``out`` is saved: beside it, ``sweep.csv`` -> ``sweep.pareto.csv``."""
+    p = Path(out)
+    return p.with_name(f"{p.stem}.pareto.csv")
+
+
+def add_front_arguments(q) -> None:
+    """The options of a front and a chart: ``--pareto``, ``--plot``, ``--axes`` (short helps: ``cams sweep``'s
+    help stays on one screen; the README and docs/files.md say the rest)."""
+    q.add_argument(
+        "--pareto",
+        metavar="COLS",
+        help="the Pareto front over COLS (R0,L; max:COL maximises), usable rows: printed, saved as NAME.pareto.csv",
+    )
+    q.add_argument("--plot", metavar="CHART", help="a chart (.png/.svg/.pdf) of --axes with the front")
+    q.add_argument("--axes", metavar="X,Y[,C]", help="the chart's x,y[,colour] (default: --pareto's)")
+
+
+def parse_axes(args) -> tuple[str | None, str | None, str | None]:
+    """``--axes X,Y[,C]`` -> (x, y, colour); (None, None, None) when not given.
+
+    Raises
+    ------
+    InputError
+        Naming ``--axes``: not two or three columns, or given without ``--plot``.
+    """
+    if args.axes is None:
+        return None, None, None
+    if args.plot is None:
+        raise InputError("--axes", "are the chart's: give --plot CHART.png too")
+    parts = [a.strip() for a in args.axes.split(",")]
+    if len(parts) not in (2, 3) or not all(parts):
+        raise InputError("--axes", f"{args.axes!r}: give X,Y or X,Y,COLOUR (column names)")
+    return parts[0], parts[1], parts[2] if len(parts) == 3 else None
+
+
+def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
+    """Check ``--pareto``'s form, ``--plot``'s extension and paths, before anything is solved or read.
+
+    ``table`` is the sweep's output (None: written to standard output, which cannot be read back).
+    Returns the paths written: the front's CSV and the chart, those asked for.
+    """
+    from cams.io.files import STDOUT, check_output_paths
+    from cams.present.sweepplot import FORMATS
+    from cams.sweep.pareto import parse_objectives
+
+    if args.pareto is not None:
+        parse_objectives(args.pareto)
+    asked = args.pareto is not None or args.plot is not None
+    x, _, _ = parse_axes(args)
+    if not asked:
+        return []
+    if table is None or str(table) == STDOUT or str(table).startswith("/dev/"):
+        raise InputError(
+            "--pareto" if args.pareto is not None else "--plot",
+            "the front and the chart are read back from the table: give --out a file",
+        )
+    if args.plot is not None:
+        ext = Path(args.plot).suffix.lower().lstrip(".")
+        if ext not in FORMATS:
+            raise InputError("--plot", f"{args.plot!r}: the chart is written as .png, .svg or .pdf")
+        if x is None and (args.pareto is None or len(parse_objectives(args.pareto)) < 2):
+            raise InputError("--plot", "give --axes X,Y, or --pareto with two columns (the chart's axes)")
+    outs = [("--pareto", pareto_path(table) if args.pareto is not None else None), ("--plot", args.plot)]
+    return check_output_paths(outs, inputs=[*inputs, ("--out", table)])
+
+
+def _print_front(table, front, saved: Path | None) -> None:
+    """The front as a small table on standard output: row index, the varied keys, the objectives with units."""
+    lead = [n for n in ("index", "file") if n in table.columns]
+    keys = [n for n in table.names if "." in n or "[" in n]  # the varied design-file keys
+    objs = [o.column for o in front.objectives]
+    cols = lead + [k for k in keys if k not in objs] + objs
+    pos = {n: table.names.index(n) for n in cols}
+    head = [table.label(n) for n in cols]
+    if "index" not in table.columns:
+        head, cols = ["row", *head], ["row", *cols]
+    body = []
+    for i in front.rows[:PRINTED_ROWS]:
+        cells = table.cells[int(i)]
+        body.append([str(int(i)) if n == "row" else cells[pos[n]] for n in cols])
+    widths = [max(len(h), *(len(r[j]) for r in body)) if body else len(h) for j, h in enumerate(head)]
+    print("  ".join(h.rjust(w) for h, w in zip(head, widths, strict=True)))
+    for r in body:
+        print("  ".join(c.rjust(w) for c, w in zip(r, widths, strict=True)))
+    if len(front.rows) > PRINTED_ROWS:
+        print(f"... {len(front.rows) - PRINTED_ROWS} more rows of the front in {saved}")
+
+
+def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
+    """Read the table at ``path``; print and save its Pareto front (``--pareto``); draw its chart (``--plot``).
+
+    Returns
+    -------
+    int
+        0, or 1 when a front is asked for and no row is usable (the front is empty: no design to offer).
+
+    Raises
+    ------
+    InputError
+        Naming ``--pareto`` or ``--axes``: a column the table does not have (the message lists them) or that
+        holds no numbers; naming ``field``: the table cannot be read. Nothing is written then.
+    """
+    from cams.sweep.outfile import read_table, write_rows
+    from cams.sweep.pareto import Objective, pareto_front, parse_objectives, usable_mask
+
+    table = read_table(path, field)
+    n = len(table)
+    usable = usable_mask(table.columns.get("error", [None] * n), table.columns.get("failures", [None] * n))
+    # every column named is resolved, the front computed and the chart built before anything is written
+    objs: tuple[Objective, ...] = ()
+    if args.pareto is not None:
+        objs = tuple(Objective(table.column(o.column, "--pareto"), o.maximise) for o in parse_objectives(args.pareto))
+    front = pareto_front(table.columns, objs, usable=usable) if objs else None
+    fig = None
+    if args.plot is not None:
+        from cams.present.sweepplot import sweep_chart
+
+        ax, ay, ac = parse_axes(args)
+        if ax is not None and ay is not None:
+            x, y = table.column(ax, "--axes"), table.column(ay, "--axes")
+            colour = table.column(ac, "--axes") if ac else None
+        elif len(objs) >= 2:
+            x, y = objs[0].column, objs[1].column
+            colour = objs[2].column if len(objs) > 2 else None
+        else:
+            raise InputError("--plot", "give --axes X,Y, or --pareto with two columns (the chart's axes)")
+        by = {o.column: o.maximise for o in objs}
+        step = len(objs) == 2 and {x, y} == set(by)  # the staircase is the front's edge in these two columns only
+        fig = sweep_chart(
+            table.columns,
+            table.units,
+            x,
+            y,
+            colour=colour,
+            usable=usable,
+            front=None if front is None else front.rows,
+            step=step,
+            maximise=(by.get(x, False), by.get(y, False)),
+            title=f"{Path(path).name}: {n} designs, {int(usable.sum())} usable",
+        )
+    if table.dropped:
+        print(f"{path}: {table.dropped} line(s) cut short left out (an interrupted writer)", file=sys.stderr)
+    code = EXIT_OK
+    if front is not None:
+        saved = write_rows(pareto_path(path), table, front.rows, "--pareto")
+        names = ", ".join(f"{o} ({table.units[o.column]})" if table.units.get(o.column) else str(o) for o in objs)
+        print(
+            f"Pareto front over {names} (minimised unless max:): {len(front.rows)} of {n} rows "
+            f"({front.unusable} unusable and {front.empty} with an empty objective left out)"
+        )
+        if len(front.rows):
+            _print_front(table, front, saved)
+        for g in front.ties:
+            print(f"rows {', '.join(map(str, g))} have equal objectives: all on the front")
+        print(f"wrote {saved}: the front's {len(front.rows)} row(s), the table's columns", file=sys.stderr)
+        if not len(front.rows):
+            print(f"{path}: no usable row, the front is empty", file=sys.stderr)
+            code = EXIT_CHECK_FAILED
+    if fig is not None:
+        from cams.present.sweepplot import save_chart
+
+        print(f"wrote {save_chart(fig, args.plot)}", file=sys.stderr)
+    return code
+
+
+def run(args) -> int:
+    check_front_arguments(args, args.table, inputs=[("TABLE", args.table)])
+    if args.pareto is None and args.plot is None:
+        raise InputError("--pareto", "give --pareto COL,COL or --plot CHART.png (or both)")
+    return front_and_chart(args, args.table, field="TABLE")
+
+
+def register(sub) -> None:
+    """Add the ``front`` subcommand."""
+    q = sub.add_parser(
+        "front",
+        help="the Pareto front and a chart of a sweep's table (CSV or Parquet), without solving again",
+        description="Read a table written by cams sweep; print and save its Pareto front over the chosen columns "
+        "(usable rows only: no error, no failures) and draw a chart of two columns coloured by a third. "
+        "Exit code 0, 1: no usable row (the front is empty), 2: bad input.",
+        epilog="example: cams front sweep.csv --pareto R0,max_pressure_angle_rise --plot front.png",
+    )
+    q.add_argument("table", metavar="TABLE", help="the sweep's table (CSV, or .parquet through pyarrow)")
+    add_front_arguments(q)
+    q.set_defaults(func=run)

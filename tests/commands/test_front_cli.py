@@ -1,0 +1,172 @@
+"""``cams sweep --pareto --plot`` and ``cams front``: the front printed and saved is the definition's, read back from
+the written table; bad options are one line and exit 2 before anything is solved."""
+
+from __future__ import annotations
+
+import csv
+
+import pytest
+
+from cams.cli import main
+from tests.conftest import EXAMPLES
+
+VARY = ["--vary", "limits.pressure_angle=30:50:3", "--vary", "follower.arm=100,150"]
+
+
+def _run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def _read(path):
+    with open(path, newline="", encoding="utf-8") as fh:
+        return list(csv.DictReader(fh))
+
+
+def _brute(rows, cols):
+    """The definition over usable rows: no other row <= on every column and < on one."""
+    ok = [r for r in rows if not r["error"] and not r["failures"]]
+    pts = [tuple(float(r[c]) for c in cols) for r in ok]
+    return [
+        r
+        for r, a in zip(ok, pts, strict=True)
+        if not any(
+            all(b_ <= a_ for a_, b_ in zip(a, b, strict=True)) and any(b_ < a_ for a_, b_ in zip(a, b, strict=True))
+            for b in pts
+        )
+    ]
+
+
+@pytest.fixture(scope="module")
+def swept(tmp_path_factory):
+    d = tmp_path_factory.mktemp("front")
+    out = d / "s.csv"
+    code = main(
+        [
+            "sweep",
+            str(EXAMPLES / "rocker_force.toml"),
+            *VARY,
+            "--out",
+            str(out),
+            "--pareto",
+            "R0,L",
+            "--plot",
+            str(d / "s.png"),
+            "--quiet",
+            "--jobs",
+            "1",
+        ]
+    )
+    return d, out, code
+
+
+def test_sweep_saves_and_draws_the_front(swept):
+    d, out, code = swept
+    rows = _read(out)
+    assert code == 0 and len(rows) == 6
+    front = _read(d / "s.pareto.csv")
+    assert front  # the rows of the front, whole (every column, as in the table)
+    expected = _brute(rows, ["R0_mm", "L_mm"])
+    assert sorted(map(tuple, (r.values() for r in front))) == sorted(map(tuple, (r.values() for r in expected)))
+    assert [float(r["R0_mm"]) for r in front] == sorted(float(r["R0_mm"]) for r in front)  # best R0 first
+    assert (d / "s.png").read_bytes()[:4] == b"\x89PNG"
+
+
+def test_front_of_a_written_table_printed_with_units(swept, capsys):
+    d, out, _ = swept
+    rows = _read(out)
+    header = list(rows[0])
+    rise = next(h for h in header if h.startswith("max_pressure") and "rise" in h)  # the rise's peak pressure angle
+    name = rise.removesuffix("_deg")
+    code, text, err = _run(
+        capsys, "front", out, "--pareto", f"R0,{name}", "--plot", d / "f.svg", "--axes", f"R0_mm,{name},follower.arm"
+    )
+    assert code == 0, err
+    expected = _brute(rows, ["R0_mm", rise])
+    lines = text.splitlines()
+    assert lines[0].startswith(f"Pareto front over R0 (mm), {name} (deg)")
+    assert f"{len(expected)} of 6 rows" in lines[0]
+    assert "R0 (mm)" in lines[1] and f"{name} (deg)" in lines[1]
+    printed = [ln.split() for ln in lines[2 : 2 + len(expected)]]
+    assert sorted(p[-2] for p in printed) == sorted(r["R0_mm"] for r in expected)  # the written digits
+    assert sorted(p[-1] for p in printed) == sorted(r[rise] for r in expected)
+    assert "wrote" in err and (d / "f.svg").read_bytes().startswith(b"<?xml")
+    # the same names with their unit suffix
+    code, text2, _ = _run(capsys, "front", out, "--pareto", f"R0_mm,{rise}")
+    assert code == 0 and text2.splitlines()[2:] == lines[2:]
+
+
+def test_objective_not_a_column_is_one_line(swept, capsys):
+    _, out, _ = swept
+    code, text, err = _run(capsys, "front", out, "--pareto", "R0,Rb")
+    assert code == 2
+    assert err.count("\n") == 1 and "--pareto: 'Rb' is not a column of" in err and "R0, L," in err
+
+
+def test_an_all_unusable_table_has_an_empty_front(tmp_path, capsys):
+    t = tmp_path / "t.csv"
+    t.write_text("R0_mm,L_mm,failures,error\n1,2,,no admissible centre\n3,4,curvature,\n", encoding="utf-8")
+    code, text, err = _run(capsys, "front", t, "--pareto", "R0,L")
+    assert code == 1
+    assert "0 of 2 rows (2 unusable" in text and "no usable row" in err
+    assert _read(tmp_path / "t.pareto.csv") == []
+
+
+@pytest.mark.parametrize(
+    ("extra", "field"),
+    [
+        (["--plot", "c.jpg", "--pareto", "R0,L"], "--plot"),
+        (["--plot", "c.png"], "--plot"),  # no axes
+        (["--plot", "c.png", "--pareto", "R0"], "--plot"),  # one objective: no axes either
+        (["--axes", "R0,L"], "--axes"),  # axes without a chart
+        (["--plot", "c.png", "--axes", "R0"], "--axes"),  # one axis
+        (["--pareto", "R0,,L"], "--pareto"),
+        (["--dask", "somewhere"], "--dask"),
+    ],
+)
+def test_bad_options_refused_before_solving(tmp_path, capsys, monkeypatch, extra, field):
+    import cams.sweep
+
+    def never(*a, **k):
+        raise AssertionError("solved before checking the options")
+
+    monkeypatch.setattr(cams.sweep, "sweep", never)
+    code, _, err = _run(
+        capsys,
+        "sweep",
+        EXAMPLES / "rocker_force.toml",
+        *VARY,
+        "--out",
+        tmp_path / "s.csv",
+        *[str(tmp_path / e) if e.endswith((".jpg", ".png")) else e for e in extra],
+    )
+    assert code == 2, err
+    assert err.count("\n") == 1 and f" {field}: " in err, err
+    assert not (tmp_path / "s.csv").exists()
+
+
+def test_front_needs_a_file_to_read_back(capsys):
+    code, _, err = _run(capsys, "sweep", EXAMPLES / "rocker_force.toml", *VARY, "--out", "-", "--pareto", "R0,L")
+    assert code == 2 and err.count("\n") == 1 and "--out: '-': a sweep streams its rows into a regular file" in err
+
+
+def test_dask_local_writes_the_process_pools_table(tmp_path, capsys):
+    """``--dask local --jobs 2`` runs the sweep on a local cluster of two workers: the same table as the pool's."""
+    tables = []
+    for extra in ((), ("--dask", "local")):
+        out = tmp_path / f"s{len(tables)}.csv"
+        code, _, err = _run(capsys, "sweep", EXAMPLES / "rocker_force.toml", "--vary", "follower.arm=100,150",
+                            "--out", out, "--jobs", "2", "--quiet", *extra)
+        assert code == 0, err
+        tables.append(out.read_text())
+    assert tables[0] == tables[1] and tables[0].count("\n") == 3
+
+
+def test_a_bad_axis_writes_nothing(swept, capsys, tmp_path):
+    _, out, _ = swept
+    t = tmp_path / "t.csv"
+    t.write_bytes(out.read_bytes())
+    code, text, err = _run(capsys, "front", t, "--pareto", "R0,L", "--plot", tmp_path / "c.png", "--axes", "R0,zz")
+    assert code == 2 and text == "" and "--axes: 'zz' is not a column of" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["t.csv"]
