@@ -15,10 +15,10 @@ import pytest
 
 import cams
 import cams.sweep.cluster as cluster
-from cams.sweep import engine, run_grid
-from cams.sweep.grid import BaseFile, make_grid
 from cams.io.document import read_toml
+from cams.sweep import engine, run_grid
 from cams.sweep.cluster import check_spec, executor
+from cams.sweep.grid import BaseFile, make_grid
 from laws.errors import InputError
 from tests.conftest import EXAMPLES
 
