@@ -47,9 +47,9 @@ def phase_samples(design, n: int = SAMPLES) -> list[dict]:
         One per ``[[motion]]`` phase, in order: ``index`` (from 0), ``kind`` (``"rise"``, ``"return"``,
         ``"dwell"``), ``start`` and ``angle`` (rad), ``level`` (the displacement at its start: rad for a rocker,
         length for a translating follower). A rise or return has ``n`` (steps), ``s``, ``ds``, ``d2s`` (``n + 1``
-        values each: displacement, per rad, per rad squared) and the bounds of their linear interpolation,
-        ``err_s``, ``err_ds`` and ``err_d2s`` (the displacement's unit, per rad, per rad squared), with ``M2``, ``M3`` and ``jump`` (the
-        largest ``|s''|``, ``|s'''|`` and step of ``s''`` inside the phase) they are made of, and ``err_d2s``.
+        values each: displacement, per rad, per rad squared), the bounds of their linear interpolation ``err_s``,
+        ``err_ds`` and ``err_d2s`` (the displacement's unit, per rad, per rad squared), and ``M2``, ``M3`` and
+        ``jump`` (the largest ``|s''|``, ``|s'''|`` and step of ``s''`` inside the phase) they are made of.
     """
     prog = design.program
     out = []

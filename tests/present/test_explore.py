@@ -187,13 +187,9 @@ def _run_node(html: str, calls: list) -> list:
 
 
 def _offsets(start):
-    return [
-        np.array(start),
-        np.array(start) + (2.0, 1.0),
-        np.array(start) + (-3.0, 2.0),
-        np.array(start) + (1.0, -4.0),
-        np.array(start) + (10.0, 10.0),
-    ]
+    """Five centres: ``start`` and four moved from it (mm), in and out of the zone."""
+    steps = np.array([(0.0, 0.0), (2.0, 1.0), (-3.0, 2.0), (1.0, -4.0), (10.0, 10.0)])
+    return list(np.asarray(start, float) + steps)
 
 
 @pytest.mark.skipif(NODE is None, reason="node is not installed: the page's script cannot run outside a browser")
