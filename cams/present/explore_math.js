@@ -7,9 +7,9 @@
 // cos(gamma) = n . e with e the unit direction of the rise. The displacement s and s' = ds/dphi are interpolated
 // linearly between the embedded samples; each maximum over a phase is the largest of every local maximum of the
 // samples refined by golden-section search on that interpolant, and its error bound is first order in the
-// interpolation's own bounds (err_s, err_ds, embedded): 2 (|d gamma/d s| err_s + |d gamma/d s'| err_ds) at the
-// maximum (the factor 2 covers the change of the two sensitivities between the interpolant's maximum and the
-// law's, a fraction of a step apart).
+// interpolation's own bounds (err_s, err_ds, embedded): 2 (|d gamma/d s| err_s + |d gamma/d s'| err_ds), the
+// sensitivities the largest at the maximum and a sample step either side (the interpolant's maximum and the law's
+// lie within a step of each other; the factor 2 covers the second-order remainder and the sensitivities between).
 function camsMath(data) {
   "use strict";
   const TOL = 1e-7; // radians: cams check's allowance over a limit
@@ -154,12 +154,16 @@ function camsMath(data) {
   }
 
   // first-order bound of a maximum's error from the interpolation's bounds (radians)
+  // (the sensitivities taken as their largest at the maximum and a step either side of it)
   function bound(ph, ox, oy, u) {
-    const m = interp(ph, u);
-    const hs = 1e-6 * (rocker ? 1.0 : fol.scale);
-    const hd = 1e-6 * (rocker ? 1.0 : fol.scale);
-    const gs = Math.abs(gamma(ox, oy, m.s + hs, m.ds) - gamma(ox, oy, m.s - hs, m.ds)) / (2 * hs);
-    const gd = Math.abs(gamma(ox, oy, m.s, m.ds + hd) - gamma(ox, oy, m.s, m.ds - hd)) / (2 * hd);
+    const h = 1e-6 * (rocker ? 1.0 : fol.scale);
+    let gs = 0.0;
+    let gd = 0.0;
+    for (const v of [u - 1 / ph.n, u, u + 1 / ph.n]) {
+      const m = interp(ph, Math.min(1, Math.max(0, v)));
+      gs = Math.max(gs, Math.abs(gamma(ox, oy, m.s + h, m.ds) - gamma(ox, oy, m.s - h, m.ds)) / (2 * h));
+      gd = Math.max(gd, Math.abs(gamma(ox, oy, m.s, m.ds + h) - gamma(ox, oy, m.s, m.ds - h)) / (2 * h));
+    }
     return 2.0 * (gs * ph.err_s + gd * ph.err_ds) + 1e-12;
   }
 
@@ -337,11 +341,15 @@ function flatMath(face, phases, interp, phaseMax) {
 
   // first-order bound of an extremum's error from the interpolation's bounds
   function bound(ph, u, value) {
-    const m = interp(ph, u);
     const h = 1e-6 * (rocker ? 1.0 : fol.scale);
-    const d = (ds0, dd0, d20) => Math.abs(value(m.s + ds0, m.ds + dd0, m.d2s + d20) -
-                                          value(m.s - ds0, m.ds - dd0, m.d2s - d20)) / (2 * h);
-    return 2.0 * (d(h, 0, 0) * ph.err_s + d(0, h, 0) * ph.err_ds + d(0, 0, h) * ph.err_d2s) + 1e-12;
+    let out = 0.0;
+    for (const v of [u - 1 / ph.n, u, u + 1 / ph.n]) {
+      const m = interp(ph, Math.min(1, Math.max(0, v)));
+      const d = (ds0, dd0, d20) => Math.abs(value(m.s + ds0, m.ds + dd0, m.d2s + d20) -
+                                            value(m.s - ds0, m.ds - dd0, m.d2s - d20)) / (2 * h);
+      out = Math.max(out, d(h, 0, 0) * ph.err_s + d(0, h, 0) * ph.err_ds + d(0, 0, h) * ph.err_d2s);
+    }
+    return 2.0 * out + 1e-12;
   }
 
   function evaluate(R0, L) {
