@@ -1,0 +1,342 @@
+"""The explorer's page (``cams explore``) in a real browser, against ``cams check`` at the same centre.
+
+A headless Chromium (tests/present/browser.py: the system's, through Playwright) opens the page written by
+``cams explore`` from ``file://`` with every other request aborted, and the tests say that none was attempted and
+that the page raised no JavaScript error. For a rocker roller (form closure, with K_C), a translating roller (force
+closure, the solver's offset) and a flat-faced rocker:
+
+- the point is dragged with the mouse (press, move, release at the client coordinates ``window.cams.toScreen``
+  gives) to five centres inside and outside the zone; a flat face, which has no centre, is given five sizes by
+  ``window.cams.setSize(R0, L)``. At each, ``window.cams.state()`` is read and a copy of the design file with that
+  centre (``[cam] centre``; a flat face: ``[cam] base_radius`` and ``[follower] centre_distance``) is run through
+  ``cams check --json`` and ``cams solve --json``, as a user runs them: R0, L or the offset and the largest pressure
+  angle of each phase must agree within the page's stated ``error_bound``, and ``inside`` must be cams check's
+  verdict on the file's limits (each phase's pressure angle, and the rocker's K_C through cams solve's
+  ``safety_factor.ok``; a flat face's convexity);
+- the smallest-cam button returns the point to the sized cam of ``cams solve --json``;
+- the slider turns the cam: the picture changes, the numbers do not, and the slider back where it was gives the same
+  picture again.
+
+The centres are chosen at least a degree from every limit (the verdicts do not hang on the last digits). Screenshots
+are kept in ``$CAMS_ARTEFACTS/explore`` when set, else in tests/artefacts/explore (ignored by git). The tests are
+skipped, with the reason, only where no browser can be found or launched.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+from cams.cli import main
+from tests.conftest import EXAMPLES, ROOT
+from tests.present.browser import BrowserUnavailable, artefacts_dir, chromium, drag, open_offline
+
+#: Each case: the example, and five targets: a roller's centres [x, y] in the follower's frame (mm), a flat face's
+#: sizes (R0, L) (mm); each with the expected verdict (True: inside every limit), which the test also takes from
+#: cams check, so a wrong expectation here fails loudly instead of testing less.
+CASES = {
+    # sized centre (128.285, 28.513); K_C = 1.1: (126, 28) meets every pressure-angle limit, not K_C
+    "rocker_form": (
+        "rocker_form.toml",
+        [
+            ((150.0, 60.0), True),
+            ((140.0, 45.0), True),
+            ((126.0, 28.0), False),
+            ((130.0, 20.0), False),
+            ((110.0, 40.0), False),
+        ],
+    ),
+    # sized centre (-8.791, -15.226): the rise is limited to 30 degrees
+    "translating_force": (
+        "translating_force.toml",
+        [
+            ((-10.0, -40.0), True),
+            ((-20.0, -35.0), True),
+            ((-12.0, -25.0), True),
+            ((10.0, -30.0), False),
+            ((5.0, -18.0), False),
+        ],
+    ),
+    # sized R0 37.064 mm at L = 120 mm (convexity: radius of curvature >= 5 mm)
+    "rocker_flat": (
+        "rocker_flat.toml",
+        [
+            ((45.0, 120.0), True),
+            ((60.0, 130.0), True),
+            ((40.0, 110.0), True),
+            ((25.0, 120.0), False),
+            ((30.0, 125.0), False),
+        ],
+    ),
+}
+
+#: How far, in screen pixels, the dragged point may land from its target (the mouse moves on the pixel grid).
+PIXELS = 1.5
+
+
+def _cli(argv: list[str]) -> tuple[int, dict]:
+    """Run ``cams ARGV --json`` in this process, as the command line does; its exit code and JSON."""
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        code = main(argv)
+    return code, json.loads(out.getvalue())
+
+
+def _with(text: str, table: str, key: str, value: str) -> str:
+    """The design file's text with ``key = value`` in ``[table]`` (replacing the key where it is set)."""
+    line = re.compile(rf"^{key}\s*=.*$", re.M)
+    head = re.search(rf"^\[{table}\]\s*$", text, re.M)
+    assert head is not None, f"no [{table}] table"
+    nxt = re.search(r"^\[", text[head.end() :], re.M)
+    end = head.end() + (nxt.start() if nxt else len(text[head.end() :]))
+    body = text[head.end() : end]
+    body = line.sub(f"{key} = {value}", body) if line.search(body) else f"\n{key} = {value}" + body
+    return text[: head.end()] + body + text[end:]
+
+
+def _chosen(tmp: Path, example: str, state: dict, n: int) -> Path:
+    """A copy of the example with the page's centre (a flat face: its R0 and L) as the chosen cam."""
+    text = (EXAMPLES / example).read_text(encoding="utf-8")
+    if state["centre"] is None:
+        text = _with(text, "cam", "base_radius", repr(float(state["R0"])))
+        if state.get("L") is not None and "centre_distance" in text:
+            text = _with(text, "follower", "centre_distance", repr(float(state["L"])))
+    else:
+        x, y = state["centre"]
+        text = _with(text, "cam", "centre", f"[{float(x)!r}, {float(y)!r}]")
+    path = tmp / f"{Path(example).stem}_{n}.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+@pytest.fixture(scope="module")
+def browser():
+    """One headless Chromium for the module; the tests skip with the reason when none can run here."""
+    try:
+        with chromium() as b:
+            yield b
+    except BrowserUnavailable as e:
+        pytest.skip(f"no browser for the explorer's page: {e}")
+
+
+@pytest.fixture(scope="module")
+def pages(tmp_path_factory) -> dict[str, Path]:
+    """The explorer's page of each case, written by ``cams explore FILE --out PAGE.html``."""
+    out = tmp_path_factory.mktemp("explore")
+    written = {}
+    for name, (example, _) in CASES.items():
+        page = out / f"{name}.html"
+        with contextlib.redirect_stdout(io.StringIO()):
+            code = main(["explore", str(EXAMPLES / example), "--out", str(page)])
+        assert code == 0 and page.is_file() and page.stat().st_size > 0, f"cams explore {example}: exit {code}"
+        written[name] = page
+    return written
+
+
+@pytest.fixture(scope="module")
+def shots() -> Path:
+    """Where the screenshots are kept (see the module's docstring)."""
+    return artefacts_dir(ROOT / "tests" / "artefacts" / "explore")
+
+
+@pytest.fixture
+def opened(browser, pages, request):
+    """The case's page, opened offline; after the test: no request left the file, no JavaScript error."""
+    name = request.param
+    page, blocked, errors = open_offline(browser, pages[name])
+    yield name, page
+    assert blocked == [], f"the page asked the network for {blocked}"
+    assert errors == [], f"the page's JavaScript failed: {errors}"
+    page.context.close()
+
+
+def _state(page) -> dict:
+    return page.evaluate("() => window.cams.state()")
+
+
+def _screen(page, x: float, y: float) -> tuple[float, float]:
+    px, py = page.evaluate("([x, y]) => window.cams.toScreen(x, y)", [x, y])
+    return float(px), float(py)
+
+
+def _bound(state: dict) -> float:
+    """The page's stated error bound on its pressure angles (degrees), checked to be a finite number >= 0."""
+    eb = state["error_bound"]
+    assert isinstance(eb, int | float) and math.isfinite(eb) and eb >= 0, f"error_bound {eb!r}"
+    return float(eb)
+
+
+def _move_to(page, target: tuple[float, float]) -> dict:
+    """Drag the point with the mouse from where it is to the model point ``target``; the state after the drag."""
+    before = _state(page)["centre"]
+    handle = page.locator("#centre-handle")
+    assert handle.count() == 1, "no draggable #centre-handle"
+    start = _screen(page, *before)
+    box = handle.bounding_box()
+    assert box is not None, "#centre-handle is not drawn"
+    # the handle is drawn where toScreen puts the centre: the mouse grabs the handle itself
+    assert box["x"] - 1 <= start[0] <= box["x"] + box["width"] + 1, (start, box)
+    assert box["y"] - 1 <= start[1] <= box["y"] + box["height"] + 1, (start, box)
+    end = _screen(page, *target)
+    vw, vh = page.viewport_size["width"], page.viewport_size["height"]
+    assert 0 <= end[0] <= vw and 0 <= end[1] <= vh, f"target {target} is off the page at {end}"
+    drag(page, start, end)
+    state = _state(page)
+    # the point lands within a pixel or so of the target: measured on the screen, through toScreen
+    got = _screen(page, *state["centre"])
+    assert math.dist(got, end) <= PIXELS, f"dragged to {end}, the point is at {got} (model {state['centre']})"
+    return state
+
+
+def _expected_roller(path: Path) -> dict:
+    """cams check and cams solve (chosen cam) at the file's centre: R0, L, offset, the largest pressure angle of
+    each phase and the verdict on the limits."""
+    _, chk = _cli(["check", str(path), "--json"])
+    _, sol = _cli(["solve", str(path), "--json"])
+    assert sol["mode"] == "chosen"
+    jam = {c["name"].removeprefix("jamming_"): c for c in chk["checks"] if c["name"].startswith("jamming_")}
+    assert "rise" in jam, chk["checks"]
+    # the check's pressure angle where the check limits the phase; the chosen cam's (over the cycle) elsewhere
+    pa = {p: (jam[p]["worst"] if p in jam else sol["max_pressure_angle"][p]) for p in ("rise", "return")}
+    kc = sol.get("safety_factor")
+    inside = all(c["passed"] for c in jam.values()) and (kc is None or kc["ok"])
+    margin = min([abs(c["worst"] - c["limit"]) for c in jam.values()] + ([] if kc is None else [abs(kc["outside"])]))
+    return {
+        "R0": chk["R0"],
+        "L": sol["L"],
+        "offset": sol["offset"],
+        "pa": pa,
+        "inside": inside,
+        "margin": margin,
+        "sf": kc,
+    }
+
+
+def _expected_flat(path: Path) -> dict:
+    """cams check and cams solve at the file's R0 and L: R0, L, the pressure angle, the verdict (convexity)."""
+    _, chk = _cli(["check", str(path), "--json"])
+    _, sol = _cli(["solve", str(path), "--json"])
+    conv = next(c for c in chk["checks"] if c["name"] == "convexity")
+    pa = max(abs(sol["pressure_angle"]["min"]), abs(sol["pressure_angle"]["max"]))
+    return {
+        "R0": chk["R0"],
+        "L": sol["L"],
+        "pa": pa,
+        "inside": conv["passed"],
+        "margin": abs(conv["worst"] - conv["limit"]),
+    }
+
+
+@pytest.mark.parametrize("opened", list(CASES), indirect=True)
+def test_dragged_centres_agree_with_cams_check(opened, tmp_path, shots):
+    """Five centres (a flat face: five sizes) reached as a user would: the page's numbers are cams check's."""
+    name, page = opened
+    example, targets = CASES[name]
+    flat = _state(page)["centre"] is None
+    for n, (target, expect_inside) in enumerate(targets):
+        if flat:
+            page.evaluate("([r, l]) => window.cams.setSize(r, l)", list(target))
+            state = _state(page)
+            assert state["R0"] == pytest.approx(target[0], rel=1e-12)
+            assert state["L"] == pytest.approx(target[1], rel=1e-12)
+        else:
+            state = _move_to(page, target)
+        page.screenshot(path=str(shots / f"{name}_{n}.png"))
+        eb = _bound(state)
+        path = _chosen(tmp_path, example, state, n)
+        at = f"{name} at {state['centre'] or (state['R0'], state['L'])}"
+        if flat:
+            want = _expected_flat(path)
+            assert state["R0"] == pytest.approx(want["R0"], rel=1e-9, abs=1e-9), at
+            assert state["L"] == pytest.approx(want["L"], rel=1e-9, abs=1e-9), at
+            worst = max(abs(v) for v in state["max_pressure_angle"].values() if v is not None)
+            assert abs(worst - want["pa"]) <= eb + 1e-9, (at, state, want)
+        else:
+            want = _expected_roller(path)
+            assert state["R0"] == pytest.approx(want["R0"], rel=1e-9, abs=1e-9), at
+            for key in ("L", "offset"):
+                if want[key] is None:
+                    assert state.get(key) is None, (at, key, state)
+                else:
+                    assert state[key] == pytest.approx(want[key], rel=1e-9, abs=1e-9), (at, key)
+            for phase in ("rise", "return"):
+                got = state["max_pressure_angle"][phase]
+                assert abs(got - want["pa"][phase]) <= eb + 1e-9, (at, phase, got, want["pa"][phase], eb)
+        # the verdict: the page's is cams check's; the target was chosen clear of every limit
+        assert want["margin"] > max(eb, 1e-6), (at, "too near a limit for a sure verdict", want)
+        assert want["inside"] is expect_inside, (at, "the case's expectation is not cams check's", want)
+        assert state["inside"] is want["inside"], (at, state, want)
+
+
+@pytest.mark.parametrize("opened", list(CASES), indirect=True)
+def test_smallest_cam_button_returns_to_the_sized_cam(opened, shots):
+    """Away from the sized cam, the button brings the point back to cams solve's smallest cam."""
+    name, page = opened
+    example, targets = CASES[name]
+    _, sol = _cli(["solve", str(EXAMPLES / example), "--json"])
+    flat = _state(page)["centre"] is None
+    (far, _) = targets[0]
+    if flat:
+        page.evaluate("([r, l]) => window.cams.setSize(r, l)", list(far))
+    else:
+        _move_to(page, far)
+    moved = _state(page)
+    assert abs(moved["R0"] - sol["R0"]) > 1.0, "the point did not leave the sized cam"
+    button = page.get_by_role("button", name=re.compile("smallest", re.I))
+    assert button.count() == 1, "no 'smallest cam' button"
+    button.click()
+    state = _state(page)
+    page.screenshot(path=str(shots / f"{name}_smallest.png"))
+    assert state["R0"] == pytest.approx(sol["R0"], rel=1e-9), (name, state, sol["R0"])
+    if flat:
+        assert state["L"] == pytest.approx(sol["L"], rel=1e-9)
+    else:
+        assert state["centre"] == pytest.approx([sol["centre"]["x"], sol["centre"]["y"]], rel=1e-9, abs=1e-9)
+        assert state["inside"] is True
+
+
+@pytest.mark.parametrize("opened", ["rocker_form", "rocker_flat"], indirect=True)
+def test_slider_turns_the_cam(opened, shots):
+    """Moving the slider with the mouse turns the cam: the picture changes and the numbers do not; moved back, the
+    picture is the one it was."""
+    name, page = opened
+    slider = page.locator("input[type=range]")
+    assert slider.count() >= 1, "no slider"
+    slider = slider.first
+    box = slider.bounding_box()
+    assert box is not None
+    start_value = slider.input_value()
+    before_state = _state(page)
+    before = page.screenshot()
+    y = box["y"] + box["height"] / 2
+    page.mouse.click(box["x"] + 0.3 * box["width"], y)
+    turned_value = slider.input_value()
+    assert turned_value != start_value, "the slider did not move"
+    turned = page.screenshot(path=str(shots / f"{name}_turned.png"))
+    assert turned != before, "turning the cam changed nothing on the page"
+    assert _state(page) == before_state, "turning the cam changed the design's numbers"
+    slider.fill(start_value)  # back where it was
+    assert slider.input_value() == start_value
+    assert page.screenshot() == before, "the slider back at its start does not give the first picture"
+
+
+def test_the_blocker_sees_a_request_off_the_file(browser, tmp_path):
+    """The harness's own check can fail: a page that asks for an image and a style sheet on the network has both
+    requests aborted and recorded (so an explorer page that asked for anything would be caught)."""
+    page_file = tmp_path / "asks.html"
+    page_file.write_text(
+        '<!doctype html><link rel="stylesheet" href="http://styles.invalid/a.css">'
+        '<img src="https://images.invalid/b.png"><script>window.cams = {ready: true}</script>',
+        encoding="utf-8",
+    )
+    page, blocked, errors = open_offline(browser, page_file)
+    page.wait_for_load_state("load")
+    assert sorted(blocked) == ["http://styles.invalid/a.css", "https://images.invalid/b.png"]
+    assert errors, "the aborted loads are reported as the page's console errors"
+    page.context.close()
