@@ -70,6 +70,16 @@ class Presenter(ABC):
     def profile_line(self, rep: dict, bore: float, f: str) -> str:
         """``cams profile``'s line of text for :meth:`profile_report`'s ``rep`` (``f``: the lengths' format)."""
 
+    @abstractmethod
+    def explorer(self, design, solution) -> dict:
+        """What the explorer page (``cams explore``) lets the user move, and the face's data it draws with.
+
+        ``solution``: the sized cam (:class:`cams.faces.result.SolveResult`), or None where none exists (no
+        feasible zone). JSON-ready, lengths in the design's unit, angles in radians: ``mode`` (``"centre"``: a
+        point dragged in the follower's fixed frame; ``"size"``: R0 and, for a rocker, L), ``follower``,
+        ``limits`` and ``start`` (the sized cam's movable values, or None).
+        """
+
 
 class RollerPresenter(Presenter):
     """A roller (or knife-edge) follower's cam in words and pictures."""
@@ -150,6 +160,34 @@ class RollerPresenter(Presenter):
         bore_words = "no bore suggested" if rep["bore_suggested"] else bore_text(bore, False)
         return f"{head}{broken}; {bore_words}"
 
+    def explorer(self, design, solution) -> dict:
+        """The cam centre is dragged in the follower's fixed frame (``[cam] centre``'s); the zone is drawn."""
+        from cams.present.explore_data import roller_zone
+
+        f = design.follower
+        lim = design.limits
+        rocker = f.kind == "rocker"
+        start = None
+        if solution is not None:
+            start = {"centre": [float(v) for v in solution.centre], "R0": float(solution.R0),
+                     "L": None if solution.L is None else float(solution.L),
+                     "offset": None if solution.offset is None else float(solution.offset)}
+        binding = () if solution is None else solution.detail.binding
+        return {
+            "mode": "centre",
+            "follower": {"kind": f.kind, "arm": float(f.arm) if rocker else None,
+                         "sense": int(f.sense) if rocker else None, "roller_radius": float(f.roller_radius),
+                         "A0": [float(v) for v in f.position(0.0)], "pivot": [float(v) for v in f.pivot],
+                         "scale": float(design.scale)},
+            "cam_sense": int(design.cam_sense),
+            "limits": {"closure": lim.closure, "pressure_angle": float(lim.pressure_angle),
+                       "return_limit": float(lim.return_limit) if lim.closure == "form" else None,
+                       "safety_factor": float(lim.safety_factor),
+                       "constrained": [[int(i), float(g)] for i, g in design.constrained_phases()]},
+            "start": start,
+            "zone": roller_zone(design, None if start is None else solution.centre, binding),
+        }
+
 
 class FlatPresenter(Presenter):
     """A flat-faced follower's cam in words and pictures (no zone; the curvature with the face's travel)."""
@@ -218,6 +256,27 @@ class FlatPresenter(Presenter):
         return (f"{rep['name']}: {rep['points']} points at tolerance {rep['tolerance']:g} mm, "
                 f"R0 = {rep['R0']:{f}} mm, profile radius >= {rep['min_work_radius']:{f}} mm, "
                 f"radius of curvature >= {rep['min_rho']:{f}} mm, {bore_text(bore, rep['bore_suggested'])}")
+
+    def explorer(self, design, solution) -> dict:
+        """The base radius R0 is moved (``[cam] base_radius``) and, for a rocker, the centre distance L
+        (``follower.centre_distance``); the face's distance from the pivot (``face_offset``) or its axis offset
+        stay the file's."""
+        f = design.follower
+        rocker = f.kind == "rocker"
+        start = None
+        if solution is not None:
+            start = {"R0": float(solution.R0), "L": float(f.centre_distance) if rocker else None,
+                     "offset": None if rocker else float(f.offset)}
+        return {
+            "mode": "size",
+            "follower": {"kind": f.kind, "sense": int(f.sense) if rocker else None,
+                         "L": float(f.centre_distance) if rocker else None,
+                         "face_offset": float(f.face_offset) if rocker else None,
+                         "offset": None if rocker else float(f.offset), "scale": float(design.scale)},
+            "cam_sense": int(design.cam_sense),
+            "limits": {"min_radius": float(design.min_radius)},
+            "start": start,
+        }
 
 
 _PRESENTERS: dict[str, Presenter] = {"roller": RollerPresenter(), "flat": FlatPresenter()}
