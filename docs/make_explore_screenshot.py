@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import io
+import re
 import sys
 import tempfile
 from pathlib import Path
@@ -58,9 +59,9 @@ def make(out: Path, design: Path = DESIGN, centre: tuple[float, float] = CENTRE)
                 start = page.evaluate("([x, y]) => window.cams.toScreen(x, y)", state["centre"])
                 end = page.evaluate("([x, y]) => window.cams.toScreen(x, y)", list(centre))
                 drag(page, tuple(start), tuple(end))
-            slider = page.locator("input[type=range]")
-            if slider.count():
-                box = slider.first.bounding_box()
+            slider = page.get_by_label(re.compile("cam angle", re.I))
+            if slider.count() == 1:
+                box = slider.bounding_box()
                 if box is not None:
                     page.mouse.click(box["x"] + 0.2 * box["width"], box["y"] + box["height"] / 2)
             out.parent.mkdir(parents=True, exist_ok=True)

@@ -95,7 +95,7 @@ def chromium() -> Iterator[Any]:
             browser.close()
 
 
-def open_offline(browser: Any, page_file: Path, *, width: int = 1280, height: int = 900, ready_ms: float = 20000):
+def open_offline(browser: Any, page_file: Path, *, width: int = 1280, height: int = 900, ready_ms: float = 10000):
     """Open ``page_file`` from ``file://`` with every non-file request aborted; wait for ``window.cams.ready``.
 
     Returns
@@ -106,6 +106,8 @@ def open_offline(browser: Any, page_file: Path, *, width: int = 1280, height: in
     errors : list of str
         The page's uncaught JavaScript errors and console errors, filled as the page runs.
     """
+    from playwright.sync_api import TimeoutError
+
     context = browser.new_context(viewport={"width": width, "height": height}, device_scale_factor=1)
     blocked: list[str] = []
     errors: list[str] = []
@@ -123,8 +125,17 @@ def open_offline(browser: Any, page_file: Path, *, width: int = 1280, height: in
     page.on("pageerror", lambda e: errors.append(f"uncaught: {e}"))
     page.on("console", lambda m: errors.append(f"console.error: {m.text}") if m.type == "error" else None)
     page.goto(Path(page_file).resolve().as_uri())
-    page.wait_for_function("() => window.cams !== undefined && window.cams.ready === true", timeout=ready_ms)
-    return page, blocked, errors
+    waited = 0.0
+    while True:  # in short waits, so that a page whose script failed is reported at once
+        try:
+            page.wait_for_function("() => window.cams !== undefined && window.cams.ready === true", timeout=250)
+            return page, blocked, errors
+        except TimeoutError as e:
+            waited += 250
+            if errors or waited >= ready_ms:
+                raise AssertionError(
+                    f"window.cams.ready is not true after {waited / 1000:g} s; the page's errors: {errors}"
+                ) from e
 
 
 def drag(page: Any, start: tuple[float, float], end: tuple[float, float], steps: int = 8) -> None:
