@@ -3,7 +3,7 @@
 It runs ``cams explore examples/rocker_form.toml`` into a temporary directory, opens the page offline in the
 system's headless Chromium (the browser tests' launcher, tests/present/browser.py: Debian's ``chromium`` and
 Playwright for Python, ``pip install -e '.[test]'``), drags the point with the mouse from the smallest cam to a
-centre just outside the K_C zone, turns the cam a little with the slider and saves the page, 1200 x 800 pixels.
+centre just outside the K_C zone, turns the cam a little with the slider and saves the page, 1440 x 960 pixels.
 The PNG is reduced to a 64-colour palette (Pillow, which matplotlib installs) when that keeps it under 200 kB.
 
 Usage: ``python docs/make_explore_screenshot.py [--out PNG] [--design TOML] [--centre X Y]``.
@@ -27,8 +27,8 @@ from tests.present.browser import BrowserUnavailable, chromium, drag, open_offli
 
 #: The README's view: the groove cam of seed 001 (K_C = 1.1), the point just outside the K_C zone's t-t line.
 DESIGN = ROOT / "examples" / "rocker_form.toml"
-CENTRE = (126.0, 34.0)
-SIZE = (1200, 800)
+CENTRE = (126.0, 28.0)
+SIZE = (1440, 960)
 LIMIT = 200_000  # bytes
 
 
