@@ -3,13 +3,17 @@
 The page computes in the browser; these functions gather, from the cam's own pipeline, what it computes from.
 Each ``[[motion]]`` phase is embedded as its displacement ``s``, ``ds/dphi`` and ``d2s/dphi2`` at ``n + 1`` evenly
 spaced positions (the program's own evaluation, :meth:`laws.program.Program.evaluate_phase`); the page interpolates
-``s`` and ``ds/dphi`` linearly between them, and the bounds of that interpolation are embedded with them:
+``s``, ``ds/dphi`` and ``d2s/dphi2`` linearly between them, and the bounds of that interpolation are embedded with
+them:
 
 * ``s``: the error of a linear interpolant of a function with ``|s''| <= M2`` on a step ``h`` (radians of cam
   angle) is at most ``h**2 / 8 * M2``;
 * ``ds/dphi``: at most ``h**2 / 8 * M3`` with ``|s'''| <= M3`` where the acceleration is continuous; a step ``J``
   of the acceleration inside a phase (a law with a jump of ``s''``, the constant acceleration's) adds at most
-  ``h / 4 * J`` (the linear interpolant of a function whose slope varies by ``J`` errs by at most ``h J / 4``).
+  ``h / 4 * J`` (the linear interpolant of a function whose slope varies by ``J`` errs by at most ``h J / 4``);
+* ``d2s/dphi2`` (a flat face's radius of curvature): the interpolant's error measured on the dense grid, plus half a
+  dense step times the largest slope the error can have between its points (``M3`` plus the interpolant's own
+  slope), plus ``J``.
 
 ``M2``, ``M3`` and ``J`` are read off the law's own ``d2s`` and ``d3s`` on a grid :data:`DENSE` times finer (each
 raised by :data:`RAISE` for the peaks between those samples). Lengths in the design's unit, angles in radians.
@@ -24,7 +28,7 @@ __all__ = ["SAMPLES", "DENSE", "RAISE", "phase_samples", "roller_zone"]
 #: Steps per rise or return phase embedded in the page.
 SAMPLES = 2048
 #: The bounds' grid: this many times finer than the embedded one.
-DENSE = 16
+DENSE = 64
 #: The bounds read off the dense grid are raised by this factor (peaks between its samples).
 RAISE = 1.05
 
@@ -44,8 +48,8 @@ def phase_samples(design, n: int = SAMPLES) -> list[dict]:
         ``"dwell"``), ``start`` and ``angle`` (rad), ``level`` (the displacement at its start: rad for a rocker,
         length for a translating follower). A rise or return has ``n`` (steps), ``s``, ``ds``, ``d2s`` (``n + 1``
         values each: displacement, per rad, per rad squared) and the bounds of their linear interpolation,
-        ``err_s`` and ``err_ds`` (the displacement's unit, and per rad), with ``M2``, ``M3`` and ``jump`` (the
-        largest ``|s''|``, ``|s'''|`` and step of ``s''`` inside the phase) they are made of.
+        ``err_s``, ``err_ds`` and ``err_d2s`` (the displacement's unit, per rad, per rad squared), with ``M2``, ``M3`` and ``jump`` (the
+        largest ``|s''|``, ``|s'''|`` and step of ``s''`` inside the phase) they are made of, and ``err_d2s``.
     """
     prog = design.program
     out = []
@@ -61,8 +65,14 @@ def phase_samples(design, n: int = SAMPLES) -> list[dict]:
             # a step of s'' the jerk does not explain: an acceleration jump inside the phase
             step = np.abs(np.diff(fine.d2s)) - M3 * hd
             jump = float(np.max(step)) if np.max(step) > 1e-9 * max(M2, 1e-300) else 0.0
+            # s'': the interpolant's error measured on the dense grid, and between its points at most half a dense
+            # step times the error's slope (|s'''| plus the interpolant's own), plus a step of s'' inside
+            ud = np.linspace(0.0, 1.0, n * DENSE + 1)
+            measured = float(np.max(np.abs(fine.d2s - np.interp(ud, np.linspace(0.0, 1.0, n + 1), m.d2s))))
+            slope = float(np.max(np.abs(np.diff(m.d2s)))) / h
             entry.update(n=n, s=_r(m.s), ds=_r(m.ds), d2s=_r(m.d2s), M2=M2, M3=M3, jump=jump,
-                         err_s=h * h / 8.0 * M2, err_ds=h * h / 8.0 * M3 + h / 4.0 * jump)
+                         err_s=h * h / 8.0 * M2, err_ds=h * h / 8.0 * M3 + h / 4.0 * jump,
+                         err_d2s=measured + hd / 2.0 * (M3 + slope) + jump)
         out.append(entry)
     return out
 

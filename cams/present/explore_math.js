@@ -35,7 +35,7 @@ function camsMath(data) {
   function phaseMax(ph, fn) {
     const n = ph.n;
     const g = new Float64Array(n + 1);
-    for (let k = 0; k <= n; k++) g[k] = fn(ph.s[k], ph.ds[k]);
+    for (let k = 0; k <= n; k++) g[k] = fn(ph.s[k], ph.ds[k], ph.d2s[k]);
     const peaks = [];
     for (let k = 0; k <= n; k++) {
       const left = k > 0 ? g[k - 1] : -Infinity;
@@ -47,7 +47,7 @@ function camsMath(data) {
     let bestU = 0.0;
     const f = (u) => {
       const m = interp(ph, u);
-      const v = fn(m.s, m.ds);
+      const v = fn(m.s, m.ds, m.d2s);
       return Number.isNaN(v) ? -Infinity : v;
     };
     for (const k of peaks.slice(0, 8)) {
@@ -79,7 +79,7 @@ function camsMath(data) {
     return { value: best, u: bestU };
   }
 
-  if (face.mode !== "centre") return { face, phases, interp, phaseMax };
+  if (face.mode === "size") return flatMath(face, phases, interp, phaseMax);
 
   const fol = face.follower;
   const rocker = fol.kind === "rocker";
@@ -290,6 +290,139 @@ function camsMath(data) {
 
   return { face, phases, interp, phaseMax, gamma, kcExcess, evaluate, state, cycle, profile, follower, frame,
            deg, TOL };
+}
+
+// A flat face ("size" mode): R0 and, for a rocker, L are moved (the face offset f or the axis offset e stay the
+// file's). The face is a line with unit normal m at angle a from the cam centre's frame (fixed), at distance p from
+// the cam centre (the support function); in the cam frame its normal turns to theta = a - eps phi. Translating:
+// a = 90 deg, p = R0 + s. Rocker (the line-of-centres frame, pivot at (-L, 0) from the cam centre): a = a0 + sigma s,
+// cos a0 = (f - R0) / L, p = f - L cos a. The profile is the envelope X = p m + (p' / theta') t, its radius of
+// curvature rho = p + (p'' theta' - p' theta'') / theta'^3, the contact on a rocker's face c = -sigma (-L sin a +
+// p' / theta') from the pivot's foot and its pressure angle atan(|f| / |c|) (0 for a translating face).
+function flatMath(face, phases, interp, phaseMax) {
+  "use strict";
+  const fol = face.follower;
+  const rocker = fol.kind === "rocker";
+  const eps = face.cam_sense;
+  const moving = phases.filter((p) => p.kind !== "dwell");
+  const lift = Math.max(...phases.map((p) => p.level), ...moving.map((p) => Math.max(...p.s)));
+  const deg = (x) => (x * 180.0) / Math.PI;
+
+  // why no cam of this size can be drawn (a rocker's face that cannot touch the base circle), or null
+  function invalid(R0, L) {
+    if (!(R0 > 0)) return "R0 must be > 0";
+    if (!rocker) return null;
+    if (!(L > 0)) return "L must be > 0";
+    const c = (fol.face_offset - R0) / L;
+    if (!(c > -1 && c < 1)) return "the face cannot touch a base circle of R0 = " + R0 + " (|f - R0| >= L = " + L + ")";
+    if (Math.acos(c) + lift >= Math.PI) return "the face would turn past the line of centres during the rise";
+    return null;
+  }
+
+  function terms(R0, L, s, ds, d2s) {
+    if (!rocker) return { a: Math.PI / 2, t1: -eps, t2: 0.0, p: R0 + s, p1: ds, p2: d2s };
+    const sg = fol.sense;
+    const a0 = sg * Math.acos(Math.min(1, Math.max(-1, (fol.face_offset - R0) / L)));
+    const a = a0 + sg * s;
+    const sa = Math.sin(a), ca = Math.cos(a);
+    return { a, t1: sg * ds - eps, t2: sg * d2s, p: fol.face_offset - L * ca, p1: L * sa * sg * ds,
+             p2: L * ca * ds * ds + L * sa * sg * d2s };
+  }
+  const rhoOf = (t) => t.p + (t.p2 * t.t1 - t.p1 * t.t2) / (t.t1 * t.t1 * t.t1);
+  function gammaOf(L, t) {
+    if (!rocker) return 0.0;
+    const c = -fol.sense * (-L * Math.sin(t.a) + t.p1 / t.t1);
+    return Math.atan2(Math.abs(fol.face_offset), Math.abs(c));
+  }
+
+  // first-order bound of an extremum's error from the interpolation's bounds
+  function bound(ph, u, value) {
+    const m = interp(ph, u);
+    const h = 1e-6 * (rocker ? 1.0 : fol.scale);
+    const d = (ds0, dd0, d20) => Math.abs(value(m.s + ds0, m.ds + dd0, m.d2s + d20) -
+                                          value(m.s - ds0, m.ds - dd0, m.d2s - d20)) / (2 * h);
+    return 2.0 * (d(h, 0, 0) * ph.err_s + d(0, h, 0) * ph.err_ds + d(0, 0, h) * ph.err_d2s) + 1e-12;
+  }
+
+  function evaluate(R0, L) {
+    const res = { R0, L: rocker ? L : null, offset: rocker ? null : fol.offset, rise: null, ret: null,
+                  risePhases: [], returnPhases: [], bound: 0.0, minRho: Infinity, minRhoAt: null, rhoBound: 0.0,
+                  invalid: invalid(R0, L) };
+    if (res.invalid !== null) { res.inside = false; return res; }
+    for (const ph of phases) {
+      if (ph.kind === "dwell") {
+        const r = rhoOf(terms(R0, L, ph.level, 0, 0));
+        if (r < res.minRho) { res.minRho = r; res.minRhoAt = ph.start; }
+        continue;
+      }
+      const rho = (s, ds, d2s) => rhoOf(terms(R0, L, s, ds, d2s));
+      const lo = phaseMax(ph, (s, ds, d2s) => -rho(s, ds, d2s));
+      if (-lo.value < res.minRho) { res.minRho = -lo.value; res.minRhoAt = ph.start + lo.u * ph.angle; }
+      res.rhoBound = Math.max(res.rhoBound, bound(ph, lo.u, rho));
+      const gam = (s, ds, d2s) => gammaOf(L, terms(R0, L, s, ds, d2s));
+      const hi = phaseMax(ph, gam);
+      res.bound = Math.max(res.bound, rocker ? bound(ph, hi.u, gam) : 0.0);
+      if (ph.kind === "rise") {
+        res.risePhases.push(ph.index);
+        res.rise = res.rise === null ? hi.value : Math.max(res.rise, hi.value);
+      } else {
+        res.returnPhases.push(ph.index);
+        res.ret = res.ret === null ? hi.value : Math.max(res.ret, hi.value);
+      }
+    }
+    res.inside = res.minRho >= face.limits.min_radius - 1e-9 * fol.scale;
+    return res;
+  }
+
+  function state(R0, L) {
+    const r = evaluate(R0, L);
+    return { centre: null, R0, L: r.L, offset: r.offset,
+             max_pressure_angle: { rise: r.rise === null ? null : deg(r.rise), return: r.ret === null ? null : deg(r.ret) },
+             inside: r.inside, error_bound: deg(r.bound) };
+  }
+
+  // the profile in the cam frame: the envelope's points, their radius of curvature, the face's normal angle
+  function profile(R0, L, per = 360) {
+    const pts = [];
+    for (const ph of phases) {
+      const k = ph.kind === "dwell" ? Math.max(8, Math.ceil((ph.angle / (2 * Math.PI)) * 360)) : per;
+      for (let j = 0; j < k; j++) {
+        const u = j / k;
+        const m = interp(ph, u);
+        const phi = ph.start + u * ph.angle;
+        const t = terms(R0, L, m.s, m.ds, m.d2s);
+        const th = t.a - eps * phi;
+        const pt = t.p1 / t.t1;
+        const X = [t.p * Math.cos(th) - pt * Math.sin(th), t.p * Math.sin(th) + pt * Math.cos(th)];
+        pts.push({ phi, work: X, rho: rhoOf(t), a: t.a, p: t.p, s: m.s });
+      }
+    }
+    return pts;
+  }
+
+  function cycle(R0, L, per = 240) {
+    return phases.map((ph) => {
+      const k = ph.kind === "dwell" ? 24 : per;
+      const pts = [];
+      for (let j = 0; j <= k; j++) {
+        const m = interp(ph, j / k);
+        const t = terms(R0, L, m.s, m.ds, m.d2s);
+        pts.push([deg(ph.start + (j / k) * ph.angle), rhoOf(t), deg(gammaOf(L, t))]);
+      }
+      return { index: ph.index, kind: ph.kind, points: pts };
+    });
+  }
+
+  function follower(R0, L, phi) {
+    const x = ((phi % (2 * Math.PI)) + 2 * Math.PI) % (2 * Math.PI);
+    let ph = phases[phases.length - 1];
+    for (const p of phases) if (x >= p.start && x < p.start + p.angle) { ph = p; break; }
+    const m = interp(ph, (x - ph.start) / ph.angle);
+    const t = terms(R0, L, m.s, m.ds, m.d2s);
+    return { s: m.s, a: t.a, p: t.p, contact: t.p1 / t.t1 };
+  }
+
+  return { face, phases, interp, phaseMax, invalid, terms, evaluate, state, profile, cycle, follower, deg };
 }
 
 if (typeof module !== "undefined") module.exports = { camsMath };
