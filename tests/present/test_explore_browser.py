@@ -373,3 +373,31 @@ def test_the_blocker_sees_a_request_off_the_file(browser, tmp_path):
     assert sorted(blocked) == ["http://styles.invalid/a.css", "https://images.invalid/b.png"]
     assert errors, "the aborted loads are reported as the page's console errors"
     page.context.close()
+
+
+def test_no_feasible_zone_the_page_opens_and_says_why(browser, tmp_path, shots):
+    """Limits no centre meets (7 deg on both phases of the groove cam): the page still opens offline, shows the
+    diagnosis cams solve gives, word for word, and the centres inside the example's own zone are outside this one."""
+    design = tmp_path / "no_zone.toml"
+    text = _with((EXAMPLES / "rocker_form.toml").read_text(encoding="utf-8"), "limits", "pressure_angle", "7.0")
+    design.write_text(_with(text, "limits", "return_pressure_angle", "7.0"), encoding="utf-8")
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+        assert main(["solve", str(design)]) == 2
+    said = err.getvalue().strip()
+    assert said.startswith("cams solve: error: "), said
+    why = said.removeprefix("cams solve: error: ")
+    page_file = tmp_path / "no_zone.html"
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+        main(["explore", str(design), "--out", str(page_file)])
+    page, blocked, errors = open_offline(browser, page_file)
+    page.screenshot(path=str(shots / "no_zone.png"))
+    shown = page.locator("body").inner_text()
+    assert why in " ".join(shown.split()), f"the page does not say cams solve's {why!r}"
+    assert _state(page)["inside"] is False
+    for x, y in [c for c, inside in CASES["rocker_form"][1] if inside]:  # inside the zone of 45 and 50 deg
+        page.evaluate("([x, y]) => window.cams.setCentre(x, y)", [x, y])
+        assert _state(page)["centre"] == [x, y]
+        assert _state(page)["inside"] is False, (x, y)
+    assert blocked == [] and errors == [], (blocked, errors)
+    page.context.close()
