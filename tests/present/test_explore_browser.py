@@ -2,8 +2,9 @@
 
 A headless Chromium (tests/present/browser.py: the system's, through Playwright) opens the page written by
 ``cams explore`` from ``file://`` with every other request aborted, and the tests say that none was attempted and
-that the page raised no JavaScript error. For a rocker roller (form closure, with K_C), a translating roller (force
-closure, the solver's offset) and a flat-faced rocker:
+that the page raised no JavaScript error (a page that asks the network is caught: the harness's own test). For a
+rocker roller (form closure, with K_C), a translating roller (force closure, the solver's offset) and a flat-faced
+rocker (its face through the pivot, and 15 mm from it for a pressure angle that is not 0):
 
 - the point is dragged with the mouse (press, move, release at the client coordinates ``window.cams.toScreen``
   gives) to five centres inside and outside the zone; a flat face, which has no centre, is given five sizes by
@@ -14,8 +15,9 @@ closure, the solver's offset) and a flat-faced rocker:
   verdict on the file's limits (each phase's pressure angle, and the rocker's K_C through cams solve's
   ``safety_factor.ok``; a flat face's convexity);
 - the smallest-cam button returns the point to the sized cam of ``cams solve --json``;
-- the slider turns the cam: the picture changes, the numbers do not, and the slider back where it was gives the same
-  picture again.
+- the slider turns the cam: the drawings change, the numbers do not, and the slider back where it was gives the
+  same drawings again;
+- a design with no feasible zone: the page opens and says cams solve's diagnosis.
 
 The centres are chosen at least a degree from every limit (the verdicts do not hang on the last digits). Screenshots
 are kept in ``$CAMS_ARTEFACTS/explore`` when set, else in tests/artefacts/explore (ignored by git). The tests are
