@@ -33,8 +33,10 @@ def run(args) -> int:
         print(f"wrote {args.out}: no cam can be sized ({data['diagnosis']}); the page says why")
         return EXIT_CHECK_FAILED
     a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
-    print(f"wrote {args.out}: the sized cam's {'centre' if data['face']['mode'] == 'centre' else 'size'} to start "
-          f"from; open it in a browser")
+    print(
+        f"wrote {args.out}: the sized cam's {'centre' if data['face']['mode'] == 'centre' else 'size'} to start "
+        f"from; open it in a browser"
+    )
     if not a.usable:
         for line in a.failures:
             print(f"  FAIL: {line}")
@@ -47,17 +49,20 @@ def register(sub) -> None:
         "explore",
         help="write an interactive page: drag the cam centre over the allowable zone",
         description="Write one self-contained HTML page (no server, nothing fetched) showing the allowable-centre "
-                    "zone with its binding lines t-t and t1-t1, the sized cam's centre and a point you drag: R0, L "
-                    "or the offset, the largest pressure angle of each phase against its limit, the pressure angle "
-                    "over the cycle, the profile to scale with any undercut, computed in the page with a stated "
-                    "error bound. A flat-faced follower: its base radius (and a rocker's centre distance) are "
-                    "moved instead. Exit code 0: the sized cam is usable, 1: it fails a check or none can be "
-                    "sized (the page says why), 2: bad input.",
+        "zone with its binding lines t-t and t1-t1, the sized cam's centre and a point you drag: R0, L "
+        "or the offset, the largest pressure angle of each phase against its limit, the pressure angle "
+        "over the cycle, the profile to scale with any undercut, computed in the page with a stated "
+        "error bound. A flat-faced follower: its base radius (and a rocker's centre distance) are "
+        "moved instead. Exit code 0: the sized cam is usable, 1: it fails a check or none can be "
+        "sized (the page says why), 2: bad input.",
         epilog="example: cams explore examples/rocker_force.toml --out rocker.html",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--out", required=True, help="the page to write (HTML)")
-    q.add_argument("--quiet", action="store_true",
-                   help="no progress (drawn on a terminal's stderr while the motion design of [optimize] runs)")
+    q.add_argument(
+        "--quiet",
+        action="store_true",
+        help="no progress (drawn on a terminal's stderr while the motion design of [optimize] runs)",
+    )
     q.set_defaults(func=run)

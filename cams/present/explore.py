@@ -32,9 +32,15 @@ def explore_data(cam) -> dict:
     except InfeasibleError as e:
         solution, design, diagnosis = None, cam.given, str(e)
     face = presenter(cam).explorer(design, solution)
-    return {"name": design.name, "unit": "mm", "phases": phase_samples(design), "face": face,
-            "diagnosis": diagnosis, "designed": design is not cam.given,
-            "notes": [] if solution is None else list(solution.notes)}
+    return {
+        "name": design.name,
+        "unit": "mm",
+        "phases": phase_samples(design),
+        "face": face,
+        "diagnosis": diagnosis,
+        "designed": design is not cam.given,
+        "notes": [] if solution is None else list(solution.notes),
+    }
 
 
 def math_source() -> str:
@@ -52,6 +58,8 @@ def page(data: dict) -> str:
     from html import escape
 
     template = resources.files("cams.present").joinpath("explore_page.html").read_text(encoding="utf-8")
-    return (template.replace("{{TITLE}}", escape(data["name"]))
-            .replace("{{MATH}}", math_source())
-            .replace("{{DATA}}", _script_json(data)))
+    return (
+        template.replace("{{TITLE}}", escape(data["name"]))
+        .replace("{{MATH}}", math_source())
+        .replace("{{DATA}}", _script_json(data))
+    )

@@ -54,8 +54,13 @@ def phase_samples(design, n: int = SAMPLES) -> list[dict]:
     prog = design.program
     out = []
     for i, p in enumerate(prog.phases):
-        entry: dict = {"index": i, "kind": p.kind, "start": float(prog.starts[i]), "angle": float(p.angle),
-                       "level": float(prog.levels[i])}
+        entry: dict = {
+            "index": i,
+            "kind": p.kind,
+            "start": float(prog.starts[i]),
+            "angle": float(p.angle),
+            "level": float(prog.levels[i]),
+        }
         if p.kind != "dwell":
             m = prog.evaluate_phase(i, np.linspace(0.0, 1.0, n + 1))
             fine = prog.evaluate_phase(i, np.linspace(0.0, 1.0, n * DENSE + 1))
@@ -70,9 +75,18 @@ def phase_samples(design, n: int = SAMPLES) -> list[dict]:
             ud = np.linspace(0.0, 1.0, n * DENSE + 1)
             measured = float(np.max(np.abs(fine.d2s - np.interp(ud, np.linspace(0.0, 1.0, n + 1), m.d2s))))
             slope = float(np.max(np.abs(np.diff(m.d2s)))) / h
-            entry.update(n=n, s=_r(m.s), ds=_r(m.ds), d2s=_r(m.d2s), M2=M2, M3=M3, jump=jump,
-                         err_s=h * h / 8.0 * M2, err_ds=h * h / 8.0 * M3 + h / 4.0 * jump,
-                         err_d2s=measured + hd / 2.0 * (M3 + slope) + jump)
+            entry.update(
+                n=n,
+                s=_r(m.s),
+                ds=_r(m.ds),
+                d2s=_r(m.d2s),
+                M2=M2,
+                M3=M3,
+                jump=jump,
+                err_s=h * h / 8.0 * M2,
+                err_ds=h * h / 8.0 * M3 + h / 4.0 * jump,
+                err_d2s=measured + hd / 2.0 * (M3 + slope) + jump,
+            )
         out.append(entry)
     return out
 
@@ -88,16 +102,27 @@ def roller_zone(design, centre, binding, *, extra=()) -> dict:
 
     f = design.follower
     c = np.asarray(f.position(0.0) if centre is None else centre, float)
-    zd = zone_drawing(design, c, binding=tuple((b.phi, b.side) for b in binding), samples=360, n_lines=8,
-                      extra_points=tuple(np.atleast_2d(np.asarray(e, float)) for e in extra), margin=0.5)
+    zd = zone_drawing(
+        design,
+        c,
+        binding=tuple((b.phi, b.side) for b in binding),
+        samples=360,
+        n_lines=8,
+        extra_points=tuple(np.atleast_2d(np.asarray(e, float)) for e in extra),
+        margin=0.5,
+    )
     return {
         "box": [float(v) for v in zd.box],
         "polygon": [_r(p) for p in zd.polygon] if len(zd.polygon) else [],
         "polygon_k1": None if zd.polygon_k1 is None else [_r(p) for p in zd.polygon_k1],
-        "lines": [{"phi": float(phi), "line": "t-t" if side == 0 else "t1-t1", "p0": _r(p0), "p1": _r(p1),
-                   "binding": bool(b)} for phi, side, p0, p1, b in zd.lines],
-        "curves": [{"phase": c.phase, "kind": c.kind, "A": [_r(a) for a in c.A], "D": [_r(d) for d in c.D]}
-                   for c in zd.curves],
-        "binding": [{"phi": float(b.phi), "phase": int(b.phase), "line": "t-t" if b.side == 0 else "t1-t1"}
-                    for b in binding],
+        "lines": [
+            {"phi": float(phi), "line": "t-t" if side == 0 else "t1-t1", "p0": _r(p0), "p1": _r(p1), "binding": bool(b)}
+            for phi, side, p0, p1, b in zd.lines
+        ],
+        "curves": [
+            {"phase": c.phase, "kind": c.kind, "A": [_r(a) for a in c.A], "D": [_r(d) for d in c.D]} for c in zd.curves
+        ],
+        "binding": [
+            {"phi": float(b.phi), "phase": int(b.phase), "line": "t-t" if b.side == 0 else "t1-t1"} for b in binding
+        ],
     }
