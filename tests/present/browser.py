@@ -95,7 +95,7 @@ def chromium() -> Iterator[Any]:
             browser.close()
 
 
-def open_offline(browser: Any, page_file: Path, *, width: int = 1280, height: int = 900, ready_ms: float = 10000):
+def open_offline(browser: Any, page_file: Path, *, width: int = 1440, height: int = 960, ready_ms: float = 10000):
     """Open ``page_file`` from ``file://`` with every non-file request aborted; wait for ``window.cams.ready``.
 
     Returns
