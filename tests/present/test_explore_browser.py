@@ -176,15 +176,30 @@ def shots() -> Path:
     return artefacts_dir(ROOT / "tests" / "artefacts" / "explore")
 
 
+@pytest.fixture(scope="module")
+def sessions(browser, pages):
+    """Each case's page, opened offline once for the module (opening runs the page's whole computation) and
+    shared by the case's tests, each of which starts from wherever the point is; closed at the end."""
+    opened: dict[str, tuple] = {}
+
+    def get(name: str):
+        if name not in opened:
+            opened[name] = open_offline(browser, pages[name][1])
+        return opened[name]
+
+    yield get
+    for page, _, _ in opened.values():
+        page.context.close()
+
+
 @pytest.fixture
-def opened(browser, pages, request):
-    """The case's page, opened offline; after the test: no request left the file, no JavaScript error."""
+def opened(sessions, request):
+    """The case's page; after the test: no request left the file, no JavaScript error, ever since it opened."""
     name = request.param
-    page, blocked, errors = open_offline(browser, pages[name][1])
+    page, blocked, errors = sessions(name)
     yield name, page
     assert blocked == [], f"the page asked the network for {blocked}"
     assert errors == [], f"the page's JavaScript failed: {errors}"
-    page.context.close()
 
 
 def _state(page) -> dict:
