@@ -14,14 +14,15 @@ from importlib import resources
 __all__ = ["explore_data", "page", "math_source"]
 
 
-def explore_data(cam) -> dict:
+def explore_data(cam, *, samples: int | None = None) -> dict:
     """The page's data of ``cam`` (a :class:`cams.cam.Cam`), JSON-ready; lengths in the design's unit, radians.
 
     The cam is sized first (with ``[optimize]``, the laws are designed first and theirs are embedded). Where no cam
     can be sized (:class:`laws.errors.InfeasibleError`: no feasible zone), the page still shows the file's laws
-    and says why: ``diagnosis`` holds the error's line, as ``cams solve`` gives it.
+    and says why: ``diagnosis`` holds the error's line, as ``cams solve`` gives it. ``samples``: the steps per
+    rise or return phase (default :data:`cams.present.explore_data.SAMPLES`).
     """
-    from cams.present.explore_data import phase_samples
+    from cams.present.explore_data import SAMPLES, phase_samples
     from cams.present.faces import presenter
     from laws.errors import InfeasibleError
 
@@ -35,7 +36,7 @@ def explore_data(cam) -> dict:
     return {
         "name": design.name,
         "unit": "mm",
-        "phases": phase_samples(design),
+        "phases": phase_samples(design, SAMPLES if samples is None else samples),
         "face": face,
         "diagnosis": diagnosis,
         "designed": design is not cam.given,

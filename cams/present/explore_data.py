@@ -47,9 +47,9 @@ def phase_samples(design, n: int = SAMPLES) -> list[dict]:
         One per ``[[motion]]`` phase, in order: ``index`` (from 0), ``kind`` (``"rise"``, ``"return"``,
         ``"dwell"``), ``start`` and ``angle`` (rad), ``level`` (the displacement at its start: rad for a rocker,
         length for a translating follower). A rise or return has ``n`` (steps), ``s``, ``ds``, ``d2s`` (``n + 1``
-        values each: displacement, per rad, per rad squared) and the bounds of their linear interpolation,
-        ``err_s``, ``err_ds`` and ``err_d2s`` (the displacement's unit, per rad, per rad squared), with ``M2``, ``M3`` and ``jump`` (the
-        largest ``|s''|``, ``|s'''|`` and step of ``s''`` inside the phase) they are made of, and ``err_d2s``.
+        values each: displacement, per rad, per rad squared), the bounds of their linear interpolation ``err_s``,
+        ``err_ds`` and ``err_d2s`` (the displacement's unit, per rad, per rad squared), and ``M2``, ``M3`` and
+        ``jump`` (the largest ``|s''|``, ``|s'''|`` and step of ``s''`` inside the phase) they are made of.
     """
     prog = design.program
     out = []
@@ -102,14 +102,20 @@ def roller_zone(design, centre, binding, *, extra=()) -> dict:
 
     f = design.follower
     c = np.asarray(f.position(0.0) if centre is None else centre, float)
+    pts = tuple(np.atleast_2d(np.asarray(e, float)) for e in extra)
+    x0, y0, x1, y1 = zone_drawing(design, c, samples=8, n_lines=2, extra_points=pts, margin=0.5).box
+    # a square view (the page's picture is square): the zone and its lines are cut at its edges, not inside it
+    half = max(x1 - x0, y1 - y0) / 2
+    mid = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+    corners = np.array([mid - half, mid + half])
     zd = zone_drawing(
         design,
         c,
         binding=tuple((b.phi, b.side) for b in binding),
         samples=360,
         n_lines=8,
-        extra_points=tuple(np.atleast_2d(np.asarray(e, float)) for e in extra),
-        margin=0.5,
+        extra_points=(*pts, corners),
+        margin=0.0,
     )
     return {
         "box": [float(v) for v in zd.box],

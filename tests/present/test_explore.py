@@ -48,10 +48,33 @@ def _math_of(html: str) -> str:
 def pages():
     """The page of each example the tests drive: (design file, cam, html, embedded data)."""
     out = {}
-    for name in ("rocker_force", "translating_force", "rocker_form", "rocker_flat", "translating_flat"):
+    for name in (
+        "rocker_force",
+        "translating_force",
+        "rocker_form",
+        "translating_form_centric",
+        "rocker_flat",
+        "translating_flat",
+    ):
         cam = Cam(load_design(EXAMPLES / f"{name}.toml"))
         html = page(explore_data(cam))
         out[name] = (cam, html, _data_of(html))
+    # a rise in two steps (two rise phases: the page's rise is the larger of their maxima, as the check's)
+    two = rocker_dict(
+        name="two rises",
+        follower={"swing": 20.0},
+        motion=[
+            {"phase": "rise", "law": "cycloidal", "angle": 60, "height": 12},
+            {"phase": "dwell", "angle": 30},
+            {"phase": "rise", "law": "poly345", "angle": 60, "height": 8},
+            {"phase": "dwell", "angle": 30},
+            {"phase": "return", "law": "modified_sine", "angle": 120},
+            {"phase": "dwell"},
+        ],
+    )
+    cam = Cam(design_from_dict(two))
+    html = page(explore_data(cam))
+    out["two_rises"] = (cam, html, _data_of(html))
     # a flat rocker whose face misses the pivot: its pressure angle is not 0
     d = load_design(EXAMPLES / "rocker_flat.toml")
     cam = Cam(d.with_(follower=replace(d.follower, face_offset=15.0)))
@@ -82,6 +105,16 @@ def test_cycloidal_samples_equal_the_closed_form(pages):
     assert rise["M2"] == pytest.approx(1.05 * 2 * np.pi * H / b**2, rel=1e-6)
     assert rise["M3"] == pytest.approx(1.05 * 4 * np.pi**2 * H / b**3, rel=1e-6)
     assert rise["jump"] == 0.0
+
+
+def test_two_rises_are_named_and_each_is_sampled(pages):
+    """A program with two rises embeds both (their heights by hand: 12 and 8 deg of a 20 deg swing)."""
+    _, _, data = pages["two_rises"]
+    rises = [p for p in data["phases"] if p["kind"] == "rise"]
+    assert [p["index"] for p in rises] == [0, 2]
+    assert rises[0]["s"][-1] == pytest.approx(math.radians(12.0), abs=1e-14)
+    assert rises[1]["level"] == pytest.approx(math.radians(12.0), abs=1e-14)
+    assert rises[1]["s"][-1] == pytest.approx(math.radians(20.0), abs=1e-14)
 
 
 @pytest.mark.parametrize("law", ["cycloidal", "poly345", "modified_trapezoid", "parabolic", "harmonic"])
@@ -153,8 +186,14 @@ def test_a_name_cannot_end_the_script():
 
 
 def _checked(cam, centre):
-    """``cams check``'s numbers at ``[cam] centre = centre``: the chosen cam's solve report (as ``--json``)."""
-    d = cam.design.with_(centre=(float(centre[0]), float(centre[1])))
+    """``cams check``'s numbers at ``[cam] centre = centre``: the chosen cam's solve report (as ``--json``); what
+    a chosen centre fixes (L, the offset) and the floor are taken off the file, as they must be."""
+    d = cam.design
+    f = d.follower
+    if getattr(f, "offset", None) is not None:
+        f = replace(f, offset=None)
+    lim = replace(d.limits, centre_distance=None, min_base_radius=None)
+    d = d.with_(follower=f, limits=lim, base_radius=None, objective="R0", centre=(float(centre[0]), float(centre[1])))
     return Cam(d).solution.to_dict()
 
 
@@ -187,17 +226,15 @@ def _run_node(html: str, calls: list) -> list:
 
 
 def _offsets(start):
-    return [
-        np.array(start),
-        np.array(start) + (2.0, 1.0),
-        np.array(start) + (-3.0, 2.0),
-        np.array(start) + (1.0, -4.0),
-        np.array(start) + (10.0, 10.0),
-    ]
+    """Five centres: ``start`` and four moved from it (mm), in and out of the zone."""
+    steps = np.array([(0.0, 0.0), (2.0, 1.0), (-3.0, 2.0), (1.0, -4.0), (10.0, 10.0)])
+    return list(np.asarray(start, float) + steps)
 
 
 @pytest.mark.skipif(NODE is None, reason="node is not installed: the page's script cannot run outside a browser")
-@pytest.mark.parametrize("name", ["rocker_force", "translating_force", "rocker_form"])
+@pytest.mark.parametrize(
+    "name", ["rocker_force", "translating_force", "rocker_form", "translating_form_centric", "two_rises"]
+)
 def test_page_math_equals_cams_check_at_five_centres(pages, name):
     """The page's state at five centres (the sized one, four others in and out of the zone) equals the
     independent check's at ``[cam] centre`` within the bound the page states; inside equals verified."""
@@ -294,7 +331,7 @@ def _port_max_pressure(data, centre, kind):
     return best
 
 
-@pytest.mark.parametrize("name", ["rocker_force", "translating_force", "rocker_form"])
+@pytest.mark.parametrize("name", ["rocker_force", "translating_force", "rocker_form", "two_rises"])
 def test_python_port_of_the_page_formula_equals_cams_check(pages, name):
     """The page's pressure angle, ported to Python on the embedded samples, equals the check's at five centres."""
     cam, _, data = pages[name]
@@ -302,3 +339,24 @@ def test_python_port_of_the_page_formula_equals_cams_check(pages, name):
         ref = _checked(cam, c)
         for kind in ("rise", "return"):
             assert _port_max_pressure(data, c, kind) == pytest.approx(ref["max_pressure_angle"][kind], abs=1e-4)
+
+
+@pytest.mark.skipif(NODE is None, reason="node is not installed: the page's script cannot run outside a browser")
+def test_the_stated_bound_holds_on_coarse_samples():
+    """With 24 steps a phase the page's error is large enough to measure: it stays within the bound the page
+    states, and the bound is not vacuous (within a factor 1000 of the error at some centre)."""
+    cam = Cam(load_design(EXAMPLES / "rocker_form.toml"))
+    data = explore_data(cam, samples=24)
+    assert {p["n"] for p in data["phases"] if p["kind"] != "dwell"} == {24}
+    html = page(data)
+    centres = _offsets(data["face"]["start"]["centre"])
+    got = _run_node(html, [list(map(float, c)) for c in centres])
+    ratios = []
+    for c, g in zip(centres, got, strict=True):
+        st, ref = g["state"], _checked(cam, c)
+        for kind in ("rise", "return"):
+            err = abs(st["max_pressure_angle"][kind] - ref["max_pressure_angle"][kind])
+            assert err <= st["error_bound"], (c, kind, err, st["error_bound"])
+            ratios.append(err / st["error_bound"])
+    assert max(ratios) > 1e-3
+    assert 1e-3 < got[0]["state"]["error_bound"] < 1.0  # degrees, at 24 steps
