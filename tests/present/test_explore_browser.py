@@ -158,18 +158,23 @@ def browser():
 
 
 @pytest.fixture(scope="module")
-def pages(tmp_path_factory) -> dict[str, tuple[Path, Path]]:
-    """Each case's design file and its explorer page, written by ``cams explore FILE --out PAGE.html``."""
+def pages(tmp_path_factory):
+    """A case's design file and its explorer page, written by ``cams explore FILE --out PAGE.html`` when a test
+    first asks (a worker of pytest-xdist writes only the cases it runs)."""
     out = tmp_path_factory.mktemp("explore")
-    written = {}
-    for name in CASES:
-        design, page = out / f"{name}.toml", out / f"{name}.html"
-        design.write_text(_design_text(name), encoding="utf-8")
-        with contextlib.redirect_stdout(io.StringIO()):
-            code = main(["explore", str(design), "--out", str(page)])
-        assert code == 0 and page.is_file() and page.stat().st_size > 0, f"cams explore {name}: exit {code}"
-        written[name] = (design, page)
-    return written
+    written: dict[str, tuple[Path, Path]] = {}
+
+    def get(name: str) -> tuple[Path, Path]:
+        if name not in written:
+            design, page = out / f"{name}.toml", out / f"{name}.html"
+            design.write_text(_design_text(name), encoding="utf-8")
+            with contextlib.redirect_stdout(io.StringIO()):
+                code = main(["explore", str(design), "--out", str(page)])
+            assert code == 0 and page.is_file() and page.stat().st_size > 0, f"cams explore {name}: exit {code}"
+            written[name] = (design, page)
+        return written[name]
+
+    return get
 
 
 @pytest.fixture(scope="module")
@@ -186,7 +191,7 @@ def sessions(browser, pages):
 
     def get(name: str):
         if name not in opened:
-            opened[name] = open_offline(browser, pages[name][1])
+            opened[name] = open_offline(browser, pages(name)[1])
         return opened[name]
 
     yield get
@@ -332,7 +337,7 @@ def test_smallest_cam_button_returns_to_the_sized_cam(opened, pages, shots):
     """Away from the sized cam, the button brings the point back to cams solve's smallest cam."""
     name, page = opened
     targets = CASES[name][1]
-    _, sol = _cli(["solve", str(pages[name][0]), "--json"])
+    _, sol = _cli(["solve", str(pages(name)[0]), "--json"])
     flat = _state(page)["centre"] is None
     (far, _) = targets[0]
     if flat:
