@@ -3,8 +3,9 @@
 A headless Chromium (tests/present/browser.py: the system's, through Playwright) opens the page written by
 ``cams explore`` from ``file://`` with every other request aborted, and the tests say that none was attempted and
 that the page raised no JavaScript error (a page that asks the network is caught: the harness's own test). For a
-rocker roller (form closure, with K_C), a translating roller (force closure, the solver's offset) and a flat-faced
-rocker (its face through the pivot, and 15 mm from it for a pressure angle that is not 0):
+rocker roller (form closure with K_C; force closure, limited at the start position too), a translating roller
+(force closure, the solver's offset) and a flat-faced rocker (its face through the pivot, and 15 mm from it for a
+pressure angle that is not 0):
 
 - the point is dragged with the mouse (press, move, release at the client coordinates ``window.cams.toScreen``
   gives) to five centres inside and outside the zone; a flat face, which has no centre, is given five sizes by
@@ -54,6 +55,18 @@ CASES = {
             ((126.0, 28.0), False),
             ((130.0, 20.0), False),
             ((110.0, 40.0), False),
+        ],
+    ),
+    # force closure, sized centre (134.363, 9.363): the rise limited on t-t and, at the start position, on t1-t1;
+    # (150, 20) fails at cam angle 0 (t1-t1), (110, 30) in the rise (t-t)
+    "rocker_force": (
+        "rocker_force.toml",
+        [
+            ((140.0, 50.0), True),
+            ((120.0, 40.0), True),
+            ((145.0, 25.0), True),
+            ((150.0, 20.0), False),
+            ((110.0, 30.0), False),
         ],
     ),
     # sized centre (-8.791, -15.226): the rise is limited to 30 degrees
