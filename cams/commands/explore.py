@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
 
@@ -12,7 +13,7 @@ __all__ = ["register", "run"]
 def run(args) -> int:
     from cams.cam import Cam
     from cams.io.designfile import load_design
-    from cams.io.files import atomic_write, check_output_path
+    from cams.io.files import atomic_write, check_output_path, writes_stdout
     from cams.present.explore import explore_data, page
 
     check_output_path(args.out, "--out")  # before any work: an unwritable page is said at once
@@ -29,17 +30,19 @@ def run(args) -> int:
             fh.write(html)
 
     atomic_write(args.out, "--out", write)
+    say = sys.stderr if writes_stdout(args.out) else sys.stdout  # the page itself may be the standard output
     if data["diagnosis"] is not None:
-        print(f"wrote {args.out}: no cam can be sized ({data['diagnosis']}); the page says why")
+        print(f"wrote {args.out}: no cam can be sized ({data['diagnosis']}); the page says why", file=say)
         return EXIT_CHECK_FAILED
     a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
     print(
         f"wrote {args.out}: the sized cam's {'centre' if data['face']['mode'] == 'centre' else 'size'} to start "
-        f"from; open it in a browser"
+        f"from; open it in a browser",
+        file=say,
     )
     if not a.usable:
         for line in a.failures:
-            print(f"  FAIL: {line}")
+            print(f"  FAIL: {line}", file=say)
     return EXIT_OK if a.usable else EXIT_CHECK_FAILED
 
 

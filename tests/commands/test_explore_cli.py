@@ -81,3 +81,20 @@ def test_a_chosen_cam_that_fails_exits_1_and_starts_there(tmp_path, capsys):
     assert main(["explore", str(f), "--out", str(out)]) == 1
     assert "FAIL" in capsys.readouterr().out
     assert _data(out)["face"]["start"]["centre"] == [60.0, 80.0]
+
+
+def test_the_page_to_standard_output_says_so_on_stderr():
+    """``--out -``: the page is the standard output, whole; the line that says so goes to standard error."""
+    import subprocess
+    import sys
+
+    run = subprocess.run(
+        [sys.executable, "-m", "cams.cli", "explore", str(EXAMPLES / "translating_force.toml"), "--out", "-"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        cwd=EXAMPLES.parent,
+    )
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.startswith("<!doctype html>") and run.stdout.rstrip().endswith("</html>")
+    assert run.stderr.startswith("wrote -")

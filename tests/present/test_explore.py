@@ -149,7 +149,8 @@ def test_interpolation_bounds_hold_between_the_samples(law):
 
 def test_designed_laws_are_embedded(tmp_path):
     """A design with [optimize]: the page embeds the designed laws (the solved design's program), not the file's."""
-    cam = Cam(load_design(EXAMPLES / "translating_designed_rise.toml"))
+    d = load_design(EXAMPLES / "translating_designed_rise.toml")
+    cam = Cam(d.with_(optimize=replace(d.optimize, spans=6, smoothing_slack=0.0)))  # a small space: quick
     data = explore_data(cam)
     assert data["designed"] is True
     rise = data["phases"][0]
@@ -360,3 +361,26 @@ def test_the_stated_bound_holds_on_coarse_samples():
             ratios.append(err / st["error_bound"])
     assert max(ratios) > 1e-3
     assert 1e-3 < got[0]["state"]["error_bound"] < 1.0  # degrees, at 24 steps
+
+
+@pytest.mark.skipif(NODE is None, reason="node is not installed: the page's script cannot run outside a browser")
+def test_the_page_frame_is_the_design_files(tmp_path, capsys):
+    """The page's numbers at (x, y) are ``cams check --json``'s for a file with ``[cam] centre = [x, y]``."""
+    from cams.cli import main
+    from cams.io.tomlwrite import dumps
+
+    d = rocker_dict(follower={"rise_direction": "ccw"}, cam={"rotation": "cw"}, limits={"closure": "form"})
+    html = page(explore_data(Cam(design_from_dict(d))))
+    centre = [118.0, -22.0]
+    (g,) = _run_node(html, [centre])
+    f = tmp_path / "chosen.toml"
+    f.write_text(dumps({**d, "cam": {"rotation": "cw", "centre": centre}}), encoding="utf-8")
+    main(["check", str(f), "--json"])
+    ref = json.loads(capsys.readouterr().out)
+    worst = {c["name"]: c["worst"] for c in ref["checks"]}
+    st = g["state"]
+    assert st["centre"] == centre
+    assert st["R0"] == pytest.approx(ref["R0"], rel=1e-12)
+    for kind in ("rise", "return"):
+        assert abs(st["max_pressure_angle"][kind] - worst[f"jamming_{kind}"]) <= st["error_bound"] + 1e-9
+    assert st["inside"] is False and worst["jamming_rise"] > 45.0 + st["error_bound"]
