@@ -1,0 +1,185 @@
+"""The batch's independent check: the pressure angle, the pitch curve's curvature and the working profile's shape
+of many sized cams at once, by kinematic inversion (no zone, no instant point D).
+
+As :mod:`cams.verify.pressure` does for one design: the roller centre ``A(s)`` and its tangent ``T = dA/ds`` come
+from the follower's own geometry (rocker: ``A = arm (cos sense s, sin sense s)``; translating: ``A = (0, s)``);
+its velocity relative to the cam, per radian, is ``W = s' T - eps k x (A - O)``; the pitch curve's outward normal
+is ``n = eps k x W / |W|`` and the pressure angle ``gamma = arccos(n . T / |T|)``. The pitch curve in the cam's
+frame is ``P = R(-eps phi) (A - O)``, so ``P' = R W`` and ``P'' = R (W' - eps k x W)`` with
+``W' = s'' T + s'^2 dT/ds - eps s' k x T``: its curvature, positive where convex (the curve runs round the cam
+centre in the sense ``-eps``), is ``kappa = -eps (W x W' - eps |W|^2) / |W|^3``. The support ``p = (A - O) . n``
+is the distance from the cam centre to the pitch curve's tangent line.
+
+A working profile (the pitch curve offset by the roller radius ``r`` towards the cam) whose pitch curve has
+``kappa r < 1`` and ``p > r`` everywhere turns strictly monotonically round the cam centre (``W_work = (1 - kappa
+r) P'`` and the centre lies inside every tangent line): it is a simple closed curve round the centre, and so is
+its polyline at any chord tolerance far below the margin. That is the batch's test of what the per-design path
+judges on the 1 um polyline (no self-crossing, the centre inside); the groove's outer wall (offset outwards) needs
+``-kappa r < 1`` and ``p + r > 0``.
+
+Every largest value is found on a grid per phase and every local maximum of the grid (the ends included) is
+refined by zooming into its bracket of two steps, tenfold a step, as the per-design check does; all designs,
+phases and maxima at once.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["GroupCheck", "check_group", "GRID", "ZOOM_POINTS", "ZOOM_STEPS"]
+
+#: Even steps per phase of the search.
+GRID = 600
+#: Points of a bracket at each zoom step, and the zoom steps (the bracket ends 1e-10 times a step wide).
+ZOOM_POINTS = 21
+ZOOM_STEPS = 10
+
+
+@dataclass(frozen=True)
+class GroupCheck:
+    """Extremes of the sized cams of a group (arrays over its designs; radians, 1/length, length).
+
+    ``rise``/``ret``: largest pressure angle over the rise/return phases (NaN: no such phase), ``rise_lim``/``ret_lim``:
+    the largest excess over the limit of the constrained ones of that kind (-inf: none); ``convex``/``concave``: the
+    largest curvature and largest minus curvature of the pitch curve; ``support``: the smallest distance from the cam
+    centre to the pitch curve's tangent lines; ``joint``: the largest jump of the pitch curve's velocity direction at
+    a phase joint (radians).
+    """
+
+    rise: np.ndarray
+    ret: np.ndarray
+    excess: np.ndarray
+    convex: np.ndarray
+    concave: np.ndarray
+    support: np.ndarray
+    joint: np.ndarray
+
+
+class _Inversion:
+    """The follower geometry of every design of a group, and the inverted motion at given positions."""
+
+    def __init__(self, designs, centres: np.ndarray):
+        from cams.model.follower import Rocker
+
+        f = [d.follower for d in designs]
+        self.rocker = np.array([isinstance(x, Rocker) for x in f])
+        self.arm = np.array([getattr(x, "arm", 0.0) for x in f], float)
+        self.sense = np.array([getattr(x, "sense", 1) for x in f], float)
+        self.eps = np.array([d.cam_sense for d in designs], float)
+        self.O = np.asarray(centres, float)
+
+    def at(self, d: np.ndarray, s, ds, d2s):
+        """``gamma, kappa, p`` of designs ``d`` (broadcast with the motion ``s, s', s''``)."""
+        rk, arm, sg, eps = self.rocker[d], self.arm[d], self.sense[d], self.eps[d]
+        c, sn = np.cos(sg * s), np.sin(sg * s)
+        ax = np.where(rk, arm * c, 0.0)
+        ay = np.where(rk, arm * sn, s)
+        tx = np.where(rk, -sg * arm * sn, 0.0)
+        ty = np.where(rk, sg * arm * c, 1.0)
+        ux = np.where(rk, -arm * c, 0.0)         # dT/ds
+        uy = np.where(rk, -arm * sn, 0.0)
+        rx, ry = ax - self.O[d, 0], ay - self.O[d, 1]
+        wx, wy = ds * tx + eps * ry, ds * ty - eps * rx
+        w2 = wx * wx + wy * wy
+        w = np.sqrt(w2)
+        nx, ny = -eps * wy / w, eps * wx / w
+        t = np.hypot(tx, ty)
+        gamma = np.arccos(np.clip((nx * tx + ny * ty) / t, -1.0, 1.0))
+        vx = d2s * tx + ds * ds * ux + eps * ds * ty
+        vy = d2s * ty + ds * ds * uy - eps * ds * tx
+        kappa = -eps * (wx * vy - wy * vx - eps * w2) / (w2 * w)
+        return gamma, kappa, rx * nx + ry * ny
+
+
+def _largest(inv: _Inversion, program, phases: list[int], what, B: int):
+    """Largest of ``what(gamma, kappa, p)`` over each phase for each design: ``(B, len(phases))`` values."""
+    u = np.linspace(0.0, 1.0, GRID + 1)
+    out = np.full((B, len(phases)), -np.inf)
+    allD = np.arange(B)[:, None]
+    rows, cols, lo, hi, best = [], [], [], [], []
+    for q, i in enumerate(phases):
+        m = program.evaluate_phase(i, u)
+        g = what(*inv.at(allD, m.s[None], m.ds[None], m.d2s[None]))
+        g = np.where(np.isnan(g), np.inf, g)     # undefined: as bad as can be (the design goes to the per-design path)
+        low = np.full((B, 1), -np.inf)
+        left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
+        out[:, q] = g.max(axis=1)
+        if program.phases[i].kind == "dwell":     # constant: the grid's value is the phase's
+            continue
+        d, j = np.nonzero((g > left) & (g >= right))
+        rows.append(d)
+        cols.append(np.full(len(d), q))
+        lo.append(u[np.maximum(j - 1, 0)])
+        hi.append(u[np.minimum(j + 1, GRID)])
+        best.append(g[d, j])
+    if not rows:
+        return out
+    d, q, lo, hi, best = (np.concatenate(a) for a in (rows, cols, lo, hi, best))
+    t = np.linspace(0.0, 1.0, ZOOM_POINTS)
+    r = np.arange(len(d))
+    for _ in range(ZOOM_STEPS):
+        x = lo[:, None] + (hi - lo)[:, None] * t
+        gx = np.empty_like(x)
+        for k, i in enumerate(phases):
+            on = np.flatnonzero(q == k)
+            if len(on):
+                m = program.evaluate_phase(i, x[on].ravel())
+                sh = x[on].shape
+                gx[on] = what(*inv.at(d[on, None], m.s.reshape(sh), m.ds.reshape(sh), m.d2s.reshape(sh)))
+        gx = np.where(np.isnan(gx), np.inf, gx)
+        jx = np.argmax(gx, axis=1)
+        best = np.maximum(best, gx[r, jx])
+        lo, hi = x[r, np.maximum(jx - 1, 0)], x[r, np.minimum(jx + 1, ZOOM_POINTS - 1)]
+    np.maximum.at(out, (d, q), best)
+    return out
+
+
+def check_group(designs, centres: np.ndarray, program) -> GroupCheck:
+    """The extremes of the cams of ``designs`` (one program) centred at ``centres`` (fixed frame, shape (B, 2))."""
+    B = len(designs)
+    inv = _Inversion(designs, centres)
+    kinds = [p.kind for p in program.phases]
+    moving = [i for i, k in enumerate(kinds) if k != "dwell"]
+    every = list(range(len(kinds)))
+    g = _largest(inv, program, moving, lambda gm, k, p: gm, B) if moving else np.empty((B, 0))
+    rise = np.full(B, np.nan)
+    ret = np.full(B, np.nan)
+    excess = np.full(B, -np.inf)
+    lims = [dict(d.constrained_phases()) for d in designs]
+    for q, i in enumerate(moving):
+        col = g[:, q]
+        if kinds[i] == "rise":
+            rise = np.fmax(rise, col)
+        else:
+            ret = np.fmax(ret, col)
+        lim = np.array([lm.get(i, np.inf) for lm in lims])
+        excess = np.maximum(excess, col - lim)
+    convex = _largest(inv, program, every, lambda gm, kap, p: kap, B).max(axis=1)
+    concave = _largest(inv, program, every, lambda gm, kap, p: -kap, B).max(axis=1)
+    support = -_largest(inv, program, every, lambda gm, kap, p: -p, B).max(axis=1)
+    # the joints: the relative velocity's direction on both sides (a velocity jump makes a corner)
+    joint = np.zeros(B)
+    allD = np.arange(B)
+    for i in every:
+        a = program.evaluate_phase(i, np.array([1.0]))
+        b = program.evaluate_phase((i + 1) % len(kinds), np.array([0.0]))
+        sa, sb = (np.broadcast_to(x, (B,)) for x in (a.s[0], b.s[0]))
+        # the same cam angle: s continuous; the relative velocity's direction from each side's s'
+        wa = _velocity(inv, allD, sa, a.ds[0])
+        wb = _velocity(inv, allD, sb, b.ds[0])
+        turn = np.arctan2(np.abs(wa[0] * wb[1] - wa[1] * wb[0]), wa[0] * wb[0] + wa[1] * wb[1])
+        joint = np.maximum(joint, turn)
+    return GroupCheck(rise=rise, ret=ret, excess=excess, convex=convex, concave=concave, support=support,
+                      joint=joint)
+
+
+def _velocity(inv: _Inversion, d, s, ds):
+    """The roller centre's velocity relative to the cam (fixed frame, per radian) at ``s, s'``."""
+    rk, arm, sg, eps = inv.rocker[d], inv.arm[d], inv.sense[d], inv.eps[d]
+    c, sn = np.cos(sg * s), np.sin(sg * s)
+    ax, ay = np.where(rk, arm * c, 0.0), np.where(rk, arm * sn, s)
+    tx, ty = np.where(rk, -sg * arm * sn, 0.0), np.where(rk, sg * arm * c, 1.0)
+    rx, ry = ax - inv.O[d, 0], ay - inv.O[d, 1]
+    return ds * tx + eps * ry, ds * ty - eps * rx
