@@ -28,7 +28,8 @@ ROW_KEYS = ("R0", "L", "offset", "centre_x", "centre_y", "max_pressure_angle_ris
 #: tolerance (1e-7 rad), so that both judge it within the limit.
 PRESSURE_MARGIN = 1e-8
 #: The relative margin of the buildability tests: ``kappa r <= 1 - MARGIN`` on the pitch curve (convex; the
-#: groove's concave too), and the support at least ``r + MARGIN R0``; closer goes to the per-design path.
+#: groove's concave too), the working profile at least ``MARGIN R0`` inside every tangent line from its kernel's
+#: point and from the cam centre; closer goes to the per-design path.
 MARGIN = 1e-3
 #: The largest turn of the pitch curve's direction at a phase joint (radians) taken as no corner.
 JOINT = 1e-9
@@ -87,11 +88,12 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
             sized = size_group(group, list(phases), program)
             chk = check_group(group, sized.centre, program)
         r = np.array([d.follower.roller_radius for d in group])
-        good = (sized.ok & (chk.excess <= PRESSURE_MARGIN) & (chk.convex * r <= 1.0 - MARGIN)
-                & (chk.support >= r + MARGIN * sized.R0) & (sized.R0 > r * (1.0 + MARGIN))
+        good = (sized.ok & (chk.excess <= PRESSURE_MARGIN) & (chk.convex <= 1.0 - MARGIN)
+                & (chk.kernel >= MARGIN * sized.R0) & (np.abs(np.abs(chk.turns) - 1.0) < 1e-9) & (chk.step < 0.5)
+                & (chk.reach >= MARGIN * sized.R0) & (sized.R0 > r * (1.0 + MARGIN))
                 & (chk.joint <= JOINT) & np.isfinite(chk.rise))
         groove = np.array([d.limits.closure == "form" for d in group])
-        good &= ~groove | (chk.concave * r <= 1.0 - MARGIN)
+        good &= ~groove | (chk.concave <= 1.0 - MARGIN)
         for q in np.flatnonzero(good):
             out[idx[q]] = _row(group[q], sized.centre[q], float(sized.R0[q]), float(sized.error_bound[q]),
                                chk.rise[q], chk.ret[q])

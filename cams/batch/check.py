@@ -35,6 +35,13 @@ GRID = 600
 #: Points of a bracket at each zoom step, and the zoom steps (the bracket ends 1e-10 times a step wide).
 ZOOM_POINTS = 21
 ZOOM_STEPS = 10
+#: Designs checked at once.
+CHUNK = 64
+#: Even steps of a dwell (its values are constant but for the profile's outline, an arc round the cam centre).
+DWELL_GRID = 90
+#: The pressure angle's grid maxima refined: those within this of their phase's grid maximum (radians; the grid
+#: lowers a maximum by some 1e-6 at most).
+NEAR = 1e-3
 
 
 @dataclass(frozen=True)
@@ -53,7 +60,10 @@ class GroupCheck:
     excess: np.ndarray
     convex: np.ndarray
     concave: np.ndarray
-    support: np.ndarray
+    kernel: np.ndarray
+    turns: np.ndarray
+    step: np.ndarray
+    reach: np.ndarray
     joint: np.ndarray
 
 
@@ -69,9 +79,15 @@ class _Inversion:
         self.sense = np.array([getattr(x, "sense", 1) for x in f], float)
         self.eps = np.array([d.cam_sense for d in designs], float)
         self.O = np.asarray(centres, float)
+        self.roller = np.array([x.roller_radius for x in f], float)
+        self.C = np.zeros_like(self.O)
 
-    def at(self, d: np.ndarray, s, ds, d2s):
-        """``gamma, kappa, p`` of designs ``d`` (broadcast with the motion ``s, s', s''``)."""
+    def at(self, d: np.ndarray, program, i: int, u: np.ndarray) -> dict:
+        """At positions ``u`` (shape of ``d``, broadcast) of phase ``i``: ``gamma``, ``kappa``, ``p`` and the
+        kernel's margin ``k`` of the working profile about the point :attr:`C` (cam frame; 0 before it is set)."""
+        m = program.evaluate_phase(i, np.asarray(u, float).ravel())
+        sh = np.broadcast_shapes(np.shape(d), np.shape(u))
+        s, ds, d2s = (np.broadcast_to(v.reshape(np.shape(u)), sh) for v in (m.s, m.ds, m.d2s))
         rk, arm, sg, eps = self.rocker[d], self.arm[d], self.sense[d], self.eps[d]
         c, sn = np.cos(sg * s), np.sin(sg * s)
         ax = np.where(rk, arm * c, 0.0)
@@ -90,25 +106,52 @@ class _Inversion:
         vx = d2s * tx + ds * ds * ux + eps * ds * ty
         vy = d2s * ty + ds * ds * uy - eps * ds * tx
         kappa = -eps * (wx * vy - wy * vx - eps * w2) / (w2 * w)
-        return gamma, kappa, rx * nx + ry * ny
+        p = rx * nx + ry * ny
+        # the working profile's point, the cam's frame: R(-eps phi) (A - O - r n)
+        phi = program.starts[i] + np.asarray(u, float) * program.phases[i].angle
+        cp, sp = np.cos(phi), eps * np.sin(phi)
+        rr = self.roller[d]
+        qx, qy = rx - rr * nx, ry - rr * ny
+        W = (cp * qx + sp * qy, -sp * qx + cp * qy)
+        return {"gamma": gamma, "kr": kappa * rr, "p": p, "W": W, "n": (nx, ny)}
+
+    def kernel(self, v: dict, program, i: int, u: np.ndarray) -> np.ndarray:
+        """The working profile's margin inside its tangent lines seen from :attr:`C` (cam frame), at the values
+        ``v`` of :meth:`at` for all designs: ``(W - C) . n_cam = (A - O - r n - R(eps phi) C) . n``."""
+        phi = program.starts[i] + u * program.phases[i].angle
+        eps = self.eps[:, None]
+        cp, sp = np.cos(phi), eps * np.sin(phi)
+        cx, cy = self.C[:, 0, None], self.C[:, 1, None]
+        nx, ny = v["n"]
+        return v["p"] - self.roller[:, None] - ((cp * cx - sp * cy) * nx + (sp * cx + cp * cy) * ny)
 
 
-def _largest(inv: _Inversion, program, phases: list[int], what, B: int):
-    """Largest of ``what(gamma, kappa, p)`` over each phase for each design: ``(B, len(phases))`` values."""
+def _peaks_of(g: np.ndarray, keep: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The grid's local maxima (ends included; the first of a plateau) of the rows of ``g`` where ``keep`` holds."""
+    low = np.full((len(g), 1), -np.inf)
+    left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
+    return np.nonzero((g > left) & (g >= right) & keep)
+
+
+def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float = np.inf,
+             floor: float = -np.inf):
+    """Largest of ``what(values of _Inversion.at)`` over each phase of ``grid`` for each design: ``(B, phases)``.
+
+    ``grid`` holds the values on the grid per phase; the local maxima of a moving phase's grid within ``near`` of
+    its phase's grid maximum and at least ``floor`` are refined by the zoom (the others are the grid's).
+    """
     u = np.linspace(0.0, 1.0, GRID + 1)
+    phases = list(grid)
     out = np.full((B, len(phases)), -np.inf)
-    allD = np.arange(B)[:, None]
     rows, cols, lo, hi, best = [], [], [], [], []
     for q, i in enumerate(phases):
-        m = program.evaluate_phase(i, u)
-        g = what(*inv.at(allD, m.s[None], m.ds[None], m.d2s[None]))
+        g = what(grid[i])
         g = np.where(np.isnan(g), np.inf, g)     # undefined: as bad as can be (the design goes to the per-design path)
-        low = np.full((B, 1), -np.inf)
-        left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
         out[:, q] = g.max(axis=1)
         if program.phases[i].kind == "dwell":     # constant: the grid's value is the phase's
             continue
-        d, j = np.nonzero((g > left) & (g >= right))
+        keep = (g >= out[:, q, None] - near) & (g >= floor)
+        d, j = _peaks_of(g, keep)
         rows.append(d)
         cols.append(np.full(len(d), q))
         lo.append(u[np.maximum(j - 1, 0)])
@@ -125,9 +168,7 @@ def _largest(inv: _Inversion, program, phases: list[int], what, B: int):
         for k, i in enumerate(phases):
             on = np.flatnonzero(q == k)
             if len(on):
-                m = program.evaluate_phase(i, x[on].ravel())
-                sh = x[on].shape
-                gx[on] = what(*inv.at(d[on, None], m.s.reshape(sh), m.ds.reshape(sh), m.d2s.reshape(sh)))
+                gx[on] = what(inv.at(d[on, None], program, i, x[on]))
         gx = np.where(np.isnan(gx), np.inf, gx)
         jx = np.argmax(gx, axis=1)
         best = np.maximum(best, gx[r, jx])
@@ -136,14 +177,34 @@ def _largest(inv: _Inversion, program, phases: list[int], what, B: int):
     return out
 
 
+def _winding(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Turns of the closed polyline ``(x, y)`` (rows) round the origin, and its largest step's angle (radians)."""
+    a = np.arctan2(y, x)
+    da = np.diff(np.hstack([a, a[:, :1]]), axis=1)
+    da = (da + np.pi) % (2 * np.pi) - np.pi
+    return da.sum(axis=1) / (2 * np.pi), np.abs(da).max(axis=1)
+
+
 def check_group(designs, centres: np.ndarray, program) -> GroupCheck:
-    """The extremes of the cams of ``designs`` (one program) centred at ``centres`` (fixed frame, shape (B, 2))."""
+    """The extremes of the cams of ``designs`` (one program) centred at ``centres`` (fixed frame, shape (B, 2)).
+
+    In chunks of :data:`CHUNK` designs (arrays that stay in the processor's cache).
+    """
+    parts = [_check(designs[a:a + CHUNK], centres[a:a + CHUNK], program) for a in range(0, len(designs), CHUNK)]
+    return GroupCheck(*(np.concatenate([getattr(p, k) for p in parts]) for k in GroupCheck.__dataclass_fields__))
+
+
+def _check(designs, centres: np.ndarray, program) -> GroupCheck:
+    """:func:`check_group` of one chunk."""
     B = len(designs)
     inv = _Inversion(designs, centres)
     kinds = [p.kind for p in program.phases]
     moving = [i for i, k in enumerate(kinds) if k != "dwell"]
-    every = list(range(len(kinds)))
-    g = _largest(inv, program, moving, lambda gm, k, p: gm, B) if moving else np.empty((B, 0))
+    us = {i: np.linspace(0.0, 1.0, (DWELL_GRID if k == "dwell" else GRID) + 1) for i, k in enumerate(kinds)}
+    allD = np.arange(B)[:, None]
+    grid = {i: inv.at(allD, program, i, us[i][None]) for i in range(len(kinds))}
+    g = _largest(inv, program, {i: grid[i] for i in moving}, lambda v: v["gamma"], B, near=NEAR)
+    every = list(grid)
     rise = np.full(B, np.nan)
     ret = np.full(B, np.nan)
     excess = np.full(B, -np.inf)
@@ -156,9 +217,19 @@ def check_group(designs, centres: np.ndarray, program) -> GroupCheck:
             ret = np.fmax(ret, col)
         lim = np.array([lm.get(i, np.inf) for lm in lims])
         excess = np.maximum(excess, col - lim)
-    convex = _largest(inv, program, every, lambda gm, kap, p: kap, B).max(axis=1)
-    concave = _largest(inv, program, every, lambda gm, kap, p: -kap, B).max(axis=1)
-    support = -_largest(inv, program, every, lambda gm, kap, p: -p, B).max(axis=1)
+    # the curvature times the roller, refined where above a half (farther from 1 the grid's value tells enough)
+    convex = _largest(inv, program, grid, lambda v: v["kr"], B, floor=0.5).max(axis=1)
+    concave = _largest(inv, program, grid, lambda v: -v["kr"], B, floor=0.5).max(axis=1)
+    # the working profile: star-shaped about the centroid of its outline, and round the cam centre (on the grid)
+    wx = np.hstack([grid[i]["W"][0][:, :-1] for i in grid])
+    wy = np.hstack([grid[i]["W"][1][:, :-1] for i in grid])
+    turns, step = _winding(wx, wy)
+    ax, ay = np.roll(wx, -1, axis=1), np.roll(wy, -1, axis=1)
+    cr = wx * ay - ax * wy
+    area = 0.5 * cr.sum(axis=1)
+    inv.C = np.stack([((wx + ax) * cr).sum(axis=1), ((wy + ay) * cr).sum(axis=1)], axis=1) / (6.0 * area[:, None])
+    kernel = np.min([inv.kernel(grid[i], program, i, us[i]).min(axis=1) for i in grid], axis=0)
+    reach = np.hypot(wx, wy).min(axis=1)
     # the joints: the relative velocity's direction on both sides (a velocity jump makes a corner)
     joint = np.zeros(B)
     allD = np.arange(B)
@@ -171,8 +242,8 @@ def check_group(designs, centres: np.ndarray, program) -> GroupCheck:
         wb = _velocity(inv, allD, sb, b.ds[0])
         turn = np.arctan2(np.abs(wa[0] * wb[1] - wa[1] * wb[0]), wa[0] * wb[0] + wa[1] * wb[1])
         joint = np.maximum(joint, turn)
-    return GroupCheck(rise=rise, ret=ret, excess=excess, convex=convex, concave=concave, support=support,
-                      joint=joint)
+    return GroupCheck(rise=rise, ret=ret, excess=excess, convex=convex, concave=concave, kernel=kernel,
+                      turns=turns, step=step, reach=reach, joint=joint)
 
 
 def _velocity(inv: _Inversion, d, s, ds):
