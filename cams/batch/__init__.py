@@ -31,6 +31,8 @@ PRESSURE_MARGIN = 1e-8
 #: groove's concave too), the working profile at least ``MARGIN R0`` inside every tangent line from its kernel's
 #: point and from the cam centre; closer goes to the per-design path.
 MARGIN = 1e-3
+#: Designs sized and checked at once.
+CHUNK = 128
 #: The largest turn of the pitch curve's direction at a phase joint (radians) taken as no corner.
 JOINT = 1e-9
 
@@ -71,9 +73,6 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
         ``buildable`` True, ``error_bound`` (length: R0 less the proven lower bound), ``failures`` and ``error``
         None), as the per-design path gives them to the last digits; or None.
     """
-    from cams.batch.check import check_group
-    from cams.batch.sizing import size_group
-
     out: list[dict | None] = [None] * len(designs)
     groups: dict[tuple, list[int]] = {}
     for k, d in enumerate(designs):
@@ -81,23 +80,32 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
             key = (d.program, tuple(i for i, _ in d.constrained_phases()))
             groups.setdefault(key, []).append(k)
     for (program, phases), idx in groups.items():
-        group = [designs[k] for k in idx]
         if _joint_jumps(program):
             continue
         with np.errstate(all="ignore"):
-            sized = size_group(group, list(phases), program)
-            chk = check_group(group, sized.centre, program)
-        r = np.array([d.follower.roller_radius for d in group])
-        good = (sized.ok & (chk.excess <= PRESSURE_MARGIN) & (chk.convex <= 1.0 - MARGIN)
-                & (chk.kernel >= MARGIN * sized.R0) & (np.abs(np.abs(chk.turns) - 1.0) < 1e-9) & (chk.step < 0.5)
-                & (chk.reach >= MARGIN * sized.R0) & (sized.R0 > r * (1.0 + MARGIN))
-                & (chk.joint <= JOINT) & np.isfinite(chk.rise))
-        groove = np.array([d.limits.closure == "form" for d in group])
-        good &= ~groove | (chk.concave <= 1.0 - MARGIN)
-        for q in np.flatnonzero(good):
-            out[idx[q]] = _row(group[q], sized.centre[q], float(sized.R0[q]), float(sized.error_bound[q]),
-                               chk.rise[q], chk.ret[q])
+            for a in range(0, len(idx), CHUNK):     # arrays that stay in the processor's cache
+                _judge(designs, idx[a:a + CHUNK], list(phases), program, out)
     return out
+
+
+def _judge(designs, idx: list[int], phases: list[int], program, out: list) -> None:
+    """Size and check the designs ``idx`` of one group; their rows into ``out`` where they pass with margin."""
+    from cams.batch.check import check_group
+    from cams.batch.sizing import size_group
+
+    group = [designs[k] for k in idx]
+    sized = size_group(group, phases, program)
+    chk = check_group(group, sized.centre, program)
+    r = np.array([d.follower.roller_radius for d in group])
+    good = (sized.ok & (chk.excess <= PRESSURE_MARGIN) & (chk.convex <= 1.0 - MARGIN)
+            & (chk.kernel >= MARGIN * sized.R0) & (np.abs(np.abs(chk.turns) - 1.0) < 1e-9) & (chk.step < 0.5)
+            & (chk.reach >= MARGIN * sized.R0) & (sized.R0 > r * (1.0 + MARGIN))
+            & (chk.joint <= JOINT) & np.isfinite(chk.rise))
+    groove = np.array([d.limits.closure == "form" for d in group])
+    good &= ~groove | (chk.concave <= 1.0 - MARGIN)
+    for q in np.flatnonzero(good):
+        out[idx[q]] = _row(group[q], sized.centre[q], float(sized.R0[q]), float(sized.error_bound[q]),
+                           chk.rise[q], chk.ret[q])
 
 
 def _joint_jumps(program) -> bool:
