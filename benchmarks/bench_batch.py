@@ -51,8 +51,10 @@ PRESSURE = {"max_pressure_rise": "max_pressure_angle_rise", "max_pressure_return
 
 def _grid(quick: bool) -> list[tuple[str, np.ndarray]]:
     n_angle, n_arm = (6, 8) if quick else (40, 50)
-    return [("limits.pressure_angle", np.linspace(25.0, 45.0, n_angle)),
-            ("follower.arm", np.linspace(80.0, 200.0, n_arm))]
+    return [
+        ("limits.pressure_angle", np.linspace(25.0, 45.0, n_angle)),
+        ("follower.arm", np.linspace(80.0, 200.0, n_arm)),
+    ]
 
 
 def _batch_part(args) -> tuple[list[dict], int, float]:
@@ -123,8 +125,12 @@ def main(argv=None) -> int:
     # the two paths agree: the same verdicts, R0 within the sum of their error bounds, the same pressure angles
     worst_r0, worst_ratio, worst_deg, same = 0.0, 0.0, 0.0, True
     for p, b in zip(per.rows, two_rows, strict=True):
-        same &= (p["verified"], p["buildable"], p["failures"], p["error"]) == \
-            (b["verified"], b["buildable"], b["failures"], b["error"])
+        same &= (p["verified"], p["buildable"], p["failures"], p["error"]) == (
+            b["verified"],
+            b["buildable"],
+            b["failures"],
+            b["error"],
+        )
         if p["R0"] is None or b["R0"] is None:
             same &= p["R0"] is b["R0"]
             continue

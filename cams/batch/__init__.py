@@ -21,8 +21,20 @@ import numpy as np
 __all__ = ["size_batch", "ROW_KEYS", "MARGIN", "PRESSURE_MARGIN"]
 
 #: The keys of a row, in order (lengths in the design's unit, angles in degrees).
-ROW_KEYS = ("R0", "L", "offset", "centre_x", "centre_y", "max_pressure_angle_rise", "max_pressure_angle_return",
-            "verified", "buildable", "error_bound", "failures", "error")
+ROW_KEYS = (
+    "R0",
+    "L",
+    "offset",
+    "centre_x",
+    "centre_y",
+    "max_pressure_angle_rise",
+    "max_pressure_angle_return",
+    "verified",
+    "buildable",
+    "error_bound",
+    "failures",
+    "error",
+)
 
 #: The pressure angle's largest excess over its limit (radians) a row may have: a tenth of the per-design check's
 #: tolerance (1e-7 rad), so that both judge it within the limit.
@@ -39,19 +51,30 @@ JOINT = 1e-9
 
 def _batchable(design, method: str | None) -> bool:
     """Whether the batch sizes ``design`` (see the module); else its row is the per-design path's."""
-    from cams.model.design import CamDesign
     from cams.model.follower import Rocker, Translating
 
-    if not isinstance(design, CamDesign):
+    f = design.follower
+    if not isinstance(f, (Rocker, Translating)):  # the roller followers (a flat face's are other types)
         return False
-    f, lim = design.follower, design.limits
-    return (isinstance(f, (Rocker, Translating)) and (method or design.method) == "exact"
-            and design.objective == "R0" and not design.chosen and getattr(design, "centre", None) is None
-            and lim.centre_distance is None and lim.min_base_radius is None and lim.safety_factor == 1.0
-            and getattr(f, "offset", None) is None and f.roller_radius > 0
-            and design.optimize is None and design.dynamics is None and design.contact is None
-            and design.bore_radius is None and getattr(design, "min_curvature_radius", None) is None
-            and bool(design.constrained_phases()))
+    lim = design.limits
+    return (
+        isinstance(f, (Rocker, Translating))
+        and (method or design.method) == "exact"
+        and design.objective == "R0"
+        and not design.chosen
+        and getattr(design, "centre", None) is None
+        and lim.centre_distance is None
+        and lim.min_base_radius is None
+        and lim.safety_factor == 1.0
+        and getattr(f, "offset", None) is None
+        and f.roller_radius > 0
+        and design.optimize is None
+        and design.dynamics is None
+        and design.contact is None
+        and design.bore_radius is None
+        and getattr(design, "min_curvature_radius", None) is None
+        and bool(design.constrained_phases())
+    )
 
 
 def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None]:
@@ -83,8 +106,8 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
         if _joint_jumps(program):
             continue
         with np.errstate(all="ignore"):
-            for a in range(0, len(idx), CHUNK):     # arrays that stay in the processor's cache
-                _judge(designs, idx[a:a + CHUNK], list(phases), program, out)
+            for a in range(0, len(idx), CHUNK):  # arrays that stay in the processor's cache
+                _judge(designs, idx[a : a + CHUNK], list(phases), program, out)
     return out
 
 
@@ -97,22 +120,31 @@ def _judge(designs, idx: list[int], phases: list[int], program, out: list) -> No
     sized = size_group(group, phases, program)
     chk = check_group(group, sized.centre, program)
     r = np.array([d.follower.roller_radius for d in group])
-    good = (sized.ok & (chk.excess <= PRESSURE_MARGIN) & (chk.convex <= 1.0 - MARGIN)
-            & (chk.kernel >= MARGIN * sized.R0) & (np.abs(np.abs(chk.turns) - 1.0) < 1e-9) & (chk.step < 0.5)
-            & (chk.reach >= MARGIN * sized.R0) & (sized.R0 > r * (1.0 + MARGIN))
-            & (chk.joint <= JOINT) & np.isfinite(chk.rise))
+    good = (
+        sized.ok
+        & (chk.excess <= PRESSURE_MARGIN)
+        & (chk.convex <= 1.0 - MARGIN)
+        & (chk.kernel >= MARGIN * sized.R0)
+        & (np.abs(np.abs(chk.turns) - 1.0) < 1e-9)
+        & (chk.step < 0.5)
+        & (chk.reach >= MARGIN * sized.R0)
+        & (sized.R0 > r * (1.0 + MARGIN))
+        & (chk.joint <= JOINT)
+        & np.isfinite(chk.rise)
+    )
     groove = np.array([d.limits.closure == "form" for d in group])
     good &= ~groove | (chk.concave <= 1.0 - MARGIN)
     for q in np.flatnonzero(good):
-        out[idx[q]] = _row(group[q], sized.centre[q], float(sized.R0[q]), float(sized.error_bound[q]),
-                           chk.rise[q], chk.ret[q])
+        out[idx[q]] = _row(
+            group[q], sized.centre[q], float(sized.R0[q]), float(sized.error_bound[q]), chk.rise[q], chk.ret[q]
+        )
 
 
 def _joint_jumps(program) -> bool:
     """True when the law's velocity jumps at a phase joint (a corner of the pitch curve: not batched)."""
     n = len(program.phases)
     ds = [program.evaluate_phase(i, np.linspace(0.0, 1.0, 5)).ds for i in range(n)]
-    scale = max(1e-300, max(float(np.max(np.abs(v))) for v in ds))     # the analogue velocity's size
+    scale = max(1e-300, max(float(np.max(np.abs(v))) for v in ds))  # the analogue velocity's size
     return any(abs(ds[i][-1] - ds[(i + 1) % n][0]) > 1e-12 * scale for i in range(n))
 
 
@@ -123,9 +155,17 @@ def _row(design, centre, R0: float, bound: float, rise: float, ret: float) -> di
 
     f = design.follower
     deg = lambda a: None if np.isnan(a) else float(np.degrees(a))  # noqa: E731
-    return {"R0": R0,
-            "L": float(np.hypot(*(centre - f.pivot))) if isinstance(f, Rocker) else None,
-            "offset": offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
-            "centre_x": float(centre[0]), "centre_y": float(centre[1]),
-            "max_pressure_angle_rise": deg(rise), "max_pressure_angle_return": deg(ret),
-            "verified": True, "buildable": True, "error_bound": bound, "failures": None, "error": None}
+    return {
+        "R0": R0,
+        "L": float(np.hypot(*(centre - f.pivot))) if isinstance(f, Rocker) else None,
+        "offset": offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
+        "centre_x": float(centre[0]),
+        "centre_y": float(centre[1]),
+        "max_pressure_angle_rise": deg(rise),
+        "max_pressure_angle_return": deg(ret),
+        "verified": True,
+        "buildable": True,
+        "error_bound": bound,
+        "failures": None,
+        "error": None,
+    }

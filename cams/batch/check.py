@@ -94,7 +94,7 @@ class _Inversion:
         ay = np.where(rk, arm * sn, s)
         tx = np.where(rk, -sg * arm * sn, 0.0)
         ty = np.where(rk, sg * arm * c, 1.0)
-        ux = np.where(rk, -arm * c, 0.0)         # dT/ds
+        ux = np.where(rk, -arm * c, 0.0)  # dT/ds
         uy = np.where(rk, -arm * sn, 0.0)
         rx, ry = ax - self.O[d, 0], ay - self.O[d, 1]
         wx, wy = ds * tx + eps * ry, ds * ty - eps * rx
@@ -133,8 +133,7 @@ def _peaks_of(g: np.ndarray, keep: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return np.nonzero((g > left) & (g >= right) & keep)
 
 
-def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float = np.inf,
-             floor: float = -np.inf):
+def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float = np.inf, floor: float = -np.inf):
     """Largest of ``what(values of _Inversion.at)`` over each phase of ``grid`` for each design: ``(B, phases)``.
 
     ``grid`` holds the values on the grid per phase; the local maxima of a moving phase's grid within ``near`` of
@@ -143,23 +142,27 @@ def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float 
     u = np.linspace(0.0, 1.0, GRID + 1)
     phases = list(grid)
     out = np.full((B, len(phases)), -np.inf)
-    rows, cols, lo, hi, best = [], [], [], [], []
+    rows: list[np.ndarray] = []
+    cols: list[np.ndarray] = []
+    los: list[np.ndarray] = []
+    his: list[np.ndarray] = []
+    bests: list[np.ndarray] = []
     for q, i in enumerate(phases):
         g = what(grid[i])
-        g = np.where(np.isnan(g), np.inf, g)     # undefined: as bad as can be (the design goes to the per-design path)
+        g = np.where(np.isnan(g), np.inf, g)  # undefined: as bad as can be (the design goes to the per-design path)
         out[:, q] = g.max(axis=1)
-        if program.phases[i].kind == "dwell":     # constant: the grid's value is the phase's
+        if program.phases[i].kind == "dwell":  # constant: the grid's value is the phase's
             continue
         keep = (g >= out[:, q, None] - near) & (g >= floor)
         d, j = _peaks_of(g, keep)
         rows.append(d)
         cols.append(np.full(len(d), q))
-        lo.append(u[np.maximum(j - 1, 0)])
-        hi.append(u[np.minimum(j + 1, GRID)])
-        best.append(g[d, j])
+        los.append(u[np.maximum(j - 1, 0)])
+        his.append(u[np.minimum(j + 1, GRID)])
+        bests.append(g[d, j])
     if not rows:
         return out
-    d, q, lo, hi, best = (np.concatenate(a) for a in (rows, cols, lo, hi, best))
+    d, q, lo, hi, best = (np.concatenate(a) for a in (rows, cols, los, his, bests))
     t = np.linspace(0.0, 1.0, ZOOM_POINTS)
     r = np.arange(len(d))
     for _ in range(ZOOM_STEPS):
@@ -173,7 +176,7 @@ def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float 
         jx = np.argmax(gx, axis=1)
         best = np.maximum(best, gx[r, jx])
         lo, hi = x[r, np.maximum(jx - 1, 0)], x[r, np.minimum(jx + 1, ZOOM_POINTS - 1)]
-    np.maximum.at(out, (d, q), best)
+    np.maximum.at(out, (d, q), best)  # type: ignore[arg-type]
     return out
 
 
@@ -190,7 +193,7 @@ def check_group(designs, centres: np.ndarray, program) -> GroupCheck:
 
     In chunks of :data:`CHUNK` designs (arrays that stay in the processor's cache).
     """
-    parts = [_check(designs[a:a + CHUNK], centres[a:a + CHUNK], program) for a in range(0, len(designs), CHUNK)]
+    parts = [_check(designs[a : a + CHUNK], centres[a : a + CHUNK], program) for a in range(0, len(designs), CHUNK)]
     return GroupCheck(*(np.concatenate([getattr(p, k) for p in parts]) for k in GroupCheck.__dataclass_fields__))
 
 
@@ -242,8 +245,18 @@ def _check(designs, centres: np.ndarray, program) -> GroupCheck:
         wb = _velocity(inv, allD, sb, b.ds[0])
         turn = np.arctan2(np.abs(wa[0] * wb[1] - wa[1] * wb[0]), wa[0] * wb[0] + wa[1] * wb[1])
         joint = np.maximum(joint, turn)
-    return GroupCheck(rise=rise, ret=ret, excess=excess, convex=convex, concave=concave, kernel=kernel,
-                      turns=turns, step=step, reach=reach, joint=joint)
+    return GroupCheck(
+        rise=rise,
+        ret=ret,
+        excess=excess,
+        convex=convex,
+        concave=concave,
+        kernel=kernel,
+        turns=turns,
+        step=step,
+        reach=reach,
+        joint=joint,
+    )
 
 
 def _velocity(inv: _Inversion, d, s, ds):

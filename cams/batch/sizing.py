@@ -113,9 +113,9 @@ def _best_of_three(lines: np.ndarray, tol: np.ndarray):
         m = np.zeros((B, 3), bool)
         m[:, i] = m[:, k] = True
         defs.append(m)
-    X = np.stack(cands, axis=1)                                     # (B, 7, 2)
-    D = np.stack(defs, axis=1)                                      # (B, 7, 3): the lines a candidate lies on
-    g = X[..., 0, None] * nx[:, None] + X[..., 1, None] * ny[:, None] - b[:, None]   # (B, 7, 3)
+    X = np.stack(cands, axis=1)  # (B, 7, 2)
+    D = np.stack(defs, axis=1)  # (B, 7, 3): the lines a candidate lies on
+    g = X[..., 0, None] * nx[:, None] + X[..., 1, None] * ny[:, None] - b[:, None]  # (B, 7, 3)
     feas = np.all((g <= tol[:, None, :]) | D, axis=2) & np.all(np.isfinite(X), axis=2)
     norm = np.where(feas, np.hypot(X[..., 0], X[..., 1]), np.inf)
     k = np.argmin(norm, axis=1)
@@ -130,9 +130,9 @@ class _Exchange:
         B = len(A0)
         self.A0, self.scale = A0, scale
         self.x = np.zeros((B, 2))
-        self.active = np.full((B, 2, 3), np.inf)   # two lines (nx, ny, b in x), b = inf: none
+        self.active = np.full((B, 2, 3), np.inf)  # two lines (nx, ny, b in x), b = inf: none
         self.active[..., :2] = 0.0
-        self.raw = self.active.copy()               # the same lines not tightened
+        self.raw = self.active.copy()  # the same lines not tightened
         self.ok = np.ones(B, bool)
 
     def allowed(self, off: np.ndarray, rows) -> np.ndarray:
@@ -153,10 +153,10 @@ class _Exchange:
         keep = np.full((len(rows), 2, 3), np.inf)
         keep[..., :2] = 0.0
         keep_raw = keep.copy()
-        for r in range(len(rows)):      # at most two True per row; the pair kept in order
+        for r in range(len(rows)):  # at most two True per row; the pair kept in order
             idx = np.flatnonzero(act[r])[:2]
-            keep[r, :len(idx)] = lines[r, idx]
-            keep_raw[r, :len(idx)] = raw[r, idx]
+            keep[r, : len(idx)] = lines[r, idx]
+            keep_raw[r, : len(idx)] = raw[r, idx]
         self.x[rows] = np.where(found[:, None], x, self.x[rows])
         self.active[rows], self.raw[rows] = keep, keep_raw
 
@@ -186,9 +186,10 @@ def size_group(designs, phases: list[int], program) -> BatchSizing:
     scale = np.array([d.scale for d in designs], float)
     angle = np.array([program.phases[i].angle for i in phases])
     u = _scan_positions(designs[0], GRID)
-    mo = np.array([[getattr(m, k) for k in ("s", "ds", "d2s")]
-                   for m in (program.evaluate_phase(i, u) for i in phases)])       # (P, 3, M)
-    s, ds, d2s = (mo[:, k][None, :, None, :] for k in range(3))              # (1, P, 1, M)
+    mo = np.array(
+        [[getattr(m, k) for k in ("s", "ds", "d2s")] for m in (program.evaluate_phase(i, u) for i in phases)]
+    )  # (P, 3, M)
+    s, ds, d2s = (mo[:, k][None, :, None, :] for k in range(3))  # (1, P, 1, M)
     T = turn[:, None, None, None]
     NX, NY, OFF = _lines(T, n0[..., 0, None], n0[..., 1, None], b0[..., None], b1[..., None], bt[..., None], s, ds)
     ex = _Exchange(A0, scale)
@@ -206,7 +207,7 @@ def size_group(designs, phases: list[int], program) -> BatchSizing:
             break
         ex.step(rows, *(a[rows, k] for a in flat))
     else:
-        ex.ok[rows] = False     # not settled
+        ex.ok[rows] = False  # not settled
     # 2. the continuum: every scan maximum near its line, refined
     value = np.full(B, -np.inf)
     rows = np.arange(B)
@@ -215,7 +216,7 @@ def size_group(designs, phases: list[int], program) -> BatchSizing:
         pk = _peaks(rows, O, grid, turn, n0, b0, b1, bt, scale, program, phases, angle, u)
         v = np.full(len(rows), -np.inf)
         best = np.zeros((len(rows), 3))
-        order = np.lexsort((pk[0], pk[1]))          # by design, then value: the last of each design is its largest
+        order = np.lexsort((pk[0], pk[1]))  # by design, then value: the last of each design is its largest
         dd = pk[1][order].astype(int)
         v[dd] = pk[0][order]
         best[dd] = np.stack([pk[2][order], pk[3][order], pk[4][order]], axis=1)
@@ -226,7 +227,7 @@ def size_group(designs, phases: list[int], program) -> BatchSizing:
             break
         ex.step(rows, best[:, 0], best[:, 1], best[:, 2])
     else:
-        ex.ok[rows] = False     # not settled
+        ex.ok[rows] = False  # not settled
     R0 = np.hypot(ex.x[:, 0], ex.x[:, 1])
     ok = ex.ok & (value <= 0.0) & np.isfinite(R0)
     lower = ex.lower()

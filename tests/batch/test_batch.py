@@ -27,19 +27,31 @@ def _random_dict(rng: np.random.Generator, k: int) -> dict:
     form = k % 4 == 3
     d = rocker_dict(
         name=f"random {k}",
-        motion=[{"phase": "rise", "law": rise, "angle": a_rise}, {"phase": "dwell", "angle": a_dwell},
-                {"phase": "return", "law": ret, "angle": a_ret}, {"phase": "dwell"}],
+        motion=[
+            {"phase": "rise", "law": rise, "angle": a_rise},
+            {"phase": "dwell", "angle": a_dwell},
+            {"phase": "return", "law": ret, "angle": a_ret},
+            {"phase": "dwell"},
+        ],
         cam={"rotation": str(rng.choice(["cw", "ccw"]))},
         limits={"pressure_angle": float(rng.uniform(25, 45)), "closure": "form" if form else "force"},
     )
     if form:
         d["limits"]["return_pressure_angle"] = float(rng.uniform(30, 50))
     if k % 2:
-        d["follower"] = {"kind": "translating", "stroke": float(rng.uniform(10, 40)),
-                         "roller_radius": float(rng.uniform(2, 8))}
+        d["follower"] = {
+            "kind": "translating",
+            "stroke": float(rng.uniform(10, 40)),
+            "roller_radius": float(rng.uniform(2, 8)),
+        }
     else:
-        d["follower"] = {"kind": "rocker", "arm": float(rng.uniform(70, 200)), "swing": float(rng.uniform(8, 25)),
-                         "roller_radius": float(rng.uniform(2, 10)), "rise_direction": str(rng.choice(["cw", "ccw"]))}
+        d["follower"] = {
+            "kind": "rocker",
+            "arm": float(rng.uniform(70, 200)),
+            "swing": float(rng.uniform(8, 25)),
+            "roller_radius": float(rng.uniform(2, 10)),
+            "rise_direction": str(rng.choice(["cw", "ccw"])),
+        }
     return d
 
 
@@ -126,15 +138,21 @@ def test_kinds_it_does_not_batch_are_sent_back(examples_dir):
 
     rocker = design_from_dict(rocker_dict())
     others = [
-        load_design(examples_dir / "translating_flat.toml"),                  # a flat face
-        load_design(examples_dir / "rocker_contact.toml"),                    # [contact] (and [dynamics])
-        design_from_dict(rocker_dict(cam={"centre": [130.0, 20.0]})),         # a chosen cam
-        design_from_dict(rocker_dict(limits={"centre_distance": 130.0})),     # a fixed L
-        design_from_dict(rocker_dict(limits={"min_base_radius": 30.0})),      # a floor
-        design_from_dict(rocker_dict(cam={"bore_radius": 5.0})),              # a bore to clear
-        design_from_dict(rocker_dict(motion=[{"phase": "rise", "law": "linear", "angle": 120},
-                                             {"phase": "return", "law": "cycloidal", "angle": 120},
-                                             {"phase": "dwell"}])),            # a velocity jump: a corner
+        load_design(examples_dir / "translating_flat.toml"),  # a flat face
+        load_design(examples_dir / "rocker_contact.toml"),  # [contact] (and [dynamics])
+        design_from_dict(rocker_dict(cam={"centre": [130.0, 20.0]})),  # a chosen cam
+        design_from_dict(rocker_dict(limits={"centre_distance": 130.0})),  # a fixed L
+        design_from_dict(rocker_dict(limits={"min_base_radius": 30.0})),  # a floor
+        design_from_dict(rocker_dict(cam={"bore_radius": 5.0})),  # a bore to clear
+        design_from_dict(
+            rocker_dict(
+                motion=[
+                    {"phase": "rise", "law": "linear", "angle": 120},
+                    {"phase": "return", "law": "cycloidal", "angle": 120},
+                    {"phase": "dwell"},
+                ]
+            )
+        ),  # a velocity jump: a corner
     ]
     rows = size_batch([rocker, *others])
     assert rows[0] is not None and rows[1:] == [None] * len(others)
