@@ -130,7 +130,8 @@ def _peaks_of(g: np.ndarray, keep: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The grid's local maxima (ends included; the first of a plateau) of the rows of ``g`` where ``keep`` holds."""
     low = np.full((len(g), 1), -np.inf)
     left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
-    return np.nonzero((g > left) & (g >= right) & keep)
+    d, j = np.nonzero((g > left) & (g >= right) & keep)
+    return d, j
 
 
 def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float = np.inf, floor: float = -np.inf):
@@ -147,19 +148,19 @@ def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float 
     los: list[np.ndarray] = []
     his: list[np.ndarray] = []
     bests: list[np.ndarray] = []
-    for q, i in enumerate(phases):
+    for col, i in enumerate(phases):
         g = what(grid[i])
         g = np.where(np.isnan(g), np.inf, g)  # undefined: as bad as can be (the design goes to the per-design path)
-        out[:, q] = g.max(axis=1)
+        out[:, col] = g.max(axis=1)
         if program.phases[i].kind == "dwell":  # constant: the grid's value is the phase's
             continue
-        keep = (g >= out[:, q, None] - near) & (g >= floor)
-        d, j = _peaks_of(g, keep)
-        rows.append(d)
-        cols.append(np.full(len(d), q))
+        keep = (g >= out[:, col, None] - near) & (g >= floor)
+        pd, j = _peaks_of(g, keep)
+        rows.append(pd)
+        cols.append(np.full(len(pd), col))
         los.append(u[np.maximum(j - 1, 0)])
         his.append(u[np.minimum(j + 1, GRID)])
-        bests.append(g[d, j])
+        bests.append(g[pd, j])
     if not rows:
         return out
     d, q, lo, hi, best = (np.concatenate(a) for a in (rows, cols, los, his, bests))
