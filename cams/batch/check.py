@@ -177,7 +177,7 @@ def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float 
         jx = np.argmax(gx, axis=1)
         best = np.maximum(best, gx[r, jx])
         lo, hi = x[r, np.maximum(jx - 1, 0)], x[r, np.minimum(jx + 1, ZOOM_POINTS - 1)]
-    np.maximum.at(out, (d, q), best)  # type: ignore[arg-type]
+    np.maximum.at(out, (d, q), best)
     return out
 
 
