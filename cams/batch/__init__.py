@@ -4,7 +4,8 @@
 follower's cam, rocker or translating, sized by the exact method to the least R0 with nothing else fixed: no
 ``[cam] base_radius`` or ``centre``, no ``limits.centre_distance``, ``min_base_radius`` or ``follower.offset``,
 K_C = 1, and none of the tables that add checks or constraints: ``[optimize]``, ``[dynamics]``, ``[contact]``,
-``[cam] bore_radius``, ``[profile] min_curvature_radius``) by motion program, sizes each group at once
+``[cam] bore_radius``, ``[profile] min_curvature_radius``, a ``[profile] tolerance`` of its own, which a
+profile may not carry) by motion program, sizes each group at once
 (:mod:`cams.batch.sizing`: the exact method's problem, the law evaluated once per group), checks every cam by
 kinematic inversion (:mod:`cams.batch.check`: no formula of the sizing) and returns a row only for a cam whose
 every check passes with a margin: verified, buildable, no self-crossing of its working profile. Every other
@@ -72,6 +73,7 @@ def _batchable(design, method: str | None) -> bool:
         and design.dynamics is None
         and design.contact is None
         and design.bore_radius is None
+        and design.tolerance is None
         and getattr(design, "min_curvature_radius", None) is None
         and bool(design.constrained_phases())
     )

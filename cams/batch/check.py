@@ -31,7 +31,7 @@ import numpy as np
 __all__ = ["GroupCheck", "check_group", "GRID", "ZOOM_POINTS", "ZOOM_STEPS"]
 
 #: Even steps per phase of the search.
-GRID = 600
+GRID = 300
 #: Points of a bracket at each zoom step, and the zoom steps (the bracket ends 1e-10 times a step wide).
 ZOOM_POINTS = 21
 ZOOM_STEPS = 10
@@ -75,6 +75,7 @@ class _Inversion:
 
         f = [d.follower for d in designs]
         self.rocker = np.array([isinstance(x, Rocker) for x in f])
+        self.all_rocker = bool(self.rocker.all())
         self.arm = np.array([getattr(x, "arm", 0.0) for x in f], float)
         self.sense = np.array([getattr(x, "sense", 1) for x in f], float)
         self.eps = np.array([d.cam_sense for d in designs], float)
@@ -88,14 +89,21 @@ class _Inversion:
         m = program.evaluate_phase(i, np.asarray(u, float).ravel())
         sh = np.broadcast_shapes(np.shape(d), np.shape(u))
         s, ds, d2s = (np.broadcast_to(v.reshape(np.shape(u)), sh) for v in (m.s, m.ds, m.d2s))
-        rk, arm, sg, eps = self.rocker[d], self.arm[d], self.sense[d], self.eps[d]
-        c, sn = np.cos(sg * s), np.sin(sg * s)
-        ax = np.where(rk, arm * c, 0.0)
-        ay = np.where(rk, arm * sn, s)
-        tx = np.where(rk, -sg * arm * sn, 0.0)
-        ty = np.where(rk, sg * arm * c, 1.0)
-        ux = np.where(rk, -arm * c, 0.0)  # dT/ds
-        uy = np.where(rk, -arm * sn, 0.0)
+        arm, sg, eps = self.arm[d], self.sense[d], self.eps[d]
+        if self.all_rocker:
+            c, sn = np.cos(sg * s), np.sin(sg * s)
+            ax, ay, tx, ty, ux, uy = arm * c, arm * sn, -sg * arm * sn, sg * arm * c, -arm * c, -arm * sn
+        elif not self.rocker.any():
+            ax, ay, tx, ty, ux, uy = 0.0, s, 0.0, 1.0, 0.0, 0.0
+        else:
+            rk = self.rocker[d]
+            c, sn = np.cos(sg * s), np.sin(sg * s)
+            ax = np.where(rk, arm * c, 0.0)
+            ay = np.where(rk, arm * sn, s)
+            tx = np.where(rk, -sg * arm * sn, 0.0)
+            ty = np.where(rk, sg * arm * c, 1.0)
+            ux = np.where(rk, -arm * c, 0.0)  # dT/ds
+            uy = np.where(rk, -arm * sn, 0.0)
         rx, ry = ax - self.O[d, 0], ay - self.O[d, 1]
         wx, wy = ds * tx + eps * ry, ds * ty - eps * rx
         w2 = wx * wx + wy * wy
@@ -134,11 +142,22 @@ def _peaks_of(g: np.ndarray, keep: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return d, j
 
 
-def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float = np.inf, floor: float = -np.inf):
+def _largest(
+    inv: _Inversion,
+    program,
+    grid: dict,
+    what,
+    B: int,
+    *,
+    near: float = np.inf,
+    floor: float = -np.inf,
+    steps: int = ZOOM_STEPS,
+):
     """Largest of ``what(values of _Inversion.at)`` over each phase of ``grid`` for each design: ``(B, phases)``.
 
     ``grid`` holds the values on the grid per phase; the local maxima of a moving phase's grid within ``near`` of
-    its phase's grid maximum and at least ``floor`` are refined by the zoom (the others are the grid's).
+    its phase's grid maximum and at least ``floor`` are refined by ``steps`` zoom steps (the others are the
+    grid's).
     """
     u = np.linspace(0.0, 1.0, GRID + 1)
     phases = list(grid)
@@ -166,7 +185,7 @@ def _largest(inv: _Inversion, program, grid: dict, what, B: int, *, near: float 
     d, q, lo, hi, best = (np.concatenate(a) for a in (rows, cols, los, his, bests))
     t = np.linspace(0.0, 1.0, ZOOM_POINTS)
     r = np.arange(len(d))
-    for _ in range(ZOOM_STEPS):
+    for _ in range(steps):
         x = lo[:, None] + (hi - lo)[:, None] * t
         gx = np.empty_like(x)
         for k, i in enumerate(phases):
@@ -222,8 +241,9 @@ def _check(designs, centres: np.ndarray, program) -> GroupCheck:
         lim = np.array([lm.get(i, np.inf) for lm in lims])
         excess = np.maximum(excess, col - lim)
     # the curvature times the roller, refined where above a half (farther from 1 the grid's value tells enough)
-    convex = _largest(inv, program, grid, lambda v: v["kr"], B, floor=0.5).max(axis=1)
-    concave = _largest(inv, program, grid, lambda v: -v["kr"], B, floor=0.5).max(axis=1)
+    # (to a thousandth of a step: the test is against 1 - MARGIN, not to the last digit)
+    convex = _largest(inv, program, grid, lambda v: v["kr"], B, floor=0.5, steps=3).max(axis=1)
+    concave = _largest(inv, program, grid, lambda v: -v["kr"], B, floor=0.5, steps=3).max(axis=1)
     # the working profile: star-shaped about the centroid of its outline, and round the cam centre (on the grid)
     wx = np.hstack([grid[i]["W"][0][:, :-1] for i in grid])
     wy = np.hstack([grid[i]["W"][1][:, :-1] for i in grid])
