@@ -16,7 +16,8 @@ x ``follower.arm`` (mm), 40 x 50 = 2,000 designs (``--quick``: 4 x 5). It goes t
 
 It reports designs/s of each (wall time, the pools' start included), their ratio, how many rows went to the
 per-design path, that every row is verified and buildable, and the largest difference between the two paths'
-R0 against the sum of their error bounds (and of the largest pressure angles, degrees).
+R0 against the sum of their error bounds (and of the largest pressure angles, degrees), and the machine's load
+average (1 min) before and after (the machine may be shared: the ratio is of the same run).
 """
 
 from __future__ import annotations
@@ -116,6 +117,7 @@ def main(argv=None) -> int:
     combos = list(itertools.product(*[v for _, v in vary]))
     n = len(combos)
 
+    load_before = os.getloadavg()[0]
     t0 = time.perf_counter()
     per = sweep(base, vary, workers=2)
     per_s = time.perf_counter() - t0
@@ -160,6 +162,7 @@ def main(argv=None) -> int:
         "largest_R0_difference_mm": worst_r0,
         "largest_R0_difference_over_error_bounds": worst_ratio,
         "largest_pressure_angle_difference_deg": worst_deg,
+        "load_average_before_after": [load_before, os.getloadavg()[0]],
     }
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)

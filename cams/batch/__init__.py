@@ -19,6 +19,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from laws.errors import CamsError
+
 __all__ = ["size_batch", "ROW_KEYS", "MARGIN", "PRESSURE_MARGIN"]
 
 #: The keys of a row, in order (lengths in the design's unit, angles in degrees).
@@ -109,7 +111,10 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
             continue
         with np.errstate(all="ignore"):
             for a in range(0, len(idx), CHUNK):  # arrays that stay in the processor's cache
-                _judge(designs, idx[a : a + CHUNK], list(phases), program, out)
+                try:
+                    _judge(designs, idx[a : a + CHUNK], list(phases), program, out)
+                except (CamsError, ArithmeticError, ValueError, np.linalg.LinAlgError):
+                    continue  # a chunk the batch cannot size: its rows stay None, the per-design path's to give
     return out
 
 

@@ -7,19 +7,22 @@ its velocity relative to the cam, per radian, is ``W = s' T - eps k x (A - O)``;
 is ``n = eps k x W / |W|`` and the pressure angle ``gamma = arccos(n . T / |T|)``. The pitch curve in the cam's
 frame is ``P = R(-eps phi) (A - O)``, so ``P' = R W`` and ``P'' = R (W' - eps k x W)`` with
 ``W' = s'' T + s'^2 dT/ds - eps s' k x T``: its curvature, positive where convex (the curve runs round the cam
-centre in the sense ``-eps``), is ``kappa = -eps (W x W' - eps |W|^2) / |W|^3``. The support ``p = (A - O) . n``
-is the distance from the cam centre to the pitch curve's tangent line.
+centre in the sense ``-eps``), is ``kappa = -eps (W x W' - eps |W|^2) / |W|^3``.
 
-A working profile (the pitch curve offset by the roller radius ``r`` towards the cam) whose pitch curve has
-``kappa r < 1`` and ``p > r`` everywhere turns strictly monotonically round the cam centre (``W_work = (1 - kappa
-r) P'`` and the centre lies inside every tangent line): it is a simple closed curve round the centre, and so is
-its polyline at any chord tolerance far below the margin. That is the batch's test of what the per-design path
-judges on the 1 um polyline (no self-crossing, the centre inside); the groove's outer wall (offset outwards) needs
-``-kappa r < 1`` and ``p + r > 0``.
+The working profile (the pitch curve offset by the roller radius ``r`` towards the cam) is judged without a
+polyline. Where ``kappa r < 1`` its tangent turns as the pitch curve's (``W_work' = (1 - kappa r) P'``), so it
+is star-shaped about a point ``C`` (a simple closed curve, and so is its polyline at a chord far below the
+margin) when ``C`` lies inside every one of its tangent lines: ``(W_work - C) . n > 0``; ``C`` is the centroid of
+its outline on the grid, and the cam centre is inside when the outline turns once round it. That stands for what
+the per-design path judges on the 1 um polyline (no self-crossing, the centre inside). The groove's outer wall
+(offset outwards) needs ``-kappa r < 1``; it lies outside the inner wall along the same normals, star-shaped about
+the same point (``(W_out - C) . n`` is larger by ``2 r``).
 
-Every largest value is found on a grid per phase and every local maximum of the grid (the ends included) is
-refined by zooming into its bracket of two steps, tenfold a step, as the per-design check does; all designs,
-phases and maxima at once.
+Every largest value is found on a grid per phase and the local maxima of the grid (the ends included) that can
+matter are refined by zooming into their bracket of two steps, tenfold a step, as the per-design check does (the
+pressure angle's to the last digits; the curvature's to a thousandth of a step); all designs, phases and maxima
+at once. The kernel's margin, the turns and the distance from the cam centre are the grid's (their margins,
+:data:`cams.batch.MARGIN` of R0, are far above what a grid step can hide).
 """
 
 from __future__ import annotations
@@ -46,13 +49,15 @@ NEAR = 1e-3
 
 @dataclass(frozen=True)
 class GroupCheck:
-    """Extremes of the sized cams of a group (arrays over its designs; radians, 1/length, length).
+    """Extremes of the sized cams of a group (arrays over its designs).
 
-    ``rise``/``ret``: largest pressure angle over the rise/return phases (NaN: no such phase), ``rise_lim``/``ret_lim``:
-    the largest excess over the limit of the constrained ones of that kind (-inf: none); ``convex``/``concave``: the
-    largest curvature and largest minus curvature of the pitch curve; ``support``: the smallest distance from the cam
-    centre to the pitch curve's tangent lines; ``joint``: the largest jump of the pitch curve's velocity direction at
-    a phase joint (radians).
+    ``rise``/``ret``: the largest pressure angle over the rise/return phases (radians; NaN: no such phase);
+    ``excess``: the largest excess of a constrained phase's over its limit (radians; -inf: none); ``convex`` and
+    ``concave``: the largest curvature and minus curvature of the pitch curve times the roller radius (refined
+    where above a half); ``kernel``: the working profile's smallest distance inside its tangent lines seen from its
+    outline's centroid (length, on the grid); ``turns``: its turns round the cam centre and ``step`` the largest
+    angle a grid step sweeps there (radians); ``reach``: its smallest distance from the cam centre (length, on the
+    grid); ``joint``: the largest turn of the pitch curve's direction at a phase joint (radians).
     """
 
     rise: np.ndarray
