@@ -4,8 +4,9 @@
 follower's cam, rocker or translating, sized by the exact method to the least R0 with nothing else fixed: no
 ``[cam] base_radius`` or ``centre``, no ``limits.centre_distance``, ``min_base_radius`` or ``follower.offset``,
 K_C = 1, and none of the tables that add checks or constraints: ``[optimize]``, ``[dynamics]``, ``[contact]``,
-``[cam] bore_radius``, ``[profile] min_curvature_radius``, a ``[profile] tolerance`` of its own, which a
-profile may not carry) by motion program, sizes each group at once
+``[profile] min_curvature_radius``, a keyway, a ``[profile] tolerance`` of its own, which a profile may not carry;
+a ``[cam] bore_radius`` and ``hub_wall`` are judged: the pressure angle's cam whose working profile clears the
+bore by the wall with the margin is the part's, the others are sent back) by motion program, sizes each group at once
 (:mod:`cams.batch.sizing`: the exact method's problem, the law evaluated once per group), checks every cam by
 kinematic inversion (:mod:`cams.batch.check`: no formula of the sizing) and returns a row only for a cam whose
 every check passes with a margin: verified, buildable, no self-crossing of its working profile. Every other
@@ -74,7 +75,7 @@ def _batchable(design, method: str | None) -> bool:
         and design.optimize is None
         and design.dynamics is None
         and design.contact is None
-        and design.bore_radius is None
+        and (design.bore_radius is None or design.keyway_width is None)
         and design.tolerance is None
         and getattr(design, "min_curvature_radius", None) is None
         and bool(design.constrained_phases())
@@ -141,6 +142,12 @@ def _judge(designs, idx: list[int], phases: list[int], program, out: list) -> No
     )
     groove = np.array([d.limits.closure == "form" for d in group])
     good &= ~groove | (chk.concave <= 1.0 - MARGIN)
+    # the bore: the working profile's smallest radius clears it by the hub wall, with the margin (the part's sizing
+    # would raise the cam otherwise, and the grid's smallest radius is above the true one by far less)
+    clear = np.array(
+        [(d.bore_radius or 0.0) + (d.hub_wall or 0.0) if d.bore_radius is not None else -np.inf for d in group]
+    )
+    good &= chk.reach >= clear + MARGIN * sized.R0
     for q in np.flatnonzero(good):
         out[idx[q]] = _row(
             group[q], sized.centre[q], float(sized.R0[q]), float(sized.error_bound[q]), chk.rise[q], chk.ret[q]

@@ -143,7 +143,7 @@ def test_kinds_it_does_not_batch_are_sent_back(examples_dir):
         design_from_dict(rocker_dict(cam={"centre": [130.0, 20.0]})),  # a chosen cam
         design_from_dict(rocker_dict(limits={"centre_distance": 130.0})),  # a fixed L
         design_from_dict(rocker_dict(limits={"min_base_radius": 30.0})),  # a floor
-        design_from_dict(rocker_dict(cam={"bore_radius": 5.0})),  # a bore to clear
+        design_from_dict(rocker_dict(cam={"bore_radius": 3.0, "hub_wall": 1.0})),  # a bore it does not clear
         design_from_dict(
             rocker_dict(
                 motion=[
@@ -158,3 +158,18 @@ def test_kinds_it_does_not_batch_are_sent_back(examples_dir):
     assert rows[0] is not None and rows[1:] == [None] * len(others)
     assert size_batch([rocker], method="convex") == [None]
     assert size_batch([]) == []
+
+
+def test_a_bore_it_clears_is_batched_at_the_per_design_size():
+    """The example's cam at 45 deg has the working profile's smallest radius R0 - r = 3.24 mm (the roller at the
+    near dwell): a bore of 2 mm with a 1 mm wall is cleared (the per-design path keeps the cam), one of 3 mm with
+    the same wall is not (it raises the cam: sent back)."""
+    clears = design_from_dict(rocker_dict(cam={"bore_radius": 2.0, "hub_wall": 1.0}))
+    fails = design_from_dict(rocker_dict(cam={"bore_radius": 3.0, "hub_wall": 1.0}))
+    row, back = size_batch([clears, fails])
+    assert back is None
+    cam = Cam(clears)
+    s = cam.solution
+    assert cam.assessment.usable and s.governs == "pressure_angle"
+    assert row is not None and abs(row["R0"] - s.R0) <= row["error_bound"] + s.error_bound
+    assert Cam(fails).solution.governs == "bore"
