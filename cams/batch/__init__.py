@@ -1,16 +1,16 @@
 """The batch solver: many roller-follower designs sized, verified and judged buildable in one vectorized pass.
 
-:func:`size_batch` is the one entry point (the sweep's). It groups the designs it can size (a roller or knife-edge
-follower's cam, rocker or translating, sized by the exact method to the least R0 with nothing else fixed: no
-``[cam] base_radius`` or ``centre``, no ``limits.centre_distance``, ``min_base_radius`` or ``follower.offset``,
-K_C = 1, and none of the tables that add checks or constraints: ``[optimize]``, ``[dynamics]``, ``[contact]``,
-``[profile] min_curvature_radius``, a keyway, a ``[profile] tolerance`` of its own, which a profile may not carry;
-a ``[cam] bore_radius`` and ``hub_wall`` are judged: the pressure angle's cam whose working profile clears the
-bore by the wall with the margin is the part's, the others are sent back) by motion program, sizes each group at once
-(:mod:`cams.batch.sizing`: the exact method's problem, the law evaluated once per group), checks every cam by
-kinematic inversion (:mod:`cams.batch.check`: no formula of the sizing) and returns a row only for a cam whose
-every check passes with a margin: verified, buildable, no self-crossing of its working profile. Every other
-design (another kind, a failing or borderline cam, an empty zone) is ``None``: the per-design path
+:func:`size_batch` is the one entry point (the sweep's). It groups the designs it can size by motion program: a
+roller follower's cam (rocker or translating, roller radius > 0) sized by the exact method to the least R0, nothing
+else fixed but a translating follower's ``follower.offset`` (no ``[cam] base_radius`` or ``centre``, no
+``limits.centre_distance`` or ``min_base_radius``, K_C = 1), none of the tables that add checks or constraints
+(``[optimize]``, ``[dynamics]``, ``[contact]``, ``[profile] min_curvature_radius``, a keyway, a ``[profile]
+tolerance`` of its own, which a profile may not carry); a ``[cam] bore_radius`` and ``hub_wall`` are judged (the
+pressure angle's cam whose working profile clears the bore by the wall with the margin is the part's). It sizes
+each group at once (:mod:`cams.batch.sizing`: the exact method's problem, the law evaluated once per group),
+checks every cam by kinematic inversion (:mod:`cams.batch.check`: no formula of the sizing) and returns a row only
+for a cam whose every check passes with a margin: verified, buildable, no self-crossing of its working profile.
+Every other design (another kind, a failing or borderline cam, an empty zone) is ``None``: the per-design path
 (:class:`cams.cam.Cam`) gives its row, failures and errors included.
 """
 
@@ -70,7 +70,6 @@ def _batchable(design, method: str | None) -> bool:
         and lim.centre_distance is None
         and lim.min_base_radius is None
         and lim.safety_factor == 1.0
-        and getattr(f, "offset", None) is None
         and f.roller_radius > 0
         and design.optimize is None
         and design.dynamics is None
@@ -105,9 +104,10 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
     groups: dict[tuple, list[int]] = {}
     for k, d in enumerate(designs):
         if _batchable(d, method):
-            key = (d.program, tuple(i for i, _ in d.constrained_phases()))
+            fixed = getattr(d.follower, "offset", None) is not None  # a translating follower's offset held
+            key = (d.program, tuple(i for i, _ in d.constrained_phases()), fixed)
             groups.setdefault(key, []).append(k)
-    for (program, phases), idx in groups.items():
+    for (program, phases, _), idx in groups.items():
         if _joint_jumps(program):
             continue
         with np.errstate(all="ignore"):

@@ -170,13 +170,59 @@ class _Exchange:
         return np.where(found, np.hypot(x[:, 0], x[:, 1]), 0.0)
 
 
+class _OnLine:
+    """The exchange of designs whose centre is held on the line ``x = x0`` (a translating follower's fixed offset).
+
+    The problem is then one-dimensional: each half-plane bounds the centre's ``y`` from below or from above, and the
+    nearest point is ``A0``'s ``y`` clamped to the tightest bounds (tightened by the rounding as in
+    :class:`_Exchange`; the lower bound of the optimum from the bounds not tightened).
+    """
+
+    def __init__(self, A0: np.ndarray, scale: np.ndarray, x0: np.ndarray):
+        B = len(A0)
+        self.A0, self.scale, self.x0 = A0, scale, x0
+        self.lo, self.hi = np.full(B, -np.inf), np.full(B, np.inf)
+        self.lo_raw, self.hi_raw = self.lo.copy(), self.hi.copy()
+        self.ok = np.ones(B, bool)
+        self.x = np.stack([x0 - A0[:, 0], np.zeros(B)], axis=1)
+
+    def allowed(self, off: np.ndarray, rows) -> np.ndarray:
+        """As :meth:`_Exchange.allowed`."""
+        mag = np.abs(self.A0[rows]).sum(axis=1) + np.abs(self.x[rows]).sum(axis=1)
+        return EPS * (np.abs(off) + 2.0 * (mag if np.ndim(off) == 1 else mag[:, None]))
+
+    def step(self, rows: np.ndarray, nx, ny, off) -> None:
+        """Bound designs ``rows`` by the half-planes ``nx x + ny y <= off`` (shape (n,) or (n, L)) and move them."""
+        x0 = self.x0[rows] if np.ndim(off) == 1 else self.x0[rows, None]
+        c = off - nx * x0
+        t = c - self.allowed(off, rows)
+        flat = np.abs(ny) <= 1e-15
+        safe = np.where(flat, 1.0, ny)
+        below, above = ny < 0, ny > 0
+        red = (lambda a: a) if np.ndim(off) == 1 else (lambda a: a.max(axis=1))
+        self.ok[rows] &= ~(red(np.where(flat, -c, -np.inf)) > 0)
+        self.lo[rows] = np.maximum(self.lo[rows], red(np.where(below, t / safe, -np.inf)))
+        self.hi[rows] = np.minimum(self.hi[rows], -red(np.where(above, -t / safe, -np.inf)))
+        self.lo_raw[rows] = np.maximum(self.lo_raw[rows], red(np.where(below, c / safe, -np.inf)))
+        self.hi_raw[rows] = np.minimum(self.hi_raw[rows], -red(np.where(above, -c / safe, -np.inf)))
+        self.ok[rows] &= self.lo[rows] <= self.hi[rows]
+        y = np.clip(self.A0[rows, 1], self.lo[rows], self.hi[rows])
+        self.x[rows, 1] = y - self.A0[rows, 1]
+
+    def lower(self) -> np.ndarray:
+        """The optimum over the bounds not tightened: a lower bound of the true optimum."""
+        y = np.clip(self.A0[:, 1], self.lo_raw, self.hi_raw) - self.A0[:, 1]
+        return np.hypot(self.x[:, 0], y)
+
+
 def size_group(designs, phases: list[int], program) -> BatchSizing:
     """Size every design of a group (one program, the same constrained phases ``phases``), see the module.
 
     Parameters
     ----------
     designs : sequence of CamDesign
-        Roller followers, sized by R0 with nothing fixed (no L, no offset, no floor, no chosen cam).
+        Roller followers, sized by R0 with nothing fixed (no L, no floor, no chosen cam) but, for translating
+        followers, the offset: all of them or none (:class:`_OnLine`).
     phases : list of int
         The program's constrained phases (:meth:`cams.model.design.CamDesign.constrained_phases`), the same for all.
     program : laws.program.Program
@@ -193,7 +239,13 @@ def size_group(designs, phases: list[int], program) -> BatchSizing:
     s, ds, d2s = (mo[:, k][None, :, None, :] for k in range(3))  # (1, P, 1, M)
     T = turn[:, None, None, None]
     NX, NY, OFF = _lines(T, n0[..., 0, None], n0[..., 1, None], b0[..., None], b1[..., None], bt[..., None], s, ds)
-    ex = _Exchange(A0, scale)
+    offsets = [getattr(d.follower, "offset", None) for d in designs]
+    ex: _Exchange | _OnLine
+    if offsets[0] is None:
+        ex = _Exchange(A0, scale)
+    else:  # the fixed offset's line x = -e (optimize.sizing.offset_x): every scan position's bound at once
+        ex = _OnLine(A0, scale, -np.array(offsets, float))
+        ex.step(np.arange(B), *(a.reshape(B, -1) for a in (NX, NY, OFF)))
     grid = (NX, NY, OFF, T * ds, b1[..., None] * d2s + bt[..., None] * ds)
     flat = [a.reshape(B, -1) for a in (NX, NY, OFF)]
     # 1. the scan positions (the designs still moving only)

@@ -21,7 +21,8 @@ LAWS = ("cycloidal", "poly345", "poly4567", "modified_sine", "modified_trapezoid
 
 
 def _random_dict(rng: np.random.Generator, k: int) -> dict:
-    """A random roller design: rocker or translating, force or form closure, any senses, a few laws."""
+    """A random roller design: rocker or translating (its offset free or held), force or form closure, any senses,
+    a few laws."""
     rise, ret = (str(x) for x in rng.choice(LAWS, 2))
     a_rise, a_dwell, a_ret = float(rng.uniform(80, 150)), float(rng.uniform(0, 60)), float(rng.uniform(80, 140))
     form = k % 4 == 3
@@ -44,6 +45,8 @@ def _random_dict(rng: np.random.Generator, k: int) -> dict:
             "stroke": float(rng.uniform(10, 40)),
             "roller_radius": float(rng.uniform(2, 8)),
         }
+        if k % 3 == 0:  # the offset held: the centre on its line
+            d["follower"]["offset"] = float(rng.uniform(-6, 6))
     else:
         d["follower"] = {
             "kind": "rocker",
