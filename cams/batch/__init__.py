@@ -106,8 +106,13 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
         if _batchable(d, method):
             fixed = getattr(d.follower, "offset", None) is not None  # a translating follower's offset held
             key = (d.program, tuple(i for i, _ in d.constrained_phases()), fixed)
+            try:
+                hash(key)
+            except TypeError:  # a program that holds arrays (a law table): grouped by its object
+                key = (_Same(d.program), *key[1:])
             groups.setdefault(key, []).append(k)
-    for (program, phases, _), idx in groups.items():
+    for (prog, phases, _), idx in groups.items():
+        program = prog.program if isinstance(prog, _Same) else prog
         if _joint_jumps(program):
             continue
         with np.errstate(all="ignore"):
@@ -152,6 +157,19 @@ def _judge(designs, idx: list[int], phases: list[int], program, out: list) -> No
         out[idx[q]] = _row(
             group[q], sized.centre[q], float(sized.R0[q]), float(sized.error_bound[q]), chk.rise[q], chk.ret[q]
         )
+
+
+class _Same:
+    """A program grouped by its object (identity), where it cannot be hashed."""
+
+    def __init__(self, program):
+        self.program = program
+
+    def __hash__(self) -> int:
+        return id(self.program)
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, _Same) and other.program is self.program
 
 
 def _joint_jumps(program) -> bool:
