@@ -3,7 +3,8 @@
 :func:`size_batch` is the one entry point (the sweep's). It groups the designs it can size by motion program: a
 roller follower's cam (rocker or translating, roller radius > 0) sized by the exact method to the least R0, nothing
 else fixed but a translating follower's ``follower.offset`` (no ``[cam] base_radius`` or ``centre``, no
-``limits.centre_distance`` or ``min_base_radius``, K_C = 1), none of the tables that add checks or constraints
+``limits.centre_distance`` or ``min_base_radius``; a rocker's safety factor K_C checked by the independent check's
+moved lines), none of the tables that add checks or constraints
 (``[optimize]``, ``[dynamics]``, ``[contact]``, ``[profile] min_curvature_radius``, a keyway, a ``[profile]
 tolerance`` of its own, which a profile may not carry); a ``[cam] bore_radius`` and ``hub_wall`` are judged (the
 pressure angle's cam whose working profile clears the bore by the wall with the margin is the part's). It sizes
@@ -69,7 +70,6 @@ def _batchable(design, method: str | None) -> bool:
         and getattr(design, "centre", None) is None
         and lim.centre_distance is None
         and lim.min_base_radius is None
-        and lim.safety_factor == 1.0
         and f.roller_radius > 0
         and design.optimize is None
         and design.dynamics is None

@@ -28,6 +28,7 @@ at once. The kernel's margin, the turns and the distance from the cam centre are
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -87,6 +88,9 @@ class _Inversion:
         self.O = np.asarray(centres, float)
         self.roller = np.array([x.roller_radius for x in f], float)
         self.C = np.zeros_like(self.O)
+        self.factor = np.array([d.limits.safety_factor for d in designs], float)
+        lims = [dict(d.constrained_phases()) for d in designs]
+        self.limits = {i: np.array([lm.get(i, np.nan) for lm in lims]) for i in range(len(designs[0].program.phases))}
 
     def at(self, d: np.ndarray, program, i: int, u: np.ndarray) -> dict:
         """At positions ``u`` (shape of ``d``, broadcast) of phase ``i``: ``gamma``, ``kappa``, ``p`` and the
@@ -126,7 +130,40 @@ class _Inversion:
         rr = self.roller[d]
         qx, qy = rx - rr * nx, ry - rr * ny
         W = (cp * qx + sp * qy, -sp * qx + cp * qy)
-        return {"gamma": gamma, "kr": kappa * rr, "p": p, "W": W, "n": (nx, ny)}
+        return {
+            "gamma": gamma,
+            "kr": kappa * rr,
+            "p": p,
+            "W": W,
+            "n": (nx, ny),
+            "e": (tx / t, ty / t),
+            "s": s,
+            "d": np.broadcast_to(d, np.shape(s)),
+            "i": i,
+        }
+
+    def safety(self, v: dict) -> np.ndarray:
+        """The safety factor's excess at the values ``v`` of :meth:`at` (:func:`cams.verify.safety.safety_terms`:
+        the larger of its two moved lines' ``outside / reach``, the sine of the angle's excess; -inf where it does
+        not apply, K_C = 1 or a translating follower)."""
+        from cams.verify.safety import safety_terms
+
+        d, i = v["d"], v["i"]
+        K, arm, sg = self.factor[d], self.arm[d], self.sense[d]
+        lim = self.limits[i][d]
+        on = (K > 1.0) & self.rocker[d] & np.isfinite(lim)
+        lx, ly = np.cos(sg * v["s"]), np.sin(sg * v["s"])  # the rocker line, pivot at the origin
+        (nx, ny), (ex, ey) = v["n"], v["e"]
+        # its arm, factor and limit broadcast with the positions (per design here)
+        per: dict[str, Any] = {
+            "arm": np.where(on, arm, 1.0),
+            "factor": np.where(on, K, 1.0),
+            "limit": np.where(on, lim, 0.5),
+        }
+        outside, reach, _ = safety_terms(self.O[d, 0], self.O[d, 1], nx, ny, ex, ey, lx, ly, **per)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            x = np.where(reach > 0.0, outside / np.where(reach > 0.0, reach, 1.0), outside).max(axis=-1)
+        return np.where(on, np.where(np.isnan(x), np.inf, x), -np.inf)
 
     def kernel(self, v: dict, program, i: int, u: np.ndarray) -> np.ndarray:
         """The working profile's margin inside its tangent lines seen from :attr:`C` (cam frame), at the values
@@ -245,6 +282,11 @@ def _check(designs, centres: np.ndarray, program) -> GroupCheck:
             ret = np.fmax(ret, col)
         lim = np.array([lm.get(i, np.inf) for lm in lims])
         excess = np.maximum(excess, col - lim)
+    # the safety factor K_C of a rocker (seed 3.26): the independent check's moved lines, over the constrained phases
+    if (inv.factor > 1.0).any():
+        limited = {i: grid[i] for i in moving if np.isfinite(inv.limits[i]).any()}
+        sf = _largest(inv, program, limited, inv.safety, B, near=NEAR) if limited else np.full((B, 1), -np.inf)
+        excess = np.maximum(excess, sf.max(axis=1))
     # the curvature times the roller, refined where above a half (farther from 1 the grid's value tells enough)
     # (to a thousandth of a step: the test is against 1 - MARGIN, not to the last digit)
     convex = _largest(inv, program, grid, lambda v: v["kr"], B, floor=0.5, steps=3).max(axis=1)

@@ -21,8 +21,8 @@ LAWS = ("cycloidal", "poly345", "poly4567", "modified_sine", "modified_trapezoid
 
 
 def _random_dict(rng: np.random.Generator, k: int) -> dict:
-    """A random roller design: rocker or translating (its offset free or held), force or form closure, any senses,
-    a few laws."""
+    """A random roller design: rocker (with or without K_C) or translating (its offset free or held), force or form
+    closure, any senses, a few laws."""
     rise, ret = (str(x) for x in rng.choice(LAWS, 2))
     a_rise, a_dwell, a_ret = float(rng.uniform(80, 150)), float(rng.uniform(0, 60)), float(rng.uniform(80, 140))
     form = k % 4 == 3
@@ -55,6 +55,8 @@ def _random_dict(rng: np.random.Generator, k: int) -> dict:
             "roller_radius": float(rng.uniform(2, 10)),
             "rise_direction": str(rng.choice(["cw", "ccw"])),
         }
+        if k % 4 == 2:  # a safety factor K_C (seed 3.26): the zone's lines moved
+            d["limits"]["safety_factor"] = float(rng.uniform(1.02, 1.3))
     return d
 
 
