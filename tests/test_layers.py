@@ -54,7 +54,11 @@ MAY_IMPORT: dict[str, tuple[str, ...]] = {
                     "cams.checks", "cams.dynamics", "cams.faces"),
     "cams.cam": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
                  "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess"),
-    "cams.sweep": (*_BASE, "cams.model", "cams.io", "cams.cam"),
+    # the batch solver of sweeps: many designs of one kind sized, checked by its own inversion and judged at once;
+    # what it cannot vouch for goes back to the faces' pipelines (it imports what they import, and them)
+    "cams.batch": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
+                   "cams.checks", "cams.dynamics", "cams.strength", "cams.faces"),
+    "cams.sweep": (*_BASE, "cams.model", "cams.io", "cams.cam", "cams.batch"),
     "cams.machine": (*_BASE, "cams.model", "cams.kinematics", "cams.verify", "optimize", "cams.profile",
                      "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess", "cams.cam",
                      "cams._moved"),

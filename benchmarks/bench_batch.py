@@ -1,0 +1,176 @@
+"""The batch solver against the per-design path: one sweep grid through both, in one run.
+
+Usage (from the project folder, after ``pip install -e .``)::
+
+    python benchmarks/bench_batch.py [--quick] [--out benchmarks/results]
+
+Writes ``batch.json`` into ``--out``. The grid: ``examples/rocker_force.toml`` over ``limits.pressure_angle`` (deg)
+x ``follower.arm`` (mm), 40 x 50 = 2,000 designs (``--quick``: 4 x 5). It goes through
+
+* the per-design path: today's :func:`cams.sweep.sweep` on 2 processes (every design sized, its profile built
+  at the design's chord tolerance and checked, :mod:`cams.assess`);
+* the batch: the grid split in two halves, one process each (and, for comparison, one process on the whole
+  grid); a process builds its designs from the design file (as the sweep does), sizes them with
+  :func:`cams.batch.size_batch` and sends the rows it returns None for to the per-design path (the sweep's own
+  ``_solve_one``).
+
+It reports designs/s of each (wall time, the pools' start included), their ratio, how many rows went to the
+per-design path, that every row is verified and buildable, and the largest difference between the two paths'
+R0 against the sum of their error bounds (and of the largest pressure angles, degrees), and the machine's load
+average (1 min) before and after (the machine may be shared: the ratio is of the same run).
+"""
+
+from __future__ import annotations
+
+import os
+
+for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_v, "1")  # one core per process: must precede the first numpy import
+
+import argparse  # noqa: E402
+import copy  # noqa: E402
+import itertools  # noqa: E402
+import json  # noqa: E402
+import sys  # noqa: E402
+import time  # noqa: E402
+import tomllib  # noqa: E402
+from concurrent.futures import ProcessPoolExecutor  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from bench_solvers import machine  # noqa: E402
+
+KEYS = ("limits.pressure_angle", "follower.arm")
+#: The batch's row keys for the sweep's columns of the largest pressure angles.
+PRESSURE = {"max_pressure_rise": "max_pressure_angle_rise", "max_pressure_return": "max_pressure_angle_return"}
+
+
+def _grid(quick: bool) -> list[tuple[str, np.ndarray]]:
+    n_angle, n_arm = (4, 5) if quick else (40, 50)
+    return [
+        ("limits.pressure_angle", np.linspace(25.0, 45.0, n_angle)),
+        ("follower.arm", np.linspace(100.0, 200.0, n_arm)),
+    ]
+
+
+def _batch_part(args) -> tuple[list[dict], int, float]:
+    """One process's share: designs built, sized by the batch, the None rows through the per-design path.
+
+    Returns the rows (the sweep's columns), how many went to the per-design path, and the seconds it took.
+    """
+    base, combos = args
+    t0 = time.perf_counter()
+    from cams.batch import size_batch
+    from cams.io.designfile import design_from_dict
+    from cams.sweep import _number, _set, _solve_one
+
+    designs = []
+    for c in combos:
+        d = copy.deepcopy(base)
+        for k, v in zip(KEYS, c, strict=True):
+            _set(d, k, _number(v))
+        designs.append(design_from_dict(d))
+    rows, fallback = [], 0
+    for c, r in zip(combos, size_batch(designs), strict=True):
+        if r is None:
+            fallback += 1
+            rows.append(_solve_one((base, KEYS, c, None)))
+            continue
+        row = {k: _number(v) for k, v in zip(KEYS, c, strict=True)}
+        row.update({k: r[k] for k in ("R0", "L", "offset", "centre_x", "centre_y")})
+        row.update({k: r[b] for k, b in PRESSURE.items()})
+        row.update({k: r[k] for k in ("verified", "buildable", "error_bound", "failures", "error")})
+        rows.append(row)
+    return rows, fallback, time.perf_counter() - t0
+
+
+def _batch(base: dict, combos: list, processes: int) -> tuple[list[dict], int, float]:
+    t0 = time.perf_counter()
+    if processes == 1:
+        rows, fallback, _ = _batch_part((base, combos))
+        return rows, fallback, time.perf_counter() - t0
+    half = (len(combos) + 1) // 2
+    with ProcessPoolExecutor(max_workers=2) as ex:
+        parts = list(ex.map(_batch_part, [(base, combos[:half]), (base, combos[half:])]))
+    rows = [r for p in parts for r in p[0]]
+    return rows, sum(p[1] for p in parts), time.perf_counter() - t0
+
+
+def _usable(rows: list[dict]) -> int:
+    return sum(1 for r in rows if r["verified"] and r["buildable"] and not r["failures"] and not r["error"])
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="a 4 x 5 grid (seconds; a smoke test)")
+    ap.add_argument("--out", default=str(ROOT / "benchmarks" / "results"))
+    a = ap.parse_args(argv)
+    from cams.sweep import sweep
+
+    base = tomllib.loads((ROOT / "examples" / "rocker_force.toml").read_text())
+    vary = _grid(a.quick)
+    combos = list(itertools.product(*[v for _, v in vary]))
+    n = len(combos)
+
+    load_before = os.getloadavg()[0]
+    t0 = time.perf_counter()
+    per = sweep(base, vary, workers=2)
+    per_s = time.perf_counter() - t0
+    two_rows, two_fb, two_s = _batch(base, combos, 2)
+    _, one_fb, one_s = _batch(base, combos, 1)
+
+    # the two paths agree: the same verdicts, R0 within the sum of their error bounds, the same pressure angles
+    worst_r0, worst_ratio, worst_deg, same = 0.0, 0.0, 0.0, True
+    for p, b in zip(per.rows, two_rows, strict=True):
+        same &= (p["verified"], p["buildable"], p["failures"], p["error"]) == (
+            b["verified"],
+            b["buildable"],
+            b["failures"],
+            b["error"],
+        )
+        if p["R0"] is None or b["R0"] is None:
+            same &= p["R0"] is b["R0"]
+            continue
+        d = abs(p["R0"] - b["R0"])
+        worst_r0 = max(worst_r0, d)
+        worst_ratio = max(worst_ratio, d / ((p["error_bound"] or 0.0) + (b["error_bound"] or 0.0) + 1e-300))
+        for k in PRESSURE:
+            if p[k] is not None:
+                worst_deg = max(worst_deg, abs(p[k] - b[k]))
+    best = "2 processes (the grid in halves)" if two_s <= one_s else "1 process"
+    batch_s = min(two_s, one_s)
+    summary = {
+        "designs": n,
+        "grid": {k: [float(v[0]), float(v[-1]), len(v)] for k, v in vary},
+        "per_design_designs_per_s": n / per_s,
+        "per_design_seconds": per_s,
+        "batch_two_processes_designs_per_s": n / two_s,
+        "batch_one_process_designs_per_s": n / one_s,
+        "batch_designs_per_s": n / batch_s,
+        "batch_best": best,
+        "ratio": per_s / batch_s,
+        "fallback_rows": two_fb,
+        "fallback_rows_one_process": one_fb,
+        "rows_verified_and_buildable_per_design": _usable(per.rows),
+        "rows_verified_and_buildable_batch": _usable(two_rows),
+        "same_verdicts": bool(same),
+        "largest_R0_difference_mm": worst_r0,
+        "largest_R0_difference_over_error_bounds": worst_ratio,
+        "largest_pressure_angle_difference_deg": worst_deg,
+        "load_average_before_after": [load_before, os.getloadavg()[0]],
+    }
+    out = Path(a.out)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "batch.json").write_text(json.dumps({"machine": machine(), "summary": summary}, indent=2) + "\n")
+    print(json.dumps(summary, indent=2))
+    ok = same and _usable(two_rows) == _usable(per.rows) and worst_ratio <= 1.0
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
