@@ -7,12 +7,11 @@ Usage (from the project folder, after ``pip install -e .``)::
 Writes ``batch.json`` into ``--out``. The grid: ``examples/rocker_force.toml`` over ``limits.pressure_angle`` (deg)
 x ``follower.arm`` (mm), 40 x 50 = 2,000 designs (``--quick``: 4 x 5). It goes through
 
-* the per-design path: today's :func:`cams.sweep.sweep` on 2 processes (every design sized, its profile built
-  at the design's chord tolerance and checked, :mod:`cams.assess`);
-* the batch: the grid split in two halves, one process each (and, for comparison, one process on the whole
-  grid); a process builds its designs from the design file (as the sweep does), sizes them with
-  :func:`cams.batch.size_batch` and sends the rows it returns None for to the per-design path (the sweep's own
-  ``_solve_one``).
+* the per-design path: :func:`cams.sweep.sweep` with ``per_design=True`` on 2 processes (every design sized,
+  its profile built at the design's chord tolerance and checked, :mod:`cams.assess`);
+* the batch, the sweep's default: :func:`cams.sweep.sweep` on 2 processes (and, for comparison, on one): each
+  chunk's designs sized, checked and judged by :func:`cams.batch.size_batch`, the designs it returns None for
+  sent to the per-design path.
 
 It reports designs/s of each (wall time, the pools' start included), their ratio, how many rows went to the
 per-design path, that every row is verified and buildable, and the largest difference between the two paths'
@@ -34,7 +33,6 @@ import json  # noqa: E402
 import sys  # noqa: E402
 import time  # noqa: E402
 import tomllib  # noqa: E402
-from concurrent.futures import ProcessPoolExecutor  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -46,8 +44,8 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 from bench_solvers import machine  # noqa: E402
 
 KEYS = ("limits.pressure_angle", "follower.arm")
-#: The batch's row keys for the sweep's columns of the largest pressure angles.
-PRESSURE = {"max_pressure_rise": "max_pressure_angle_rise", "max_pressure_return": "max_pressure_angle_return"}
+#: The sweep's columns of the largest pressure angles.
+PRESSURE = ("max_pressure_angle_rise", "max_pressure_angle_return")
 
 
 def _grid(quick: bool) -> list[tuple[str, np.ndarray]]:
@@ -58,47 +56,19 @@ def _grid(quick: bool) -> list[tuple[str, np.ndarray]]:
     ]
 
 
-def _batch_part(args) -> tuple[list[dict], int, float]:
-    """One process's share: designs built, sized by the batch, the None rows through the per-design path.
-
-    Returns the rows (the sweep's columns), how many went to the per-design path, and the seconds it took.
-    """
-    base, combos = args
-    t0 = time.perf_counter()
+def _fallback(base: dict, vary) -> int:
+    """How many of the grid's designs the batch sends to the per-design path (outside the timing)."""
     from cams.batch import size_batch
     from cams.io.designfile import design_from_dict
-    from cams.sweep import _number, _set, _solve_one
+    from cams.sweep.grid import set_key
 
     designs = []
-    for c in combos:
+    for c in itertools.product(*[v for _, v in vary]):
         d = copy.deepcopy(base)
-        for k, v in zip(KEYS, c, strict=True):
-            _set(d, k, _number(v))
+        for (k, _), v in zip(vary, c, strict=True):
+            set_key(d, k, float(v))
         designs.append(design_from_dict(d))
-    rows, fallback = [], 0
-    for c, r in zip(combos, size_batch(designs), strict=True):
-        if r is None:
-            fallback += 1
-            rows.append(_solve_one((base, KEYS, c, None)))
-            continue
-        row = {k: _number(v) for k, v in zip(KEYS, c, strict=True)}
-        row.update({k: r[k] for k in ("R0", "L", "offset", "centre_x", "centre_y")})
-        row.update({k: r[b] for k, b in PRESSURE.items()})
-        row.update({k: r[k] for k in ("verified", "buildable", "error_bound", "failures", "error")})
-        rows.append(row)
-    return rows, fallback, time.perf_counter() - t0
-
-
-def _batch(base: dict, combos: list, processes: int) -> tuple[list[dict], int, float]:
-    t0 = time.perf_counter()
-    if processes == 1:
-        rows, fallback, _ = _batch_part((base, combos))
-        return rows, fallback, time.perf_counter() - t0
-    half = (len(combos) + 1) // 2
-    with ProcessPoolExecutor(max_workers=2) as ex:
-        parts = list(ex.map(_batch_part, [(base, combos[:half]), (base, combos[half:])]))
-    rows = [r for p in parts for r in p[0]]
-    return rows, sum(p[1] for p in parts), time.perf_counter() - t0
+    return sum(1 for r in size_batch(designs) if r is None)
 
 
 def _usable(rows: list[dict]) -> int:
@@ -119,13 +89,19 @@ def main(argv=None) -> int:
 
     load_before = os.getloadavg()[0]
     t0 = time.perf_counter()
-    per = sweep(base, vary, workers=2)
+    per = sweep(base, vary, workers=2, per_design=True)
     per_s = time.perf_counter() - t0
-    two_rows, two_fb, two_s = _batch(base, combos, 2)
-    _, one_fb, one_s = _batch(base, combos, 1)
+    t0 = time.perf_counter()
+    two = sweep(base, vary, workers=2)
+    two_s = time.perf_counter() - t0
+    two_rows = two.rows
+    t0 = time.perf_counter()
+    sweep(base, vary, workers=1)
+    one_s = time.perf_counter() - t0
+    two_fb = one_fb = _fallback(base, vary)
 
     # the two paths agree: the same verdicts, R0 within the sum of their error bounds, the same pressure angles
-    worst_r0, worst_ratio, worst_deg, same = 0.0, 0.0, 0.0, True
+    worst_r0, worst_ratio, worst_deg, worst_blank, same = 0.0, 0.0, 0.0, 0.0, True
     for p, b in zip(per.rows, two_rows, strict=True):
         same &= (p["verified"], p["buildable"], p["failures"], p["error"]) == (
             b["verified"],
@@ -139,10 +115,11 @@ def main(argv=None) -> int:
         d = abs(p["R0"] - b["R0"])
         worst_r0 = max(worst_r0, d)
         worst_ratio = max(worst_ratio, d / ((p["error_bound"] or 0.0) + (b["error_bound"] or 0.0) + 1e-300))
+        worst_blank = max(worst_blank, abs(p["blank_diameter"] - b["blank_diameter"]) / p["blank_diameter"])
         for k in PRESSURE:
             if p[k] is not None:
                 worst_deg = max(worst_deg, abs(p[k] - b[k]))
-    best = "2 processes (the grid in halves)" if two_s <= one_s else "1 process"
+    best = "2 processes" if two_s <= one_s else "1 process"
     batch_s = min(two_s, one_s)
     summary = {
         "designs": n,
@@ -162,13 +139,14 @@ def main(argv=None) -> int:
         "largest_R0_difference_mm": worst_r0,
         "largest_R0_difference_over_error_bounds": worst_ratio,
         "largest_pressure_angle_difference_deg": worst_deg,
+        "largest_blank_diameter_difference_relative": worst_blank,
         "load_average_before_after": [load_before, os.getloadavg()[0]],
     }
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
     (out / "batch.json").write_text(json.dumps({"machine": machine(), "summary": summary}, indent=2) + "\n")
     print(json.dumps(summary, indent=2))
-    ok = same and _usable(two_rows) == _usable(per.rows) and worst_ratio <= 1.0
+    ok = same and _usable(two_rows) == _usable(per.rows) and worst_ratio <= 1.0 and worst_blank <= 1e-9
     return 0 if ok else 1
 
 

@@ -34,6 +34,7 @@ ROW_KEYS = (
     "centre_y",
     "max_pressure_angle_rise",
     "max_pressure_angle_return",
+    "blank_diameter",
     "verified",
     "buildable",
     "error_bound",
@@ -96,7 +97,8 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
     list of dict or None
         Per design, in order: a row with :data:`ROW_KEYS` (``R0``, ``L`` (rocker, else None), ``offset``
         (translating, else None), ``centre_x``, ``centre_y`` in the design's length unit; the largest pressure
-        angles over the rise and the return phases in degrees (None: no such phase); ``verified`` and
+        angles over the rise and the return phases in degrees (None: no such phase); ``blank_diameter`` (twice the
+        cam's largest radius, length); ``verified`` and
         ``buildable`` True, ``error_bound`` (length: R0 less the proven lower bound), ``failures`` and ``error``
         None), as the per-design path gives them to the last digits; or None.
     """
@@ -155,7 +157,8 @@ def _judge(designs, idx: list[int], phases: list[int], program, out: list) -> No
     good &= chk.reach >= clear + MARGIN * sized.R0
     for q in np.flatnonzero(good):
         out[idx[q]] = _row(
-            group[q], sized.centre[q], float(sized.R0[q]), float(sized.error_bound[q]), chk.rise[q], chk.ret[q]
+            group[q], sized.centre[q], float(sized.R0[q]), float(sized.error_bound[q]), chk.rise[q], chk.ret[q],
+            float(chk.largest[q]),
         )
 
 
@@ -180,7 +183,7 @@ def _joint_jumps(program) -> bool:
     return any(abs(ds[i][-1] - ds[(i + 1) % n][0]) > 1e-12 * scale for i in range(n))
 
 
-def _row(design, centre, R0: float, bound: float, rise: float, ret: float) -> dict:
+def _row(design, centre, R0: float, bound: float, rise: float, ret: float, largest: float) -> dict:
     """One design's row (:data:`ROW_KEYS`)."""
     from cams.model.follower import Rocker, Translating
     from optimize.sizing import offset_x
@@ -195,6 +198,7 @@ def _row(design, centre, R0: float, bound: float, rise: float, ret: float) -> di
         "centre_y": float(centre[1]),
         "max_pressure_angle_rise": deg(rise),
         "max_pressure_angle_return": deg(ret),
+        "blank_diameter": 2.0 * largest,
         "verified": True,
         "buildable": True,
         "error_bound": bound,

@@ -58,7 +58,8 @@ class GroupCheck:
     where above a half); ``kernel``: the working profile's smallest distance inside its tangent lines seen from its
     outline's centroid (length, on the grid); ``turns``: its turns round the cam centre and ``step`` the largest
     angle a grid step sweeps there (radians); ``reach``: its smallest distance from the cam centre (length, on the
-    grid); ``joint``: the largest turn of the pitch curve's direction at a phase joint (radians).
+    grid); ``joint``: the largest turn of the pitch curve's direction at a phase joint (radians); ``largest``: the
+    cam's largest radius (the pitch curve's, refined, less the roller; a groove's outer wall: plus), length.
     """
 
     rise: np.ndarray
@@ -71,6 +72,7 @@ class GroupCheck:
     step: np.ndarray
     reach: np.ndarray
     joint: np.ndarray
+    largest: np.ndarray
 
 
 class _Inversion:
@@ -134,6 +136,7 @@ class _Inversion:
             "gamma": gamma,
             "kr": kappa * rr,
             "p": p,
+            "rp": np.hypot(rx, ry),  # the pitch point's distance from the cam centre
             "W": W,
             "n": (nx, ny),
             "e": (tx / t, ty / t),
@@ -301,6 +304,11 @@ def _check(designs, centres: np.ndarray, program) -> GroupCheck:
     inv.C = np.stack([((wx + ax) * cr).sum(axis=1), ((wy + ay) * cr).sum(axis=1)], axis=1) / (6.0 * area[:, None])
     kernel = np.min([inv.kernel(grid[i], program, i, us[i]).min(axis=1) for i in grid], axis=0)
     reach = np.hypot(wx, wy).min(axis=1)
+    # the blank: the pitch curve's largest radius (the normal is radial there), less the roller (a groove's outer
+    # wall: plus), refined like the pressure angle's maxima
+    pitch = _largest(inv, program, grid, lambda v: v["rp"], B).max(axis=1)
+    groove = np.array([d.limits.closure == "form" for d in designs])
+    largest = pitch + np.where(groove, inv.roller, -inv.roller)
     # the joints: the relative velocity's direction on both sides (a velocity jump makes a corner)
     joint = np.zeros(B)
     allD = np.arange(B)
@@ -324,6 +332,7 @@ def _check(designs, centres: np.ndarray, program) -> GroupCheck:
         step=step,
         reach=reach,
         joint=joint,
+        largest=largest,
     )
 
 

@@ -184,7 +184,7 @@ def register(sub) -> None:
     q.add_argument("--resume", action="store_true", help="go on with --out's sweep (the same: OUT.sweep.json)")
     q.add_argument("--method", choices=("exact", "convex", "exhaustive"), help="override [solve] method")
     q.add_argument("--jobs", type=int, help="processes, >= 1 (default: all cores)")
-    q.add_argument("--per-design", action="store_true", help="size each design by itself (today's only path)")
+    q.add_argument("--per-design", action="store_true", help="size each design by itself, not by the batch solver")
     q.add_argument("--quiet", action="store_true", help="no estimate, no progress bar")
     _add_front_arguments(q)
     q.set_defaults(func=run)

@@ -64,7 +64,7 @@ def run_grid(grid: Grid, *, workers: int | None = None, done: Sequence[int] | se
              sink: Callable[[list[dict]], None] | None = None, keep: bool = True,
              progress: Callable[[int, int], None] | None = None,
              estimate: Callable[[float, int, int], None] | None = None, cluster: str | None = None,
-             per_design: bool = True) -> SweepResult:
+             per_design: bool = False) -> SweepResult:
     """Solve the combinations of ``grid`` not in ``done``, handing each chunk's rows to ``sink`` as it completes.
 
     Parameters
@@ -88,7 +88,8 @@ def run_grid(grid: Grid, *, workers: int | None = None, done: Sequence[int] | se
     cluster : str, optional
         Run on a cluster (``cams.sweep.cluster.executor``) instead of this machine's processes.
     per_design : bool
-        Size each design by itself (the only path until a batch solver lands, then the comparison path).
+        Size each design by itself (the comparison path); default: the batch solver (:mod:`cams.batch`), which
+        sends the designs it does not take to that path.
 
     Raises
     ------
@@ -122,7 +123,7 @@ def run_grid(grid: Grid, *, workers: int | None = None, done: Sequence[int] | se
 
 def sweep(base: dict | Sequence[BaseFile], vary: list[tuple[str, Any]], *, method: str | None = None,
           workers: int | None = None, mode: str = "grid",
-          progress: Callable[[int, int], None] | None = None) -> SweepResult:
+          progress: Callable[[int, int], None] | None = None, per_design: bool = False) -> SweepResult:
     """Solve every combination of the varied keys over a base design (a design-file dict) or several.
 
     Parameters
@@ -140,6 +141,8 @@ def sweep(base: dict | Sequence[BaseFile], vary: list[tuple[str, Any]], *, metho
         Every combination, or the k-th values of the keys together.
     progress : callable, optional
         ``progress(done, total)`` as designs are solved.
+    per_design : bool
+        Size each design by itself (the comparison path); default: the batch solver, as :func:`run_grid`.
 
     Raises
     ------
@@ -153,4 +156,4 @@ def sweep(base: dict | Sequence[BaseFile], vary: list[tuple[str, Any]], *, metho
     workers_for(workers, 1)
     files = [BaseFile("", base)] if isinstance(base, dict) else list(base)
     grid = make_grid(files, vary, mode=mode, method=method)
-    return run_grid(grid, workers=workers, progress=progress)
+    return run_grid(grid, workers=workers, progress=progress, per_design=per_design)

@@ -7,9 +7,9 @@ Three seams, each one function:
   running ones: Ctrl-C). ``spec`` None is this machine (a process pool; one worker: this process); another
   ``spec`` is handed to ``cams.sweep.cluster.executor(spec, workers)``, which has the same shape (a Dask cluster:
   ``Client.get_executor()`` is such an executor).
-- :func:`evaluate`: one chunk, in a worker: its designs built (:func:`build`), then sized together
-  (:func:`size`). A batch solver plugs in at :func:`size`, which takes every design of the chunk at once; today
-  each design is sized by itself (``per_design``, the comparison path).
+- :func:`evaluate`: one chunk, in a worker: its designs built (:func:`build`), then sized together by the batch
+  solver (:func:`size_at_once`, :mod:`cams.batch`), which sends the designs it does not take back to
+  :func:`size`, each design by itself (``per_design``: every design so, the comparison path).
 - :func:`run`: the loop. At most two chunks per worker are in flight, so an interrupted sweep loses at most
   those; each completed chunk's rows go to ``sink(rows)`` at once.
 """
@@ -36,8 +36,14 @@ MAX_WORKERS_PER_CPU = 4
 
 #: Seconds of work a chunk aims at (rows reach the file about this often per worker).
 CHUNK_S = 2.0
-#: At most this many designs in one chunk.
+#: At most this many designs in one chunk (the batch solver: :data:`MAX_BATCH_CHUNK`).
 MAX_CHUNK = 64
+#: At most this many designs in one chunk of the batch solver (it sizes a chunk at once, at about a millisecond a
+#: design: a larger chunk spreads its fixed cost).
+MAX_BATCH_CHUNK = 256
+#: Designs of each base file timed together first when the batch solver sizes them (one alone would pay the whole
+#: batch's fixed cost and overstate the time).
+BATCH_TIMED = 32
 
 
 def _ignore_sigint() -> None:
@@ -203,18 +209,38 @@ def size(designs: list[tuple[dict, Any]], method: str | None) -> list[dict]:
     return rows
 
 
+def size_at_once(designs: list[tuple[dict, Any]], method: str | None) -> list[dict]:
+    """The rows of a chunk's designs by the batch solver (:func:`cams.batch.size_batch`: the chunk's roller
+    designs sized, checked and judged at once); the designs it sends back (a kind it does not batch, a row near a
+    threshold) are sized by :func:`size`, each by itself."""
+    from cams.batch import size_batch
+
+    todo = [k for k, (_, d) in enumerate(designs) if d is not None]
+    got = size_batch([designs[k][1] for k in todo], method=method) if todo else []
+    back: list[tuple[dict, Any]] = []
+    for k, r in zip(todo, got, strict=True):
+        row, design = designs[k]
+        if r is None:
+            back.append((row, design))
+        else:
+            row.update(r, Ca_rise=_rise_ca(design))
+    size(back, method)  # fills the rows in place
+    return [row for row, _ in designs]
+
+
 def evaluate(job: tuple[Chunk, bool]) -> list[dict]:
-    """One chunk: ``(chunk, per_design)`` -> its rows, in the chunk's order."""
+    """One chunk: ``(chunk, per_design)`` -> its rows, in the chunk's order: by the batch solver, or each design
+    by itself (``per_design``, the comparison path)."""
     chunk, per_design = job
-    del per_design  # the only path until a batch solver lands (see size)
-    return size(build(chunk), chunk.method)
+    built = build(chunk)
+    return size(built, chunk.method) if per_design else size_at_once(built, chunk.method)
 
 
-def chunk_size(todo: int, workers: int, seconds_each: float) -> int:
+def chunk_size(todo: int, workers: int, seconds_each: float, largest: int = MAX_CHUNK) -> int:
     """Designs per chunk: about :data:`CHUNK_S` seconds of work, at least 8 chunks per worker, 1 to
-    :data:`MAX_CHUNK`."""
-    by_time = int(CHUNK_S / seconds_each) if seconds_each > 0 else MAX_CHUNK
-    return max(1, min(MAX_CHUNK, by_time, todo // (workers * 8) or 1))
+    ``largest``."""
+    by_time = int(CHUNK_S / seconds_each) if seconds_each > 0 else largest
+    return max(1, min(largest, by_time, todo // (workers * 8) or 1))
 
 
 def workers_for(workers: int | None, n: int) -> int:
@@ -229,12 +255,13 @@ def workers_for(workers: int | None, n: int) -> int:
 def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]], None],
         progress: Callable[[int, int], None] | None = None,
         estimate: Callable[[float, int, int], None] | None = None, cluster: str | None = None,
-        per_design: bool = True) -> tuple[int, int]:
+        per_design: bool = False) -> tuple[int, int]:
     """Evaluate the combinations ``todo`` and hand each chunk's rows to ``sink`` as it completes.
 
     A few designs are timed first in this process (the first of each base file's block still to do, and the
-    last of the first file's; ``[optimize]`` designs take seconds, plain ones milliseconds): their rows are the
-    first written, and ``estimate(seconds, timed, workers)`` is told the time expected for all of ``todo`` (the
+    last of the first file's; with the batch solver, up to :data:`BATCH_TIMED` consecutive designs from each;
+    ``[optimize]`` designs take seconds, plain ones milliseconds): their rows are the first written, and
+    ``estimate(seconds, timed, workers)`` is told the time expected for all of ``todo`` (the
     timed designs' included).
 
     Returns
@@ -259,11 +286,22 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
     if len(todo) > len(timed) and todo[-1] not in timed:
         timed.append(todo[-1])
     timed = timed[: max(1, min(len(timed), 4))]
-    secs: dict[int, list[float]] = {}  # base file -> its timed designs' seconds
-    for i in timed:  # each row written at once: an [optimize] design takes seconds
+    # the batch solver times a few consecutive designs of the file together (alone, one pays the batch's fixed cost)
+    together = 1 if per_design else BATCH_TIMED
+    where = {i: k for k, i in enumerate(todo)}
+    taken: set[int] = set()
+    secs: dict[int, list[float]] = {}  # base file -> its timed designs' seconds each
+    spent = 0.0  # seconds the timed designs took
+    for i in timed:  # each group's rows written at once: an [optimize] design takes seconds
+        group = [j for j in todo[where[i]:where[i] + together] if j // per == i // per and j not in taken]
+        if not group:
+            continue
+        taken.update(group)
         t0 = time.perf_counter()
-        rows = evaluate((grid.chunk([i]), per_design))
-        secs.setdefault(i // per, []).append(time.perf_counter() - t0)
+        rows = evaluate((grid.chunk(group), per_design))
+        took = time.perf_counter() - t0
+        spent += took
+        secs.setdefault(i // per, []).append(took / len(group))
         sink(rows)
         done += len(rows)
         if progress:
@@ -271,15 +309,13 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
     # a file's designs take about its quickest timed one's time (the first in a process pays for the imports)
     quick = {f: min(v) for f, v in secs.items()}
     each = sum(quick.values()) / len(quick)
-    taken = set(timed)
     rest = [i for i in todo if i not in taken]
     if estimate:
         # an [optimize] design takes seconds, a plain one milliseconds: each file's own time
-        spent = sum(map(sum, secs.values()))
-        estimate(spent + sum(quick.get(i // per, each) for i in rest) / workers, len(timed), workers)
+        estimate(spent + sum(quick.get(i // per, each) for i in rest) / workers, len(taken), workers)
     if not rest:
         return done, workers
-    chunk = chunk_size(len(rest), workers, each)
+    chunk = chunk_size(len(rest), workers, each, MAX_CHUNK if per_design else MAX_BATCH_CHUNK)
     chunks = [rest[k:k + chunk] for k in range(0, len(rest), chunk)]
     with executor(cluster, workers) as (ex, stop):
         try:

@@ -64,7 +64,8 @@ def test_ctrl_c_keeps_the_rows_done(tmp_path, capsys, monkeypatch):
 
     monkeypatch.setattr(cams.sweep.engine, "evaluate", solve_then_interrupt)
     out = tmp_path / "s.csv"
-    rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100:120:4", "--out", out, "--jobs", "1", "--quiet")
+    rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100:120:4", "--out", out, "--jobs", "1", "--quiet",
+                           "--per-design")  # one design a call (the batch would time all four at once)
     assert rc == 130 and stdout == ""
     assert err == f"cams sweep: interrupted; {out} holds 2 row(s): run again with --resume to go on\n"
     lines = out.read_text().splitlines()

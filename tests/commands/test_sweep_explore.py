@@ -88,6 +88,14 @@ def straight(tmp_path_factory):
     return rc, out
 
 
+@pytest.fixture(scope="module")
+def straight_per_design(tmp_path_factory):
+    """The same sweep, each design by itself (--per-design): the path the interrupted sweep below takes."""
+    out = tmp_path_factory.mktemp("straight_per_design") / "s.csv"
+    rc = main(["sweep", str(ROCKER), *GRID, "--out", str(out), "--jobs", "2", "--quiet", "--per-design"])
+    return rc, out
+
+
 def test_laws_closures_arms(straight, tmp_path, capsys):
     rc, out = straight
     rows = _rows(out)
@@ -210,8 +218,10 @@ def _interrupt_after(monkeypatch, calls_before: int):
 
 def test_parquet_round_trip_and_resume(tmp_path, capsys, monkeypatch):
     pq = pytest.importorskip("pyarrow.parquet")  # the test extra installs it
+    # each design by itself (--per-design): one design a call, so that the interruption falls between designs (the
+    # streaming is the engine's, the same on both paths)
     argv = [ROCKER, "--vary", "follower.arm=100:130:4", "--vary", "motion[0].law=cycloidal", "--jobs", "1",
-            "--quiet"]
+            "--quiet", "--per-design"]
     rc, _ = _sweep(capsys, *argv, "--out", tmp_path / "s.csv")
     rows = _rows(tmp_path / "s.csv")
     _interrupt_after(monkeypatch, 2)  # two designs timed and written, a part each, then Ctrl-C
@@ -233,14 +243,14 @@ def test_parquet_round_trip_and_resume(tmp_path, capsys, monkeypatch):
 def test_resume_drops_a_partial_line_and_checks_the_identity(tmp_path, capsys):
     base = tmp_path / "rocker.toml"
     base.write_text(ROCKER.read_text(encoding="utf-8"), encoding="utf-8")
-    argv = [base, "--vary", "follower.arm=100:130:4", "--jobs", "1", "--quiet"]
+    argv = [base, "--vary", "follower.arm=100:130:4", "--jobs", "1", "--quiet", "--per-design"]
     full = tmp_path / "full.csv"
     assert _sweep(capsys, *argv, "--out", full)[0] == 0
     lines = full.read_text(encoding="utf-8").splitlines(keepends=True)
     part = tmp_path / "part.csv"
     part.write_text("".join(lines[:3]) + lines[3][:25], encoding="utf-8")  # rows 0, 1, and half of row 2
     (tmp_path / "part.csv.sweep.json").write_text((tmp_path / "full.csv.sweep.json").read_text())
-    rc, err = _sweep(capsys, *argv, "--out", part, "--resume", "--per-design")  # today's path, by name
+    rc, err = _sweep(capsys, *argv, "--out", part, "--resume")
     assert rc == 0 and "2 resumed" in err
     assert part.read_text(encoding="utf-8") == full.read_text(encoding="utf-8")
     # another sweep's file: refused, untouched
@@ -257,8 +267,10 @@ def _start(out: Path, *extra: str) -> subprocess.Popen:
     code = ("import signal, sys; signal.signal(signal.SIGINT, signal.default_int_handler); "
             "from cams.cli import main; sys.exit(main())")
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    # each design by itself (--per-design): slow enough to be interrupted mid-sweep (the batch solver sizes these
+    # 24 designs in a fraction of a second); the streaming, the interruption and the resume are the engine's
     return subprocess.Popen([sys.executable, "-c", code, "sweep", str(ROCKER), *GRID, "--out", str(out), "--jobs", "2",
-                             "--quiet", *extra], stderr=subprocess.PIPE, text=True, start_new_session=True, cwd=ROOT,
+                             "--quiet", "--per-design", *extra], stderr=subprocess.PIPE, text=True, start_new_session=True, cwd=ROOT,
                             env=env)
 
 
@@ -274,7 +286,7 @@ def _wait_rows(p: subprocess.Popen, out: Path, at_least: int) -> bool:
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="signals to a process group")
-def test_killed_and_resumed_loses_and_repeats_no_row(straight, tmp_path, capsys):
+def test_killed_and_resumed_loses_and_repeats_no_row(straight_per_design, tmp_path, capsys):
     """The issue's test: interrupted (Ctrl-C, then kill -9), resumed, equal to a straight run."""
     out = tmp_path / "k.csv"
     p = _start(out)
@@ -299,8 +311,8 @@ def test_killed_and_resumed_loses_and_repeats_no_row(straight, tmp_path, capsys)
         p.wait()
     with open(out, "a", encoding="utf-8") as fh:
         fh.write("23,/half/a/li")  # as if killed in the middle of a write
-    rc, err = _sweep(capsys, ROCKER, *GRID, "--out", out, "--jobs", "2", "--quiet", "--resume")
+    rc, err = _sweep(capsys, ROCKER, *GRID, "--out", out, "--jobs", "2", "--quiet", "--resume", "--per-design")
     assert rc == 0, err
     rows = _rows(out)
     assert [int(r["index"]) for r in rows] == list(range(24))  # every index exactly once
-    assert rows == _rows(straight[1])  # and the same rows as the straight run's
+    assert rows == _rows(straight_per_design[1])  # and the same rows as the straight run's
