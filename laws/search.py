@@ -11,14 +11,15 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["golden_minimum"]
+__all__ = ["golden_minimum", "bracketed_root"]
 
 #: The golden section's inner fraction, (3 - sqrt 5) / 2.
 _G = (3.0 - 5.0**0.5) / 2.0
 
 
-def golden_minimum(f: Callable[[np.ndarray], np.ndarray], a, b, xatol: float = 1e-12,
-                   max_steps: int = 200) -> tuple[np.ndarray, np.ndarray]:
+def golden_minimum(
+    f: Callable[[np.ndarray], np.ndarray], a, b, xatol: float = 1e-12, max_steps: int = 200
+) -> tuple[np.ndarray, np.ndarray]:
     """Minimize ``f`` on each bracket ``[a_i, b_i]`` by golden-section search.
 
     Parameters
@@ -62,15 +63,25 @@ def golden_minimum(f: Callable[[np.ndarray], np.ndarray], a, b, xatol: float = 1
         a = np.where(left, a, c)
         new = np.where(left, a + _G * (b - a), b - _G * (b - a))
         fnew = np.asarray(f(new), float)
-        c, d, fc, fd = (np.where(left, new, d), np.where(left, c, new),
-                        np.where(left, fnew, fd), np.where(left, fc, fnew))
+        c, d, fc, fd = (
+            np.where(left, new, d),
+            np.where(left, c, new),
+            np.where(left, fnew, fd),
+            np.where(left, fc, fnew),
+        )
         better = fnew < bf
         bx, bf = np.where(better, new, bx), np.where(better, fnew, bf)
     return bx, bf
 
 
-def bracketed_root(f: Callable[[float], float], a: float, b: float, xtol: float = 1e-14,
-                   rtol: float = 4 * np.finfo(float).eps, max_steps: int = 200) -> float:
+def bracketed_root(
+    f: Callable[[float], float],
+    a: float,
+    b: float,
+    xtol: float = 1e-14,
+    rtol: float = 4 * np.finfo(float).eps,
+    max_steps: int = 200,
+) -> float:
     """A root of the continuous ``f`` between ``a`` and ``b``, where ``f(a)`` and ``f(b)`` differ in sign.
 
     The Illinois variant of regula falsi (the false position, its retained end's value halved when that end

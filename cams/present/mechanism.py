@@ -8,6 +8,8 @@ presenter (:mod:`cams.present.faces`) picks the drawing; the profile picture and
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from cams.kinematics.inversion import smallest_cam_radius, to_fixed_frame
@@ -60,7 +62,7 @@ def draw_flat_mechanism(ax, cam, profile, phi: float):
     margin = 0.1 * max(hi - lo, 1e-9)
     translating = d.follower.kind == "translating"
 
-    def at(phi: float) -> dict[str, np.ndarray]:
+    def at(phi: float) -> dict[str, Any]:
         origin, direction = (v[0] for v in sol.face_line(np.array([phi])))
         k = int(np.argmin(np.abs((profile.phi - phi + np.pi) % TWO_PI - np.pi)))
         near = origin + (lo - margin) * direction
@@ -114,7 +116,7 @@ def draw_roller_mechanism(ax, cam, profile, phi: float):
     d = cam.design
     f = d.follower
 
-    def at(phi: float) -> dict[str, np.ndarray | None]:
+    def at(phi: float) -> dict[str, Any]:
         A = f.position(d.program.evaluate(np.array([phi])).s)[0]
         return {"work": _cam_in_fixed_frame(profile, profile.work, phi),
                 "pitch": _cam_in_fixed_frame(profile, profile.pitch, phi),
