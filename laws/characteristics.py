@@ -15,9 +15,8 @@ Convention: the law is used between dwells. So
   acceleration).
 
 The maxima are found by dense sampling (with one-sided values at the law's
-breakpoints) and local refinement of the largest samples by golden-section
-search in numpy (:func:`laws.search.golden_minimum`, all brackets at once);
-results are cached per law.
+breakpoints) and local refinement of the largest samples by Brent's bounded
+minimization (:func:`laws.search.bounded_minimum`); results are cached per law.
 """
 
 from __future__ import annotations
@@ -31,7 +30,7 @@ import numpy as np
 from laws.base import Law
 from laws.diagnostics import law_jumps
 from laws.errors import InputError
-from laws.search import golden_minimum
+from laws.search import bounded_minimum
 
 __all__ = ["Characteristics", "characteristics", "law_table"]
 
@@ -79,10 +78,9 @@ def _peak(law: Law, k: int) -> float:
     best = float(f.max())
     # local maxima of the samples, largest first
     inner = np.nonzero((f[1:-1] >= f[:-2]) & (f[1:-1] >= f[2:]))[0] + 1
-    top = inner[np.argsort(f[inner])[::-1][:_REFINE]]
-    if top.size:
-        _, neg = golden_minimum(lambda x: -np.abs(law.evaluate(x)[k]), u[top - 1], u[top + 1], xatol=1e-12)
-        best = max(best, float(-neg.min()))
+    for i in inner[np.argsort(f[inner])[::-1][:_REFINE]]:
+        _, neg = bounded_minimum(lambda x: -abs(float(law.evaluate(x)[k])), u[i - 1], u[i + 1], xatol=1e-12)
+        best = max(best, -neg)
     return best
 
 

@@ -1,8 +1,8 @@
-"""Bounded one-dimensional minimization by golden-section search, in numpy.
+"""One-dimensional searches on a bracket: a minimum (Brent's method) and a root (Illinois).
 
-For the few places that refine an extremum on a small bracket (a law's peak, the best point of an arc): the
-search needs no derivative and no import beyond numpy (``scipy.optimize`` costs 0.3 s to import, more than the
-work it would do here). Many brackets are searched together, one evaluation of the function per step for all.
+For the few places that refine an extremum or a crossing on a small bracket (a law's peak, the best point and
+the ends of an arc): plain Python and numpy, no derivative; ``scipy.optimize`` costs 0.3 s to import, more than
+the work it would do here.
 """
 
 from __future__ import annotations
@@ -11,67 +11,98 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["golden_minimum", "bracketed_root"]
+__all__ = ["bounded_minimum", "bracketed_root"]
 
-#: The golden section's inner fraction, (3 - sqrt 5) / 2.
-_G = (3.0 - 5.0**0.5) / 2.0
+def bounded_minimum(f: Callable[[float], float], a: float, b: float, xatol: float = 1e-5,
+                    max_evaluations: int = 500) -> tuple[float, float]:
+    """Minimize ``f`` on ``[a, b]`` by Brent's method (golden-section steps and parabolic interpolation).
 
-
-def golden_minimum(
-    f: Callable[[np.ndarray], np.ndarray], a, b, xatol: float = 1e-12, max_steps: int = 200
-) -> tuple[np.ndarray, np.ndarray]:
-    """Minimize ``f`` on each bracket ``[a_i, b_i]`` by golden-section search.
+    The algorithm of Forsythe, Malcolm and Moler, *Computer Methods for Mathematical Computations* (1977),
+    procedure ``fmin``, as the usual bounded scalar minimizers implement it (the same steps and tolerances, so
+    the same answers to the last digit): a point is accepted within ``sqrt(eps) |x| + xatol / 3`` of the
+    minimum of a unimodal ``f``.
 
     Parameters
     ----------
     f : callable
-        ``f(x) -> values`` evaluated elementwise on an array of the brackets' shape.
-    a, b : array_like
-        The brackets' ends (``a <= b``), same shape.
+        ``f(x) -> float``.
+    a, b : float
+        The bracket, ``a <= b`` (the unit of ``x``).
     xatol : float
-        The bracket's width at which the search stops (the unit of ``x``).
-    max_steps : int
-        A bound on the steps (each shrinks the brackets by 0.618).
+        The absolute tolerance on ``x``.
+    max_evaluations : int
+        A bound on the evaluations of ``f``.
 
     Returns
     -------
-    x, fx : ndarray
-        The best point found in each bracket (its ends included) and ``f`` there. On a unimodal ``f`` the point
-        is within ``xatol`` of the bracket's minimum; on any ``f`` the value is one ``f`` takes in the bracket.
+    x, fx : float
+        The best point found and ``f`` there.
     """
-    a = np.array(a, float, copy=True, ndmin=1)
-    b = np.array(b, float, copy=True, ndmin=1)
-    a, b = np.broadcast_arrays(a, b)
-    a, b = a.copy(), b.copy()
-    # the ends are candidates too: a minimum at an end is found exactly
-    best_x = np.concatenate([a, b]).reshape(2, -1)
-    best_f = np.asarray(f(best_x.ravel()), float).reshape(2, -1)
-    pick = np.argmin(best_f, axis=0)
-    bx = best_x[pick, np.arange(a.size)]
-    bf = best_f[pick, np.arange(a.size)]
-    c = a + _G * (b - a)
-    d = b - _G * (b - a)
-    fc, fd = (np.asarray(v, float) for v in np.split(np.asarray(f(np.concatenate([c, d])), float), 2))
-    for x, fx in ((c, fc), (d, fd)):
-        better = fx < bf
-        bx, bf = np.where(better, x, bx), np.where(better, fx, bf)
-    for _ in range(max_steps):
-        if np.all(b - a <= xatol):
+    sqrt_eps = (2.2e-16) ** 0.5
+    golden_mean = 0.5 * (3.0 - 5.0**0.5)
+    fulc = a + golden_mean * (b - a)
+    nfc, xf = fulc, fulc
+    rat = e = 0.0
+    fx = f(xf)
+    evaluations = 1
+    ffulc = fnfc = fx
+    xm = 0.5 * (a + b)
+    tol1 = sqrt_eps * abs(xf) + xatol / 3.0
+    tol2 = 2.0 * tol1
+    while abs(xf - xm) > (tol2 - 0.5 * (b - a)):
+        golden = True
+        if abs(e) > tol1:  # a parabola through the three best points, when its step is acceptable
+            golden = False
+            r = (xf - nfc) * (fx - ffulc)
+            q = (xf - fulc) * (fx - fnfc)
+            p = (xf - fulc) * q - (xf - nfc) * r
+            q = 2.0 * (q - r)
+            if q > 0.0:
+                p = -p
+            q = abs(q)
+            r = e
+            e = rat
+            if abs(p) < abs(0.5 * q * r) and p > q * (a - xf) and p < q * (b - xf):
+                rat = (p + 0.0) / q
+                x = xf + rat
+                if (x - a) < tol2 or (b - x) < tol2:
+                    rat = tol1 * (_sign(xm - xf) + ((xm - xf) == 0))
+            else:
+                golden = True
+        if golden:
+            e = a - xf if xf >= xm else b - xf
+            rat = golden_mean * e
+        x = xf + (_sign(rat) + (rat == 0)) * max(abs(rat), tol1)
+        fu = f(x)
+        evaluations += 1
+        if fu <= fx:
+            if x >= xf:
+                a = xf
+            else:
+                b = xf
+            fulc, ffulc = nfc, fnfc
+            nfc, fnfc = xf, fx
+            xf, fx = x, fu
+        else:
+            if x < xf:
+                a = x
+            else:
+                b = x
+            if fu <= fnfc or nfc == xf:
+                fulc, ffulc = nfc, fnfc
+                nfc, fnfc = x, fu
+            elif fu <= ffulc or fulc == xf or fulc == nfc:
+                fulc, ffulc = x, fu
+        xm = 0.5 * (a + b)
+        tol1 = sqrt_eps * abs(xf) + xatol / 3.0
+        tol2 = 2.0 * tol1
+        if evaluations >= max_evaluations:
             break
-        left = fc <= fd  # the minimum is in [a, d]: d becomes the new b, c the new d
-        b = np.where(left, d, b)
-        a = np.where(left, a, c)
-        new = np.where(left, a + _G * (b - a), b - _G * (b - a))
-        fnew = np.asarray(f(new), float)
-        c, d, fc, fd = (
-            np.where(left, new, d),
-            np.where(left, c, new),
-            np.where(left, fnew, fd),
-            np.where(left, fc, fnew),
-        )
-        better = fnew < bf
-        bx, bf = np.where(better, new, bx), np.where(better, fnew, bf)
-    return bx, bf
+    return float(xf), float(fx)
+
+
+def _sign(x: float) -> float:
+    return 1.0 if x > 0 else -1.0 if x < 0 else 0.0
 
 
 def bracketed_root(

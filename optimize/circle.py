@@ -308,7 +308,7 @@ def best_on_circle(
     """Admissible point of the circle that minimizes ``objective``; None if none.
 
     The objective is evaluated at the arcs' ends and on a fine grid inside each
-    arc, then refined by golden-section search (:func:`laws.search.golden_minimum`).
+    arc, then refined by Brent's bounded minimization (:func:`laws.search.bounded_minimum`).
 
     Parameters
     ----------
@@ -331,7 +331,7 @@ def best_on_circle(
         The best admissible point of the circle (same frame), None when the
         circle misses the zone.
     """
-    from laws.search import golden_minimum
+    from laws.search import bounded_minimum
 
     centre = np.asarray(centre, float)
     pt = lambda a: centre + radius * np.array([np.cos(a), np.sin(a)])  # noqa: E731
@@ -343,8 +343,8 @@ def best_on_circle(
         cands = [(vals[0], a), (vals[-1], b), (vals[k], grid[k])]
         lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
         if hi > lo:
-            x, fx = golden_minimum(lambda xs: np.array([objective(pt(x)) for x in xs]), lo, hi, xatol=1e-13)
-            cands.append((float(fx[0]), float(x[0])))
+            x, fx = bounded_minimum(lambda t: objective(pt(t)), lo, hi, xatol=1e-13)
+            cands.append((fx, x))
         v, x = min(cands)
         if v < best_val:
             best, best_val = pt(x), v

@@ -98,3 +98,12 @@ def test_the_command_line_runs_blas_on_one_thread_unless_told():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                        env={**env, "OPENBLAS_NUM_THREADS": "2"})
     assert r.stdout.split() == ["2", "1"]
+
+
+def test_the_motion_design_solves_without_cvxpy_or_scipy_optimize():
+    """``cams solve`` of the motion-design example (its programs solved by Clarabel, called directly) loads
+    neither cvxpy (0.8 s to import, and it brings scipy.optimize and scipy.stats) nor scipy.optimize."""
+    code = (f"import contextlib, io\nfrom cams.cli import main\n"
+            f"with contextlib.redirect_stdout(io.StringIO()):\n"
+            f"    assert main(['solve', {str(EXAMPLES / 'translating_designed_rise.toml')!r}]) == 0\n")
+    assert _loaded_after(code, ("cvxpy", "scipy.optimize", "scipy.stats", "matplotlib")) == []
