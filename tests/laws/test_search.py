@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from laws.search import bounded_minimum, bracketed_root
@@ -40,3 +41,26 @@ def test_bracketed_root_ends_and_refusal():
     assert bracketed_root(lambda x: x - 1.0, 1.0, 2.0) == 1.0
     with pytest.raises(ValueError, match="differ in sign"):
         bracketed_root(lambda x: x * x + 1.0, -1.0, 1.0)
+
+
+def test_the_same_answers_as_scipy_to_the_last_digit():
+    """Both searches take the steps of scipy's brentq and bounded minimize_scalar (which the product used before):
+    on random smooth functions their answers are the same floats, so no figure the product prints moved."""
+    from scipy.optimize import brentq, minimize_scalar
+
+    rng = np.random.default_rng(7)
+    for _ in range(200):
+        c = rng.normal(size=4)
+        r = rng.uniform(-1.0, 1.0)
+
+        def f(x, c=c, r=r):
+            return math.tanh(c[0] * (x - r)) * (1 + c[1] ** 2) + 1e-3 * c[2] * math.sin(7 * x)
+
+        def g(x, c=c, r=r):
+            return (x - r) ** 2 * (1 + c[3] ** 2) + 0.1 * c[2] * math.cos(3 * x)
+
+        if f(-2.0) * f(2.0) < 0:
+            assert bracketed_root(f, -2.0, 2.0, xtol=1e-14) == brentq(f, -2.0, 2.0, xtol=1e-14,
+                                                                       rtol=4 * np.finfo(float).eps)
+        m = minimize_scalar(g, bounds=(-2.0, 2.0), method="bounded", options={"xatol": 1e-12})
+        assert bounded_minimum(g, -2.0, 2.0, xatol=1e-12) == (m.x, m.fun)
