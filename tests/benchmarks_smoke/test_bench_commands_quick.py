@@ -10,8 +10,23 @@ from tests.conftest import ROOT
 
 def test_bench_commands_quick_writes_json(tmp_path):
     before = subprocess.run(["git", "worktree", "list"], cwd=ROOT, capture_output=True, text=True).stdout
-    r = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_commands.py"), "--base", "HEAD", "--runs",
-                        "1", "--only", "check", "--out", str(tmp_path)], capture_output=True, text=True, timeout=300)
+    r = subprocess.run(
+        [
+            sys.executable,
+            str(ROOT / "benchmarks" / "bench_commands.py"),
+            "--base",
+            "HEAD",
+            "--runs",
+            "1",
+            "--only",
+            "check",
+            "--out",
+            str(tmp_path),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert r.returncode == 0, r.stderr
     res = json.loads((tmp_path / "commands.json").read_text())
     (row,) = res["commands"]

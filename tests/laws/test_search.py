@@ -27,12 +27,15 @@ def test_bounded_minimum_of_a_law_like_peak():
     assert x == pytest.approx(0.25, abs=1e-7)
 
 
-@pytest.mark.parametrize("f, a, b, root", [
-    (lambda x: math.cos(x) - x, 0.0, 1.0, 0.7390851332151607),  # the Dottie number
-    (lambda x: x**3 - 2.0, 0.0, 5.0, 2.0 ** (1 / 3)),
-    (lambda x: math.copysign(abs(x - 0.3) ** 0.2, x - 0.3), 0.0, 5.0, 0.3),  # flat at the root: bisection steps
-    (lambda x: math.exp(x) - 1e-3, -20.0, 0.0, math.log(1e-3)),
-])
+@pytest.mark.parametrize(
+    "f, a, b, root",
+    [
+        (lambda x: math.cos(x) - x, 0.0, 1.0, 0.7390851332151607),  # the Dottie number
+        (lambda x: x**3 - 2.0, 0.0, 5.0, 2.0 ** (1 / 3)),
+        (lambda x: math.copysign(abs(x - 0.3) ** 0.2, x - 0.3), 0.0, 5.0, 0.3),  # flat at the root: bisection steps
+        (lambda x: math.exp(x) - 1e-3, -20.0, 0.0, math.log(1e-3)),
+    ],
+)
 def test_bracketed_root_against_closed_forms(f, a, b, root):
     assert bracketed_root(f, a, b, xtol=1e-14) == pytest.approx(root, abs=1e-13)
 
@@ -60,7 +63,8 @@ def test_the_same_answers_as_scipy_to_the_last_digit():
             return (x - r) ** 2 * (1 + c[3] ** 2) + 0.1 * c[2] * math.cos(3 * x)
 
         if f(-2.0) * f(2.0) < 0:
-            assert bracketed_root(f, -2.0, 2.0, xtol=1e-14) == brentq(f, -2.0, 2.0, xtol=1e-14,
-                                                                       rtol=4 * np.finfo(float).eps)
+            assert bracketed_root(f, -2.0, 2.0, xtol=1e-14) == brentq(
+                f, -2.0, 2.0, xtol=1e-14, rtol=4 * np.finfo(float).eps
+            )
         m = minimize_scalar(g, bounds=(-2.0, 2.0), method="bounded", options={"xatol": 1e-12})
         assert bounded_minimum(g, -2.0, 2.0, xatol=1e-12) == (m.x, m.fun)

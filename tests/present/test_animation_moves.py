@@ -23,8 +23,9 @@ def _data(ax) -> list[np.ndarray]:
     return out
 
 
-@pytest.mark.parametrize("example", ["rocker_force.toml", "translating_flat.toml", "rocker_flat.toml",
-                                     "translating_force.toml"])
+@pytest.mark.parametrize(
+    "example", ["rocker_force.toml", "translating_flat.toml", "rocker_flat.toml", "translating_force.toml"]
+)
 def test_move_draws_what_a_fresh_drawing_draws(example):
     from matplotlib.figure import Figure
 
