@@ -15,8 +15,8 @@ Convention: the law is used between dwells. So
   acceleration).
 
 The maxima are found by dense sampling (with one-sided values at the law's
-breakpoints) and local refinement of the largest samples by bounded scalar
-minimization (``scipy.optimize.minimize_scalar``); results are cached per law.
+breakpoints) and local refinement of the largest samples by Brent's bounded
+minimization (:func:`laws.search.bounded_minimum`); results are cached per law.
 """
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ import numpy as np
 from laws.base import Law
 from laws.diagnostics import law_jumps
 from laws.errors import InputError
+from laws.search import bounded_minimum
 
 __all__ = ["Characteristics", "characteristics", "law_table"]
 
@@ -70,8 +71,6 @@ class Characteristics:
 
 def _peak(law: Law, k: int) -> float:
     """``max |S^(k)|`` over [0, 1], one-sided limits at breakpoints included."""
-    from scipy.optimize import minimize_scalar  # here: importing it costs 0.3 s, and only the table needs it
-
     eps = 1e-12
     extra = [x for b in law.breakpoints for x in (b - eps, b + eps) if 0.0 < b < 1.0]
     u = np.unique(np.concatenate([np.linspace(0.0, 1.0, _SAMPLES + 1), extra]))
@@ -80,10 +79,8 @@ def _peak(law: Law, k: int) -> float:
     # local maxima of the samples, largest first
     inner = np.nonzero((f[1:-1] >= f[:-2]) & (f[1:-1] >= f[2:]))[0] + 1
     for i in inner[np.argsort(f[inner])[::-1][:_REFINE]]:
-        a, b = u[i - 1], u[i + 1]
-        r = minimize_scalar(lambda x: -abs(float(law.evaluate(x)[k])), bounds=(a, b), method="bounded",
-                            options={"xatol": 1e-12})
-        best = max(best, -float(r.fun))
+        _, neg = bounded_minimum(lambda x: -abs(float(law.evaluate(x)[k])), u[i - 1], u[i + 1], xatol=1e-12)
+        best = max(best, -neg)
     return best
 
 

@@ -244,9 +244,9 @@ def crossing_seed(centre: np.ndarray, radius: float, inner: np.ndarray, outer: n
     f = lambda s: float(np.linalg.norm(inner + s * (outer - inner) - centre) - radius)  # noqa: E731
     if f(0.0) > 0 or f(1.0) < 0:
         return None
-    from scipy.optimize import brentq  # here: importing scipy.optimize costs 0.3 s
+    from laws.search import bracketed_root  # numpy's: importing scipy.optimize costs 0.3 s
 
-    s = brentq(f, 0.0, 1.0, xtol=1e-15) if f(0.0) < 0 < f(1.0) else (0.0 if f(0.0) == 0 else 1.0)
+    s = bracketed_root(f, 0.0, 1.0, xtol=1e-15) if f(0.0) < 0 < f(1.0) else (0.0 if f(0.0) == 0 else 1.0)
     p = inner + s * (outer - inner) - centre
     return float(np.arctan2(p[1], p[0]) % (2 * np.pi))
 
@@ -291,9 +291,9 @@ def _refine(at, a, b) -> float:
     if fa * fb > 0:
         # the sampled scan and the continuum disagree at this resolution: keep the inner end
         return b if fb <= 0 else a
-    from scipy.optimize import brentq  # here: importing scipy.optimize costs 0.3 s
+    from laws.search import bracketed_root  # numpy's: importing scipy.optimize costs 0.3 s
 
-    return brentq(at, a, b, xtol=1e-14, rtol=4 * np.finfo(float).eps)
+    return bracketed_root(at, a, b, xtol=1e-14, rtol=4 * np.finfo(float).eps)
 
 
 def best_on_circle(
@@ -308,7 +308,7 @@ def best_on_circle(
     """Admissible point of the circle that minimizes ``objective``; None if none.
 
     The objective is evaluated at the arcs' ends and on a fine grid inside each
-    arc, then refined by bounded scalar minimization.
+    arc, then refined by Brent's bounded minimization (:func:`laws.search.bounded_minimum`).
 
     Parameters
     ----------
@@ -331,7 +331,7 @@ def best_on_circle(
         The best admissible point of the circle (same frame), None when the
         circle misses the zone.
     """
-    from scipy.optimize import minimize_scalar
+    from laws.search import bounded_minimum
 
     centre = np.asarray(centre, float)
     pt = lambda a: centre + radius * np.array([np.cos(a), np.sin(a)])  # noqa: E731
@@ -343,9 +343,8 @@ def best_on_circle(
         cands = [(vals[0], a), (vals[-1], b), (vals[k], grid[k])]
         lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
         if hi > lo:
-            r = minimize_scalar(lambda x: objective(pt(x)), bounds=(lo, hi), method="bounded",
-                                options={"xatol": 1e-13})
-            cands.append((float(r.fun), float(r.x)))
+            x, fx = bounded_minimum(lambda t: objective(pt(t)), lo, hi, xatol=1e-13)
+            cands.append((fx, x))
         v, x = min(cands)
         if v < best_val:
             best, best_val = pt(x), v

@@ -11,6 +11,7 @@ face it is. It sits at the bottom of :mod:`cams.present`: it names the pictures 
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
+from collections.abc import Callable
 from typing import Any, ClassVar
 
 import numpy as np
@@ -43,8 +44,9 @@ class Presenter(ABC):
 
 
     @abstractmethod
-    def draw_mechanism(self, ax, cam, profile, phi: float) -> None:
-        """The cam turned to cam angle ``phi`` (rad) with its follower, on the axes ``ax``."""
+    def draw_mechanism(self, ax, cam, profile, phi: float) -> Callable[[float], list]:
+        """The cam turned to cam angle ``phi`` (rad) with its follower, on the axes ``ax``; returns ``move(phi)``,
+        which turns the drawing to another cam angle by updating its moving artists in place (and returns them)."""
 
     @abstractmethod
     def animation_extent(self, cam, profile) -> tuple[np.ndarray, float, np.ndarray]:
@@ -106,10 +108,10 @@ class RollerPresenter(Presenter):
 
         return roller_sections(cam)
 
-    def draw_mechanism(self, ax, cam, profile, phi: float) -> None:
+    def draw_mechanism(self, ax, cam, profile, phi: float) -> Callable[[float], list]:
         from cams.present.mechanism import draw_roller_mechanism
 
-        draw_roller_mechanism(ax, cam, profile, phi)
+        return draw_roller_mechanism(ax, cam, profile, phi)
 
     def animation_extent(self, cam, profile):
         d = cam.design
@@ -216,10 +218,10 @@ class FlatPresenter(Presenter):
 
         return flat_sections(cam)
 
-    def draw_mechanism(self, ax, cam, profile, phi: float) -> None:
+    def draw_mechanism(self, ax, cam, profile, phi: float) -> Callable[[float], list]:
         from cams.present.mechanism import draw_flat_mechanism
 
-        draw_flat_mechanism(ax, cam, profile, phi)
+        return draw_flat_mechanism(ax, cam, profile, phi)
 
     def animation_extent(self, cam, profile):
         d, sol = cam.design, cam.solution

@@ -8,6 +8,8 @@ presenter (:mod:`cams.present.faces`) picks the drawing; the profile picture and
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from cams.kinematics.inversion import smallest_cam_radius, to_fixed_frame
@@ -24,17 +26,21 @@ def radii_label(R0: float, cam_radius: float | None) -> str:
     return f"base circle R0 = {R0:.3f} mm (pitch curve)\ncam's smallest radius {cam_radius:.3f} mm"
 
 
-def add_polygon(ax, points: np.ndarray, **style) -> None:
-    """A filled polygon through ``points`` (shape (n, 2)), the axes' limits taken from its points at once.
+def add_polygon(ax, points: np.ndarray, **style):
+    """A filled polygon through ``points`` (shape (n, 2)), the axes' limits taken from its points at once;
+    returns the polygon.
 
     ``ax.fill``/``add_patch`` walk every vertex of the path in Python to update the limits: slow for a
-    profile of thousands of points, drawn at every frame of an animation.
+    profile of thousands of points.
     """
     from matplotlib.patches import Polygon
 
-    ax.add_artist(Polygon(points, closed=True, **style))
+    poly = Polygon(points, closed=True, **style)
+    ax.add_artist(poly)
     ax.update_datalim(points)
     ax.autoscale_view()
+    return poly
+
 
 def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
     """A roller cam's profile points in the fixed frame at cam angle ``phi`` (its centre and sense)."""
@@ -42,34 +48,44 @@ def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
 
 
 def draw_flat_mechanism(ax, cam, profile, phi: float):
-    """A flat-faced follower's cam (turned to ``phi``) and its face, in the frame of ``FlatFaceSolution.centre``."""
+    """A flat-faced follower's cam (turned to ``phi``) and its face, in the frame of ``FlatFaceSolution.centre``.
+
+    Returns ``move(phi)``, which turns the drawing to another cam angle (radians) by updating the moving
+    artists' data in place (the cam, the face and its stem or arm, the contact point) and returns them.
+    """
     from matplotlib.patches import Circle
 
     d = cam.design
     sol = cam.solution
     centre = sol.centre
-    work = to_fixed_frame(profile.work, centre, d.cam_sense, phi)
-    add_polygon(ax, work, fc="#e2e8f0", ec="#1a202c", lw=1.2, label="cam profile")
-    ax.add_patch(Circle(centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
-                        label=radii_label(profile.R0, None)))
-    origin, direction = (v[0] for v in sol.face_line(np.array([phi])))
     lo, hi = sol.face_range
     margin = 0.1 * max(hi - lo, 1e-9)
-    ends = origin + np.outer([lo - margin, hi + margin], direction)
+    translating = d.follower.kind == "translating"
+
+    def at(phi: float) -> dict[str, Any]:
+        origin, direction = (v[0] for v in sol.face_line(np.array([phi])))
+        k = int(np.argmin(np.abs((profile.phi - phi + np.pi) % TWO_PI - np.pi)))
+        near = origin + (lo - margin) * direction
+        return {"work": to_fixed_frame(profile.work, centre, d.cam_sense, phi),
+                "face": origin + np.outer([lo - margin, hi + margin], direction),
+                "contact": to_fixed_frame(profile.work[k:k + 1], centre, d.cam_sense, profile.phi[k])[0],
+                "stem": (np.array([origin, origin + np.array([0.0, 0.6 * d.scale])]) if translating
+                         else np.array([[0.0, 0.0], origin, near]))}
+
+    p = at(phi)
+    cam_patch = add_polygon(ax, p["work"], fc="#e2e8f0", ec="#1a202c", lw=1.2, label="cam profile")
+    ax.add_patch(Circle(centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
+                        label=radii_label(profile.R0, None)))
     # the face and its stem or arm: one body, one legend entry
-    body = "follower (flat face and stem)" if d.follower.kind == "translating" else "rocker (flat face and arm)"
-    ax.plot(ends[:, 0], ends[:, 1], color="#c53030", lw=3, solid_capstyle="butt", label=body)
-    k = int(np.argmin(np.abs((profile.phi - phi + np.pi) % TWO_PI - np.pi)))
-    contact = to_fixed_frame(profile.work[k:k + 1], centre, d.cam_sense, profile.phi[k])[0]
-    ax.plot(*contact, "o", color="#c53030", ms=3)
-    if d.follower.kind == "translating":
-        top = origin + np.array([0.0, 0.6 * d.scale])
-        ax.plot([origin[0], top[0]], [origin[1], top[1]], color="#c53030", lw=3, label=body)
+    body = "follower (flat face and stem)" if translating else "rocker (flat face and arm)"
+    (face,) = ax.plot(p["face"][:, 0], p["face"][:, 1], color="#c53030", lw=3, solid_capstyle="butt", label=body)
+    (contact,) = ax.plot(*p["contact"], "o", color="#c53030", ms=3)
+    if translating:
+        (stem,) = ax.plot(p["stem"][:, 0], p["stem"][:, 1], color="#c53030", lw=3, label=body)
         ax.axvline(0.0, color="k", lw=0.6, ls="-.")
     else:
-        near = origin + (lo - margin) * direction
-        ax.plot([0, origin[0], near[0]], [0, origin[1], near[1]], color="#c53030", lw=3,
-                solid_capstyle="round", label=body)
+        (stem,) = ax.plot(p["stem"][:, 0], p["stem"][:, 1], color="#c53030", lw=3, solid_capstyle="round",
+                          label=body)
         ax.plot(0, 0, "ko", ms=5)
     ax.plot(*centre, "k+", ms=10)
     ax.set_aspect("equal")
@@ -77,35 +93,77 @@ def draw_flat_mechanism(ax, cam, profile, phi: float):
     ax.set_xlabel("x, mm")
     ax.set_ylabel("y, mm")
 
+    def move(phi: float) -> list:
+        q = at(phi)
+        cam_patch.set_xy(q["work"])
+        face.set_data(q["face"][:, 0], q["face"][:, 1])
+        contact.set_data([q["contact"][0]], [q["contact"][1]])
+        stem.set_data(q["stem"][:, 0], q["stem"][:, 1])
+        return [cam_patch, face, contact, stem]
+
+    return move
+
 
 def draw_roller_mechanism(ax, cam, profile, phi: float):
-    """Cam (turned to ``phi``), follower and roller in the follower's fixed frame."""
+    """Cam (turned to ``phi``), follower and roller in the follower's fixed frame.
+
+    Returns ``move(phi)``, which turns the drawing to another cam angle (radians) by updating the moving
+    artists' data in place (the cam's profile, groove and pitch curve, the roller, the rocker or stem) and returns
+    them.
+    """
     from matplotlib.patches import Circle
 
     d = cam.design
     f = d.follower
-    work = _cam_in_fixed_frame(profile, profile.work, phi)
-    pitch = _cam_in_fixed_frame(profile, profile.pitch, phi)
-    add_polygon(ax, work, fc="#e2e8f0", ec="#1a202c", lw=1.2, label="working profile")
-    if profile.outer is not None:
-        outer = _cam_in_fixed_frame(profile, profile.outer, phi)
-        ax.plot(outer[:, 0], outer[:, 1], color="#1a202c", lw=1.2, label="groove, outer wall")
-    ax.plot(pitch[:, 0], pitch[:, 1], color="#2b6cb0", lw=0.8, ls="--", label="pitch curve")
+
+    def at(phi: float) -> dict[str, Any]:
+        A = f.position(d.program.evaluate(np.array([phi])).s)[0]
+        return {"work": _cam_in_fixed_frame(profile, profile.work, phi),
+                "pitch": _cam_in_fixed_frame(profile, profile.pitch, phi),
+                "outer": None if profile.outer is None else _cam_in_fixed_frame(profile, profile.outer, phi),
+                "A": A,
+                "arm": (np.array([[0.0, 0.0], A]) if f.kind == "rocker"
+                        else np.array([A, A + np.array([0.0, 0.6 * d.scale + 2 * profile.roller_radius])]))}
+
+    p = at(phi)
+    A = p["A"]
+    cam_patch = add_polygon(ax, p["work"], fc="#e2e8f0", ec="#1a202c", lw=1.2, label="working profile")
+    outer = None
+    if p["outer"] is not None:
+        (outer,) = ax.plot(p["outer"][:, 0], p["outer"][:, 1], color="#1a202c", lw=1.2, label="groove, outer wall")
+    (pitch,) = ax.plot(p["pitch"][:, 0], p["pitch"][:, 1], color="#2b6cb0", lw=0.8, ls="--", label="pitch curve")
     ax.add_patch(Circle(profile.centre, profile.R0, fill=False, color="#718096", lw=0.8, ls=":",
                         label=radii_label(profile.R0, smallest_cam_radius(d, profile.centre)[0])))
-    m = d.program.evaluate(np.array([phi]))
-    A = f.position(m.s)[0]
+    roller = None
     if profile.roller_radius > 0:
-        ax.add_patch(Circle(A, profile.roller_radius, fill=False, color="#c53030", lw=1.4))
-    ax.plot(*A, "o", color="#c53030", ms=3)
+        roller = Circle(A, profile.roller_radius, fill=False, color="#c53030", lw=1.4)
+        ax.add_patch(roller)
+    (point,) = ax.plot(*A, "o", color="#c53030", ms=3)
     if f.kind == "rocker":
-        ax.plot([0, A[0]], [0, A[1]], color="#c53030", lw=2.5, solid_capstyle="round", label="rocker")
+        (arm,) = ax.plot(p["arm"][:, 0], p["arm"][:, 1], color="#c53030", lw=2.5, solid_capstyle="round",
+                         label="rocker")
         ax.plot(0, 0, "ko", ms=5)
     else:
-        top = A + np.array([0.0, 0.6 * d.scale + 2 * profile.roller_radius])
-        ax.plot([A[0], top[0]], [A[1], top[1]], color="#c53030", lw=3, label="follower")
+        (arm,) = ax.plot(p["arm"][:, 0], p["arm"][:, 1], color="#c53030", lw=3, label="follower")
     ax.plot(*profile.centre, "k+", ms=10)
     ax.set_aspect("equal")
     ax.grid(True, lw=0.3)
     ax.set_xlabel("x, mm")
     ax.set_ylabel("y, mm")
+
+    def move(phi: float) -> list:
+        q = at(phi)
+        cam_patch.set_xy(q["work"])
+        pitch.set_data(q["pitch"][:, 0], q["pitch"][:, 1])
+        moved = [cam_patch, pitch, point, arm]
+        if outer is not None:
+            outer.set_data(q["outer"][:, 0], q["outer"][:, 1])
+            moved.append(outer)
+        if roller is not None:
+            roller.set_center(q["A"])
+            moved.append(roller)
+        point.set_data([q["A"][0]], [q["A"][1]])
+        arm.set_data(q["arm"][:, 0], q["arm"][:, 1])
+        return moved
+
+    return move

@@ -31,7 +31,7 @@ from laws.units import TWO_PI, rpm_to_omega
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
            "plot_forces", "picture", "PICTURES", "NEEDS", "missing", "no_forces", "plot_contact", "no_contact",
            "no_vibration", "plot_vibration",
-           "animate_profile", "save", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
+           "animate_profile", "save", "fix_layout", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
 A4_WIDTH_IN = 7.5
@@ -115,15 +115,29 @@ def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0,
     return refit()
 
 
+def fix_layout(fig):
+    """Keep the positions ``fig``'s constrained layout computed when it was last drawn: its later draws (another
+    format, the frames of an animation) skip the layout, which costs a third of a draw. Returns ``fig``; call it
+    once the figure's content and size are final and it was drawn."""
+    if fig.get_layout_engine() is not None:
+        fig.set_layout_engine("none")
+    return fig
+
+
 def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
-    """Write ``fig`` as ``stem.png`` and ``stem.svg``, each whole or not at all."""
+    """Write ``fig`` as ``stem.png`` and ``stem.svg``, each whole or not at all.
+
+    The layout is computed by the first format's drawing and kept for the others (:func:`fix_layout`): the
+    figure is final when it is saved."""
     from cams.io.files import atomic_write
 
     stem = Path(stem)
     out = []
-    for ext in formats:
+    for k, ext in enumerate(formats):
         target = stem.with_suffix(f".{ext}")
         out.append(atomic_write(target, "--out", partial(fig.savefig, format=ext, dpi=150)))
+        if k == 0:
+            fix_layout(fig)
     return out
 
 
@@ -547,11 +561,12 @@ def plot_contact(cam):
     return fig
 
 
-def _draw(ax, cam, profile, phi: float):
-    """The cam turned to ``phi`` with its follower, as its face draws it (:mod:`cams.present.faces`)."""
+def _draw(ax, cam, profile, phi: float) -> Callable[[float], list]:
+    """The cam turned to ``phi`` with its follower, as its face draws it (:mod:`cams.present.faces`); returns the
+    drawing's ``move(phi)`` (:meth:`cams.present.faces.Presenter.draw_mechanism`)."""
     from cams.present.faces import presenter
 
-    presenter(cam).draw_mechanism(ax, cam, profile, phi)
+    return presenter(cam).draw_mechanism(ax, cam, profile, phi)
 
 
 def plot_profile(cam, *, phi: float | None = None):
@@ -597,29 +612,56 @@ def _animation_box(cam, profile) -> tuple[np.ndarray, np.ndarray]:
 
 def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = "",
                     progress: Callable[[int, int], None] | None = None) -> Path:
-    """One turn of the cam with its follower as an animated GIF (Pillow writer).
+    """One turn of the cam with its follower as an animated GIF (Pillow).
 
-    ``title`` (:meth:`cams.assess.Assessment.title`) marks a failing cam's animation; ``progress`` is called as
+    The mechanism is drawn once, its layout fixed, the still parts (axes, grid, base circle, centre) rendered
+    once; each frame puts back that background, moves the moving parts (:meth:`cams.present.faces.Presenter.
+    draw_mechanism`'s ``move``) and draws them and the angle's title alone. ``title``
+    (:meth:`cams.assess.Assessment.title`) marks a failing cam's animation; ``progress`` is called as
     ``progress(frames_written, frames)`` after each frame.
     """
-    from matplotlib.animation import FuncAnimation, PillowWriter
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from PIL import Image
 
     profile = cam.profile
     fig = mark_failing(_figure(w=5.0, h=5.0), title)
+    canvas = FigureCanvasAgg(fig)
     ax = fig.add_subplot()
     lo, hi = _animation_box(cam, profile)
-
-    def frame(k):
-        ax.clear()
-        _draw(ax, cam, profile, TWO_PI * k / frames)
-        ax.set_xlim(lo[0], hi[0])
-        ax.set_ylim(lo[1], hi[1])
-        ax.set_title(f"φ = {360 * k / frames:.0f}°")
-
-    anim = FuncAnimation(fig, frame, frames=frames)
+    move = _draw(ax, cam, profile, 0.0)
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    angle = ax.set_title("φ = 0°")
+    fig.draw_without_rendering()  # the constrained layout, once: every frame has the same decorations
+    fix_layout(fig)
+    # each frame draws what lies in the axes, the grid among it at its own depth, as the axes would (by zorder,
+    # stably): the still parts too (the base circle, the centre), lest the turned cam cover them
+    inside = [*ax.patches, *ax.lines, *ax.collections]
+    grid = [t.gridline for axis in (ax.xaxis, ax.yaxis) for t in axis.get_major_ticks() if t.gridline.get_visible()]
+    depth = {id(g): ax.xaxis.get_zorder() for g in grid}
+    order = sorted([*inside, *grid], key=lambda a: depth.get(id(a), a.get_zorder()))
+    for a in [*inside, angle]:
+        a.set_animated(True)
+    for g in grid:
+        g.set_visible(False)
+    canvas.draw()  # the background: the figure, the axes' frame, ticks and labels
+    background = canvas.copy_from_bbox(fig.bbox)
+    for g in grid:
+        g.set_visible(True)
+    renderer = canvas.get_renderer()
+    images = []
+    for k in range(frames):
+        canvas.restore_region(background)
+        move(TWO_PI * k / frames)
+        angle.set_text(f"φ = {360 * k / frames:.0f}°")
+        for a in [*order, angle]:
+            a.draw(renderer)
+        images.append(Image.frombuffer("RGBA", canvas.get_width_height(), bytes(canvas.buffer_rgba()),
+                                       "raw", "RGBA", 0, 1))
+        if progress is not None:
+            progress(k + 1, frames)
     path = Path(path)
-    said = None if progress is None else (lambda k, n: progress(k + 1, n))
-    anim.save(str(path), writer=PillowWriter(fps=fps), progress_callback=said)
+    images[0].save(path, format="GIF", save_all=True, append_images=images[1:], duration=int(1000 / fps), loop=0)
     return path
 
 

@@ -200,8 +200,11 @@ def _svg(fig) -> tuple[bytes, float, float]:
     """
     import re
 
+    from cams.present.plots import fix_layout
+
     buf = io.BytesIO()
     fig.savefig(buf, format="svg", bbox_inches="tight", pad_inches=0.04)
+    fix_layout(fig)  # the figure is final: a later drawing keeps this layout
     svg = buf.getvalue()
     head = svg[:svg.index(b"<svg") + 400].decode("utf-8", "replace")
     w, h = (float(re.search(rf'{k}="([0-9.]+)pt"', head).group(1)) for k in ("width", "height"))  # type: ignore[union-attr]
@@ -214,6 +217,11 @@ def render_pdf(data: dict, pictures: list[tuple[str, object]]) -> bytes:
     Each picture is embedded as SVG (vector), as wide as the text (174 mm on A4 with 18 mm margins), or less when
     that would make it taller than the page holds.
     """
+    return _typeset(data, [(title, *_svg(fig)) for title, fig in pictures])
+
+
+def _typeset(data: dict, svgs: list[tuple[str, bytes, float, float]]) -> bytes:
+    """:func:`render_pdf` of pictures already drawn as SVG: ``(title, svg, width pt, height pt)``."""
     import tempfile
 
     import matplotlib
@@ -223,9 +231,8 @@ def render_pdf(data: dict, pictures: list[tuple[str, object]]) -> bytes:
     with tempfile.TemporaryDirectory(prefix="cams-report-") as tmp:
         root = Path(tmp)
         pics = []
-        for k, (title, fig) in enumerate(pictures):
+        for k, (title, svg, w_pt, h_pt) in enumerate(svgs):
             name = f"picture{k}.svg"
-            svg, w_pt, h_pt = _svg(fig)
             (root / name).write_bytes(svg)
             width = min(text_w, PICTURE_MAX_H_MM * w_pt / h_pt)
             pics.append({"title": title, "file": name, "width": round(width, 3), "aspect": h_pt / w_pt})
@@ -244,8 +251,8 @@ def render_pdf(data: dict, pictures: list[tuple[str, object]]) -> bytes:
 def write_report(cam, out: str | Path, *, source: str | Path | None = None) -> tuple[Path, Path]:
     """Write ``report.html`` and ``report.pdf`` for ``cam`` into folder ``out``.
 
-    ``source`` is the design file shown in the PDF's title block. Returns the two paths. Pictures are drawn once
-    and used by both files.
+    ``source`` is the design file shown in the PDF's title block. Returns the two paths. Pictures are drawn once,
+    as SVG (vector, their text as paths), and used by both files.
     """
     from cams.io.files import atomic_write, ensure_folder
 
@@ -253,9 +260,10 @@ def write_report(cam, out: str | Path, *, source: str | Path | None = None) -> t
     sections = report_sections(cam)
     figs = _figures(cam)
     data = report_data(cam, source=source, sections=sections)
+    svgs = [(title, *_svg(fig)) for title, fig in figs]
 
     def write_pdf(tmp):
-        Path(tmp).write_bytes(render_pdf(data, figs))
+        Path(tmp).write_bytes(_typeset(data, svgs))
 
     def write_html(tmp):
         verdict = ("PASS: verified and buildable" if data["pass"]
@@ -275,12 +283,10 @@ def write_report(cam, out: str | Path, *, source: str | Path | None = None) -> t
             parts.append(f"<section><h2>{html.escape(title)}</h2><table>")
             parts += [f"<tr><td>{html.escape(a)}</td><td>{html.escape(b)}</td></tr>" for a, b in rows]
             parts.append("</table></section>")
-        for title, fig in figs:
-            buf = io.BytesIO()
-            fig.savefig(buf, format="png", dpi=120)
-            data64 = base64.b64encode(buf.getvalue()).decode("ascii")
+        for title, svg, _, _ in svgs:
+            data64 = base64.b64encode(svg).decode("ascii")
             parts.append(f"<section><h2>{html.escape(title)}</h2>"
-                         f"<img alt='{html.escape(title)}' src='data:image/png;base64,{data64}'></section>")
+                         f"<img alt='{html.escape(title)}' src='data:image/svg+xml;base64,{data64}'></section>")
         parts.append("</body></html>")
         Path(tmp).write_text("\n".join(parts), encoding="utf-8")
 

@@ -5,5 +5,5 @@ joints, the caps), ``conic`` the convex programs and their proven lower
 bounds, ``translating`` the translating followers' programs (roller: a
 second-order cone program; flat face: a linear one), ``rocker`` the rocker
 roller's sequential convex programming, ``design`` the driver that picks them.
-Heavy imports (cvxpy, scipy.sparse) happen inside the functions that solve.
+Heavy imports (clarabel, scipy.sparse) happen inside the functions that solve.
 """

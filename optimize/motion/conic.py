@@ -1,4 +1,4 @@
-"""A convex program in one standard form, solved by cvxpy, and its proven lower bound.
+"""A convex program in one standard form, solved by Clarabel, and its proven lower bound.
 
 The form::
 
@@ -13,7 +13,7 @@ than the solution only slows an interior-point method): the solver sees the
 bounds that ``enforce`` marks (fixed variables, a centre's side); the lower
 bound holds over the whole box all the same.
 
-The solver (Clarabel, through cvxpy) returns multipliers that satisfy the
+The solver (Clarabel, called directly) returns multipliers that satisfy the
 optimality conditions only to its tolerance, so its objective value is not a
 bound. :func:`lower_bound` turns any multipliers into a proven one by weak
 duality: with ``lam >= 0`` and ``(mu0, mu)`` in the (self-dual) cone, for every
@@ -31,7 +31,6 @@ solver's accuracy, the result is a lower bound; its accuracy sets how tight.
 
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -99,7 +98,14 @@ class Solution:
 
 
 def solve(prog: ConicProgram) -> Solution:
-    """Solve ``prog`` with Clarabel through cvxpy.
+    """Solve ``prog`` with Clarabel, called directly (no modelling layer: cvxpy's import and its
+    canonicalization cost more than the solve).
+
+    The rows are handed over in Clarabel's form ``A x + s = b``, ``s`` in a product of cones: the equalities and
+    the fixed variables (zero cone), the inequalities and the enforced bounds (nonnegative cone), each
+    second-order cone as ``s = (a @ v + a0, F @ v + f)``. With that form the multipliers Clarabel returns satisfy
+    ``cost + G' lam + A' nu - sum_k (mu0_k a_k + F_k' mu_k) = 0`` at its tolerance, as :func:`lower_bound`
+    takes them.
 
     Returns a :class:`Solution` whose status is ``"infeasible"`` when the
     solver proves the program infeasible (no point, no multipliers), else
@@ -108,55 +114,70 @@ def solve(prog: ConicProgram) -> Solution:
     Raises
     ------
     SolverFailure
-        Any other ending (numerical trouble, unbounded: the box forbids it).
+        Any other ending (numerical trouble after every setting of :data:`RETRIES`, unbounded: the box forbids
+        it).
     """
-    import cvxpy as cp
+    import clarabel  # type: ignore[import-untyped]  # it ships no types
     import scipy.sparse as sp
 
-    v = cp.Variable(prog.n)
-    cons: list[cp.constraints.constraint.Constraint] = []
+    n = prog.n
     # rows scaled to unit norm: the derivatives' rows carry powers of the spans' count
     gs = _row_norms(prog.G)
     As = _row_norms(prog.A)
-    lin = (sp.csr_matrix(prog.G / gs[:, None]) @ v <= prog.h / gs) if prog.G.shape[0] else None
-    eq = (sp.csr_matrix(prog.A / As[:, None]) @ v == prog.b / As) if prog.A.shape[0] else None
-    cons += [c for c in (lin, eq) if c is not None]
-    socs = [cp.SOC(prog.cones[k].a @ v + prog.cones[k].a0, sp.csr_matrix(prog.cones[k].F) @ v + prog.cones[k].f)
-            for k in range(len(prog.cones))]
-    cons += socs
-    mask = np.zeros(prog.n, bool) if prog.enforce is None else prog.enforce
-    fixed = mask & (prog.lo == prog.hi)
-    ranged = mask & ~fixed
-    if fixed.any():
-        cons.append(v[np.flatnonzero(fixed)] == prog.lo[fixed])
-    if ranged.any():
-        idx = np.flatnonzero(ranged)
-        cons += [v[idx] >= prog.lo[ranged], v[idx] <= prog.hi[ranged]]
-    problem = cp.Problem(cp.Minimize(prog.cost @ v), cons)
+    mask = np.zeros(n, bool) if prog.enforce is None else prog.enforce
+    fixed = np.flatnonzero(mask & (prog.lo == prog.hi))
+    ranged = np.flatnonzero(mask & (prog.lo != prog.hi))
+    eye = np.eye(n)
+    zero_rows = [prog.A / As[:, None], eye[fixed]]
+    zero_rhs = [prog.b / As, prog.lo[fixed]]
+    lin_rows = [prog.G / gs[:, None], -eye[ranged], eye[ranged]]
+    lin_rhs = [prog.h / gs, -prog.lo[ranged], prog.hi[ranged]]
+    cone_rows = [np.vstack([-c.a[None], -c.F]) for c in prog.cones]
+    cone_rhs = [np.concatenate([[c.a0], c.f]) for c in prog.cones]
+    n_eq, n_fix = prog.A.shape[0], fixed.size
+    n_zero = n_eq + n_fix
+    n_lin = prog.G.shape[0] + 2 * ranged.size
+    M = sp.csc_matrix(np.vstack([*zero_rows, *lin_rows, *cone_rows]))
+    rhs = np.concatenate([*zero_rhs, *lin_rhs, *cone_rhs]).astype(float)
+    cones = []
+    if n_zero:
+        cones.append(clarabel.ZeroConeT(n_zero))
+    if n_lin:
+        cones.append(clarabel.NonnegativeConeT(n_lin))
+    cones += [clarabel.SecondOrderConeT(r.shape[0]) for r in cone_rows]
+    P = sp.csc_matrix((n, n))
+    q = np.asarray(prog.cost, float)
     for settings in RETRIES:
-        try:
-            with warnings.catch_warnings():
-                # "optimal_inaccurate" is kept in the status; no answer rests on the solver's accuracy (the bound
-                # is proven from its multipliers, the laws are checked on themselves): its warning is not the user's
-                warnings.simplefilter("ignore", UserWarning)
-                problem.solve(solver="CLARABEL", **settings)
+        options = clarabel.DefaultSettings()
+        options.verbose = False
+        for key, value in settings.items():
+            setattr(options, key, value)
+        sol = clarabel.DefaultSolver(P, q, M, rhs, cones, options).solve()
+        status = str(sol.status)
+        if status not in _RETRY:
             break
-        except cp.error.SolverError:
-            continue
     else:
         raise SolverFailure("solver error")
-    status = problem.status
-    if status in ("infeasible", "infeasible_inaccurate"):
-        return Solution("infeasible", np.full(prog.n, np.nan), np.inf, np.zeros(0), np.zeros(0))
-    if status not in ("optimal", "optimal_inaccurate") or v.value is None:
-        raise SolverFailure(str(status))
-    lam = np.maximum(np.asarray(lin.dual_value, float).ravel(), 0.0) / gs if lin is not None else np.zeros(0)
-    nu = np.asarray(eq.dual_value, float).ravel() / As if eq is not None else np.zeros(0)
+    if status in ("PrimalInfeasible", "AlmostPrimalInfeasible"):
+        return Solution("infeasible", np.full(n, np.nan), np.inf, np.zeros(0), np.zeros(0))
+    if status not in _OPTIMAL:
+        raise SolverFailure(status)
+    z = np.asarray(sol.z, float)
+    nu = z[:n_eq] / As
+    lam = np.maximum(z[n_zero:n_zero + prog.G.shape[0]], 0.0) / gs
     mu = []
-    for c in socs:
-        d0, d1 = c.dual_value
-        mu.append((float(np.ravel(d0)[0]), np.asarray(d1, float).ravel()))
-    return Solution(str(status), np.asarray(v.value, float), float(problem.value), lam, nu, tuple(mu))
+    at = n_zero + n_lin
+    for r in cone_rows:
+        mu.append((float(z[at]), z[at + 1:at + r.shape[0]].copy()))
+        at += r.shape[0]
+    x = np.asarray(sol.x, float)
+    return Solution(_OPTIMAL[status], x, float(sol.obj_val), lam, nu, tuple(mu))
+
+
+#: Clarabel's endings with a solution, as the statuses :class:`Solution` keeps.
+_OPTIMAL = {"Solved": "optimal", "AlmostSolved": "optimal_inaccurate"}
+#: Clarabel's endings on numerical trouble: the next settings of :data:`RETRIES` are tried.
+_RETRY = ("NumericalError", "InsufficientProgress", "Unsolved")
 
 
 def _row_norms(M: np.ndarray) -> np.ndarray:

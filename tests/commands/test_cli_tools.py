@@ -27,7 +27,7 @@ def test_report_html_and_pdf(tmp_path, capsys, example):
     rc = main(["report", str(EXAMPLES / example), "--out", str(tmp_path)])
     assert rc == 0
     html = (tmp_path / "report.html").read_text()
-    for word in ("Inputs", "Results", "Checks", "base radius R0", "data:image/png;base64,"):
+    for word in ("Inputs", "Results", "Checks", "base radius R0", "data:image/svg+xml;base64,"):
         assert word in html
     import pdfplumber  # the test extra installs it
 
@@ -46,7 +46,7 @@ def test_report_html_and_pdf(tmp_path, capsys, example):
     assert pages >= 2 and text.split("\n")[1].startswith("PASS")  # after the running header: the banner
     for title in ("Inputs", "Results", "Blank", "Lift table", "Checks", "Motion diagrams", "Cam profile"):
         assert title in text
-    assert html.count("data:image/png;base64,") == pictures
+    assert html.count("data:image/svg+xml;base64,") == pictures
     if shutil.which("pdftoppm"):
         r = subprocess.run(["pdftoppm", "-png", "-r", "30", str(tmp_path / "report.pdf"), str(tmp_path / "pg")],
                            capture_output=True, text=True)

@@ -73,3 +73,37 @@ def test_progress_library_loads_only_to_draw_a_bar():
             f"with contextlib.redirect_stdout(io.StringIO()):\n"
             f"    assert main(['solve', {str(EXAMPLES / 'rocker_force.toml')!r}]) == 0\n")
     assert _loaded_after(code, ("tqdm",)) == []
+
+
+def test_named_laws_peaks_and_the_zone_picture_need_no_scipy_optimize():
+    """A law's peak (laws.characteristics) and the R0-L trade-off of the zone picture (optimize.circle) are
+    refined in numpy: the law table (every named law's peaks, the motion design's caps) and a rocker's trade-off
+    load no scipy.optimize."""
+    code = (f"from laws.characteristics import law_table\nlaw_table()\n"
+            f"from cams.cam import Cam\nCam.from_file({str(EXAMPLES / 'rocker_force.toml')!r}).tradeoff\n")
+    assert _loaded_after(code, ("scipy.optimize",)) == []
+
+
+def test_the_command_line_runs_blas_on_one_thread_unless_told():
+    """``cams.cli.main`` sets the BLAS thread counts to 1 when numpy is not loaded yet and the user set none;
+    a count the user set is kept."""
+    code = ("import os, contextlib, io\nfrom cams.cli import main\n"
+            "with contextlib.redirect_stdout(io.StringIO()):\n    main(['laws'])\n"
+            "print(os.environ['OPENBLAS_NUM_THREADS'], os.environ['OMP_NUM_THREADS'])")
+    import os
+
+    env = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")}
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env)
+    assert r.stdout.split() == ["1", "1"]
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
+                       env={**env, "OPENBLAS_NUM_THREADS": "2"})
+    assert r.stdout.split() == ["2", "1"]
+
+
+def test_the_motion_design_solves_without_cvxpy_or_scipy_optimize():
+    """``cams solve`` of the motion-design example (its programs solved by Clarabel, called directly) loads
+    neither cvxpy (0.8 s to import, and it brings scipy.optimize and scipy.stats) nor scipy.optimize."""
+    code = (f"import contextlib, io\nfrom cams.cli import main\n"
+            f"with contextlib.redirect_stdout(io.StringIO()):\n"
+            f"    assert main(['solve', {str(EXAMPLES / 'translating_designed_rise.toml')!r}]) == 0\n")
+    assert _loaded_after(code, ("cvxpy", "scipy.optimize", "scipy.stats", "matplotlib")) == []

@@ -1,0 +1,49 @@
+"""The animation moves the mechanism's artists in place (cams.present.mechanism's ``move``): after a move to a cam
+angle, every artist holds what a fresh drawing at that angle holds."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from cams.cam import Cam
+from tests.conftest import EXAMPLES
+
+
+def _data(ax) -> list[np.ndarray]:
+    """What each artist of ``ax`` draws: a line's points, a polygon's vertices, a circle's centre and radius."""
+    out = []
+    for a in [*ax.patches, *ax.lines]:
+        if hasattr(a, "get_xydata"):
+            out.append(np.asarray(a.get_xydata(), float))
+        elif hasattr(a, "get_xy") and not hasattr(a, "get_radius"):
+            out.append(np.asarray(a.get_xy(), float))
+        else:
+            out.append(np.array([*a.get_center(), a.get_radius()], float))
+    return out
+
+
+@pytest.mark.parametrize(
+    "example", ["rocker_force.toml", "translating_flat.toml", "rocker_flat.toml", "translating_force.toml"]
+)
+def test_move_draws_what_a_fresh_drawing_draws(example):
+    from matplotlib.figure import Figure
+
+    from cams.present.faces import presenter
+
+    cam = Cam.from_file(EXAMPLES / example)
+    draw = presenter(cam).draw_mechanism
+    phi0, phi1 = 0.3, 2.1  # radians, inside different phases
+    moved_ax = Figure().add_subplot()
+    move = draw(moved_ax, cam, cam.profile, phi0)
+    before = _data(moved_ax)
+    moved = move(phi1)
+    fresh_ax = Figure().add_subplot()
+    draw(fresh_ax, cam, cam.profile, phi1)
+    after, fresh = _data(moved_ax), _data(fresh_ax)
+    assert len(after) == len(fresh)
+    for x, y in zip(after, fresh, strict=True):
+        np.testing.assert_allclose(x, y, rtol=0, atol=1e-12)
+    # the artists that move are the ones whose data changed, and the cam itself is among them
+    changed = [not np.array_equal(x, y) for x, y in zip(before, after, strict=True)]
+    assert sum(changed) == len(moved) >= 3
