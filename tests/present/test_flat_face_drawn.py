@@ -120,12 +120,11 @@ def test_the_profile_stays_behind_the_face_and_touches_it(case):
         np.testing.assert_allclose(n0, [0.0, 1.0], rtol=0, atol=1e-12)
     else:
         np.testing.assert_allclose(P, [-raw["follower"]["centre_distance"], 0.0], rtol=0, atol=1e-9 * size)
-    least = []
+    gaps = []
     for phi in np.radians(np.arange(0.0, 360.0, 0.5)):
         n, p, _ = _face(cam, raw, phi)
-        gap = p - _rot(prof.work, _eps(raw) * phi) @ n  # >= 0: on the cam's side of the face
-        least.append(gap.min())
-    least = np.array(least)
+        gaps.append(float(np.min(p - _rot(prof.work, _eps(raw) * phi) @ n)))  # >= 0: on the cam's side
+    least = np.array(gaps)
     assert least.min() >= -1e-9 * size  # nothing beyond the face
     assert least.max() <= 2 * prof.tolerance  # touching (the samples lie within the chord tolerance of the curve)
 
