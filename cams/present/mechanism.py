@@ -12,10 +12,11 @@ from typing import Any
 
 import numpy as np
 
+from cams.kinematics.flat import flat_parts
 from cams.kinematics.inversion import smallest_cam_radius, to_fixed_frame
 from laws.units import TWO_PI
 
-__all__ = ["draw_roller_mechanism", "draw_flat_mechanism", "add_polygon", "radii_label"]
+__all__ = ["draw_roller_mechanism", "draw_flat_mechanism", "add_polygon", "radii_label", "FACE_WIDTH_PT"]
 
 
 def radii_label(R0: float, cam_radius: float | None) -> str:
@@ -47,30 +48,58 @@ def _cam_in_fixed_frame(profile, pts: np.ndarray, phi: float) -> np.ndarray:
     return to_fixed_frame(pts, profile.centre, profile.cam_sense, phi)
 
 
+#: The flat face's stroke width (points): the stroke is drawn beside the face line, on the follower's side.
+FACE_WIDTH_PT = 3.0
+
+
 def draw_flat_mechanism(ax, cam, profile, phi: float):
     """A flat-faced follower's cam (turned to ``phi``) and its face, in the frame of ``FlatFaceSolution.centre``.
+
+    The face's line (the artist's data) is the face itself, where the motion law puts it
+    (:meth:`optimize.flat.FlatFaceSolution.face_line`); its stroke, and the stem's or arm's, is shifted by half
+    its width (:data:`FACE_WIDTH_PT`) along the face's normal away from the cam, so that the stroke's edge on the
+    cam's side is the face line: the drawn face touches the cam's outline and never covers it. The contact point
+    is the exact one at ``phi`` (:func:`cams.kinematics.flat.flat_parts`' contact position along the face line).
 
     Returns ``move(phi)``, which turns the drawing to another cam angle (radians) by updating the moving
     artists' data in place (the cam, the face and its stem or arm, the contact point) and returns them.
     """
     from matplotlib.patches import Circle
+    from matplotlib.transforms import ScaledTranslation
 
     d = cam.design
     sol = cam.solution
+    prog = d.program
     centre = sol.centre
     lo, hi = sol.face_range
     margin = 0.1 * max(hi - lo, 1e-9)
     translating = d.follower.kind == "translating"
+    contact_at = flat_parts(d, sol.R0)[1]  # the contact's position along the face, per phase
+
+    def position(phi: float) -> float:
+        """The contact's position along the face at cam angle ``phi`` (a phase joint: the later phase's)."""
+        x = float(phi) % TWO_PI
+        i = int(np.clip(np.searchsorted(prog.starts, x, side="right") - 1, 0, len(prog.phases) - 1))
+        span = prog.phases[i].angle
+        u = min(max((x - prog.starts[i]) / span, 0.0), 1.0) if span > 0 else 0.0
+        return float(np.asarray(contact_at(i, np.array([u]))).reshape(-1)[0])
 
     def at(phi: float) -> dict[str, Any]:
         origin, direction = (v[0] for v in sol.face_line(np.array([phi])))
-        k = int(np.argmin(np.abs((profile.phi - phi + np.pi) % TWO_PI - np.pi)))
+        normal = np.array([-direction[1], direction[0]])
+        normal *= np.sign(normal @ (origin - centre))  # away from the cam: the face is p > 0 from its centre
         near = origin + (lo - margin) * direction
         return {"work": to_fixed_frame(profile.work, centre, d.cam_sense, phi),
                 "face": origin + np.outer([lo - margin, hi + margin], direction),
-                "contact": to_fixed_frame(profile.work[k:k + 1], centre, d.cam_sense, profile.phi[k])[0],
+                "contact": origin + position(phi) * direction,
+                "normal": normal,
                 "stem": (np.array([origin, origin + np.array([0.0, 0.6 * d.scale])]) if translating
                          else np.array([[0.0, 0.0], origin, near]))}
+
+    def beside(normal: np.ndarray):
+        """The data's transform shifted by half the face's stroke along ``normal`` (display units)."""
+        half = 0.5 * FACE_WIDTH_PT / 72.0  # inches
+        return ax.transData + ScaledTranslation(half * normal[0], half * normal[1], ax.figure.dpi_scale_trans)
 
     p = at(phi)
     cam_patch = add_polygon(ax, p["work"], fc="#e2e8f0", ec="#1a202c", lw=1.2, label="cam profile")
@@ -78,14 +107,16 @@ def draw_flat_mechanism(ax, cam, profile, phi: float):
                         label=radii_label(profile.R0, None)))
     # the face and its stem or arm: one body, one legend entry
     body = "follower (flat face and stem)" if translating else "rocker (flat face and arm)"
-    (face,) = ax.plot(p["face"][:, 0], p["face"][:, 1], color="#c53030", lw=3, solid_capstyle="butt", label=body)
+    (face,) = ax.plot(p["face"][:, 0], p["face"][:, 1], color="#c53030", lw=FACE_WIDTH_PT, solid_capstyle="butt",
+                      label=body, transform=beside(p["normal"]))
     (contact,) = ax.plot(*p["contact"], "o", color="#c53030", ms=3)
     if translating:
-        (stem,) = ax.plot(p["stem"][:, 0], p["stem"][:, 1], color="#c53030", lw=3, label=body)
+        (stem,) = ax.plot(p["stem"][:, 0], p["stem"][:, 1], color="#c53030", lw=FACE_WIDTH_PT, label=body,
+                          transform=beside(p["normal"]))
         ax.axvline(0.0, color="k", lw=0.6, ls="-.")
     else:
-        (stem,) = ax.plot(p["stem"][:, 0], p["stem"][:, 1], color="#c53030", lw=3, solid_capstyle="round",
-                          label=body)
+        (stem,) = ax.plot(p["stem"][:, 0], p["stem"][:, 1], color="#c53030", lw=FACE_WIDTH_PT,
+                          solid_capstyle="round", label=body, transform=beside(p["normal"]))
         ax.plot(0, 0, "ko", ms=5)
     ax.plot(*centre, "k+", ms=10)
     ax.set_aspect("equal")
@@ -99,6 +130,8 @@ def draw_flat_mechanism(ax, cam, profile, phi: float):
         face.set_data(q["face"][:, 0], q["face"][:, 1])
         contact.set_data([q["contact"][0]], [q["contact"][1]])
         stem.set_data(q["stem"][:, 0], q["stem"][:, 1])
+        for a in (face, stem):
+            a.set_transform(beside(q["normal"]))
         return [cam_patch, face, contact, stem]
 
     return move
