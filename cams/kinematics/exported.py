@@ -142,6 +142,7 @@ class SplinePiece:
 
     coeffs: np.ndarray
     _d: Any = field(init=False, repr=False, compare=False, default=None)
+    _rows: Any = field(init=False, repr=False, compare=False, default=None)
 
     def __post_init__(self) -> None:
         c = np.asarray(self.coeffs, float)
@@ -150,12 +151,17 @@ class SplinePiece:
         c1 = (c * p)[:-1]  # the power basis differentiated, highest power first
         c2 = (c1 * p[1:])[:-1] if deg > 1 else np.zeros((1, 3))
         object.__setattr__(self, "coeffs", c)
-        object.__setattr__(self, "_d", (c, c1 if deg > 0 else np.zeros((1, 3)), c2))
+        d = (c, c1 if deg > 0 else np.zeros((1, 3)), c2)
+        object.__setattr__(self, "_d", d)
+        # the same coefficients as Python floats: one number t is evaluated without numpy's per-call overhead
+        object.__setattr__(self, "_rows", tuple(tuple(tuple(float(x) for x in row) for row in k) for k in d))
 
     def derivatives(self, t):
         """``B(t), B'(t), B''(t)`` (cam frame, length unit per unit of ``t``), the rational quotient rule; ``t`` a
         number (arrays of shape (2,)) or an array (shape ``t.shape + (2,)``)."""
         t = np.asarray(t, float)
+        if t.ndim == 0:
+            return self._derivatives_at(float(t))
         h = []
         for c in self._d:  # Horner's scheme on the three homogeneous coordinates at once
             y = np.broadcast_to(c[0], (*t.shape, 3)).copy()
@@ -167,6 +173,21 @@ class SplinePiece:
         b1 = (h[1][..., :2] - w1 * b) / w
         b2 = (h[2][..., :2] - 2 * w1 * b1 - w2 * b) / w
         return b, b1, b2
+
+    def _derivatives_at(self, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`derivatives` at one number ``t``: the same operations in the same order on Python floats (the
+        same IEEE double results), for the root searches that call it one ``t`` at a time."""
+        h = []
+        for rows in self._rows:
+            x, y, z = rows[0]
+            for rx, ry, rz in rows[1:]:
+                x, y, z = x * t + rx, y * t + ry, z * t + rz
+            h.append((x, y, z))
+        (X, Y, w), (X1, Y1, w1), (X2, Y2, w2) = h
+        bx, by = X / w, Y / w
+        b1x, b1y = (X1 - w1 * bx) / w, (Y1 - w1 * by) / w
+        b2x, b2y = (X2 - 2 * w1 * b1x - w2 * bx) / w, (Y2 - 2 * w1 * b1y - w2 * by) / w
+        return np.array([bx, by]), np.array([b1x, b1y]), np.array([b2x, b2y])
 
     @property
     def ends(self) -> tuple[np.ndarray, np.ndarray]:
