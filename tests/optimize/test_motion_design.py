@@ -8,9 +8,6 @@ Design and Manufacturing Handbook, ch. 3).
 
 from __future__ import annotations
 
-import subprocess
-import sys
-
 import numpy as np
 import pytest
 
@@ -22,6 +19,7 @@ from cams.solve import solve
 from laws.errors import InputError
 from laws.standard import Parabolic, Poly345, Poly4567
 from optimize.motion.design import design_laws
+from tests.inprocess import cams_cli
 
 EXAMPLE = "examples/translating_force.toml"
 
@@ -151,7 +149,7 @@ def test_command_line_bad_cap_exits_2(tmp_path):
     text = open(EXAMPLE, encoding="utf-8").read() + '\n[optimize]\nmax_Ca = 3.5\ncontinuity = 1\ndegree = 3\n'
     p = tmp_path / "bad.toml"
     p.write_text(text, encoding="utf-8")
-    r = subprocess.run([sys.executable, "-m", "cams.cli", "solve", str(p)], capture_output=True, text=True)
+    r = cams_cli("solve", p)
     assert r.returncode == 2
     assert r.stderr.count("\n") == 1 and "optimize.max_Ca" in r.stderr
 
@@ -253,7 +251,8 @@ def _designed_file(tmp_path, extra: str = "", roller: float | None = None):
 
 
 def _cli(*args):
-    return subprocess.run([sys.executable, "-m", "cams.cli", *map(str, args)], capture_output=True, text=True)
+    """``cams ARGS`` in this process (tests/inprocess.py): exit code, stdout, stderr."""
+    return cams_cli(*args)
 
 
 def test_saved_design_solves_to_the_same_cam(tmp_path):
