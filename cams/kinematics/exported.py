@@ -331,6 +331,18 @@ class _Elements:
         self.bc = np.array([b[0] for b in bounds]).reshape(-1, 2)
         self.br = np.array([b[1] for b in bounds])
         self.size = float(np.max(np.abs(self.joints)))
+        # the arcs' start, sense and span as arrays: the arcs whose span holds a direction found at once
+        # (arcs_containing, Arc.contains's arithmetic element by element)
+        arcs = [cast(Arc, self.items[i]) for i in self.arcs]
+        self.arc_start = np.array([float(a.start) for a in arcs])
+        self.arc_sense = np.array([float(a.sense) for a in arcs])
+        self.arc_span = np.array([a.span for a in arcs])
+
+    def arcs_containing(self, angle: float) -> np.ndarray:
+        """The indices (into ``items``, in order) of the arcs whose span holds the direction ``angle``
+        (radians), ends included: :meth:`Arc.contains` of every arc."""
+        d = (self.arc_sense * (angle - self.arc_start)) % (2 * np.pi)
+        return self.arcs[(d <= self.arc_span + 1e-13) | (d >= 2 * np.pi - 1e-13)]
 
 
 class _Paths:
@@ -693,11 +705,10 @@ def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
     hv = els.joints @ m  # every joint: between two arcs that a rounding kink leaves apart, a joint is the support
     j = int(np.argmax(hv))
     take(float(hv[j]), els.joints[j], 0.0, j)
-    for i in els.arcs:
+    for i in els.arcs_containing(theta):
         arc = cast(Arc, els.items[i])
-        if arc.contains(theta):
-            c = np.asarray(arc.centre, float)
-            take(float(c @ m) + arc.radius, c + arc.radius * m, arc.radius, int(i))
+        c = np.asarray(arc.centre, float)
+        take(float(c @ m) + arc.radius, c + arc.radius * m, arc.radius, int(i))
     for i in els.splines:
         piece = cast(SplinePiece, els.items[i])
         c, rad = els.bc[i], els.br[i]
