@@ -143,6 +143,7 @@ class SplinePiece:
     coeffs: np.ndarray
     _d: Any = field(init=False, repr=False, compare=False, default=None)
     _rows: Any = field(init=False, repr=False, compare=False, default=None)
+    _grid: Any = field(init=False, repr=False, compare=False, default=None)
 
     def __post_init__(self) -> None:
         c = np.asarray(self.coeffs, float)
@@ -189,6 +190,15 @@ class SplinePiece:
         b2x, b2y = (X2 - 2 * w1 * b1x - w2 * bx) / w, (Y2 - 2 * w1 * b1y - w2 * by) / w
         return np.array([bx, by]), np.array([b1x, b1y]), np.array([b2x, b2y])
 
+    def grid(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``t`` at 17 points evenly over ``[0, 1]``, ``B(t)`` and the unit left normal there: the grid on which
+        the roots along the piece are bracketed, computed once per piece (it depends on nothing else)."""
+        if self._grid is None:
+            ts = np.linspace(0.0, 1.0, 17)
+            b, b1, _ = self.derivatives(ts)
+            object.__setattr__(self, "_grid", (ts, b, _unit_normal(b1)))
+        return self._grid
+
     @property
     def ends(self) -> tuple[np.ndarray, np.ndarray]:
         return self.derivatives(0.0)[0], self.derivatives(1.0)[0]
@@ -202,6 +212,11 @@ class SplinePiece:
 
 
 Element = Line | Arc | SplinePiece
+
+
+def _unit_normal(b1: np.ndarray) -> np.ndarray:
+    """The unit left normal ``(-y', x') / |B'|`` of tangents ``b1`` (..., 2)."""
+    return np.stack([-b1[..., 1], b1[..., 0]], axis=-1) / np.hypot(b1[..., 0], b1[..., 1])[..., None]
 
 
 def check_closed(elements: list[Element], field: str = "PROFILE") -> None:
@@ -537,18 +552,17 @@ def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[t
     from scipy.optimize import brentq
 
     out = []
-    ts = np.linspace(0.0, 1.0, 17)
+    ts, grid_b, grid_n = piece.grid()
     for side in (1.0, -1.0):
 
         def offset(t, side: float = side) -> np.ndarray:
             b, b1, _ = piece.derivatives(t)
-            n = np.stack([-b1[..., 1], b1[..., 0]], axis=-1) / np.hypot(b1[..., 0], b1[..., 1])[..., None]
-            return b + side * r * n
+            return b + side * r * _unit_normal(b1)
 
         def f(t: float, offset=offset) -> float:
             return float(path.off(offset(t)))
 
-        fs = path.off(offset(ts))
+        fs = path.off(grid_b + side * r * grid_n)  # offset(ts), its grid kept by the piece
         for t0, t1, f0, f1 in zip(ts[:-1], ts[1:], fs[:-1], fs[1:], strict=True):
             if f0 == 0:
                 roots = [t0]
