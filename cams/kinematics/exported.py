@@ -142,6 +142,8 @@ class SplinePiece:
 
     coeffs: np.ndarray
     _d: Any = field(init=False, repr=False, compare=False, default=None)
+    _rows: Any = field(init=False, repr=False, compare=False, default=None)
+    _grid: Any = field(init=False, repr=False, compare=False, default=None)
 
     def __post_init__(self) -> None:
         c = np.asarray(self.coeffs, float)
@@ -150,12 +152,17 @@ class SplinePiece:
         c1 = (c * p)[:-1]  # the power basis differentiated, highest power first
         c2 = (c1 * p[1:])[:-1] if deg > 1 else np.zeros((1, 3))
         object.__setattr__(self, "coeffs", c)
-        object.__setattr__(self, "_d", (c, c1 if deg > 0 else np.zeros((1, 3)), c2))
+        d = (c, c1 if deg > 0 else np.zeros((1, 3)), c2)
+        object.__setattr__(self, "_d", d)
+        # the same coefficients as Python floats: one number t is evaluated without numpy's per-call overhead
+        object.__setattr__(self, "_rows", tuple(tuple(tuple(float(x) for x in row) for row in k) for k in d))
 
     def derivatives(self, t):
         """``B(t), B'(t), B''(t)`` (cam frame, length unit per unit of ``t``), the rational quotient rule; ``t`` a
         number (arrays of shape (2,)) or an array (shape ``t.shape + (2,)``)."""
         t = np.asarray(t, float)
+        if t.ndim == 0:
+            return self._derivatives_at(float(t))
         h = []
         for c in self._d:  # Horner's scheme on the three homogeneous coordinates at once
             y = np.broadcast_to(c[0], (*t.shape, 3)).copy()
@@ -167,6 +174,30 @@ class SplinePiece:
         b1 = (h[1][..., :2] - w1 * b) / w
         b2 = (h[2][..., :2] - 2 * w1 * b1 - w2 * b) / w
         return b, b1, b2
+
+    def _derivatives_at(self, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`derivatives` at one number ``t``: the same operations in the same order on Python floats (the
+        same IEEE double results), for the root searches that call it one ``t`` at a time."""
+        h = []
+        for rows in self._rows:
+            x, y, z = rows[0]
+            for rx, ry, rz in rows[1:]:
+                x, y, z = x * t + rx, y * t + ry, z * t + rz
+            h.append((x, y, z))
+        (X, Y, w), (X1, Y1, w1), (X2, Y2, w2) = h
+        bx, by = X / w, Y / w
+        b1x, b1y = (X1 - w1 * bx) / w, (Y1 - w1 * by) / w
+        b2x, b2y = (X2 - 2 * w1 * b1x - w2 * bx) / w, (Y2 - 2 * w1 * b1y - w2 * by) / w
+        return np.array([bx, by]), np.array([b1x, b1y]), np.array([b2x, b2y])
+
+    def grid(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``t`` at 17 points evenly over ``[0, 1]``, ``B(t)`` and the unit left normal there: the grid on which
+        the roots along the piece are bracketed, computed once per piece (it depends on nothing else)."""
+        if self._grid is None:
+            ts = np.linspace(0.0, 1.0, 17)
+            b, b1, _ = self.derivatives(ts)
+            object.__setattr__(self, "_grid", (ts, b, _unit_normal(b1)))
+        return self._grid
 
     @property
     def ends(self) -> tuple[np.ndarray, np.ndarray]:
@@ -181,6 +212,11 @@ class SplinePiece:
 
 
 Element = Line | Arc | SplinePiece
+
+
+def _unit_normal(b1: np.ndarray) -> np.ndarray:
+    """The unit left normal ``(-y', x') / |B'|`` of tangents ``b1`` (..., 2)."""
+    return np.stack([-b1[..., 1], b1[..., 0]], axis=-1) / np.hypot(b1[..., 0], b1[..., 1])[..., None]
 
 
 def check_closed(elements: list[Element], field: str = "PROFILE") -> None:
@@ -310,6 +346,18 @@ class _Elements:
         self.bc = np.array([b[0] for b in bounds]).reshape(-1, 2)
         self.br = np.array([b[1] for b in bounds])
         self.size = float(np.max(np.abs(self.joints)))
+        # the arcs' start, sense and span as arrays: the arcs whose span holds a direction found at once
+        # (arcs_containing, Arc.contains's arithmetic element by element)
+        arcs = [cast(Arc, self.items[i]) for i in self.arcs]
+        self.arc_start = np.array([float(a.start) for a in arcs])
+        self.arc_sense = np.array([float(a.sense) for a in arcs])
+        self.arc_span = np.array([a.span for a in arcs])
+
+    def arcs_containing(self, angle: float) -> np.ndarray:
+        """The indices (into ``items``, in order) of the arcs whose span holds the direction ``angle``
+        (radians), ends included: :meth:`Arc.contains` of every arc."""
+        d = (self.arc_sense * (angle - self.arc_start)) % (2 * np.pi)
+        return self.arcs[(d <= self.arc_span + 1e-13) | (d >= 2 * np.pi - 1e-13)]
 
 
 class _Paths:
@@ -504,18 +552,17 @@ def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[t
     from scipy.optimize import brentq
 
     out = []
-    ts = np.linspace(0.0, 1.0, 17)
+    ts, grid_b, grid_n = piece.grid()
     for side in (1.0, -1.0):
 
         def offset(t, side: float = side) -> np.ndarray:
             b, b1, _ = piece.derivatives(t)
-            n = np.stack([-b1[..., 1], b1[..., 0]], axis=-1) / np.hypot(b1[..., 0], b1[..., 1])[..., None]
-            return b + side * r * n
+            return b + side * r * _unit_normal(b1)
 
         def f(t: float, offset=offset) -> float:
             return float(path.off(offset(t)))
 
-        fs = path.off(offset(ts))
+        fs = path.off(grid_b + side * r * grid_n)  # offset(ts), its grid kept by the piece
         for t0, t1, f0, f1 in zip(ts[:-1], ts[1:], fs[:-1], fs[1:], strict=True):
             if f0 == 0:
                 roots = [t0]
@@ -672,11 +719,10 @@ def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
     hv = els.joints @ m  # every joint: between two arcs that a rounding kink leaves apart, a joint is the support
     j = int(np.argmax(hv))
     take(float(hv[j]), els.joints[j], 0.0, j)
-    for i in els.arcs:
+    for i in els.arcs_containing(theta):
         arc = cast(Arc, els.items[i])
-        if arc.contains(theta):
-            c = np.asarray(arc.centre, float)
-            take(float(c @ m) + arc.radius, c + arc.radius * m, arc.radius, int(i))
+        c = np.asarray(arc.centre, float)
+        take(float(c @ m) + arc.radius, c + arc.radius * m, arc.radius, int(i))
     for i in els.splines:
         piece = cast(SplinePiece, els.items[i])
         c, rad = els.bc[i], els.br[i]

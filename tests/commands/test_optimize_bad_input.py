@@ -2,8 +2,9 @@
 
 The rule: bad input prints ONE line on stderr naming the field and what is allowed, and exits 2 (never a
 traceback, a NaN or inf printed as an answer, a hang or a silently wrong answer); a design that fails a check
-exits 1; "wrote X" means X holds the data. Each test runs the command line as a user does
-(``python -m cams.cli``) on a copy of an example with a snippet added.
+exits 1; "wrote X" means X holds the data. Each test runs the command line (:func:`cams.cli.main`, in this
+process: tests/inprocess.py; the warning test as a separate ``python -m cams.cli``) on a copy of an example with a
+snippet added.
 
 The ``test_bug_...`` tests keep the bugs a bad-input sweep of the feature found (each docstring says what
 happened); all are fixed, and these tests hold them so.
@@ -18,6 +19,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.inprocess import cams_cli
+
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 TIMEOUT = 60
@@ -26,7 +29,13 @@ TIMEOUT = 60
 # --- helpers -------------------------------------------------------------------------------------------------
 
 def cams(*args, cwd: Path | None = None) -> subprocess.CompletedProcess:
-    """``python -m cams.cli ARGS``, captured (a hang fails the test at TIMEOUT seconds)."""
+    """``cams ARGS``, captured: :func:`cams.cli.main` in this process (tests/inprocess.py: exit code, stdout,
+    stderr with the warnings a fresh process shows); what is tested is what the command prints and returns."""
+    return cams_cli(*args, cwd=cwd or ROOT)
+
+
+def cams_process(*args, cwd: Path | None = None) -> subprocess.CompletedProcess:
+    """``python -m cams.cli ARGS`` as a separate process, captured (a hang fails the test at TIMEOUT seconds)."""
     return subprocess.run([sys.executable, "-m", "cams.cli", *map(str, args)], capture_output=True, text=True,
                           timeout=TIMEOUT, cwd=cwd or ROOT)
 
@@ -412,7 +421,7 @@ def test_bug_certified_while_the_cam_is_not_buildable(tmp_path):
 def test_bug_plot_optimized_without_free_phase_warns_on_stderr(tmp_path):
     """plot --only optimized with free = []: a matplotlib UserWarning (two lines) on stderr, exit 0."""
     p = design(tmp_path, TF, "[optimize]\nfree = []\n")
-    r = cams("plot", p, "--out", tmp_path / "pics", "--only", "optimized")
+    r = cams_process("plot", p, "--out", tmp_path / "pics", "--only", "optimized")
     assert r.returncode == 0
     assert r.stderr == "", r.stderr
 

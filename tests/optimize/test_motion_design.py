@@ -8,9 +8,6 @@ Design and Manufacturing Handbook, ch. 3).
 
 from __future__ import annotations
 
-import subprocess
-import sys
-
 import numpy as np
 import pytest
 
@@ -22,6 +19,7 @@ from cams.solve import solve
 from laws.errors import InputError
 from laws.standard import Parabolic, Poly345, Poly4567
 from optimize.motion.design import design_laws
+from tests.inprocess import cams_cli
 
 EXAMPLE = "examples/translating_force.toml"
 
@@ -151,7 +149,7 @@ def test_command_line_bad_cap_exits_2(tmp_path):
     text = open(EXAMPLE, encoding="utf-8").read() + '\n[optimize]\nmax_Ca = 3.5\ncontinuity = 1\ndegree = 3\n'
     p = tmp_path / "bad.toml"
     p.write_text(text, encoding="utf-8")
-    r = subprocess.run([sys.executable, "-m", "cams.cli", "solve", str(p)], capture_output=True, text=True)
+    r = cams_cli("solve", p)
     assert r.returncode == 2
     assert r.stderr.count("\n") == 1 and "optimize.max_Ca" in r.stderr
 
@@ -253,7 +251,8 @@ def _designed_file(tmp_path, extra: str = "", roller: float | None = None):
 
 
 def _cli(*args):
-    return subprocess.run([sys.executable, "-m", "cams.cli", *map(str, args)], capture_output=True, text=True)
+    """``cams ARGS`` in this process (tests/inprocess.py): exit code, stdout, stderr."""
+    return cams_cli(*args)
 
 
 def test_saved_design_solves_to_the_same_cam(tmp_path):
@@ -298,7 +297,21 @@ def test_failing_design_is_not_saved(tmp_path):
     assert not out.exists() and "not written" in r.stdout
 
 
-def test_optimum_failing_the_profile_checks_gives_the_smallest_passing_cam():
+def _twelve_mm_roller_doc(k: float = 1.0) -> dict:
+    """The designed rise (10 spans) with a 12 mm roller, its lengths ``k`` times larger."""
+    doc = _doc(max_Ca="poly4567", max_Cj="poly4567", spans=10)
+    doc["follower"]["roller_radius"] = 12.0 * k
+    doc["follower"]["stroke"] *= k
+    return doc
+
+
+@pytest.fixture(scope="module")
+def twelve_mm_roller():
+    """The designed rise with a 12 mm roller, solved once for the two tests of its fallback."""
+    return solve(design_from_dict(_twelve_mm_roller_doc()))
+
+
+def test_optimum_failing_the_profile_checks_gives_the_smallest_passing_cam(twelve_mm_roller):
     """A 12 mm roller: the optimum (R0 10.97 mm) has no working profile; the designed law's smallest cam that
     passes is returned, judged by the commands' one rule (cams.assess), and slightly below it none passes."""
     from dataclasses import replace
@@ -306,9 +319,7 @@ def test_optimum_failing_the_profile_checks_gives_the_smallest_passing_cam():
     from cams.cam import Cam
     from cams.solve import profile_passes
 
-    doc = _doc(max_Ca="poly4567", max_Cj="poly4567", spans=10)
-    doc["follower"]["roller_radius"] = 12.0
-    res = solve(design_from_dict(doc))
+    res = twelve_mm_roller
     o = res.optimization.to_dict()
     assert res.R0 > 12.0 and any("fails the profile's checks" in n for n in o["notes"])
     assert o["lower_bound"] <= res.R0 and o["certified"]
@@ -319,15 +330,12 @@ def test_optimum_failing_the_profile_checks_gives_the_smallest_passing_cam():
     assert not profile_passes(below)
 
 
-def test_the_smallest_passing_cam_is_the_same_at_a_large_scale():
+def test_the_smallest_passing_cam_is_the_same_at_a_large_scale(twelve_mm_roller):
     """The same fallback a million times larger (the sizing to the part's search, on exact extrema): R0 in
-    proportion."""
+    proportion. The unscaled design (k = 1) is the module's solve of it."""
     got = {}
     for k in (1.0, 1e6):
-        doc = _doc(max_Ca="poly4567", max_Cj="poly4567", spans=10)
-        doc["follower"]["roller_radius"] = 12.0 * k
-        doc["follower"]["stroke"] *= k
-        res = solve(design_from_dict(doc))
+        res = twelve_mm_roller if k == 1.0 else solve(design_from_dict(_twelve_mm_roller_doc(k)))
         assert any("fails the profile's checks" in n for n in res.optimization.notes)
         got[k] = res.R0 / k
     assert got[1e6] == pytest.approx(got[1.0], rel=1e-9)

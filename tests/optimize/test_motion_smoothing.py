@@ -13,8 +13,6 @@ from __future__ import annotations
 
 import json
 import re
-import subprocess
-import sys
 from dataclasses import replace
 from itertools import pairwise
 from math import comb
@@ -36,6 +34,7 @@ from optimize.motion.smooth import ACCEPT_RTOL, pulled_back
 from optimize.motion.space import Space
 from optimize.motion.translating import TIGHTEN
 from tests.conftest import ROOT
+from tests.inprocess import cams_cli
 
 FORCE = str(ROOT / "examples" / "translating_force.toml")
 DESIGNED = ROOT / "examples" / "translating_designed_rise.toml"
@@ -138,8 +137,8 @@ def test_a_slack_beyond_the_classical_laws_cam_gives_that_law_and_its_cam(roomy)
 # -- the example, checked from its saved files ------------------------------------------------------------------
 
 def _cli(*args):
-    return subprocess.run([sys.executable, "-m", "cams.cli", *map(str, args)], capture_output=True, text=True,
-                          cwd=ROOT)
+    """``cams ARGS`` in this process (tests/inprocess.py): exit code, stdout, stderr."""
+    return cams_cli(*args, cwd=ROOT)
 
 
 @pytest.mark.parametrize(("slack", "continuity"), [(0.0, 3), (0.01, 3), (0.01, 2)])

@@ -2,9 +2,6 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
-
 import numpy as np
 import pytest
 
@@ -13,6 +10,7 @@ from cams.io.designfile import design_from_dict, load_design
 from cams.io.document import read_toml
 from cams.present.motion_plots import plot_motion_design
 from tests.conftest import ROOT
+from tests.inprocess import cams_cli
 
 EXAMPLE = str(ROOT / "examples" / "translating_force.toml")
 
@@ -45,15 +43,13 @@ def test_plot_command_writes_the_picture_of_a_designed_file(tmp_path):
         "spans = 5\n"
     f = tmp_path / "designed.toml"
     f.write_text(text, encoding="utf-8")
-    r = subprocess.run([sys.executable, "-m", "cams.cli", "plot", str(f), "--out", str(tmp_path / "p"), "--only",
-                        "optimized"], capture_output=True, text=True)
+    r = cams_cli("plot", f, "--out", tmp_path / "p", "--only", "optimized")
     assert r.returncode == 0, r.stderr
     assert sorted(p.suffix for p in (tmp_path / "p").iterdir()) == [".png", ".svg"]
 
 
 def test_optimized_picture_of_a_plain_file_is_skipped(tmp_path):
-    r = subprocess.run([sys.executable, "-m", "cams.cli", "plot", EXAMPLE, "--out", str(tmp_path / "p"), "--only",
-                        "motion,optimized"], capture_output=True, text=True)
+    r = cams_cli("plot", EXAMPLE, "--out", tmp_path / "p", "--only", "motion,optimized")
     assert r.returncode == 0 and "no [optimize] table" in r.stderr
     assert not any("optimized" in p.name for p in (tmp_path / "p").iterdir())
     assert load_design(EXAMPLE).optimize is None

@@ -21,7 +21,6 @@ from __future__ import annotations
 import math
 import re
 import subprocess
-import sys
 from fractions import Fraction
 from pathlib import Path
 
@@ -32,6 +31,7 @@ from cams.io.designfile import design_from_dict
 from cams.io.document import read_toml
 from cams.solve import solve
 from laws.errors import InfeasibleError, InputError
+from tests.inprocess import cams_cli
 
 ROOT = Path(__file__).resolve().parents[2]
 SCALES = (1e-3, 1.0, 1e3)
@@ -62,8 +62,7 @@ def example(name: str, optimize: dict, k: float, **tables) -> dict:
 def cli_solve(doc_text: str, tmp_path: Path) -> subprocess.CompletedProcess:
     p = tmp_path / "design.toml"
     p.write_text(doc_text, encoding="utf-8")
-    return subprocess.run([sys.executable, "-m", "cams.cli", "solve", str(p)], capture_output=True, text=True,
-                          timeout=120, cwd=ROOT)
+    return cams_cli("solve", p, cwd=ROOT)  # in this process (tests/inprocess.py)
 
 
 # -- defect 4: an empty space ---------------------------------------------------------------------------------
