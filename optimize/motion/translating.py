@@ -35,7 +35,8 @@ from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram
 from optimize.motion.space import Space
 
-__all__ = ["Request", "build", "conservative_ratio", "form_ratio", "pressure_terms", "SAMPLES_PER_SPAN", "FIXED_SAMPLES", "TIGHTEN", "S_MARGIN"]
+__all__ = ["Request", "build", "conservative_ratio", "form_ratio", "pressure_terms", "SAMPLES_PER_SPAN",
+           "FIXED_SAMPLES", "TIGHTEN", "S_MARGIN"]
 #: Sample points per span of the relaxation (ends included).
 SAMPLES_PER_SPAN = 17
 #: Sample points of a fixed (not free) constrained phase.
@@ -263,7 +264,8 @@ def build(req: Request, form: str) -> ConicProgram:
                         np.zeros(0), A=A, b=b, lo=lo, hi=hi, cones=tuple(cones), enforce=enforce)
 
 
-def pressure_terms(req: Request, v: np.ndarray, form: str = "conservative") -> list[tuple[np.ndarray, np.ndarray, float]]:
+def pressure_terms(req: Request, v: np.ndarray,
+                   form: str = "conservative") -> list[tuple[np.ndarray, np.ndarray, float]]:
     """The two sides of :func:`build`'s pressure rows at ``v`` (roller): per limited phase, in the rows' order,
     ``(|s' + eps x|, d + s, limit)`` on the Bernstein coefficients of every piece (``"conservative"``) or at the
     samples (``"relaxed"``) of a free phase, at the samples of a fixed one (lengths over ``req.length``).
