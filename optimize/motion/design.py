@@ -51,6 +51,9 @@ BISECTION_STEPS = 18
 RATIO_RTOL = 1e-6
 #: At most this many programs per Dinkelbach iteration.
 MAX_DESCENT = 30
+#: Dinkelbach's steps on the relaxed program, from the conservative program's least point: the relaxed least
+#: ratio is then found to the precision the proof's margin needs (the step from so near converges superlinearly).
+RELAXED_STEPS = 1
 #: The first ratio tried for the proof of the lower end is below the relaxed program's least found by this many
 #: times the solver's loss in the bound over the slack's slope (:func:`_proven_below`).
 PROOF_SAFETY = 1.25
@@ -584,7 +587,7 @@ def _feasibility(base: Request, ratio: float, form: str, terms) -> ConicProgram:
     return prog if terms is None else _weighted(prog, terms)
 
 
-def _descend(base: Request, form: str, ratio: float, v: np.ndarray | None):
+def _descend(base: Request, form: str, ratio: float, v: np.ndarray | None, steps: int = MAX_DESCENT):
     """Dinkelbach's iteration from ``ratio`` (and the point ``v`` that meets it, if any): the feasibility
     program of ``form`` at the ratio of the last point found, its rows weighted at that point (:func:`_weighted`),
     until the ratio decreases by less than :data:`RATIO_RTOL` (relative) or the program has no point with a
@@ -599,7 +602,7 @@ def _descend(base: Request, form: str, ratio: float, v: np.ndarray | None):
     best = None
     terms = None if v is None else pressure_terms(base, v, form)
     last = None
-    for _ in range(MAX_DESCENT):
+    for _ in range(steps):
         prog = _feasibility(base, ratio, form, terms)
         sol = solve(prog)
         last = (prog, sol)
@@ -656,6 +659,6 @@ def _bisect_pressure(base: Request, limits: dict[int, float]):
     hi, feas, _ = _descend(base, "conservative", hi, None)
     if feas is None:
         _no_law_at_size(base)
-    rel, rsol, last = _descend(base, "relaxed", hi, feas.v)
+    rel, rsol, last = _descend(base, "relaxed", hi, feas.v, RELAXED_STEPS)
     lb = _proven_below(base, rel, feas.v if rsol is None else rsol.v, last)
     return replace(feas, value=hi), lb
