@@ -340,9 +340,9 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
                    min_radius=min_radius, length=design.scale)
     squared = spec.objective in ("jerk_squared", "snap_squared")
     if spec.objective == "pressure_angle":
-        result, lb = _bisect_pressure(base, limits)
+        result, lb = _least_pressure(base, limits)
         # the second stage: the feasibility program at the ratio found times (1 + slack), its slack at most 0; the
-        # ratio found is the first stage's point's own in the conservative rows (the bisection's end is above it)
+        # ratio found is the first stage's point's own in the conservative rows (the iteration ends at it)
         found = min(conservative_ratio(base, result.v), float(result.value))
         ratio = min(allowance(found, spec.smoothing_slack), _top(limits))
         stage, bound = build(replace(base, objective="feasibility", ratio=ratio), "conservative"), 0.0
@@ -597,7 +597,8 @@ def _descend(base: Request, form: str, ratio: float, v: np.ndarray | None, steps
     (``None`` when none was found below ``ratio``; from no ``v``, when the program at ``ratio`` has no point
     with slack at most 0) and ``(program, solution)`` of the last program solved. Each step's point meets the
     rows at its own ratio (:func:`optimize.motion.translating.form_ratio`, computed on the point), so the
-    ratio returned is a point's own: an upper end of the program's least ratio whatever the solver's accuracy.
+    ratio returned is a point's own (or, when the first point's is not below ``ratio`` from no ``v``, ``ratio``
+    itself, met to the solver's tolerance): an upper end of the program's least ratio.
     """
     best = None
     terms = None if v is None else pressure_terms(base, v, form)
@@ -610,6 +611,8 @@ def _descend(base: Request, form: str, ratio: float, v: np.ndarray | None, steps
             break
         got = form_ratio(base, sol.v, form)
         if not got < ratio:
+            if best is None and v is None:      # the start meets ``ratio`` to the solver's tolerance
+                best = sol
             break
         done = got > ratio * (1 - RATIO_RTOL)
         ratio, best, terms = got, sol, pressure_terms(base, sol.v, form)
@@ -646,7 +649,7 @@ def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
     return _least_ratio_proven(base, 0.0, r)
 
 
-def _bisect_pressure(base: Request, limits: dict[int, float]):
+def _least_pressure(base: Request, limits: dict[int, float]):
     """The least ratio of pressure angle to limit, at most 1, and a proven lower bound of it.
 
     Upper end: Dinkelbach's iteration (:func:`_descend`) on the conservative program from the limits

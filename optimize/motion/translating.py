@@ -67,9 +67,9 @@ class Request:
     objective : str
         ``"R0"``, ``"Ca"``, ``"Cj"``, ``"jerk_squared"``, ``"snap_squared"`` or
         ``"feasibility"`` (minimize the largest slack of the pressure rows,
-        length; for the pressure-angle bisection).
+        length; for the least pressure angle's iteration).
     ratio : float
-        The pressure limits are ``ratio * limit`` (1 but in the bisection).
+        The pressure limits are ``ratio * limit`` (1 but in the least pressure angle's iteration).
     centre : (float, float) or None
         A fixed cam centre ``(x, d)`` (roller) or ``(R0, 0)`` (flat).
     x_fixed : float or None
