@@ -41,12 +41,24 @@ from optimize.motion.conic import ConicProgram, SolverFailure, lower_bound, solv
 from optimize.motion.lawrows import check_lift
 from optimize.motion.smooth import allowance, pulled_back, smoothing_derivative, smoothing_program
 from optimize.motion.space import CONSISTENT, Space
-from optimize.motion.translating import Request, build, conservative_ratio
+from optimize.motion.translating import Request, build, conservative_ratio, form_ratio, pressure_terms
 
 __all__ = ["LawDesign", "design_laws", "free_phases", "resolve_caps", "BISECTION_STEPS"]
 
-#: Steps of the pressure-angle bisection (each halves the bracket of the ratio).
+#: Steps of the pressure-angle bisection (each halves the bracket of the ratio) where no law meets the limits.
 BISECTION_STEPS = 18
+#: Relative decrease of the least pressure-angle ratio below which Dinkelbach's iteration stops.
+RATIO_RTOL = 1e-6
+#: At most this many programs per Dinkelbach iteration.
+MAX_DESCENT = 30
+#: Dinkelbach's steps on the relaxed program, from the conservative program's least point: the relaxed least
+#: ratio is then found to the precision the proof's margin needs (the step from so near converges superlinearly).
+RELAXED_STEPS = 1
+#: The first ratio tried for the proof of the lower end is below the relaxed program's least found by this many
+#: times the solver's loss in the bound over the slack's slope (:func:`_proven_below`).
+PROOF_SAFETY = 1.25
+#: Ratios tried for that proof (the distance doubled each time) before the bisection.
+PROOF_TRIES = 4
 
 
 @dataclass(frozen=True)
@@ -328,9 +340,9 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
                    min_radius=min_radius, length=design.scale)
     squared = spec.objective in ("jerk_squared", "snap_squared")
     if spec.objective == "pressure_angle":
-        result, lb = _bisect_pressure(base, limits)
+        result, lb = _least_pressure(base, limits)
         # the second stage: the feasibility program at the ratio found times (1 + slack), its slack at most 0; the
-        # ratio found is the first stage's point's own in the conservative rows (the bisection's end is above it)
+        # ratio found is the first stage's point's own in the conservative rows (the iteration ends at it)
         found = min(conservative_ratio(base, result.v), float(result.value))
         ratio = min(allowance(found, spec.smoothing_slack), _top(limits))
         stage, bound = build(replace(base, objective="feasibility", ratio=ratio), "conservative"), 0.0
@@ -551,24 +563,105 @@ def _no_law_at_size(base: Request) -> None:
                           "let the cam grow (objective 'R0') or choose a larger cam")
 
 
-def _bisect_pressure(base: Request, limits: dict[int, float]):
-    """The least ratio of pressure angle to limit, at most 1: bisection on feasibility.
+def _weighted(prog: ConicProgram, terms: list[tuple[np.ndarray, np.ndarray, float]]) -> ConicProgram:
+    """``prog`` (a feasibility program of :func:`optimize.motion.translating.build`) with each pressure row's
+    ``sign (s' + eps x) - T (d + s)`` divided by its ``d + s`` at the previous point (``terms``, in the rows'
+    order): the normalized step of the generalized fractional programs' Dinkelbach method (Crouzeix, Ferland and
+    Schaible, *J. Optim. Theory Appl.* 47, 1985). A positive weight per row changes no row's feasible set."""
+    w = np.concatenate([np.concatenate([b, b]) for _, b, _ in terms])
+    floor = 1e-3 * max(float(np.max(w, initial=0.0)), 1e-12)
+    w = np.maximum(w, floor)
+    m = w.size
+    it = prog.n - 1
+    if not np.all(prog.G[:m, it] == -1.0):
+        raise AssertionError("the pressure rows are not the feasibility program's first rows")
+    G, h = prog.G.copy(), prog.h.copy()
+    G[:m, :it] /= w[:, None]
+    h[:m] /= w
+    return replace(prog, G=G, h=h)
 
-    Upper end: the conservative program feasible (slack <= 0) at the ratio.
-    Lower end: the relaxed program proven infeasible at the ratio (its proven
-    lower bound of the least slack is > 0). When no law found meets the
-    limits themselves (ratio 1), :func:`_no_law_at_size` says so.
+
+def _feasibility(base: Request, ratio: float, form: str, terms) -> ConicProgram:
+    """The feasibility program (least slack of the pressure rows) at ``ratio``, weighted by ``terms`` if any."""
+    prog = build(replace(base, objective="feasibility", ratio=ratio), form)
+    return prog if terms is None else _weighted(prog, terms)
+
+
+def _descend(base: Request, form: str, ratio: float, v: np.ndarray | None, steps: int = MAX_DESCENT):
+    """Dinkelbach's iteration from ``ratio`` (and the point ``v`` that meets it, if any): the feasibility
+    program of ``form`` at the ratio of the last point found, its rows weighted at that point (:func:`_weighted`),
+    until the ratio decreases by less than :data:`RATIO_RTOL` (relative) or the program has no point with a
+    smaller ratio.
+
+    Returns ``(ratio, best, last)``: the least ratio of the points found, the solution whose point has it
+    (``None`` when none was found below ``ratio``; from no ``v``, when the program at ``ratio`` has no point
+    with slack at most 0) and ``(program, solution)`` of the last program solved. Each step's point meets the
+    rows at its own ratio (:func:`optimize.motion.translating.form_ratio`, computed on the point), so the
+    ratio returned is a point's own (or, when the first point's is not below ``ratio`` from no ``v``, ``ratio``
+    itself, met to the solver's tolerance): an upper end of the program's least ratio.
+    """
+    best = None
+    terms = None if v is None else pressure_terms(base, v, form)
+    last = None
+    for _ in range(steps):
+        prog = _feasibility(base, ratio, form, terms)
+        sol = solve(prog)
+        last = (prog, sol)
+        if not sol.feasible or (best is None and v is None and sol.value > 0):
+            break
+        got = form_ratio(base, sol.v, form)
+        if not got < ratio:
+            if best is None and v is None:      # the start meets ``ratio`` to the solver's tolerance
+                best = sol
+            break
+        done = got > ratio * (1 - RATIO_RTOL)
+        ratio, best, terms = got, sol, pressure_terms(base, sol.v, form)
+        if done:
+            break
+    return ratio, best, last
+
+
+def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
+    """A ratio proven to be below every law's: the relaxed program proven infeasible there, the proven lower
+    bound of its least slack above 0 (weak duality, :func:`optimize.motion.conic.lower_bound`).
+
+    ``ratio`` is the relaxed program's least found from above (:func:`_descend`, its point ``v``, ``last`` its
+    last program and solution). The proof at a ratio ``r`` below it holds when the least slack there, about
+    ``slope (ratio - r)``, exceeds what the bound loses to the solver's accuracy (``last``'s value less its
+    proven bound): the first ``r`` tried is ``ratio`` less :data:`PROOF_SAFETY` times that loss over the slope
+    (the least ``limit sec^2(ratio limit)``: the weighted rows' derivative in the ratio), then the distance is
+    doubled; the bisection (:func:`_least_ratio_proven`) below the last tried if none is proven.
+    """
+    terms = pressure_terms(base, v, "relaxed")
+    prog, sol = last
+    loss = max(float(sol.value) - lower_bound(prog, sol), 0.0) if sol.feasible else 0.0
+    slope = min(lim / np.cos(ratio * lim) ** 2 for lim in base.limits.values())
+    step = max(PROOF_SAFETY * loss / slope, RATIO_RTOL * ratio)
+    r = ratio
+    for _ in range(PROOF_TRIES):
+        r = ratio - step
+        if r <= 0:
+            return 0.0
+        rel = _feasibility(base, r, "relaxed", terms)
+        if lower_bound(rel, solve(rel)) > 0:
+            return r
+        step *= 2
+    return _least_ratio_proven(base, 0.0, r)
+
+
+def _least_pressure(base: Request, limits: dict[int, float]):
+    """The least ratio of pressure angle to limit, at most 1, and a proven lower bound of it.
+
+    Upper end: Dinkelbach's iteration (:func:`_descend`) on the conservative program from the limits
+    themselves (ratio 1): each step's point meets every limit times its own ratio at every cam angle. When no
+    law found meets the limits themselves (ratio 1), :func:`_no_law_at_size` says so.
+    Lower end: the same iteration on the relaxed program from the upper end, then that ratio less a margin
+    proven infeasible (:func:`_proven_below`).
     """
     hi = min(1.0, _top(limits))
-    feas = solve(build(replace(base, objective="feasibility", ratio=hi), "conservative"))
-    if not (feas.feasible and feas.value <= 0):
+    hi, feas, _ = _descend(base, "conservative", hi, None)
+    if feas is None:
         _no_law_at_size(base)
-    up_lo = 0.0
-    for _ in range(BISECTION_STEPS):
-        mid = 0.5 * (up_lo + hi)
-        sol = solve(build(replace(base, objective="feasibility", ratio=mid), "conservative"))
-        if sol.feasible and sol.value <= 0:
-            hi, feas = mid, sol
-        else:
-            up_lo = mid
-    return replace(feas, value=hi), _least_ratio_proven(base, 0.0, hi)
+    rel, rsol, last = _descend(base, "relaxed", hi, feas.v, RELAXED_STEPS)
+    lb = _proven_below(base, rel, feas.v if rsol is None else rsol.v, last)
+    return replace(feas, value=hi), lb

@@ -60,7 +60,7 @@ def integral_factor(space: Space, r: int, n: int) -> np.ndarray:
 def allowance(value: float, slack: float, root: bool = False) -> float:
     """The second stage's bound on a program's objective ``value``: ``value (1 + slack) (1 + SMOOTH_RTOL)``, or
     its square root's share when the program minimizes the root of an integral (``root``): the integral's share
-    is the same. A value below 0 (the pressure bisection's slack) gets the same share of its size as room."""
+    is the same. A value below 0 (the pressure iteration's slack) gets the same share of its size as room."""
     share = (1.0 + slack) * (1.0 + SMOOTH_RTOL)
     if root:
         share = float(np.sqrt(share))

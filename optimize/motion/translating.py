@@ -35,7 +35,8 @@ from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram
 from optimize.motion.space import Space
 
-__all__ = ["Request", "build", "conservative_ratio", "SAMPLES_PER_SPAN", "FIXED_SAMPLES", "TIGHTEN", "S_MARGIN"]
+__all__ = ["Request", "build", "conservative_ratio", "form_ratio", "pressure_terms", "SAMPLES_PER_SPAN",
+           "FIXED_SAMPLES", "TIGHTEN", "S_MARGIN"]
 #: Sample points per span of the relaxation (ends included).
 SAMPLES_PER_SPAN = 17
 #: Sample points of a fixed (not free) constrained phase.
@@ -66,9 +67,9 @@ class Request:
     objective : str
         ``"R0"``, ``"Ca"``, ``"Cj"``, ``"jerk_squared"``, ``"snap_squared"`` or
         ``"feasibility"`` (minimize the largest slack of the pressure rows,
-        length; for the pressure-angle bisection).
+        length; for the least pressure angle's iteration).
     ratio : float
-        The pressure limits are ``ratio * limit`` (1 but in the bisection).
+        The pressure limits are ``ratio * limit`` (1 but in the least pressure angle's iteration).
     centre : (float, float) or None
         A fixed cam centre ``(x, d)`` (roller) or ``(R0, 0)`` (flat).
     x_fixed : float or None
@@ -115,7 +116,7 @@ def build(req: Request, form: str) -> ConicProgram:
     it = n - 1                      # the epigraph variable t
     samples = None
     if form == "relaxed":
-        samples = np.linspace(0.0, 1.0, (SAMPLES_PER_SPAN - 1) * sp.spans + 1)
+        samples = _samples(sp)
     elif form != "conservative":
         raise ValueError(form)
     tight = 1.0 - TIGHTEN if form == "conservative" else 1.0
@@ -263,33 +264,57 @@ def build(req: Request, form: str) -> ConicProgram:
                         np.zeros(0), A=A, b=b, lo=lo, hi=hi, cones=tuple(cones), enforce=enforce)
 
 
-def conservative_ratio(req: Request, v: np.ndarray) -> float:
-    """The least ratio of the pressure-angle limits at which ``v`` meets the rows of :func:`build`'s
-    ``"conservative"`` program (roller; the laws' variables, then ``x, d`` over ``req.length``).
+def pressure_terms(req: Request, v: np.ndarray,
+                   form: str = "conservative") -> list[tuple[np.ndarray, np.ndarray, float]]:
+    """The two sides of :func:`build`'s pressure rows at ``v`` (roller): per limited phase, in the rows' order,
+    ``(|s' + eps x|, d + s, limit)`` on the Bernstein coefficients of every piece (``"conservative"``) or at the
+    samples (``"relaxed"``) of a free phase, at the samples of a fixed one (lengths over ``req.length``).
 
-    A free phase's rows are ``sign (s' + eps x) <= T (d + s)`` on the Bernstein coefficients of every piece,
-    a fixed one's at its samples, with ``T = tan(ratio * limit)``: the least ``T`` of each row is the ratio of
-    its two sides. ``inf`` when some ``d + s`` is not positive where ``s' + eps x`` is not 0.
-    """
+    A row of ``build`` at ratio ``r`` is ``sign (s' + eps x) <= tan(r limit) (d + s)``, for each sign."""
     sp = req.space
     nc = sp.size
     ell = float(req.length)
+    samples = None if form == "conservative" else _samples(sp)
     index = {i: k for k, i in enumerate(sp.free)}
     x, d = float(v[nc]), float(v[nc + 1])
     eps = float(req.cam_sense)
-    worst = 0.0
+    out = []
     for i, limit in req.limits.items():
         if i in index:
             sh, beta, lev = sp.phase_scale(i)
             k = index[i]
-            ds = sh / ell / beta * (sp.rows(k, 1, v.size, elevate=True) @ v)
-            s = lev / ell + sh / ell * (sp.rows(k, 0, v.size) @ v)
+            ds = sh / ell / beta * (sp.rows(k, 1, v.size, samples=samples, elevate=True) @ v)
+            s = lev / ell + sh / ell * (sp.rows(k, 0, v.size, samples=samples) @ v)
         else:
             s, ds, _ = _fixed_motion(sp.program, i, FIXED_SAMPLES)
             s, ds = s / ell, ds / ell
-        top, bottom = np.abs(ds + eps * x), d + s
+        out.append((np.abs(ds + eps * x), d + s, float(limit)))
+    return out
+
+
+def form_ratio(req: Request, v: np.ndarray, form: str = "conservative") -> float:
+    """The least ratio of the pressure-angle limits at which ``v`` meets the pressure rows of :func:`build`'s
+    program in ``form`` (roller; the laws' variables, then ``x, d`` over ``req.length``).
+
+    The least ``T = tan(ratio * limit)`` of each row is the ratio of its two sides (:func:`pressure_terms`).
+    ``inf`` when some ``d + s`` is not positive where ``s' + eps x`` is not 0.
+    """
+    worst = 0.0
+    for top, bottom, limit in pressure_terms(req, v, form):
         if np.any((bottom <= 0) & (top > 0)):
             return float("inf")
         need = np.max(np.where(bottom > 0, top / np.where(bottom > 0, bottom, 1.0), 0.0))
         worst = max(worst, float(np.arctan(need)) / limit)
     return worst
+
+
+def conservative_ratio(req: Request, v: np.ndarray) -> float:
+    """:func:`form_ratio` of the ``"conservative"`` program: the least ratio at which ``v`` meets its rows, which
+    hold at every cam angle (a free phase's on the Bernstein coefficients of every piece, a fixed one's at its
+    samples)."""
+    return form_ratio(req, v, "conservative")
+
+
+def _samples(sp: Space) -> np.ndarray:
+    """The relaxation's sample points on a free phase (normalized)."""
+    return np.linspace(0.0, 1.0, (SAMPLES_PER_SPAN - 1) * sp.spans + 1)
