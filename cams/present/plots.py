@@ -30,7 +30,7 @@ from laws.units import TWO_PI, rpm_to_omega
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
            "plot_forces", "picture", "PICTURES", "NEEDS", "missing", "no_forces", "plot_contact", "no_contact",
-           "no_vibration", "plot_vibration",
+           "no_vibration", "plot_vibration", "lay_out",
            "animate_profile", "save", "fix_layout", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
@@ -86,14 +86,19 @@ def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0,
     above and below a wide drawing of a fixed aspect (``ax``), nor beside a tall one.
 
     The height stays within ``[min_h, max_h]`` inches and above what the legend ``beside`` the axes needs.
-    Each round draws the figure without rendering it and takes up the difference between the figure and the
+    Each round lays the figure out and takes up the difference between the figure and the
     box around everything drawn (the layout is constrained). Returns ``fig``, which keeps the fitting as
     ``fig.refit`` for a caller that adds a title afterwards (:func:`mark_failing`).
     """
 
     def refit():
         for _ in range(rounds):
-            fig.draw_without_rendering()
+            # the layout alone (a drawing without rendering adds nothing the box below needs: the same sizes)
+            engine = fig.get_layout_engine()
+            if engine is not None:
+                engine.execute(fig)
+            else:
+                fig.draw_without_rendering()
             w, h = fig.get_size_inches()
             drawn = fig.get_tightbbox()  # inches
             spare_h, spare_w = h - drawn.height - 0.1, w - drawn.width - 0.1
@@ -124,21 +129,34 @@ def fix_layout(fig):
     return fig
 
 
-def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
-    """Write ``fig`` as ``stem.png`` and ``stem.svg``, each whole or not at all.
+def lay_out(fig, dpi: float):
+    """Compute ``fig``'s constrained layout once, as at ``dpi`` (dots per inch), and keep it (:func:`fix_layout`).
 
-    The layout is computed by the first format's drawing and kept for the others (:func:`fix_layout`): the
-    figure is final when it is saved."""
+    ``savefig`` of a figure with a layout engine draws it twice, once to lay it out and once to render it, each
+    time computing the layout; a figure laid out here is rendered by one drawing. Returns ``fig``."""
+    engine = fig.get_layout_engine()
+    if engine is None:
+        return fig
+    before = fig.dpi
+    fig.dpi = dpi
+    try:
+        engine.execute(fig)
+    finally:
+        fig.dpi = before
+    return fix_layout(fig)
+
+
+def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
+    """Write ``fig`` as ``stem.png`` and ``stem.svg`` (150 dpi), each whole or not at all.
+
+    The layout is computed once, as at 150 dpi (:func:`lay_out`), and kept for every format: the figure is final
+    when it is saved."""
     from cams.io.files import atomic_write
 
     stem = Path(stem)
-    out = []
-    for k, ext in enumerate(formats):
-        target = stem.with_suffix(f".{ext}")
-        out.append(atomic_write(target, "--out", partial(fig.savefig, format=ext, dpi=150)))
-        if k == 0:
-            fix_layout(fig)
-    return out
+    lay_out(fig, 150)
+    return [atomic_write(stem.with_suffix(f".{ext}"), "--out", partial(fig.savefig, format=ext, dpi=150))
+            for ext in formats]
 
 
 def mark_failing(fig, title: str):
