@@ -184,11 +184,12 @@ def test_a_solver_that_cannot_settle_is_its_failure_exit_1_not_bad_input(monkeyp
 
 
 def test_a_solver_failure_in_a_sweep_is_a_row_that_says_so(monkeypatch):
-    """One design the solver fails on is a row with its error, not a lost batch (one process: the patch holds)."""
+    """One design the solver fails on is a row with its error, not a lost batch (one process: the patch holds; each
+    design by itself, the path whose solver is patched)."""
     from cams.sweep import sweep
     from tests.conftest import rocker_dict
 
     _unsettling(monkeypatch)
-    res = sweep(rocker_dict(), [("follower.arm", np.array([100.0]))], workers=1)
+    res = sweep(rocker_dict(), [("follower.arm", np.array([100.0]))], workers=1, per_design=True)
     assert res.rows[0]["error"].startswith("solver failure: the nearest-point method did not settle")
     assert res.rows[0]["R0"] is None and res.failed == 1

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import csv
 import json
 
 import pytest
@@ -266,9 +267,12 @@ def test_method_options_and_commands_that_do_not_apply(tmp_path, capsys):
     for cmd in ("solve", "check", "profile"):
         rc, _, err = _run(capsys, cmd, str(ROCKER), "--method", "convex")
         assert rc == 2 and err.startswith(f"cams {cmd}: error: --method: does not apply to a flat-faced follower")
+    # a sweep takes flat faces (issue 26), each design by its face's pipeline (the batch solver sends them back)
     rc, _, err = _run(capsys, "sweep", str(ROCKER), "--vary", "follower.swing=10:20:3", "--out",
-                      str(tmp_path / "s.csv"), "--quiet")
-    assert rc == 2 and "follower.face" in err and not (tmp_path / "s.csv").exists()
+                      str(tmp_path / "s.csv"), "--quiet", "--jobs", "1")
+    rows = list(csv.DictReader((tmp_path / "s.csv").open(encoding="utf-8")))
+    assert rc == 0 and [r["follower.swing"] for r in rows] == ["10", "15", "20"], err
+    assert all(r["verified"] == "True" and r["buildable"] == "True" and r["R0_mm"] for r in rows)
     rc, _, err = _run(capsys, "profile", str(ROCKER), "--tolerance", "0")
     assert rc == 2 and err.startswith("cams profile: error: --tolerance:")
 
@@ -293,15 +297,9 @@ def test_roller_designs_are_untouched(capsys):
 
 
 def test_api_refuses_flat_faces_where_only_rollers_apply(tmp_path):
-    """The sweep and the machine loader refuse a flat face with an InputError (not an AttributeError)."""
-    import tomllib
-
+    """The machine loader refuses a flat face with an InputError (not an AttributeError); sweeps take them."""
     from cams.machine.machinefile import load_machine
-    from cams.sweep import sweep
 
-    base = tomllib.loads(ROCKER.read_text(encoding="utf-8"))
-    with pytest.raises(InputError, match="follower.face"):
-        sweep(base, [("follower.swing", [10.0, 20.0])], workers=1, progress=False)
     machine = (EXAMPLES / "machines" / "slotting_machine.toml").read_text(encoding="utf-8")
     head = machine[: machine.index("[follower]")]
     tail = machine[machine.index("[[motion]]"):]

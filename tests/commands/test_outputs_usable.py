@@ -315,7 +315,7 @@ def test_sweep_counts_a_not_certified_row_as_failing(capsys, tmp_path, monkeypat
     real = solve_module.solve
     monkeypatch.setattr(solve_module, "solve", lambda *a, **k: dataclasses.replace(real(*a, **k), certified=False))
     res = sweep(read_toml(EXAMPLES / "rocker_force.toml"), [("limits.pressure_angle", np.array([44.0, 45.0]))],
-                workers=1)
+                workers=1, per_design=True)  # each design by itself: the path whose solve is patched
     assert all(r["verified"] and r["buildable"] and "not certified" in r["failures"] for r in res.rows)
     assert res.failed == 2
 

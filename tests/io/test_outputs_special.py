@@ -206,7 +206,7 @@ def test_sweep_output_through_a_link(tmp_path, capsys):
     rc = main(["sweep", str(tmp_path / "d.toml"), "--vary", "follower.arm=120,125", "--out", str(link),
                "--jobs", "1", "--quiet"])
     capsys.readouterr()
-    assert rc == 0 and link.is_symlink() and target.read_text().startswith("follower.arm,")
+    assert rc == 0 and link.is_symlink() and target.read_text().startswith("index,file,follower.arm,")
 
 
 def test_new_to_standard_output_prints_the_template_only(tmp_path):
