@@ -413,7 +413,10 @@ def read_sweep_file(path: str | Path) -> tuple[list[str], list[tuple[str, Any]],
     from cams.io.document import read_toml
 
     p = Path(path)
-    d = read_toml(p)
+    try:
+        d = read_toml(p)
+    except InputError as e:  # the sweep file itself, not a design FILE
+        raise InputError("--sweep-file", str(e).removeprefix(f"{e.field}: ")) from None
     for k in d:
         if k not in SWEEP_FILE_KEYS:
             raise InputError("--sweep-file", f"unknown key {k!r}, must be one of files, mode, method, vary")
