@@ -11,10 +11,10 @@ __all__ = ["register", "run"]
 
 
 def run(args) -> int:
-    from cams.cam import Cam
-    from cams.io.designfile import load_design
     from pathlib import Path
 
+    from cams.cam import Cam
+    from cams.io.designfile import load_design
     from cams.io.files import atomic_write, check_output_paths, writes_stdout
     from cams.present.explore import explore_data, page
     from laws.errors import InputError
