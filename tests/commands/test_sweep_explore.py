@@ -378,3 +378,19 @@ def test_an_unreachable_cluster_is_said_before_any_design(tmp_path, capsys, monk
     assert rc == 2 and "cannot reach the Dask scheduler" in err.splitlines()[-1]
     assert err.splitlines()[-1].startswith("cams sweep: error: --dask: ")
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "vary, said",
+    [
+        ("follower.arm=100:120:1", "a range of one value has a == b"),  # was: 100 alone, 120 dropped
+        ("follower.arm=100,1e2", "the value 100 is given twice"),  # was: the same design solved twice
+        ("follower.arm=90:90:3", "the value 90 is given twice"),
+        ("motion[0].law=cycloidal,cycloidal", "the value 'cycloidal' is given twice"),
+    ],
+)
+def test_a_range_dropping_its_end_or_a_repeated_value_is_one_line(tmp_path, capsys, vary, said):
+    rc, err = _sweep(capsys, ROCKER, "--vary", vary, "--out", tmp_path / "t.csv", "--jobs", "1", "--quiet")
+    assert rc == 2 and said in err
+    _one_line(err, "--vary")
+    assert list(tmp_path.iterdir()) == []
