@@ -58,7 +58,17 @@ def _grid(args):
             raise InputError("--vary", "give at least one KEY=a:b:n or KEY=v1,v2 (or a --sweep-file)")
         files, mode, method = list(args.files), ("zip" if args.zip else "grid"), args.method
         vary = [parse_vary(v) for v in args.vary]
+    seen: dict[Path, int] = {}
+    for k, f in enumerate(files):  # one file twice: the same designs solved twice
+        first = files[seen.setdefault(Path(f).resolve(), k)]
+        if seen[Path(f).resolve()] != k:
+            same = "" if first == f else f" (as {first!r})"
+            raise InputError("FILE" if args.sweep_file is None else "--sweep-file",
+                             f"{f!r} is given twice{same}; give each file once")
     bases = [BaseFile(f, read_toml(f), file_hash(f)) for f in files]
+    for b in bases:
+        if args.sweep_file is None and "files" in b.design:
+            raise InputError("FILE", f"{b.label!r} is a sweep file: give it as --sweep-file {b.label}")
     return files, make_grid(bases, vary, mode=mode, method=method)
 
 

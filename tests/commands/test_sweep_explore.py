@@ -394,3 +394,22 @@ def test_a_range_dropping_its_end_or_a_repeated_value_is_one_line(tmp_path, caps
     assert rc == 2 and said in err
     _one_line(err, "--vary")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_file_twice_or_a_sweep_file_as_file_is_one_line(tmp_path, capsys):
+    """One design file twice solved its designs twice; a sweep file given as FILE was blamed on --vary."""
+    base = tmp_path / "rocker.toml"
+    base.write_text(ROCKER.read_text(encoding="utf-8"), encoding="utf-8")
+    out = tmp_path / "t.csv"
+    rc, err = _sweep(capsys, base, f"{tmp_path}/./rocker.toml", "--vary", "follower.arm=100", "--out", out)
+    assert rc == 2 and "is given twice (as " in err
+    _one_line(err, "FILE")
+    s = tmp_path / "s.toml"
+    s.write_text('files = ["rocker.toml", "./rocker.toml"]\n[vary]\n"follower.arm" = [100]\n', encoding="utf-8")
+    rc, err = _sweep(capsys, "--sweep-file", s, "--out", out)
+    assert rc == 2 and "is given twice" in err
+    _one_line(err, "--sweep-file")
+    rc, err = _sweep(capsys, s, "--vary", "follower.arm=100", "--out", out)
+    assert rc == 2 and f"is a sweep file: give it as --sweep-file {s}" in err
+    _one_line(err, "FILE")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["rocker.toml", "s.toml"]
