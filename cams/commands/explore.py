@@ -11,12 +11,18 @@ __all__ = ["register", "run"]
 
 
 def run(args) -> int:
+    from pathlib import Path
+
     from cams.cam import Cam
     from cams.io.designfile import load_design
-    from cams.io.files import atomic_write, check_output_path, writes_stdout
+    from cams.io.files import atomic_write, check_output_paths, writes_stdout
     from cams.present.explore import explore_data, page
+    from laws.errors import InputError
 
-    check_output_path(args.out, "--out")  # before any work: an unwritable page is said at once
+    # before any work: an unwritable page, or one that would replace the design file, is said at once
+    check_output_paths([("--out", args.out)], inputs=[("FILE", args.file)])
+    if not writes_stdout(args.out) and Path(args.out).suffix.lower() not in (".html", ".htm"):
+        raise InputError("--out", f"{args.out!r}: the page is HTML, give a .html name (or - for standard output)")
     design = load_design(args.file)
     cam = Cam(design)
     from cams.commands.progress import progress, wanted

@@ -115,6 +115,26 @@ def _print_front(table, front, saved: Path | None) -> None:
         print(f"... {len(front.rows) - PRINTED_ROWS} more rows of the front in {saved}")
 
 
+def _numbers(table, name: str, usable, field: str) -> str:
+    """The column named ``name`` (with or without its unit), checked to hold numbers for a front or a chart.
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: not a column; a column of words or flags (file, a law, error, verified...); a column
+        empty in every usable row (a rocker's offset: nothing to compare).
+    """
+    import numpy as np
+
+    col = table.column(name, field)
+    cells = table.columns[col]
+    if col in ("error", "failures") or not isinstance(cells, np.ndarray) or cells.dtype.kind not in "fi":
+        raise InputError(field, f"{col!r} is not a column of numbers (words or True/False)")
+    if usable.any() and np.all(np.isnan(cells[usable])):
+        raise InputError(field, f"{col!r} is empty in every usable row: nothing to compare")
+    return col
+
+
 def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
     """Read the table at ``path``; print and save its Pareto front (``--pareto``); draw its chart (``--plot``).
 
@@ -138,7 +158,11 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
     # every column named is resolved, the front computed and the chart built before anything is written
     objs: tuple[Objective, ...] = ()
     if args.pareto is not None:
-        objs = tuple(Objective(table.column(o.column, "--pareto"), o.maximise) for o in parse_objectives(args.pareto))
+        objs = tuple(Objective(_numbers(table, o.column, usable, "--pareto"), o.maximise)
+                     for o in parse_objectives(args.pareto))
+        for k, o in enumerate(objs):
+            if o.column in [p.column for p in objs[:k]]:  # R0 and R0_mm are one column
+                raise InputError("--pareto", f"{args.pareto!r}: column {o.column!r} is given twice")
     front = pareto_front(table.columns, objs, usable=usable) if objs else None
     fig = None
     if args.plot is not None:
@@ -146,8 +170,8 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
 
         ax, ay, ac = parse_axes(args)
         if ax is not None and ay is not None:
-            x, y = table.column(ax, "--axes"), table.column(ay, "--axes")
-            colour = table.column(ac, "--axes") if ac else None
+            x, y = _numbers(table, ax, usable, "--axes"), _numbers(table, ay, usable, "--axes")
+            colour = _numbers(table, ac, usable, "--axes") if ac else None
         elif len(objs) >= 2:
             x, y = objs[0].column, objs[1].column
             colour = objs[2].column if len(objs) > 2 else None

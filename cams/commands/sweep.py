@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import shutil
 import sys
 from pathlib import Path
 
@@ -32,6 +33,10 @@ def _n(k: int, what: str) -> str:
 
 def _format(args, out: Path) -> str:
     if args.format is not None:
+        named = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}.get(out.suffix.lower(), args.format)
+        if named != args.format:  # a Parquet file named .csv (or back) is read as the other by its name
+            raise InputError("--format", f"{args.format} does not fit --out {str(out)!r} (a .{named} name): "
+                             f"give --out a .{'parquet' if args.format == 'parquet' else 'csv'} name")
         return args.format
     return "parquet" if out.suffix.lower() in (".parquet", ".pq") else "csv"
 
@@ -53,8 +58,41 @@ def _grid(args):
             raise InputError("--vary", "give at least one KEY=a:b:n or KEY=v1,v2 (or a --sweep-file)")
         files, mode, method = list(args.files), ("zip" if args.zip else "grid"), args.method
         vary = [parse_vary(v) for v in args.vary]
+    seen: dict[Path, int] = {}
+    for k, f in enumerate(files):  # one file twice: the same designs solved twice
+        first = files[seen.setdefault(Path(f).resolve(), k)]
+        if seen[Path(f).resolve()] != k:
+            same = "" if first == f else f" (as {first!r})"
+            raise InputError("FILE" if args.sweep_file is None else "--sweep-file",
+                             f"{f!r} is given twice{same}; give each file once")
     bases = [BaseFile(f, read_toml(f), file_hash(f)) for f in files]
+    for b in bases:
+        if args.sweep_file is None and "files" in b.design:
+            raise InputError("FILE", f"{b.label!r} is a sweep file: give it as --sweep-file {b.label}")
     return files, make_grid(bases, vary, mode=mode, method=method)
+
+
+def _indexes(out: Path, rows: list[dict], size: int) -> set[int]:
+    """The indexes of the rows already in ``out`` (``--resume``): each an integer 0 to ``size - 1``, once.
+
+    Raises
+    ------
+    InputError
+        Naming ``--resume``: a row's index is not one of the sweep's, or is held twice (an edited table).
+    """
+    done: set[int] = set()
+    for k, r in enumerate(rows):
+        v = r.get("index")
+        try:
+            i = int(str(v)) if not isinstance(v, bool) else -1
+        except ValueError:
+            i = -1
+        if not 0 <= i < size or i in done:
+            why = "held twice" if 0 <= i < size else f"not one of the sweep's 0 to {size - 1}"
+            raise InputError("--resume", f"{out}: data row {k + 1} has index {v!r}, {why}; run without --resume "
+                             "to start again")
+        done.add(i)
+    return done
 
 
 def _run(args, state: dict) -> int:
@@ -83,7 +121,7 @@ def _run(args, state: dict) -> int:
     if args.resume and (out.exists() or (fmt == "parquet" and out.with_name(out.name + ".parts").exists())):
         check_identity(out, identity)
         rows = read_rows(fmt, out, grid.keys)
-        done = {int(r["index"]) for r in rows}
+        done = _indexes(out, rows, grid.size)
         before_failed = sum(1 for r in rows if r.get("error") not in (None, "") or
                             r.get("failures") not in (None, ""))
     else:
@@ -104,15 +142,22 @@ def _run(args, state: dict) -> int:
 
     from cams.commands.progress import progress, wanted
 
-    finished = False
     try:
         with progress(wanted(args), "solving the designs", unit="design") as bar:  # none in a log file or pipe
             res = run_grid(grid, workers=args.jobs, done=done, sink=write, keep=False, progress=bar.to,
                            estimate=None if args.quiet else said, per_design=args.per_design,
                            cluster=cluster)
-        finished = True
-    finally:
-        sink.close(finished=finished)
+    except BaseException as e:
+        sink.close(finished=False)
+        if isinstance(e, InputError) and not append and not state["rows"]:
+            # refused before a row was written (--dask's cluster unreachable): no file is left behind
+            from cams.sweep.output import parts_dir, sidecar_path
+
+            for p in (out, sidecar_path(out)):
+                p.unlink(missing_ok=True)
+            shutil.rmtree(parts_dir(out), ignore_errors=True)
+        raise
+    sink.close(finished=True)
     failed = res.failed + before_failed
     none = "" if not done else f", {len(done)} resumed"
     # one rule for every command (cams.assess): a row without a solution, or not usable (certified, verified,

@@ -256,6 +256,20 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
         progress: Callable[[int, int], None] | None = None,
         estimate: Callable[[float, int, int], None] | None = None, cluster: str | None = None,
         per_design: bool = False) -> tuple[int, int]:
+    """:func:`_run` on this machine, or on ``cluster`` reached before any design is solved (a wrong address is
+    said at once, with no row written, and a small sweep's designs all timed here still ask for the cluster)."""
+    if cluster is None or not todo:
+        return _run(grid, todo, workers=workers, sink=sink, progress=progress, estimate=estimate,
+                    pool=lambda: executor(None, workers), per_design=per_design)
+    with executor(cluster, workers) as pair:
+        return _run(grid, todo, workers=workers, sink=sink, progress=progress, estimate=estimate,
+                    pool=lambda: contextlib.nullcontext(pair), per_design=per_design)
+
+
+def _run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]], None],
+         progress: Callable[[int, int], None] | None, estimate: Callable[[float, int, int], None] | None,
+         pool: Callable[[], contextlib.AbstractContextManager[tuple[Executor, Callable[[], None]]]],
+         per_design: bool) -> tuple[int, int]:
     """Evaluate the combinations ``todo`` and hand each chunk's rows to ``sink`` as it completes.
 
     A few designs are timed first in this process (the first of each base file's block still to do, and the
@@ -317,7 +331,7 @@ def run(grid: Grid, todo: list[int], *, workers: int, sink: Callable[[list[dict]
         return done, workers
     chunk = chunk_size(len(rest), workers, each, MAX_CHUNK if per_design else MAX_BATCH_CHUNK)
     chunks = [rest[k:k + chunk] for k in range(0, len(rest), chunk)]
-    with executor(cluster, workers) as (ex, stop):
+    with pool() as (ex, stop):
         try:
             pending: set[Future] = set()
             it = iter(chunks)

@@ -73,6 +73,8 @@ def parse_vary(spec: str) -> tuple[str, Any]:
         if len(ends) != 3 or not float(ends[2]).is_integer() or float(ends[2]) < 1:
             raise InputError("--vary", f"{spec!r}: a range is a:b:n with a count n >= 1")
         a, b, n = float(ends[0]), float(ends[1]), int(float(ends[2]))
+        if n == 1 and a != b:  # linspace would keep a alone: b silently dropped
+            raise InputError("--vary", f"{spec!r}: a range of one value has a == b (or give the value alone)")
         if n > MAX_DESIGNS:
             raise InputError("--vary", f"{spec!r}: at most {MAX_DESIGNS:,} values, got {n:,}")
         vals = np.linspace(a, b, n)
@@ -365,6 +367,9 @@ def make_grid(files: list[BaseFile], vary: list[tuple[str, Any]], *, mode: str =
     for key, vals in zip(keys, values, strict=True):
         if len(vals) == 0:
             raise InputError("--vary", f"{key!r} has no values")
+        twice = [v for k, v in enumerate(vals) if v in vals[:k]]
+        if mode == "grid" and twice:  # the same designs solved twice (zip pairs may repeat one key's value)
+            raise InputError("--vary", f"{key!r}: the value {as_number(twice[0])!r} is given twice; give each once")
     if mode == "zip" and len({len(v) for v in values}) > 1:
         counts = ", ".join(f"{k}: {len(v)}" for k, v in zip(keys, values, strict=True))
         raise InputError("--zip", f"zipped keys give as many values each, got {counts}")
@@ -413,7 +418,10 @@ def read_sweep_file(path: str | Path) -> tuple[list[str], list[tuple[str, Any]],
     from cams.io.document import read_toml
 
     p = Path(path)
-    d = read_toml(p)
+    try:
+        d = read_toml(p)
+    except InputError as e:  # the sweep file itself, not a design FILE
+        raise InputError("--sweep-file", str(e).removeprefix(f"{e.field}: ")) from None
     for k in d:
         if k not in SWEEP_FILE_KEYS:
             raise InputError("--sweep-file", f"unknown key {k!r}, must be one of files, mode, method, vary")

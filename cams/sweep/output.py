@@ -141,6 +141,9 @@ def check_identity(out: Path, identity: dict) -> None:
                          "not by this version; run without --resume to start again") from None
     except (OSError, ValueError) as e:
         raise InputError("--resume", f"{side} cannot be read ({e})") from None
+    if not isinstance(held, dict):
+        raise InputError("--resume", f"{side} is not a sweep's identity (a JSON object); run without --resume to "
+                         "start again")
     if held != identity:
         what = [k for k in identity if held.get(k) != identity[k]] or ["format"]
         raise InputError("--resume", f"{out} holds another sweep (its {', '.join(what)} differ); run without "

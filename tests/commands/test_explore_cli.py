@@ -98,3 +98,15 @@ def test_the_page_to_standard_output_says_so_on_stderr():
     assert run.returncode == 0, run.stderr
     assert run.stdout.startswith("<!doctype html>") and run.stdout.rstrip().endswith("</html>")
     assert run.stderr.startswith("wrote -")
+
+
+@pytest.mark.parametrize("name, said", [("design.toml", "it is the input file FILE"), ("page.png", "give a .html")])
+def test_out_is_neither_the_design_file_nor_another_kind(tmp_path, capsys, name, said):
+    """``--out`` equal to the design file replaced the design with the page; another extension hid HTML."""
+    f = tmp_path / "design.toml"
+    f.write_text((EXAMPLES / "rocker_force.toml").read_text(encoding="utf-8"), encoding="utf-8")
+    before = f.read_text(encoding="utf-8")
+    assert main(["explore", str(f), "--out", str(tmp_path / name)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("cams explore: error: --out: ") and said in err
+    assert f.read_text(encoding="utf-8") == before and sorted(p.name for p in tmp_path.iterdir()) == ["design.toml"]

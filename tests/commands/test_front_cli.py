@@ -170,3 +170,30 @@ def test_a_bad_axis_writes_nothing(swept, capsys, tmp_path):
     code, text, err = _run(capsys, "front", t, "--pareto", "R0,L", "--plot", tmp_path / "c.png", "--axes", "R0,zz")
     assert code == 2 and text == "" and "--axes: 'zz' is not a column of" in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["t.csv"]
+
+
+@pytest.mark.parametrize(
+    "option, said",
+    [
+        (["--pareto", "R0,R0_mm"], "--pareto: 'R0,R0_mm': column 'R0' is given twice"),
+        (["--pareto", "offset_mm,R0"], "--pareto: 'offset' is empty in every usable row"),
+        (["--pareto", "error,R0"], "--pareto: 'error' is not a column of numbers"),
+        (["--pareto", "verified,R0"], "--pareto: 'verified' is not a column of numbers"),
+        (["--pareto", "file,R0"], "--pareto: 'file' is not a column of numbers"),
+        (["--axes", "file,R0"], "--axes: 'file' is not a column of numbers"),
+        (["--axes", "offset,R0"], "--axes: 'offset' is empty in every usable row"),
+        (["--axes", "R0,L,failures"], "--axes: 'failures' is not a column of numbers"),
+    ],
+)
+def test_a_column_that_cannot_be_compared_is_one_line(swept, capsys, tmp_path, option, said):
+    """A rocker's offset (empty), words, flags, or one column named twice through its unit: refused naming the
+    option (they gave an empty front, exit 1, or a blank chart, exit 0, or an --x the command does not have);
+    nothing written."""
+    _, out, _ = swept
+    t = tmp_path / "t.csv"
+    t.write_bytes(out.read_bytes())
+    plot = ["--plot", tmp_path / "c.png"] if option[0] == "--axes" else []
+    code, text, err = _run(capsys, "front", t, *option, *plot)
+    assert code == 2 and text == "" and err == f"cams front: error: {said}" + err.split(said, 1)[1]
+    assert err.count("\n") == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["t.csv"]

@@ -316,3 +316,100 @@ def test_killed_and_resumed_loses_and_repeats_no_row(straight_per_design, tmp_pa
     rows = _rows(out)
     assert [int(r["index"]) for r in rows] == list(range(24))  # every index exactly once
     assert rows == _rows(straight_per_design[1])  # and the same rows as the straight run's
+
+
+def _one_line(err: str, field: str) -> None:
+    assert err.count("\n") == 1 and err.startswith(f"cams sweep: error: {field}: ") and "Traceback" not in err
+
+
+@pytest.mark.parametrize(
+    "edit, said",
+    [
+        (lambda side, table: side.write_text("[]"), "is not a sweep's identity"),
+        (lambda side, table: table.write_text(table.read_text() + "abc" + "," * 18 + "\n"), "index 'abc'"),
+        (lambda side, table: table.write_text(table.read_text().replace("\n0,", "\n7,", 1)), "index '7', not one"),
+        (lambda side, table: table.write_text(table.read_text().replace("\n1,", "\n0,", 1)), "held twice"),
+    ],
+)
+def test_resume_refuses_an_edited_sidecar_or_index(tmp_path, capsys, edit, said):
+    """An identity that is not a JSON object, a row index that is no integer, out of the sweep's range or
+    repeated: one line naming --resume, exit 2, the table left as it is (it was: a traceback, or rows kept
+    beyond the sweep's and counted as resumed)."""
+    argv = [ROCKER, "--vary", "follower.arm=100,110", "--jobs", "1", "--quiet", "--out", tmp_path / "t.csv"]
+    assert _sweep(capsys, *argv)[0] == 0
+    table, side = tmp_path / "t.csv", tmp_path / "t.csv.sweep.json"
+    edit(side, table)
+    before = table.read_text()
+    rc, err = _sweep(capsys, *argv, "--resume")
+    assert rc == 2 and said in err
+    _one_line(err, "--resume")
+    assert table.read_text() == before
+
+
+@pytest.mark.parametrize("name, fmt", [("t.csv", "parquet"), ("t.parquet", "csv"), ("t.pq", "csv")])
+def test_a_format_against_the_out_name_is_refused(tmp_path, capsys, name, fmt):
+    """``--format parquet --out t.csv`` wrote Parquet under a CSV name (read back as CSV by its name)."""
+    rc, err = _sweep(capsys, ROCKER, "--vary", "follower.arm=100", "--out", tmp_path / name, "--format", fmt)
+    assert rc == 2
+    _one_line(err, "--format")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("text, said", [(None, "cannot read"), ('files = ["a.toml"\n', "not valid TOML")])
+def test_an_unreadable_sweep_file_names_the_option(tmp_path, capsys, text, said):
+    s = tmp_path / "s.toml"
+    if text is not None:
+        s.write_text(text)
+    rc, err = _sweep(capsys, "--sweep-file", s, "--out", tmp_path / "t.csv")
+    assert rc == 2 and said in err
+    _one_line(err, "--sweep-file")
+
+
+def test_an_unreachable_cluster_is_said_before_any_design(tmp_path, capsys, monkeypatch):
+    """A sweep small enough to be all timed in this process never asked for the cluster (exit 0 on this
+    machine); a larger one wrote its timed rows, then failed. Now: one line, exit 2, no file left."""
+    pytest.importorskip("distributed")
+    import cams.sweep.cluster
+
+    monkeypatch.setattr(cams.sweep.cluster, "CONNECT_TIMEOUT", 0.2)
+    out = tmp_path / "t.csv"
+    rc, err = _sweep(capsys, ROCKER, "--vary", "follower.arm=100,110", "--out", out, "--jobs", "1", "--quiet",
+                     "--dask", "tcp://127.0.0.1:1")
+    assert rc == 2 and "cannot reach the Dask scheduler" in err.splitlines()[-1]
+    assert err.splitlines()[-1].startswith("cams sweep: error: --dask: ")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "vary, said",
+    [
+        ("follower.arm=100:120:1", "a range of one value has a == b"),  # was: 100 alone, 120 dropped
+        ("follower.arm=100,1e2", "the value 100 is given twice"),  # was: the same design solved twice
+        ("follower.arm=90:90:3", "the value 90 is given twice"),
+        ("motion[0].law=cycloidal,cycloidal", "the value 'cycloidal' is given twice"),
+    ],
+)
+def test_a_range_dropping_its_end_or_a_repeated_value_is_one_line(tmp_path, capsys, vary, said):
+    rc, err = _sweep(capsys, ROCKER, "--vary", vary, "--out", tmp_path / "t.csv", "--jobs", "1", "--quiet")
+    assert rc == 2 and said in err
+    _one_line(err, "--vary")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_file_twice_or_a_sweep_file_as_file_is_one_line(tmp_path, capsys):
+    """One design file twice solved its designs twice; a sweep file given as FILE was blamed on --vary."""
+    base = tmp_path / "rocker.toml"
+    base.write_text(ROCKER.read_text(encoding="utf-8"), encoding="utf-8")
+    out = tmp_path / "t.csv"
+    rc, err = _sweep(capsys, base, f"{tmp_path}/./rocker.toml", "--vary", "follower.arm=100", "--out", out)
+    assert rc == 2 and "is given twice (as " in err
+    _one_line(err, "FILE")
+    s = tmp_path / "s.toml"
+    s.write_text('files = ["rocker.toml", "./rocker.toml"]\n[vary]\n"follower.arm" = [100]\n', encoding="utf-8")
+    rc, err = _sweep(capsys, "--sweep-file", s, "--out", out)
+    assert rc == 2 and "is given twice" in err
+    _one_line(err, "--sweep-file")
+    rc, err = _sweep(capsys, s, "--vary", "follower.arm=100", "--out", out)
+    assert rc == 2 and f"is a sweep file: give it as --sweep-file {s}" in err
+    _one_line(err, "FILE")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["rocker.toml", "s.toml"]
