@@ -41,7 +41,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from bench_solvers import machine  # noqa: E402
+from hardware import machine  # noqa: E402
 
 KEYS = ("limits.pressure_angle", "follower.arm")
 #: The sweep's columns of the largest pressure angles.

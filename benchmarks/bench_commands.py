@@ -28,7 +28,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import platform
 import resource
 import shutil
 import statistics
@@ -37,6 +36,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+from hardware import machine
 
 ROOT = Path(__file__).resolve().parents[1]
 #: The command line's entry, run the same way in both trees (the base has no ``cams/__main__.py``).
@@ -143,26 +144,6 @@ def _prepare(tree: Path, out: Path) -> None:
     text = (tree / "examples" / "translating_designed_rise.toml").read_text()
     assert PRESSURE_OBJECTIVE[0] in text, "the motion-design example's objective line moved"
     (out / "designed_pressure.toml").write_text(text.replace(*PRESSURE_OBJECTIVE))
-
-
-def machine() -> dict:
-    import numpy as np
-
-    model = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    return {
-        "cpu": model,
-        "cores": os.cpu_count(),
-        "python": sys.version.split()[0],
-        "numpy": np.__version__,
-        "platform": platform.platform(),
-    }
 
 
 def _load() -> list[float]:

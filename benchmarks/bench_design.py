@@ -44,7 +44,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from bench_solvers import machine  # noqa: E402
+from hardware import machine  # noqa: E402
 
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
 HEAVY = ("matplotlib", "cvxpy", "ezdxf")

@@ -33,7 +33,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from bench_solvers import machine  # noqa: E402
+from hardware import machine  # noqa: E402
 
 EXAMPLES = ("rocker_force.toml", "translating_force.toml")
 

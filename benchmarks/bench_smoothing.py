@@ -37,7 +37,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from bench_solvers import machine  # noqa: E402
+from hardware import machine  # noqa: E402
 
 EXAMPLE = ROOT / "examples" / "translating_designed_rise.toml"
 #: Samples a span at which the linear program takes the jerk's variation.

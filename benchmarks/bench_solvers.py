@@ -40,7 +40,6 @@ for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 
 import argparse  # noqa: E402
 import json  # noqa: E402
-import platform  # noqa: E402
 import statistics  # noqa: E402
 import sys  # noqa: E402
 import time  # noqa: E402
@@ -52,6 +51,8 @@ import numpy as np  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+
+from hardware import machine  # noqa: E402
 
 from cams.io.designfile import design_from_dict  # noqa: E402
 from cams.verify.pressure import check_pressure  # noqa: E402
@@ -332,20 +333,6 @@ def bench_phases(counts, log) -> list[dict]:
                      "certified": sol.certified, "R0": sol.objective})
         log(f"exact, {n} phases: {sec:.2f} s, peak {peak / 1e6:.0f} MB, {sol.iterations} iterations")
     return rows
-
-
-def machine() -> dict:
-    """The machine: CPU model and cores, Python and numpy versions."""
-    model = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    return {"cpu": model, "cores": os.cpu_count(), "python": sys.version.split()[0], "numpy": np.__version__,
-            "platform": platform.platform()}
 
 
 def main(argv=None):
