@@ -1,21 +1,10 @@
 """The batch benchmark runs on its quick grid and writes its figures: both paths agree row by row."""
 
-import json
-import subprocess
-import sys
-
-from tests.conftest import ROOT
+from tests.benchmarks_smoke.run import run_benchmark
 
 
 def test_bench_batch_quick_writes_json(tmp_path):
-    r = subprocess.run(
-        [sys.executable, str(ROOT / "benchmarks" / "bench_batch.py"), "--quick", "--out", str(tmp_path)],
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert r.returncode == 0, r.stderr
-    res = json.loads((tmp_path / "batch.json").read_text())
+    res = run_benchmark("bench_batch.py", tmp_path, "--quick", result="batch.json")
     s = res["summary"]
     assert s["designs"] == 20 and {"cpu", "cores", "python", "numpy"} <= set(res["machine"])
     assert s["rows_verified_and_buildable_batch"] == s["rows_verified_and_buildable_per_design"] == 20

@@ -1,23 +1,12 @@
 """The export-motion benchmark runs on one example at one tolerance and writes its figures."""
 
-import json
-import subprocess
-import sys
-
 import pytest
 
-from tests.conftest import ROOT
+from tests.benchmarks_smoke.run import run_benchmark
 
 
 def test_bench_export_motion_quick_writes_json(tmp_path):
-    r = subprocess.run(
-        [sys.executable, str(ROOT / "benchmarks" / "bench_export_motion.py"), "--quick", "--out", str(tmp_path)],
-        capture_output=True,
-        text=True,
-        timeout=600,
-    )
-    assert r.returncode == 0, r.stderr
-    res = json.loads((tmp_path / "export_motion.json").read_text())
+    res = run_benchmark("bench_export_motion.py", tmp_path, "--quick", result="export_motion.json", timeout=600)
     assert res["examples"] == ["translating_force.toml"] and res["tolerances_mm"] == [0.01]
     formats = {row["format"] for row in res["rows"]}
     assert formats == {"dxf", "svg"}

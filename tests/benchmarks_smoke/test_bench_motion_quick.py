@@ -1,17 +1,10 @@
 """The motion-design benchmark runs on one coarse space and writes its figures."""
 
-import json
-import subprocess
-import sys
-
-from tests.conftest import ROOT
+from tests.benchmarks_smoke.run import run_benchmark
 
 
 def test_bench_motion_quick_writes_json(tmp_path):
-    r = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_motion.py"), "--spans", "5", "--repeats",
-                        "1", "--out", str(tmp_path)], capture_output=True, text=True, timeout=300)
-    assert r.returncode == 0, r.stderr
-    res = json.loads((tmp_path / "motion.json").read_text())
+    res = run_benchmark("bench_motion.py", tmp_path, "--spans", "5", "--repeats", "1", result="motion.json")
     (row,) = res["rows"]
     assert row["spans"] == 5 and row["verified"] and row["certified"]
     assert row["lower_bound_mm"] <= row["R0_mm"] < res["original_R0_mm"]

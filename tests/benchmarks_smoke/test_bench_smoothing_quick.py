@@ -1,17 +1,10 @@
 """The smoothing benchmark runs on one coarse space and writes its figures."""
 
-import json
-import subprocess
-import sys
-
-from tests.conftest import ROOT
+from tests.benchmarks_smoke.run import run_benchmark
 
 
 def test_bench_smoothing_quick_writes_json(tmp_path):
-    r = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_smoothing.py"), "--slacks", "0.001",
-                        "--spans", "4", "--out", str(tmp_path)], capture_output=True, text=True, timeout=300)
-    assert r.returncode == 0, r.stderr
-    res = json.loads((tmp_path / "smoothing.json").read_text())
+    res = run_benchmark("bench_smoothing.py", tmp_path, "--slacks", "0.001", "--spans", "4", result="smoothing.json")
     (row,) = res["rows"]
     sm, least = row["smoothing"], row["least_jerk_variation"]
     assert row["verified"] and row["certified"] and row["slack"] == 0.001
