@@ -78,6 +78,19 @@ def _mark_phases(ax, starts) -> None:
     ax.set_xlim(0, 360)
 
 
+def _by_angle(phi):
+    """The cam angles ``phi`` (rad, one turn) in degrees, ascending, and ``finite(v)``: a quantity sampled at
+    ``phi`` put in that order, its non-finite values NaN (a break in the curve, where a force is unbounded)."""
+    x = np.degrees(phi)
+    o = np.argsort(x)
+
+    def finite(v):
+        v = np.asarray(v, dtype=float)[o]
+        return np.where(np.isfinite(v), v, np.nan)
+
+    return x[o], finite
+
+
 def legend_once(ax, **kw):
     """A legend with each label once."""
     return ax.legend(*_unique_handles(ax), **kw)
@@ -469,13 +482,7 @@ def plot_forces(cam):
     cf = df.forces
     d = cam.design
     rocker = d.follower.kind == "rocker"
-    x = np.degrees(cf.phi)
-    o = np.argsort(x)
-    x = x[o]
-
-    def finite(v):
-        v = np.asarray(v, dtype=float)[o]
-        return np.where(np.isfinite(v), v, np.nan)
+    x, finite = _by_angle(cf.phi)
 
     load = float(d.dynamics.dynamics.load)
     fig = _figure(h=7.5 if rocker else 6.0)
@@ -535,13 +542,7 @@ def plot_contact(cam):
         raise ValueError(why)
     co = cam.contact
     d = cam.design
-    x = np.degrees(co.phi)
-    o = np.argsort(x)
-    x = x[o]
-
-    def finite(v):
-        v = np.asarray(v, dtype=float)[o]
-        return np.where(np.isfinite(v), v, np.nan)
+    x, finite = _by_angle(co.phi)
 
     fig = _figure(h=6.0)
     ax_p, ax_h = fig.subplots(2, 1, sharex=True)
