@@ -79,7 +79,44 @@ function camsMath(data) {
     return { value: best, u: bestU };
   }
 
-  if (face.mode === "size") return flatMath(face, phases, interp, phaseMax);
+  // one turn sampled for the profile: fn(ph, u, m, phi) at each phase's k steps (k = per in a rise or return,
+  // one a degree in a dwell, at least 8), the phase's end left to the next phase; the points fn returns, in order
+  function aroundProfile(per, fn) {
+    const pts = [];
+    for (const ph of phases) {
+      const k = ph.kind === "dwell" ? Math.max(8, Math.ceil((ph.angle / (2 * Math.PI)) * 360)) : per;
+      for (let j = 0; j < k; j++) {
+        const u = j / k;
+        pts.push(fn(ph, u, interp(ph, u), ph.start + u * ph.angle));
+      }
+    }
+    return pts;
+  }
+
+  // one turn sampled for the chart, per phase with both ends (per steps a rise or return, 24 a dwell):
+  // { index, kind, points } with the points fn(ph, u, m, phi) returns
+  function perPhase(per, fn) {
+    return phases.map((ph) => {
+      const k = ph.kind === "dwell" ? 24 : per;
+      const pts = [];
+      for (let j = 0; j <= k; j++) {
+        const u = j / k;
+        pts.push(fn(ph, u, interp(ph, u), ph.start + u * ph.angle));
+      }
+      return { index: ph.index, kind: ph.kind, points: pts };
+    });
+  }
+
+  // the laws at cam angle phi (rad, any turn): the interpolated s, ds, d2s of the phase holding it
+  function lawsAt(phi) {
+    const x = ((phi % (2 * Math.PI)) + 2 * Math.PI) % (2 * Math.PI);
+    let ph = phases[phases.length - 1];
+    for (const p of phases) if (x >= p.start && x < p.start + p.angle) { ph = p; break; }
+    return interp(ph, (x - ph.start) / ph.angle);
+  }
+  const sampling = { aroundProfile, perPhase, lawsAt };
+
+  if (face.mode === "size") return flatMath(face, phases, interp, phaseMax, sampling);
 
   const fol = face.follower;
   const rocker = fol.kind === "rocker";
@@ -223,16 +260,9 @@ function camsMath(data) {
 
   // the pressure angle over the cycle (degrees against cam angle in degrees), per phase
   function cycle(ox, oy, per = 240) {
-    return phases.map((ph) => {
-      const k = ph.kind === "dwell" ? 24 : per;
-      const pts = [];
-      for (let j = 0; j <= k; j++) {
-        const u = j / k;
-        const m = interp(ph, u);
-        const g = gamma(ox, oy, m.s, m.ds);
-        pts.push([deg(ph.start + u * ph.angle), g > -Infinity ? deg(g) : null]);
-      }
-      return { index: ph.index, kind: ph.kind, points: pts };
+    return perPhase(per, (ph, u, m, phi) => {
+      const g = gamma(ox, oy, m.s, m.ds);
+      return [deg(phi), g > -Infinity ? deg(g) : null];
     });
   }
 
@@ -240,54 +270,43 @@ function camsMath(data) {
   // curvature of the pitch curve (> 0 convex) and where the roller undercuts it (convex, radius below the roller's)
   function profile(ox, oy, per = 360) {
     const rr = fol.roller_radius;
-    const pts = [];
-    for (const ph of phases) {
-      const k = ph.kind === "dwell" ? Math.max(8, Math.ceil((ph.angle / (2 * Math.PI)) * 360)) : per;
-      for (let j = 0; j < k; j++) {
-        const u = j / k;
-        const m = interp(ph, u);
-        const phi = ph.start + u * ph.angle;
-        const f = frame(m.s);
-        const rx = f.ax - ox;
-        const ry = f.ay - oy;
-        // w = r' - eps J r, r' = T s'; w2 = w' - eps J w, w' = r'' - eps J r', r'' = T' s'^2 + T s''
-        const r1x = f.tx * m.ds;
-        const r1y = f.ty * m.ds;
-        const wx = r1x + eps * ry;
-        const wy = r1y - eps * rx;
-        const dTx = rocker ? -f.ax : 0.0;
-        const dTy = rocker ? -f.ay : 0.0;
-        const r2x = dTx * m.ds * m.ds + f.tx * m.d2s;
-        const r2y = dTy * m.ds * m.ds + f.ty * m.d2s;
-        const w1x = r2x + eps * r1y;
-        const w1y = r2y - eps * r1x;
-        const w2x = w1x + eps * wy;
-        const w2y = w1y - eps * wx;
-        const wn = Math.hypot(wx, wy);
-        const kappa = (wx * w2y - wy * w2x) / (wn * wn * wn);
-        const rho = 1.0 / (-eps * kappa);
-        // into the cam frame: rotate by -eps phi
-        const c = Math.cos(-eps * phi);
-        const s = Math.sin(-eps * phi);
-        const px = c * rx - s * ry;
-        const py = s * rx + c * ry;
-        const nfx = (-eps * wy) / wn;
-        const nfy = (eps * wx) / wn;
-        const nx = c * nfx - s * nfy;
-        const ny = s * nfx + c * nfy;
-        pts.push({ phi, pitch: [px, py], work: [px - rr * nx, py - rr * ny], outer: [px + rr * nx, py + rr * ny],
-                   rho, undercut: rr > 0 && rho > 0 && rho < rr, s: m.s });
-      }
-    }
-    return pts;
+    return aroundProfile(per, (ph, u, m, phi) => {
+      const f = frame(m.s);
+      const rx = f.ax - ox;
+      const ry = f.ay - oy;
+      // w = r' - eps J r, r' = T s'; w2 = w' - eps J w, w' = r'' - eps J r', r'' = T' s'^2 + T s''
+      const r1x = f.tx * m.ds;
+      const r1y = f.ty * m.ds;
+      const wx = r1x + eps * ry;
+      const wy = r1y - eps * rx;
+      const dTx = rocker ? -f.ax : 0.0;
+      const dTy = rocker ? -f.ay : 0.0;
+      const r2x = dTx * m.ds * m.ds + f.tx * m.d2s;
+      const r2y = dTy * m.ds * m.ds + f.ty * m.d2s;
+      const w1x = r2x + eps * r1y;
+      const w1y = r2y - eps * r1x;
+      const w2x = w1x + eps * wy;
+      const w2y = w1y - eps * wx;
+      const wn = Math.hypot(wx, wy);
+      const kappa = (wx * w2y - wy * w2x) / (wn * wn * wn);
+      const rho = 1.0 / (-eps * kappa);
+      // into the cam frame: rotate by -eps phi
+      const c = Math.cos(-eps * phi);
+      const s = Math.sin(-eps * phi);
+      const px = c * rx - s * ry;
+      const py = s * rx + c * ry;
+      const nfx = (-eps * wy) / wn;
+      const nfy = (eps * wx) / wn;
+      const nx = c * nfx - s * nfy;
+      const ny = s * nfx + c * nfy;
+      return { phi, pitch: [px, py], work: [px - rr * nx, py - rr * ny], outer: [px + rr * nx, py + rr * ny],
+               rho, undercut: rr > 0 && rho > 0 && rho < rr, s: m.s };
+    });
   }
 
   // the follower at cam angle phi: its displacement and the roller centre (fixed frame)
   function follower(phi) {
-    const x = ((phi % (2 * Math.PI)) + 2 * Math.PI) % (2 * Math.PI);
-    let ph = phases[phases.length - 1];
-    for (const p of phases) if (x >= p.start && x < p.start + p.angle) { ph = p; break; }
-    const m = interp(ph, (x - ph.start) / ph.angle);
+    const m = lawsAt(phi);
     const f = frame(m.s);
     return { s: m.s, A: [f.ax, f.ay] };
   }
@@ -303,7 +322,7 @@ function camsMath(data) {
 // cos a0 = (f - R0) / L, p = f - L cos a. The profile is the envelope X = p m + (p' / theta') t, its radius of
 // curvature rho = p + (p'' theta' - p' theta'') / theta'^3, the contact on a rocker's face c = -sigma (-L sin a +
 // p' / theta') from the pivot's foot and its pressure angle atan(|f| / |c|) (0 for a translating face).
-function flatMath(face, phases, interp, phaseMax) {
+function flatMath(face, phases, interp, phaseMax, sampling) {
   "use strict";
   const fol = face.follower;
   const rocker = fol.kind === "rocker";
@@ -391,41 +410,24 @@ function flatMath(face, phases, interp, phaseMax) {
 
   // the profile in the cam frame: the envelope's points, their radius of curvature, the face's normal angle
   function profile(R0, L, per = 360) {
-    const pts = [];
-    for (const ph of phases) {
-      const k = ph.kind === "dwell" ? Math.max(8, Math.ceil((ph.angle / (2 * Math.PI)) * 360)) : per;
-      for (let j = 0; j < k; j++) {
-        const u = j / k;
-        const m = interp(ph, u);
-        const phi = ph.start + u * ph.angle;
-        const t = terms(R0, L, m.s, m.ds, m.d2s);
-        const th = t.a - eps * phi;
-        const pt = t.p1 / t.t1;
-        const X = [t.p * Math.cos(th) - pt * Math.sin(th), t.p * Math.sin(th) + pt * Math.cos(th)];
-        pts.push({ phi, work: X, rho: rhoOf(t), a: t.a, p: t.p, s: m.s });
-      }
-    }
-    return pts;
+    return sampling.aroundProfile(per, (ph, u, m, phi) => {
+      const t = terms(R0, L, m.s, m.ds, m.d2s);
+      const th = t.a - eps * phi;
+      const pt = t.p1 / t.t1;
+      const X = [t.p * Math.cos(th) - pt * Math.sin(th), t.p * Math.sin(th) + pt * Math.cos(th)];
+      return { phi, work: X, rho: rhoOf(t), a: t.a, p: t.p, s: m.s };
+    });
   }
 
   function cycle(R0, L, per = 240) {
-    return phases.map((ph) => {
-      const k = ph.kind === "dwell" ? 24 : per;
-      const pts = [];
-      for (let j = 0; j <= k; j++) {
-        const m = interp(ph, j / k);
-        const t = terms(R0, L, m.s, m.ds, m.d2s);
-        pts.push([deg(ph.start + (j / k) * ph.angle), rhoOf(t), deg(gammaOf(L, t))]);
-      }
-      return { index: ph.index, kind: ph.kind, points: pts };
+    return sampling.perPhase(per, (ph, u, m, phi) => {
+      const t = terms(R0, L, m.s, m.ds, m.d2s);
+      return [deg(phi), rhoOf(t), deg(gammaOf(L, t))];
     });
   }
 
   function follower(R0, L, phi) {
-    const x = ((phi % (2 * Math.PI)) + 2 * Math.PI) % (2 * Math.PI);
-    let ph = phases[phases.length - 1];
-    for (const p of phases) if (x >= p.start && x < p.start + p.angle) { ph = p; break; }
-    const m = interp(ph, (x - ph.start) / ph.angle);
+    const m = sampling.lawsAt(phi);
     const t = terms(R0, L, m.s, m.ds, m.d2s);
     return { s: m.s, a: t.a, p: t.p, contact: t.p1 / t.t1 };
   }

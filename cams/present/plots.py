@@ -70,6 +70,27 @@ def _unique_handles(ax) -> tuple[list, list[str]]:
     return list(first.values()), list(first)
 
 
+def _mark_phases(ax, starts) -> None:
+    """Draw a dotted line at each phase's start (``starts``, radians from the timing datum) on ``ax``, whose
+    abscissa (the cam angle, degrees) is set to one turn, 0 to 360."""
+    for s in starts:
+        ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
+    ax.set_xlim(0, 360)
+
+
+def _by_angle(phi):
+    """The cam angles ``phi`` (rad, one turn) in degrees, ascending, and ``finite(v)``: a quantity sampled at
+    ``phi`` put in that order, its non-finite values NaN (a break in the curve, where a force is unbounded)."""
+    x = np.degrees(phi)
+    o = np.argsort(x)
+
+    def finite(v):
+        v = np.asarray(v, dtype=float)[o]
+        return np.where(np.isfinite(v), v, np.nan)
+
+    return x[o], finite
+
+
 def legend_once(ax, **kw):
     """A legend with each label once."""
     return ax.legend(*_unique_handles(ax), **kw)
@@ -310,8 +331,7 @@ def plot_motion(design, *, n: int = 721):
         ax.plot(x, Y[k], color="#2b6cb0", lw=1.2)
         ax.set_ylabel(labels[k], fontsize=8)
         ax.grid(True, lw=0.3)
-        for s in prog.starts:
-            ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
+        _mark_phases(ax, prog.starts)
     # impacts as marked lines named once in a legend: text labels at each would pile up where impacts are close
     for imp in impacts:
         k = 1 if imp.kind == "hard" else 2
@@ -321,7 +341,6 @@ def plot_motion(design, *, n: int = 721):
         if axes[k].get_legend_handles_labels()[1]:
             legend_once(axes[k], fontsize=7, loc="upper right")
     axes[-1].set_xlabel("cam angle φ, deg")
-    axes[-1].set_xlim(0, 360)
     _title(axes[0], f"{design.name}: motion diagrams" + (f" at {design.rpm:g} rpm" if design.rpm else " (analogues)"))
     return fig
 
@@ -340,9 +359,7 @@ def plot_pressure(result, *, n: int = 721):
         ax.plot(np.degrees(prog.starts[i] + u * p.angle), np.degrees(g),
                 color="#2f855a" if p.kind == "rise" else "#b7791f", lw=1.3, label=p.kind)
     draw_limits(ax, d)
-    for s in prog.starts:
-        ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
-    ax.set_xlim(0, 360)
+    _mark_phases(ax, prog.starts)
     ax.set_xlabel("cam angle φ, deg")
     ax.set_ylabel("pressure angle γ, deg")
     _title(ax, f"{d.name}: pressure angle")
@@ -383,11 +400,9 @@ def plot_flat_pressure(solution, *, n: int = 721):
     fig = _figure(h=4.0)
     ax = fig.add_subplot()
     ax.plot(np.degrees(c["phi"]), np.degrees(c["pressure"]), color="#2f855a", lw=1.3, label="pressure angle")
-    for s in d.program.starts:
-        ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
     why = ("face perpendicular to the axis" if d.follower.kind == "translating"
            else f"face offset {d.follower.face_offset:g} mm from the pivot")
-    ax.set_xlim(0, 360)
+    _mark_phases(ax, d.program.starts)
     top = max(5.0, 1.15 * np.degrees(np.nanmax(c["pressure"])))
     ax.set_ylim(-0.05 * top, top)
     ax.set_xlabel("cam angle φ, deg")
@@ -427,11 +442,9 @@ def plot_curvature(solution, *, n: int = 721):
     ax2.set_ylabel("contact, mm")
     ax2.set_xlabel("cam angle φ, deg")
     for ax in (ax1, ax2):
-        for s in d.program.starts:
-            ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
         ax.grid(True, lw=0.3)
         legend_once(ax, fontsize=7, loc="best")
-        ax.set_xlim(0, 360)
+        _mark_phases(ax, d.program.starts)
     return fig
 
 
@@ -469,13 +482,7 @@ def plot_forces(cam):
     cf = df.forces
     d = cam.design
     rocker = d.follower.kind == "rocker"
-    x = np.degrees(cf.phi)
-    o = np.argsort(x)
-    x = x[o]
-
-    def finite(v):
-        v = np.asarray(v, dtype=float)[o]
-        return np.where(np.isfinite(v), v, np.nan)
+    x, finite = _by_angle(cf.phi)
 
     load = float(d.dynamics.dynamics.load)
     fig = _figure(h=7.5 if rocker else 6.0)
@@ -503,10 +510,8 @@ def plot_forces(cam):
             ax.axvline(np.degrees(imp.phi) % 360, color="#c53030", lw=1.0, ls=":",
                        label="rigid impact (force unbounded or contact lost)" if k == 0 else None)
     for ax in axes:
-        for s in d.program.starts:
-            ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
         ax.grid(True, lw=0.3)
-        ax.set_xlim(0, 360)
+        _mark_phases(ax, d.program.starts)
         legend_once(ax, fontsize=7, loc="best")
     _title(ax_n, f"{d.name}: forces at the cam at {cf.rpm:.4g} rpm")
     return fig
@@ -537,13 +542,7 @@ def plot_contact(cam):
         raise ValueError(why)
     co = cam.contact
     d = cam.design
-    x = np.degrees(co.phi)
-    o = np.argsort(x)
-    x = x[o]
-
-    def finite(v):
-        v = np.asarray(v, dtype=float)[o]
-        return np.where(np.isfinite(v), v, np.nan)
+    x, finite = _by_angle(co.phi)
 
     fig = _figure(h=6.0)
     ax_p, ax_h = fig.subplots(2, 1, sharex=True)
@@ -569,10 +568,8 @@ def plot_contact(cam):
                        label="entrainment velocity zero" if k == 0 else None)
     ax_h.set_xlabel("cam angle φ from the timing datum, deg")
     for ax in (ax_p, ax_h):
-        for s in d.program.starts:
-            ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
         ax.grid(True, lw=0.3)
-        ax.set_xlim(0, 360)
+        _mark_phases(ax, d.program.starts)
         ax.set_ylim(bottom=0)
         legend_once(ax, fontsize=7, loc="best")
     _title(ax_p, f"{d.name}: contact stress and film at {co.rpm:.4g} rpm, face width {co.width:.4g} mm")
@@ -776,10 +773,8 @@ def plot_vibration(cam):
     ax_n.set_ylabel("contact force, N")
     ax_n.set_xlabel("cam angle φ from the timing datum, deg")
     for ax in (ax_s, ax_a, ax_n):
-        for s in d.program.starts:
-            ax.axvline(np.degrees(s), color="0.6", lw=0.6, ls=":")
         ax.grid(True, lw=0.3)
-        ax.set_xlim(0, 360)
+        _mark_phases(ax, d.program.starts)
         legend_once(ax, fontsize=7, loc="best")
     legend_once(ax_e, fontsize=7, loc="lower right")
     _title(ax_s, f"{d.name}: follower train at {v.rpm:.4g} rpm, natural frequency {v.natural_frequency:.4g} Hz")

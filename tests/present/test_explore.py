@@ -384,3 +384,39 @@ def test_the_page_frame_is_the_design_files(tmp_path, capsys):
     for kind in ("rise", "return"):
         assert abs(st["max_pressure_angle"][kind] - worst[f"jamming_{kind}"]) <= st["error_bound"] + 1e-9
     assert st["inside"] is False and worst["jamming_rise"] > 45.0 + st["error_bound"]
+
+
+def _three_point_radii(q: np.ndarray) -> np.ndarray:
+    """The radius of the circle through each point of the closed polygon ``q`` and its two neighbours (mm), where
+    the polygon turns the way it runs round (convex there); elsewhere infinity."""
+    a, b, c = np.roll(q, 1, 0), q, np.roll(q, -1, 0)
+    ab, bc, ca = (np.linalg.norm(u - v, axis=1) for u, v in ((b, a), (c, b), (a, c)))
+    cross = (b - a)[:, 0] * (c - b)[:, 1] - (b - a)[:, 1] * (c - b)[:, 0]
+    orient = np.sign(np.sum(q[:, 0] * np.roll(q[:, 1], -1) - np.roll(q[:, 0], -1) * q[:, 1]))
+    return np.where(np.sign(cross) == orient, ab * bc * ca / (2.0 * np.abs(cross) + 1e-300), np.inf)
+
+
+@pytest.mark.skipif(NODE is None, reason="node is not installed: the page's script cannot run outside a browser")
+@pytest.mark.parametrize("name", ["rocker_force", "translating_force", "rocker_form", "translating_form_centric"])
+def test_page_smallest_convex_radius_equals_the_pitch_polygons(pages, name):
+    """The roller page's "smallest convex radius of curvature of the pitch curve" (its profile, as the page
+    samples it) equals the smallest radius of the circles through three neighbouring points of the pipeline's own
+    pitch curve (``cam.profile.pitch``), at the sized centre."""
+    cam, html, data = pages[name]
+    script = _math_of(html) + (
+        "\nconst inp = JSON.parse(require('fs').readFileSync(0, 'utf8'));\n"
+        "const m = camsMath(inp.data);\n"
+        "console.log(JSON.stringify(m.profile(...inp.c).map((p) => p.rho)));"
+    )
+    run = subprocess.run(
+        [NODE, "-e", script],
+        input=json.dumps({"data": _data_of(html), "c": data["face"]["start"]["centre"]}),
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+    )
+    rho = np.array(json.loads(run.stdout), float)
+    page_min = float(np.min(rho[rho > 0]))
+    ref = float(np.min(_three_point_radii(np.asarray(cam.profile.pitch, float))))
+    assert page_min == pytest.approx(ref, rel=1e-4)
