@@ -200,10 +200,9 @@ def _typed(header: list[str], keys: tuple[str, ...], text_rows: list[list[str]])
     cols: dict[str, Any] = {}
     for j, name in enumerate(header):
         texts = [r[j] for r in text_rows]
-        base = name.rsplit("_", 1)[0] if name.rsplit("_", 1)[-1] in ("mm", "deg", "MPa") else name
         if name == "index":
             cols[name] = pa.array([int(t) for t in texts], pa.int64())
-        elif base in ("verified", "buildable"):
+        elif name in ("verified", "buildable"):  # flags: csv_header gives them no unit
             cols[name] = pa.array([None if t == "" else t == "True" for t in texts], pa.bool_())
         elif name in ("file", "failures", "error"):
             cols[name] = pa.array([t or None for t in texts], pa.string())
