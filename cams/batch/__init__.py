@@ -64,8 +64,7 @@ def _batchable(design, method: str | None) -> bool:
         return False
     lim = design.limits
     return (
-        isinstance(f, (Rocker, Translating))
-        and (method or design.method) == "exact"
+        (method or design.method) == "exact"
         and design.objective == "R0"
         and not design.chosen
         and getattr(design, "centre", None) is None

@@ -32,13 +32,16 @@ def _n(k: int, what: str) -> str:
 
 
 def _format(args, out: Path) -> str:
+    from cams.sweep.outfile import PARQUET_SUFFIXES
+
+    by_name = "parquet" if out.suffix.lower() in PARQUET_SUFFIXES else "csv"  # as cams front reads it back
     if args.format is not None:
-        named = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}.get(out.suffix.lower(), args.format)
+        named = by_name if out.suffix.lower() in (".csv", *PARQUET_SUFFIXES) else args.format
         if named != args.format:  # a Parquet file named .csv (or back) is read as the other by its name
             raise InputError("--format", f"{args.format} does not fit --out {str(out)!r} (a .{named} name): "
                              f"give --out a .{'parquet' if args.format == 'parquet' else 'csv'} name")
         return args.format
-    return "parquet" if out.suffix.lower() in (".parquet", ".pq") else "csv"
+    return by_name
 
 
 def _grid(args):
@@ -98,7 +101,7 @@ def _indexes(out: Path, rows: list[dict], size: int) -> set[int]:
 def _run(args, state: dict) -> int:
     from cams.io.files import check_output_paths
     from cams.sweep import run_grid
-    from cams.sweep.output import check_identity, csv_header, read_rows, sink_for, write_identity
+    from cams.sweep.output import check_identity, csv_header, parts_dir, read_rows, sink_for, write_identity
 
     if args.jobs is not None and args.jobs < 1:
         raise InputError("--jobs", f"must be an integer >= 1 (processes), got {args.jobs}")
@@ -118,7 +121,7 @@ def _run(args, state: dict) -> int:
     identity = {**grid.identity(), "format": fmt, "columns": csv_header(grid.keys)}
     done: set[int] = set()
     before_failed = 0
-    if args.resume and (out.exists() or (fmt == "parquet" and out.with_name(out.name + ".parts").exists())):
+    if args.resume and (out.exists() or (fmt == "parquet" and parts_dir(out).exists())):
         check_identity(out, identity)
         rows = read_rows(fmt, out, grid.keys)
         done = _indexes(out, rows, grid.size)

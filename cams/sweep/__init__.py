@@ -31,14 +31,16 @@ __all__ = ["parse_vary", "key_parts", "sweep", "SweepResult", "COLUMNS", "COLUMN
 @dataclass(frozen=True)
 class SweepResult:
     """A sweep's rows (dicts: ``index``, ``file``, the varied keys, then :data:`COLUMNS`, in index order; empty
-    when not kept), how many were solved and failed, and the timing."""
+    when not kept), how many were solved and failed, and the timing.
+
+    ``count`` and ``failures`` are counted as the rows come (:func:`run_grid`), kept or not."""
 
     keys: tuple[str, ...]
     rows: list
     seconds: float
     workers: int
-    count: int = -1
-    failures: int = -1
+    count: int
+    failures: int
 
     @property
     def failed(self) -> int:
@@ -47,12 +49,12 @@ class SweepResult:
         A row's ``failures`` are its :class:`cams.assess.Assessment`'s, empty exactly when it is usable
         (certified, verified and buildable).
         """
-        return self.failures if self.failures >= 0 else sum(1 for r in self.rows if failed(r))
+        return self.failures
 
     @property
     def solved(self) -> int:
         """Designs solved by this run."""
-        return self.count if self.count >= 0 else len(self.rows)
+        return self.count
 
     @property
     def per_second(self) -> float:

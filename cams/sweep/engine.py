@@ -189,8 +189,8 @@ def _results(cam) -> dict:
 
 def size(designs: list[tuple[dict, Any]], method: str | None) -> list[dict]:
     """The rows of a chunk's designs: each sized, profiled and checked (:class:`cams.cam.Cam`, the one rule of
-    :mod:`cams.assess`). The seam of a batch solver, which would size the chunk's designs at once; today each
-    design is sized by itself. A design without a solution is a row with its ``error``."""
+    :mod:`cams.assess`), each by itself: the per-design path, and the designs :func:`size_at_once`'s batch solver
+    sends back. A design without a solution is a row with its ``error``."""
     from cams.cam import Cam
 
     rows = []

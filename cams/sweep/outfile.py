@@ -21,7 +21,10 @@ import numpy as np
 
 from laws.errors import InputError
 
-__all__ = ["UNITS", "SweepTable", "split_unit", "read_table", "write_rows"]
+__all__ = ["UNITS", "PARQUET_SUFFIXES", "SweepTable", "split_unit", "read_table", "write_rows"]
+
+#: The names of a Parquet table (any other is read and written as CSV).
+PARQUET_SUFFIXES = (".parquet", ".pq")
 
 #: The unit suffixes a result column's name may end with (``_mm``, ``_deg``...), longest tried first.
 UNITS = (
@@ -182,7 +185,7 @@ def read_table(path: str | os.PathLike, field: str = "--from") -> SweepTable:
         Naming ``field``: the file cannot be read, has no header, or is Parquet without pyarrow.
     """
     p = Path(path)
-    if p.suffix.lower() in (".parquet", ".pq"):
+    if p.suffix.lower() in PARQUET_SUFFIXES:
         header, cells, dropped = _read_parquet(p, field)
     else:
         header, cells, dropped = _read_csv(p, field)

@@ -192,7 +192,7 @@ def _read_csv(path: Path) -> tuple[list[str], list[list[str]]]:
     return (lines[0] if lines else []), lines[1:]
 
 
-def _typed(header: list[str], keys: tuple[str, ...], text_rows: list[list[str]]):
+def _typed(header: list[str], text_rows: list[list[str]]):
     """Parquet's columns from the cells' texts: numbers as float64 (the index int64), flags as booleans, text as
     strings, an empty cell as null; a varied key's column numeric when all its values are numbers."""
     import pyarrow as pa
@@ -200,10 +200,9 @@ def _typed(header: list[str], keys: tuple[str, ...], text_rows: list[list[str]])
     cols: dict[str, Any] = {}
     for j, name in enumerate(header):
         texts = [r[j] for r in text_rows]
-        base = name.rsplit("_", 1)[0] if name.rsplit("_", 1)[-1] in ("mm", "deg", "MPa") else name
         if name == "index":
             cols[name] = pa.array([int(t) for t in texts], pa.int64())
-        elif base in ("verified", "buildable"):
+        elif name in ("verified", "buildable"):  # flags: csv_header gives them no unit
             cols[name] = pa.array([None if t == "" else t == "True" for t in texts], pa.bool_())
         elif name in ("file", "failures", "error"):
             cols[name] = pa.array([t or None for t in texts], pa.string())
@@ -212,7 +211,6 @@ def _typed(header: list[str], keys: tuple[str, ...], text_rows: list[list[str]])
                 cols[name] = pa.array([None if t == "" else float(t) for t in texts], pa.float64())
             except ValueError:
                 cols[name] = pa.array([t or None for t in texts], pa.string())
-    del keys
     return pa.table(cols)
 
 
@@ -242,7 +240,7 @@ class ParquetSink:
 
         from cams.io.files import atomic_write
 
-        table = _typed(self.header, self.keys, [csv_row(r) for r in rows])
+        table = _typed(self.header, [csv_row(r) for r in rows])
         while (self.parts / f"part-{self._n:06d}.parquet").exists():
             self._n += 1
         atomic_write(self.parts / f"part-{self._n:06d}.parquet", "--out",
@@ -261,7 +259,7 @@ class ParquetSink:
         tables = [pq.read_table(p) for p in sorted(self.parts.glob("part-*.parquet"))]
         if self._old:
             tables.insert(0, pq.read_table(self.path))
-        table = pa.concat_tables(tables) if tables else _typed(self.header, self.keys, [])
+        table = pa.concat_tables(tables) if tables else _typed(self.header, [])
         table = table.sort_by("index")
         atomic_write(self.path, "--out", lambda tmp: pq.write_table(table, tmp), suffix=".parquet")
         shutil.rmtree(self.parts, ignore_errors=True)
