@@ -128,11 +128,6 @@ class ContactSpec:
                     f"contact.{side}_modulus needs its Poisson's ratio (contact.{side}_poisson, in (-1, 0.5))",
                 )
 
-    @property
-    def lubricated(self) -> bool:
-        """True when the lubricant is given (viscosity and its pressure coefficient): the film is computed."""
-        return self.viscosity is not None and self.pressure_viscosity is not None
-
 
 #: The keys of a design file's [contact] table, in their documented order: the fields of :class:`ContactSpec`.
 CONTACT_KEYS = tuple(f.name for f in fields(ContactSpec))
