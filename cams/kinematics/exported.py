@@ -45,6 +45,7 @@ import numpy as np
 from cams.model.design import CamDesign, FlatFaceDesign
 from cams.model.follower import FlatRocker, FlatTranslating, Rocker, Translating
 from laws.errors import InputError
+from laws.search import bracketed_root  # plain numpy: importing scipy.optimize costs 0.3 s
 
 __all__ = [
     "Line",
@@ -549,7 +550,6 @@ def _spline_best(els: _Elements, path: _Path, r: float) -> tuple[float, int, np.
 def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[tuple[float, int, np.ndarray, float]]:
     """The touches of the roller with a spline piece's interior: roots in ``t`` of the offset point's distance off
     the path, bracketed on a grid of the piece and refined by Brent's method to machine precision."""
-    from scipy.optimize import brentq
 
     out = []
     ts, grid_b, grid_n = piece.grid()
@@ -567,7 +567,7 @@ def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[t
             if f0 == 0:
                 roots = [t0]
             elif f0 * f1 < 0:
-                roots = [brentq(f, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)]
+                roots = [bracketed_root(f, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, max_steps=200)]
             else:
                 continue
             for t in roots:
@@ -702,7 +702,6 @@ def _knife_normal(e: Element, foot: np.ndarray, q: np.ndarray, qs: np.ndarray) -
 
 def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
     """The curve's support function at the normal angle ``theta``: ``h, h_theta, h_thetatheta`` and the element."""
-    from scipy.optimize import brentq
 
     m = np.array([np.cos(theta), np.sin(theta)])
     mt = _J(m)
@@ -736,7 +735,7 @@ def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
         gs = g(ts)
         for t0, t1, g0, g1 in zip(ts[:-1], ts[1:], gs[:-1], gs[1:], strict=True):
             if g0 > 0 >= g1:  # a maximum of B . m
-                t = brentq(g, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
+                t = bracketed_root(g, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, max_steps=200)
                 b, b1, b2 = piece.derivatives(t)
                 kc = abs(b1[0] * b2[1] - b1[1] * b2[0]) / np.hypot(*b1) ** 3
                 take(float(b @ m), b, 1.0 / kc if kc > 0 else np.inf, int(i))
@@ -759,7 +758,6 @@ def flat_contact(design: FlatFaceDesign, R0: float, elements: list[Element], phi
     phi : ndarray
         Cam angles, radians.
     """
-    from scipy.optimize import brentq
 
     from cams.kinematics.flat import oscillating_setup
 
@@ -795,7 +793,7 @@ def flat_contact(design: FlatFaceDesign, R0: float, elements: list[Element], phi
                     f"the face does not touch the curve near cam angle {np.degrees(ph):.6g} "
                     "deg: is it this design's profile, in its cam frame?",
                 )
-        a = brentq(G, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200) if lo != hi else ad
+        a = bracketed_root(G, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, max_steps=200) if lo != hi else ad
         _, ht, htt, i = _support(els, a - eps * ph)
         Ga, Gp = L * np.sin(a) - ht, eps * ht
         Gaa, Gap, Gpp = L * np.cos(a) - htt, eps * htt, -htt
