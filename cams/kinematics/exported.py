@@ -90,6 +90,14 @@ def _J(v: np.ndarray) -> np.ndarray:
     return np.array([-v[1], v[0]])
 
 
+def _in_span(angle, start, sense, span):
+    """Whether the direction ``angle`` (radians) points into arcs' spans, ends included (to 1e-13 rad): the arcs
+    from ``start`` turning by ``span`` (radians, in (0, 2 pi]) in the ``sense`` (+1 counter-clockwise, -1
+    clockwise); numpy broadcasting over all four."""
+    d = (sense * (angle - start)) % (2 * np.pi)
+    return (d <= span + 1e-13) | (d >= 2 * np.pi - 1e-13)
+
+
 @dataclass(frozen=True)
 class Line:
     """A straight segment from ``start`` to ``end`` (cam frame, length unit)."""
@@ -128,8 +136,7 @@ class Arc:
 
     def contains(self, angle: float) -> bool:
         """Whether the direction ``angle`` (radians) points into the arc's span (its ends included)."""
-        d = (self.sense * (angle - self.start)) % (2 * np.pi)
-        return bool(d <= self.span + 1e-13 or d >= 2 * np.pi - 1e-13)
+        return bool(_in_span(angle, self.start, self.sense, self.span))
 
 
 @dataclass(frozen=True, eq=False)
@@ -357,8 +364,7 @@ class _Elements:
     def arcs_containing(self, angle: float) -> np.ndarray:
         """The indices (into ``items``, in order) of the arcs whose span holds the direction ``angle``
         (radians), ends included: :meth:`Arc.contains` of every arc."""
-        d = (self.arc_sense * (angle - self.arc_start)) % (2 * np.pi)
-        return self.arcs[(d <= self.arc_span + 1e-13) | (d >= 2 * np.pi - 1e-13)]
+        return self.arcs[_in_span(angle, self.arc_start, self.arc_sense, self.arc_span)]
 
 
 class _Paths:
@@ -527,8 +533,7 @@ def _block(els: _Elements, paths: _Paths, r: float, n: int) -> tuple[_Best, _Bes
             for q, ok in paths.circles(c, np.where(live, rad, 1.0)):
                 w = q - c[None, :, :]
                 ang = np.arctan2(w[..., 1], w[..., 0])
-                dd = (sense[None, :] * (ang - start[None, :])) % (2 * np.pi)
-                inside = (dd <= span[None, :] + 1e-13) | (dd >= 2 * np.pi - 1e-13)
+                inside = _in_span(ang, start[None, :], sense[None, :], span[None, :])
                 foot = c[None, :, :] + R[None, :, None] * np.stack([np.cos(ang), np.sin(ang)], axis=-1)
                 inner.offer(paths.param(q), ok & inside & live[None, :], ai, foot, k)
     return vert, inner
