@@ -42,6 +42,7 @@ from typing import Any, cast
 
 import numpy as np
 
+from cams.kinematics.vectors import perp, rotate
 from cams.model.design import CamDesign, FlatFaceDesign
 from cams.model.follower import FlatRocker, FlatTranslating, Rocker, Translating
 from laws.errors import InputError
@@ -69,25 +70,6 @@ CLOSURE_TOLERANCE = 1e-7
 #: corner for a cam angle of the same order and move by about r * angle**2 / 2 off the neighbours' touch; taken as
 #: a corner, the angles checked that fall on it (a phase start at a joint) would read the vertex's curvature 1/r.
 SMOOTH_JOINT = 1e-7
-
-
-def _rot(v: np.ndarray, a: float) -> np.ndarray:
-    c, s = np.cos(a), np.sin(a)
-    return (
-        np.array([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]]).T
-        if v.ndim > 1
-        else np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
-    )
-
-
-def _Jv(v: np.ndarray) -> np.ndarray:
-    """Rows of ``v`` (n, 2) turned by +90 degrees."""
-    return np.column_stack([-v[:, 1], v[:, 0]])
-
-
-def _J(v: np.ndarray) -> np.ndarray:
-    """``v`` turned by +90 degrees."""
-    return np.array([-v[1], v[0]])
 
 
 def _in_span(angle, start, sense, span):
@@ -586,15 +568,15 @@ def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[t
 def _roller_path(design: CamDesign, centre: np.ndarray, phi: float, s_design: float) -> _Path:
     f, eps = design.follower, design.cam_sense
     turn = -eps * phi
-    base = _rot(-np.asarray(centre, float), turn)
+    base = rotate(-np.asarray(centre, float), turn)
     if isinstance(f, Translating):
-        return _Path("line", base, _rot(np.array([0.0, 1.0]), turn), np.zeros(2), 0.0, 1, 0.0)
+        return _Path("line", base, rotate(np.array([0.0, 1.0]), turn), np.zeros(2), 0.0, 1, 0.0)
     if isinstance(f, Rocker):
         return _Path(
             "circle",
-            base + _rot(f.pivot, turn),
-            _rot(np.array([1.0, 0.0]), turn),
-            _rot(np.array([0.0, 1.0]), turn),
+            base + rotate(f.pivot, turn),
+            rotate(np.array([1.0, 0.0]), turn),
+            rotate(np.array([0.0, 1.0]), turn),
             f.arm,
             f.sense,
             s_design,
@@ -659,14 +641,14 @@ def roller_contact(design: CamDesign, centre: np.ndarray, elements: list[Element
         foot = np.where(take[:, None], inner.foot, vert.foot)
         kk = np.where(take, inner.k, vert.k)
         q, qs, qss = paths.point(s), paths.d1(s), paths.d2(s)
-        qp = -eps * _Jv(q)  # dQ/dphi: the cam frame turns by -eps phi
+        qp = -eps * perp(q)  # dQ/dphi: the cam frame turns by -eps phi
         qpp = -q
-        qsp = -eps * _Jv(qs)
+        qsp = -eps * perp(qs)
         if r > 0:
             n = (q - foot) / r
         else:
             n = np.array([_knife_normal(els.items[i], foot[k], q[k], qs[k]) for k, i in enumerate(own)])
-        t = _Jv(n)
+        t = perp(n)
 
         def dot(u: np.ndarray, v: np.ndarray) -> np.ndarray:
             return np.einsum("bk,bk->b", u, v)
@@ -689,7 +671,7 @@ def _knife_normal(e: Element, foot: np.ndarray, q: np.ndarray, qs: np.ndarray) -
     """A knife edge's contact normal: the element's normal at the contact, on the side the path leaves by."""
     if isinstance(e, Line):
         a, b = e.ends
-        n = _J((b - a) / np.hypot(*(b - a)))
+        n = perp((b - a) / np.hypot(*(b - a)))
     elif isinstance(e, Arc):
         d = foot - np.asarray(e.centre, float)
         n = d / np.hypot(*d)
@@ -698,7 +680,7 @@ def _knife_normal(e: Element, foot: np.ndarray, q: np.ndarray, qs: np.ndarray) -
         ts = np.linspace(0, 1, 65)
         j = int(np.argmin([np.hypot(*(e.derivatives(t)[0] - foot)) for t in ts]))
         b1 = e.derivatives(ts[j])[1]
-        n = _J(b1 / np.hypot(*b1))
+        n = perp(b1 / np.hypot(*b1))
     return n if float(n @ qs) > 0 else -n
 
 
@@ -709,7 +691,7 @@ def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
     """The curve's support function at the normal angle ``theta``: ``h, h_theta, h_thetatheta`` and the element."""
 
     m = np.array([np.cos(theta), np.sin(theta)])
-    mt = _J(m)
+    mt = perp(m)
     best: tuple[float, np.ndarray, float, int] | None = None
 
     tie = 1e-12 * max(els.size, 1.0)
