@@ -42,9 +42,11 @@ from typing import Any, cast
 
 import numpy as np
 
+from cams.kinematics.vectors import perp, rotate
 from cams.model.design import CamDesign, FlatFaceDesign
 from cams.model.follower import FlatRocker, FlatTranslating, Rocker, Translating
 from laws.errors import InputError
+from laws.search import bracketed_root  # plain numpy: importing scipy.optimize costs 0.3 s
 
 __all__ = [
     "Line",
@@ -70,23 +72,12 @@ CLOSURE_TOLERANCE = 1e-7
 SMOOTH_JOINT = 1e-7
 
 
-def _rot(v: np.ndarray, a: float) -> np.ndarray:
-    c, s = np.cos(a), np.sin(a)
-    return (
-        np.array([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]]).T
-        if v.ndim > 1
-        else np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
-    )
-
-
-def _Jv(v: np.ndarray) -> np.ndarray:
-    """Rows of ``v`` (n, 2) turned by +90 degrees."""
-    return np.column_stack([-v[:, 1], v[:, 0]])
-
-
-def _J(v: np.ndarray) -> np.ndarray:
-    """``v`` turned by +90 degrees."""
-    return np.array([-v[1], v[0]])
+def _in_span(angle, start, sense, span):
+    """Whether the direction ``angle`` (radians) points into arcs' spans, ends included (to 1e-13 rad): the arcs
+    from ``start`` turning by ``span`` (radians, in (0, 2 pi]) in the ``sense`` (+1 counter-clockwise, -1
+    clockwise); numpy broadcasting over all four."""
+    d = (sense * (angle - start)) % (2 * np.pi)
+    return (d <= span + 1e-13) | (d >= 2 * np.pi - 1e-13)
 
 
 @dataclass(frozen=True)
@@ -127,8 +118,7 @@ class Arc:
 
     def contains(self, angle: float) -> bool:
         """Whether the direction ``angle`` (radians) points into the arc's span (its ends included)."""
-        d = (self.sense * (angle - self.start)) % (2 * np.pi)
-        return bool(d <= self.span + 1e-13 or d >= 2 * np.pi - 1e-13)
+        return bool(_in_span(angle, self.start, self.sense, self.span))
 
 
 @dataclass(frozen=True, eq=False)
@@ -356,8 +346,7 @@ class _Elements:
     def arcs_containing(self, angle: float) -> np.ndarray:
         """The indices (into ``items``, in order) of the arcs whose span holds the direction ``angle``
         (radians), ends included: :meth:`Arc.contains` of every arc."""
-        d = (self.arc_sense * (angle - self.arc_start)) % (2 * np.pi)
-        return self.arcs[(d <= self.arc_span + 1e-13) | (d >= 2 * np.pi - 1e-13)]
+        return self.arcs[_in_span(angle, self.arc_start, self.arc_sense, self.arc_span)]
 
 
 class _Paths:
@@ -526,8 +515,7 @@ def _block(els: _Elements, paths: _Paths, r: float, n: int) -> tuple[_Best, _Bes
             for q, ok in paths.circles(c, np.where(live, rad, 1.0)):
                 w = q - c[None, :, :]
                 ang = np.arctan2(w[..., 1], w[..., 0])
-                dd = (sense[None, :] * (ang - start[None, :])) % (2 * np.pi)
-                inside = (dd <= span[None, :] + 1e-13) | (dd >= 2 * np.pi - 1e-13)
+                inside = _in_span(ang, start[None, :], sense[None, :], span[None, :])
                 foot = c[None, :, :] + R[None, :, None] * np.stack([np.cos(ang), np.sin(ang)], axis=-1)
                 inner.offer(paths.param(q), ok & inside & live[None, :], ai, foot, k)
     return vert, inner
@@ -549,7 +537,6 @@ def _spline_best(els: _Elements, path: _Path, r: float) -> tuple[float, int, np.
 def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[tuple[float, int, np.ndarray, float]]:
     """The touches of the roller with a spline piece's interior: roots in ``t`` of the offset point's distance off
     the path, bracketed on a grid of the piece and refined by Brent's method to machine precision."""
-    from scipy.optimize import brentq
 
     out = []
     ts, grid_b, grid_n = piece.grid()
@@ -567,7 +554,7 @@ def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[t
             if f0 == 0:
                 roots = [t0]
             elif f0 * f1 < 0:
-                roots = [brentq(f, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)]
+                roots = [bracketed_root(f, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, max_steps=200)]
             else:
                 continue
             for t in roots:
@@ -581,15 +568,15 @@ def _spline_touches(piece: SplinePiece, i: int, path: _Path, r: float) -> list[t
 def _roller_path(design: CamDesign, centre: np.ndarray, phi: float, s_design: float) -> _Path:
     f, eps = design.follower, design.cam_sense
     turn = -eps * phi
-    base = _rot(-np.asarray(centre, float), turn)
+    base = rotate(-np.asarray(centre, float), turn)
     if isinstance(f, Translating):
-        return _Path("line", base, _rot(np.array([0.0, 1.0]), turn), np.zeros(2), 0.0, 1, 0.0)
+        return _Path("line", base, rotate(np.array([0.0, 1.0]), turn), np.zeros(2), 0.0, 1, 0.0)
     if isinstance(f, Rocker):
         return _Path(
             "circle",
-            base + _rot(f.pivot, turn),
-            _rot(np.array([1.0, 0.0]), turn),
-            _rot(np.array([0.0, 1.0]), turn),
+            base + rotate(f.pivot, turn),
+            rotate(np.array([1.0, 0.0]), turn),
+            rotate(np.array([0.0, 1.0]), turn),
             f.arm,
             f.sense,
             s_design,
@@ -654,14 +641,14 @@ def roller_contact(design: CamDesign, centre: np.ndarray, elements: list[Element
         foot = np.where(take[:, None], inner.foot, vert.foot)
         kk = np.where(take, inner.k, vert.k)
         q, qs, qss = paths.point(s), paths.d1(s), paths.d2(s)
-        qp = -eps * _Jv(q)  # dQ/dphi: the cam frame turns by -eps phi
+        qp = -eps * perp(q)  # dQ/dphi: the cam frame turns by -eps phi
         qpp = -q
-        qsp = -eps * _Jv(qs)
+        qsp = -eps * perp(qs)
         if r > 0:
             n = (q - foot) / r
         else:
             n = np.array([_knife_normal(els.items[i], foot[k], q[k], qs[k]) for k, i in enumerate(own)])
-        t = _Jv(n)
+        t = perp(n)
 
         def dot(u: np.ndarray, v: np.ndarray) -> np.ndarray:
             return np.einsum("bk,bk->b", u, v)
@@ -684,7 +671,7 @@ def _knife_normal(e: Element, foot: np.ndarray, q: np.ndarray, qs: np.ndarray) -
     """A knife edge's contact normal: the element's normal at the contact, on the side the path leaves by."""
     if isinstance(e, Line):
         a, b = e.ends
-        n = _J((b - a) / np.hypot(*(b - a)))
+        n = perp((b - a) / np.hypot(*(b - a)))
     elif isinstance(e, Arc):
         d = foot - np.asarray(e.centre, float)
         n = d / np.hypot(*d)
@@ -693,7 +680,7 @@ def _knife_normal(e: Element, foot: np.ndarray, q: np.ndarray, qs: np.ndarray) -
         ts = np.linspace(0, 1, 65)
         j = int(np.argmin([np.hypot(*(e.derivatives(t)[0] - foot)) for t in ts]))
         b1 = e.derivatives(ts[j])[1]
-        n = _J(b1 / np.hypot(*b1))
+        n = perp(b1 / np.hypot(*b1))
     return n if float(n @ qs) > 0 else -n
 
 
@@ -702,10 +689,9 @@ def _knife_normal(e: Element, foot: np.ndarray, q: np.ndarray, qs: np.ndarray) -
 
 def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
     """The curve's support function at the normal angle ``theta``: ``h, h_theta, h_thetatheta`` and the element."""
-    from scipy.optimize import brentq
 
     m = np.array([np.cos(theta), np.sin(theta)])
-    mt = _J(m)
+    mt = perp(m)
     best: tuple[float, np.ndarray, float, int] | None = None
 
     tie = 1e-12 * max(els.size, 1.0)
@@ -736,7 +722,7 @@ def _support(els: _Elements, theta: float) -> tuple[float, float, float, int]:
         gs = g(ts)
         for t0, t1, g0, g1 in zip(ts[:-1], ts[1:], gs[:-1], gs[1:], strict=True):
             if g0 > 0 >= g1:  # a maximum of B . m
-                t = brentq(g, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
+                t = bracketed_root(g, t0, t1, xtol=1e-15, rtol=4 * np.finfo(float).eps, max_steps=200)
                 b, b1, b2 = piece.derivatives(t)
                 kc = abs(b1[0] * b2[1] - b1[1] * b2[0]) / np.hypot(*b1) ** 3
                 take(float(b @ m), b, 1.0 / kc if kc > 0 else np.inf, int(i))
@@ -759,7 +745,6 @@ def flat_contact(design: FlatFaceDesign, R0: float, elements: list[Element], phi
     phi : ndarray
         Cam angles, radians.
     """
-    from scipy.optimize import brentq
 
     from cams.kinematics.flat import oscillating_setup
 
@@ -795,7 +780,7 @@ def flat_contact(design: FlatFaceDesign, R0: float, elements: list[Element], phi
                     f"the face does not touch the curve near cam angle {np.degrees(ph):.6g} "
                     "deg: is it this design's profile, in its cam frame?",
                 )
-        a = brentq(G, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200) if lo != hi else ad
+        a = bracketed_root(G, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, max_steps=200) if lo != hi else ad
         _, ht, htt, i = _support(els, a - eps * ph)
         Ga, Gp = L * np.sin(a) - ht, eps * ht
         Gaa, Gap, Gpp = L * np.cos(a) - htt, eps * htt, -htt

@@ -48,6 +48,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from cams.kinematics.vectors import cross, dot, perp
 from cams.profile.exact import ExactCam, ExactCurve
 from laws.errors import InputError
 
@@ -195,14 +196,6 @@ def _evaluate(curve: ExactCurve, piece: np.ndarray, u: np.ndarray) -> tuple[np.n
     return pts.reshape((*shape, 2)), tan.reshape((*shape, 2))
 
 
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-
-def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1]
-
-
 def _margin(e: np.ndarray, h: float) -> np.ndarray:
     """``h^2 M / 8`` per row (last axis: samples ``h`` apart), ``M`` twice the largest second divided difference
     of ``e`` over the row: what ``|e|`` may exceed its samples by between them (the module's certificate)."""
@@ -223,11 +216,11 @@ def _biarc(P0, T0, P1, T1):
     """The equal-distance biarc's joint ``J`` and its tangent ``TJ`` for spans ``P0, T0 -> P1, T1`` (rows)."""
     v = P1 - P0
     t = T0 + T1
-    vt, vv = _dot(v, t), _dot(v, v)
-    den = 2.0 * (1.0 - _dot(T0, T1))
+    vt, vv = dot(v, t), dot(v, v)
+    den = 2.0 * (1.0 - dot(T0, T1))
     with np.errstate(divide="ignore", invalid="ignore"):
         d_gen = (-vt + np.sqrt(vt * vt + den * vv)) / den
-        d_par = vv / (4.0 * _dot(v, T1))
+        d_par = vv / (4.0 * dot(v, T1))
     d = np.where(den > 1e-12, d_gen, d_par)
     Q0, Q1 = P0 + d[:, None] * T0, P1 - d[:, None] * T1
     J = 0.5 * (Q0 + Q1)
@@ -236,9 +229,7 @@ def _biarc(P0, T0, P1, T1):
     with np.errstate(divide="ignore", invalid="ignore"):
         TJ = np.where(nj[:, None] > 0, TJ / nj[:, None], T0)
     straight = (
-        (np.abs(_cross(T0, v)) <= 1e-15 * np.sqrt(vv))
-        & (np.abs(_cross(T1, v)) <= 1e-15 * np.sqrt(vv))
-        & (_dot(T0, v) > 0)
+        (np.abs(cross(T0, v)) <= 1e-15 * np.sqrt(vv)) & (np.abs(cross(T1, v)) <= 1e-15 * np.sqrt(vv)) & (dot(T0, v) > 0)
     )
     J = np.where(straight[:, None], 0.5 * (P0 + P1), J)
     TJ = np.where(straight[:, None], T0, TJ)
@@ -248,7 +239,7 @@ def _biarc(P0, T0, P1, T1):
 def _bulge_curvature(A, T, B):
     """Bulge and signed curvature of the arc from ``A`` with tangent ``T`` to ``B`` (rows)."""
     c = B - A
-    half = np.arctan2(_cross(T, c), _dot(T, c))  # the angle from the tangent to the chord: half the sweep
+    half = np.arctan2(cross(T, c), dot(T, c))  # the angle from the tangent to the chord: half the sweep
     L = np.hypot(c[:, 0], c[:, 1])
     with np.errstate(divide="ignore", invalid="ignore"):
         kappa = np.where(L > 0, 2.0 * np.sin(half) / L, 0.0)
@@ -258,10 +249,10 @@ def _bulge_curvature(A, T, B):
 def _circle_distance(X, A, T, kappa):
     """Signed distance of points ``X`` (..., 2) to the circle through ``A`` with tangent ``T`` and curvature
     ``kappa`` (a line when 0): positive on the side away from the centre."""
-    n = np.stack([-T[..., 1], T[..., 0]], axis=-1)  # the left normal: towards the centre when kappa > 0
+    n = perp(T)  # the left normal: towards the centre when kappa > 0
     w = X - A
     k = kappa[..., None] if np.ndim(kappa) else kappa
-    num = kappa * _dot(w, w) - 2.0 * _dot(w, n)
+    num = kappa * dot(w, w) - 2.0 * dot(w, n)
     den = 1.0 + np.hypot(*np.moveaxis(k * w - n, -1, 0))
     return num / den
 
@@ -277,7 +268,7 @@ def _certify_biarcs(curve, piece, ua, ub, P0, T0, J, TJ, P1):
     e2 = _circle_distance(X, J[:, None], TJ[:, None], k2[:, None])
     h = 1.0 / SAMPLES
     B1, B2 = _bound(e1, h), _bound(e2, h)  # per interval, as if the curve were on arc 1 or on arc 2
-    side2 = _dot(X - J[:, None], TJ[:, None]) > 0  # past the joint's common normal: the second arc's
+    side2 = dot(X - J[:, None], TJ[:, None]) > 0  # past the joint's common normal: the second arc's
     on1 = ~side2[:, :-1] | ~side2[:, 1:]
     on2 = side2[:, :-1] | side2[:, 1:]
     worst = np.max(np.maximum(np.where(on1, B1, 0.0), np.where(on2, B2, 0.0)), axis=1)
@@ -303,7 +294,7 @@ def _curvature_error(curve, piece, ua, ub, J, TJ, k1, k2, size: float) -> np.nda
     with np.errstate(divide="ignore", invalid="ignore"):
         kap = np.where(ds > 0, np.diff(theta, axis=1) / ds, 0.0)
     mid = 0.5 * (X[:, 1:] + X[:, :-1])
-    second = _dot(mid - J[:, None], TJ[:, None]) > 0
+    second = dot(mid - J[:, None], TJ[:, None]) > 0
     k_arc = np.where(second, k2[:, None], k1[:, None])
     return np.max(np.abs(kap - k_arc) / (np.abs(kap) + 1.0 / size), axis=1)
 
@@ -401,7 +392,7 @@ def _spline_distance(spl, period: float, C: np.ndarray, t: np.ndarray) -> np.nda
         t = t - np.where(np.isfinite(step), step, 0.0)
     tt = np.mod(t, period)
     g, v = C - spl(tt), d1(tt)
-    n = np.stack([-v[..., 1], v[..., 0]], axis=-1) / np.hypot(v[..., 0], v[..., 1])[..., None]
+    n = perp(v) / np.hypot(v[..., 0], v[..., 1])[..., None]
     return np.sign(np.sum(g * n, -1)) * np.hypot(g[..., 0], g[..., 1])
 
 

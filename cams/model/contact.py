@@ -8,32 +8,13 @@ materials lives there); what the contact gives is computed by :mod:`cams.strengt
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 from laws.errors import InputError
 from laws.errors import check_number as _num
 
 __all__ = ["ContactSpec", "CONTACT_KEYS", "FORCE_MODELS"]
 
-#: The keys of a design file's [contact] table, in their documented order.
-CONTACT_KEYS = (
-    "cam_material",
-    "follower_material",
-    "cam_modulus",
-    "cam_poisson",
-    "follower_modulus",
-    "follower_poisson",
-    "allowable_stress",
-    "cam_roughness",
-    "follower_roughness",
-    "viscosity",
-    "pressure_viscosity",
-    "min_film_parameter",
-    "bearing_rating",
-    "bearing_rating_type",
-    "life_hours",
-    "force_model",
-)
 #: The contact forces the stresses may be computed on: the rigid (kinetostatic) force of :mod:`cams.dynamics`.
 FORCE_MODELS = ("rigid", "elastic")
 
@@ -147,7 +128,6 @@ class ContactSpec:
                     f"contact.{side}_modulus needs its Poisson's ratio (contact.{side}_poisson, in (-1, 0.5))",
                 )
 
-    @property
-    def lubricated(self) -> bool:
-        """True when the lubricant is given (viscosity and its pressure coefficient): the film is computed."""
-        return self.viscosity is not None and self.pressure_viscosity is not None
+
+#: The keys of a design file's [contact] table, in their documented order: the fields of :class:`ContactSpec`.
+CONTACT_KEYS = tuple(f.name for f in fields(ContactSpec))

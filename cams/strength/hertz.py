@@ -26,6 +26,8 @@ from functools import lru_cache
 
 import numpy as np
 
+from laws.search import bounded_minimum
+
 __all__ = [
     "contact_modulus",
     "effective_radius",
@@ -126,19 +128,13 @@ class SubsurfaceMaxima:
 
 
 def _largest(f, lo: float, hi: float) -> tuple[float, float]:
-    """The largest value of the unimodal ``f`` on ``[lo, hi]`` and where: a grid, then golden sections."""
+    """The largest value of the unimodal ``f`` on ``[lo, hi]`` and where: a grid, then Brent's bounded search
+    (:func:`laws.search.bounded_minimum`) between the grid's neighbours of its best point."""
     z = np.linspace(lo, hi, 401)
     k = int(np.argmax(f(z)))
     a, c = z[max(k - 1, 0)], z[min(k + 1, len(z) - 1)]
-    g = 0.5 * (np.sqrt(5.0) - 1.0)
-    while c - a > 1e-12:
-        x1, x2 = c - g * (c - a), a + g * (c - a)
-        if f(np.array([x1]))[0] >= f(np.array([x2]))[0]:
-            c = x2
-        else:
-            a = x1
-    zm = 0.5 * (a + c)
-    return float(f(np.array([zm]))[0]), float(zm)
+    zm, neg = bounded_minimum(lambda x: -float(f(np.array([x]))[0]), float(a), float(c), xatol=1e-12)
+    return -neg, zm
 
 
 @lru_cache(maxsize=32)
