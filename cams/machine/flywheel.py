@@ -390,7 +390,7 @@ def flywheel(
 
 def _mean_speed_energy(dE: np.ndarray, J: np.ndarray, wm: float) -> float:
     """T0 with (max omega + min omega) / 2 = wm for the linkage without a flywheel."""
-    from scipy.optimize import brentq
+    from laws.search import bracketed_root
 
     def f(T0):
         w = np.sqrt(2 * (T0 + dE) / J)
@@ -398,4 +398,4 @@ def _mean_speed_energy(dE: np.ndarray, J: np.ndarray, wm: float) -> float:
 
     lo = -float(np.min(dE)) + 1e-12
     hi = lo + 0.5 * float(np.max(J)) * (2 * wm) ** 2 + float(np.ptp(dE))
-    return brentq(f, lo, hi, xtol=1e-12)
+    return bracketed_root(f, lo, hi, xtol=1e-12)

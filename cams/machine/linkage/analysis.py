@@ -71,7 +71,7 @@ def dead_positions(machine: Machine, *, samples: int = 720) -> np.ndarray:
     that two dead positions closer together than the grid's step (a quick
     return with a large time ratio) are not lost.
     """
-    from scipy.optimize import brentq
+    from laws.search import bracketed_root
 
     grid = np.linspace(0.0, TWO_PI, samples + 1)
     hints = getattr(machine, "dead_position_hints", None)
@@ -89,7 +89,8 @@ def dead_positions(machine: Machine, *, samples: int = 720) -> np.ndarray:
         if va == 0.0:
             out.append(a)
         elif va * vb < 0:
-            out.append(brentq(lambda p: float(machine.output(np.array([p])).ds[0]), a, b, xtol=1e-14, rtol=1e-15))
+            speed = lambda p: float(machine.output(np.array([p])).ds[0])  # noqa: E731
+            out.append(bracketed_root(speed, a, b, xtol=1e-14, rtol=1e-15))
     return np.sort(np.mod(np.asarray(out, dtype=float), TWO_PI))
 
 
@@ -211,16 +212,12 @@ def analyse(machine: Machine, *, working: str = "slow", samples: int = 720) -> S
     grid = np.linspace(0.0, TWO_PI, samples, endpoint=False)
     mu = machine.transmission(grid)
     k = int(np.argmin(mu))
-    from scipy.optimize import minimize_scalar
+    from laws.search import bounded_minimum
 
     h = TWO_PI / samples
-    res = minimize_scalar(
-        lambda p: float(machine.transmission(np.array([p]))[0]),
-        bounds=(grid[k] - h, grid[k] + h),
-        method="bounded",
-        options={"xatol": 1e-12},
-    )
-    mu_min, mu_at = (float(res.fun), float(res.x)) if res.fun <= mu[k] else (float(mu[k]), float(grid[k]))
+    x, fx = bounded_minimum(lambda p: float(machine.transmission(np.array([p]))[0]), grid[k] - h, grid[k] + h,
+                            xatol=1e-12)
+    mu_min, mu_at = (float(fx), float(x)) if fx <= mu[k] else (float(mu[k]), float(grid[k]))
     return StrokeReport(
         start=start,
         end=end,

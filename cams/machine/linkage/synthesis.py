@@ -323,6 +323,6 @@ def crank_slider_crank(stroke: float, rod: float, offset: float = 0.0) -> float:
     if H >= Hmax:
         raise InfeasibleError("linkage.stroke",
                               f"rod {l:.6g} with offset {e:.6g} allows a stroke < {Hmax:.6g}, got {H:.6g}")
-    from scipy.optimize import brentq
+    from laws.search import bracketed_root
 
-    return float(brentq(f, 0.0, rmax, xtol=1e-14 * l, rtol=1e-15))
+    return float(bracketed_root(f, 0.0, rmax, xtol=1e-14 * l, rtol=1e-15))

@@ -137,7 +137,7 @@ def windows(linkage: Machine, cutting: CuttingZone, *, samples: int = 720) -> Wi
     -------
     Windows
     """
-    from scipy.optimize import brentq
+    from laws.search import bracketed_root
 
     rep = analyse(linkage, working=cutting.working, samples=samples)
     sense = linkage.crank_sense
@@ -153,6 +153,6 @@ def windows(linkage: Machine, cutting: CuttingZone, *, samples: int = 720) -> Wi
             return ws
         if frac >= 1:
             return TWO_PI
-        return brentq(lambda c: travel(c) - frac * H, ws, TWO_PI, xtol=1e-13, rtol=1e-15)
+        return bracketed_root(lambda c: travel(c) - frac * H, ws, TWO_PI, xtol=1e-13, rtol=1e-15)
 
     return Windows(rep, origin, sense, ws, at(cutting.approach), at(1 - cutting.overrun))
