@@ -221,10 +221,10 @@ class ParquetSink:
     numbers.
     """
 
-    def __init__(self, path: Path, header: list[str], keys: tuple[str, ...], *, append: bool):
+    def __init__(self, path: Path, header: list[str], *, append: bool):
         import pyarrow  # noqa: F401  # the extra is there before anything is solved
 
-        self.path, self.header, self.keys = path, header, keys
+        self.path, self.header = path, header
         self.parts = parts_dir(path)
         self._old = append and path.exists()  # a finished sweep's table, resumed: its rows are kept
         if not append:
@@ -274,7 +274,7 @@ def sink_for(fmt: str, out: Path, keys: tuple[str, ...], *, append: bool):
     """The writer of format ``fmt`` (``"csv"`` or ``"parquet"``) for ``out``."""
     header = csv_header(keys)
     if fmt == "parquet":
-        return ParquetSink(out, header, keys, append=append)
+        return ParquetSink(out, header, append=append)
     return CsvSink(out, header, append=append)
 
 
