@@ -40,6 +40,7 @@ radians, degrees only in :meth:`Vibration.to_dict`.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -57,6 +58,7 @@ __all__ = [
     "PhaseVibration",
     "vibration",
     "dynamic_jump_rpm",
+    "JumpSearch",
     "design_vibration",
     "vibration_failure",
     "vibration_lines",
@@ -320,6 +322,26 @@ def _bisect(program, tm, lo, hi, samples) -> float:
     return hi
 
 
+@dataclass(frozen=True)
+class JumpSearch:
+    """What :func:`dynamic_jump_rpm` needs to find a design's dynamic jump speed, kept until it is asked for.
+
+    ``start_rpm`` and ``top_rpm`` bound the scan (rev/min), ``samples`` the angles a turn of each speed's ``Q``.
+    """
+
+    program: Program
+    train: TrainModel
+    start_rpm: float
+    top_rpm: float
+    samples: int
+
+    def run(self) -> float | None:
+        """The dynamic jump speed (rev/min), None: none found up to ``top_rpm``."""
+        return dynamic_jump_rpm(
+            self.program, self.train, start_rpm=self.start_rpm, top_rpm=self.top_rpm, samples=self.samples
+        )
+
+
 @dataclass(frozen=True, eq=False)
 class Vibration:
     """The elastic train's response at the design's speed (:func:`vibration`).
@@ -343,8 +365,8 @@ class Vibration:
     phases : tuple of PhaseVibration
     contact_lost_at : float or None
         The first sampled cam angle (rad) with ``Q < 0`` under force closure.
-    jump_rpm : float or None
-        The dynamic jump speed (rev/min), None: none found (form closure, or up to the search's top).
+    jump_search : JumpSearch or None
+        The dynamic jump speed's search, run when :attr:`jump_rpm` is first read; None under form closure.
     jump_top_rpm : float
         The top of the search (rev/min).
     flight : Flight or None
@@ -365,7 +387,7 @@ class Vibration:
     natural_frequency: float
     phases: tuple[PhaseVibration, ...]
     contact_lost_at: float | None
-    jump_rpm: float | None
+    jump_search: JumpSearch | None
     jump_top_rpm: float
     flight: Flight | None
     force_closed: bool
@@ -374,6 +396,15 @@ class Vibration:
     def contact_lost(self) -> bool:
         """The follower leaves the cam (force closure, ``Q < 0`` at a sample of the steady state)."""
         return self.contact_lost_at is not None
+
+    @cached_property
+    def jump_rpm(self) -> float | None:
+        """The dynamic jump speed (rev/min), None: none found (form closure, or up to the search's top).
+
+        Searched (:func:`dynamic_jump_rpm`) the first time it is read, then kept: the response at the design's
+        speed, its assessment and its pictures do not need it.
+        """
+        return None if self.jump_search is None else self.jump_search.run()
 
     @property
     def rpm(self) -> float:
@@ -447,11 +478,11 @@ def vibration(
     lost = np.flatnonzero(load < 0) if tm.force_closed else np.array([], int)
     lost_at = float(r.phi[lost[0]]) if lost.size else None
     top = 3 * max(n_rpm, rigid_jump_rpm if rigid_jump_rpm and np.isfinite(rigid_jump_rpm) else 0.0)
-    jump = None
+    search = None
     if tm.force_closed:
         speeds = [n for n in (n_rpm, rigid_jump_rpm) if n is not None and 0 < n < np.inf]
         start = 0.05 * min(speeds)  # a rigid jump speed of 0 (a velocity drop) is no place to start
-        jump = dynamic_jump_rpm(prog, tm, start_rpm=start, top_rpm=top, samples=samples)
+        search = JumpSearch(prog, tm, start, top, samples)  # run only when the jump speed is read
     flight = None
     if lost_at is not None:
         flight = simulate(prog, tm, omega, (y0[0], y0[1] * rho * omega), samples=samples)
@@ -470,7 +501,7 @@ def vibration(
         tm.omega_n / TWO_PI,
         tuple(phases),
         lost_at,
-        jump,
+        search,
         top,
         flight,
         tm.force_closed,

@@ -182,7 +182,7 @@ def _results(cam) -> dict:
     if cam.design.contact is not None and cam.contact is not None:
         out["max_contact_stress"] = cam.contact.to_dict()["max_pressure"]
     if cam.vibration is not None:
-        res = [p["residual"] for p in cam.vibration.to_dict()["phases"]]
+        res = [p.residual for p in cam.vibration.phases]  # not to_dict(): it would search the jump speed
         out["residual_vibration"] = max(res) if res and all(x is not None for x in res) else None
     return out
 
