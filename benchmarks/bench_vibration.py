@@ -76,13 +76,17 @@ def _row(name: str, cam, repeats: int) -> dict:
     t_ss, y0 = _median(lambda: steady_state(d.program, tr), repeats)
     t_grid, _ = _median(lambda: grid_response(d.program, tr, y0, 720), repeats)
     calls = [0]
-    inner = vib._min_load
+    inner, batch = vib._min_load, vib._losses
 
     def counted(*a, **k):
         calls[0] += 1
         return inner(*a, **k)
 
-    vib._min_load = counted
+    def counted_batch(program, tm, rpms, samples):
+        calls[0] += len(rpms)
+        return batch(program, tm, rpms, samples)
+
+    vib._min_load, vib._losses = counted, counted_batch
     try:
         t_jump, jump = _median(
             lambda: vib.dynamic_jump_rpm(
@@ -91,7 +95,7 @@ def _row(name: str, cam, repeats: int) -> dict:
             1,
         )
     finally:
-        vib._min_load = inner
+        vib._min_load, vib._losses = inner, batch
     above = 1.05 * jump
     wa = rpm_to_omega(above)
     tra = tm.train(wa)

@@ -63,6 +63,7 @@ __all__ = [
     "Response",
     "response",
     "grid_response",
+    "grid_least_loads",
     "residual_amplitude",
     "phase_residuals",
 ]
@@ -490,6 +491,125 @@ def grid_response(program: Program, train: Train, y0: np.ndarray, samples: int) 
         y = (flow(sp.end - sp.start) @ start)[:2]
     load = r * (S[0] - X[0]) + 2 * zeta * (S[1] - X[1]) / rho
     return Response(phi, X[0], X[1], X[2], S[0], S[1], load)
+
+
+def _oscillators(rho: np.ndarray, zeta: float, t: float) -> np.ndarray:
+    """:func:`_oscillator`'s ``exp(A t)`` at one ``t`` for many ``rho`` (shape (k, 2, 2)); the same closed form."""
+    mu = -zeta * rho
+    d = 1 - zeta**2  # the sign of rho^2 (1 - zeta^2), the same at every rho > 0
+    if d > 0:
+        w = rho * np.sqrt(d)
+        c, sn = np.cos(w * t), np.sin(w * t) / w
+    elif d < 0:
+        w = rho * np.sqrt(-d)
+        c, sn = np.cosh(w * t), np.sinh(w * t) / w
+    else:
+        c, sn = np.ones_like(rho), np.full_like(rho, t)
+    out = np.empty((rho.size, 2, 2))
+    out[:, 0, 0] = c - sn * mu
+    out[:, 0, 1] = sn * rho
+    out[:, 1, 0] = -sn * rho
+    out[:, 1, 1] = c + sn * (-2 * zeta * rho - mu)
+    return np.exp(mu * t)[:, None, None] * out
+
+
+def grid_least_loads(
+    program: Program, rho, samples: int, *, ratio: float = 1.0, zeta: float = 0.0, offset: float = 0.0
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The steady state's least load over ``samples`` equally spaced cam angles, at many speeds at once.
+
+    The same exact solution as :func:`steady_state` then :func:`grid_response` for each
+    ``Train(rho_i, ratio, zeta, offset)``, vectorized over the speeds (the forcing's exponentials are the same at
+    every speed; the Sylvester equations are solved as one batch of linear systems), so its rounding differs from
+    theirs in the last digits.
+
+    Parameters
+    ----------
+    program : Program
+    rho : array_like
+        ``omega_n / omega`` of each speed, > 0, shape (k,).
+    samples : int
+        Cam angles ``2 pi j / samples``, j = 0 .. samples - 1.
+    ratio, zeta, offset : float
+        As in :class:`Train`.
+
+    Returns
+    -------
+    least : ndarray
+        The least load ``n`` (program unit, per unit of the total stiffness) of each speed, shape (k,).
+    size : ndarray
+        The largest ``|n|`` of each speed (the scale of ``least``'s rounding).
+    sure : ndarray of bool
+        False where this batch cannot answer (no steady state, a Sylvester equation that is singular or
+        ill-conditioned): ask :func:`steady_state` and :func:`grid_response` there.
+    """
+    rho = np.atleast_1d(np.asarray(rho, float))
+    k = rho.size
+    sure = np.ones(k, bool)
+    step = 2 * PI / samples
+    phi = step * np.arange(samples)
+    a = np.zeros((k, 2, 2))
+    a[:, 0, 1], a[:, 1, 0], a[:, 1, 1] = rho, -rho, -2 * zeta * rho
+    flows = []
+    for sp in spans(program):
+        n = sp.generator.shape[0]
+        g = np.zeros((n + 1, n + 1))
+        g[:n, :n] = sp.generator
+        b = np.zeros((k, 2, n + 1))
+        b[:, 1, 0], b[:, 1, n] = rho * ratio, -rho * offset
+        if n >= 2:
+            b[:, 1, 1] = 2 * zeta
+        # A Y - Y G = B, column by column: (I kron A - G^T kron I) vec(Y) = vec(B)
+        big = np.kron(np.eye(n + 1), a) - np.kron(g.T, np.eye(2))[None]
+        try:
+            y = np.linalg.solve(big, b.transpose(0, 2, 1).reshape(k, -1)[..., None])[..., 0]
+        except np.linalg.LinAlgError:
+            return np.zeros(k), np.ones(k), np.zeros(k, bool)
+        y = y.reshape(k, n + 1, 2).transpose(0, 2, 1)
+        scale = np.maximum(np.max(np.abs(b), axis=(1, 2)), 1e-300)
+        big_y = np.max(np.abs(y), axis=(1, 2))
+        residual = np.max(np.abs(a @ y - y @ g - b), axis=(1, 2))
+        sure &= np.isfinite(big_y) & (residual <= 1e-12 * scale * np.maximum(1.0, big_y) * (n + 3))
+        sure &= big_y < 1e4 * scale  # well conditioned: the batch's rounding stays far below the margin it is read at
+        z = np.concatenate([sp.state, [1.0]])
+        flows.append((sp, g, y, z))
+
+    def flow(g, y, t):
+        ea, eg = _oscillators(rho, zeta, t), _expm_series((g * t)[None])[0]
+        return ea, ea @ y - y @ eg, eg
+
+    phi_map, shift = np.broadcast_to(np.eye(2), (k, 2, 2)), np.zeros((k, 2))
+    for sp, g, y, z in flows:
+        ea, ec, _ = flow(g, y, sp.end - sp.start)
+        phi_map, shift = ea @ phi_map, (ea @ shift[..., None])[..., 0] + ec @ z
+    lhs = np.eye(2) - phi_map
+    det = lhs[:, 0, 0] * lhs[:, 1, 1] - lhs[:, 0, 1] * lhs[:, 1, 0]
+    sure &= np.abs(det) >= 1e-9 * np.maximum(1.0, np.max(np.abs(phi_map), axis=(1, 2)))
+    lhs[~sure] = np.eye(2)
+    xv = np.linalg.solve(lhs, shift[..., None])[..., 0]  # (x, dx/dtau) at angle 0
+    least, size = np.full(k, np.inf), np.zeros(k)
+    for sp, g, y, z in flows:
+        k0 = int(np.ceil(sp.start / step - 1e-9))
+        k1 = int(np.ceil(sp.end / step - 1e-9))
+        if k1 > k0:
+            ea, ec, eg = flow(g, y, phi[k0] - sp.start)
+            sa, sc, sg = flow(g, y, step)
+            zs = np.empty((k1 - k0, z.size))
+            zs[0] = eg @ z
+            for j in range(1, k1 - k0):
+                zs[j] = sg @ zs[j - 1]
+            push = np.einsum("kij,mj->mki", sc, zs)  # the forcing's part of each step
+            xs = np.empty((k1 - k0, k, 2))
+            xs[0] = (ea @ xv[..., None])[..., 0] + ec @ z
+            for j in range(1, k1 - k0):
+                xs[j] = np.einsum("kij,kj->ki", sa, xs[j - 1]) + push[j - 1]
+            s1 = zs[:, 1] if sp.generator.shape[0] >= 2 else np.zeros(k1 - k0)
+            load = ratio * (zs[:, :1] - xs[..., 0]) + 2 * zeta * (s1[:, None] - rho * xs[..., 1]) / rho
+            least = np.minimum(least, np.min(load, axis=0))
+            size = np.maximum(size, np.max(np.abs(load), axis=0))
+        ea, ec, _ = flow(g, y, sp.end - sp.start)
+        xv = (ea @ xv[..., None])[..., 0] + ec @ z
+    return least, size, sure
 
 
 def residual_amplitude(train: Train, level: float, y: np.ndarray) -> float:

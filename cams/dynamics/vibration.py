@@ -46,7 +46,7 @@ import numpy as np
 
 from laws.errors import InputError
 from laws.program import Program
-from laws.response import Train, grid_response, phase_residuals, steady_state
+from laws.response import Train, grid_least_loads, grid_response, phase_residuals, steady_state
 from laws.units import TWO_PI, omega_to_rpm, rpm_to_omega
 
 __all__ = [
@@ -296,20 +296,47 @@ def dynamic_jump_rpm(
 
     Scanned upward from ``start_rpm`` (where contact must hold) in relative steps of ``step`` (a window of lost
     contact narrower than a step may be missed), then bisected to 1e-6 relative between the last speed that holds
-    and the first that does not. Each speed's ``Q`` is sampled at ``samples`` angles a turn.
+    and the first that does not. Each speed's ``Q`` is sampled at ``samples`` angles a turn. The scan's speeds are
+    taken in blocks (:func:`laws.response.grid_least_loads`); a speed whose least ``Q`` that batch cannot answer,
+    or finds within ``1e-8`` of its largest ``|Q|`` of 0, is decided by :func:`_min_load` itself, so the scan stops
+    at the same speed as one :func:`_min_load` a speed.
     """
     if not tm.force_closed:
         return None
     lo = start_rpm
     if _min_load(program, tm, rpm_to_omega(lo), samples)[0] < 0:
         return None if lo <= 0 else _bisect(program, tm, 0.0, lo, samples)
+    speeds = []
     n = lo
     while n < top_rpm:
-        hi = min(n * (1 + step), top_rpm)
-        if _min_load(program, tm, rpm_to_omega(hi), samples)[0] < 0:
-            return _bisect(program, tm, n, hi, samples)
-        n = hi
+        n = min(n * (1 + step), top_rpm)
+        speeds.append(n)
+    for i in range(0, len(speeds), _BLOCK):
+        block = speeds[i : i + _BLOCK]
+        for j, lost in enumerate(_losses(program, tm, block, samples)):
+            if lost:
+                return _bisect(program, tm, speeds[i + j - 1] if i + j else lo, block[j], samples)
     return None
+
+
+#: Speeds of the jump speed's scan taken at once.
+_BLOCK = 64
+
+
+def _losses(program: Program, tm: TrainModel, rpms: list[float], samples: int) -> list[bool]:
+    """Whether the steady state's least ``Q`` is negative at each speed (rev/min): :func:`_min_load`'s sign, from
+    one batch (:func:`laws.response.grid_least_loads`) where it is sure and clear of 0."""
+    trains = [tm.train(rpm_to_omega(n)) for n in rpms]
+    t0 = trains[0]
+    least, size, sure = grid_least_loads(
+        program, np.array([t.rho for t in trains]), samples, ratio=t0.ratio, zeta=t0.zeta, offset=t0.offset
+    )
+    return [
+        bool(least[j] < 0)
+        if sure[j] and abs(least[j]) > 1e-8 * size[j]
+        else _min_load(program, tm, rpm_to_omega(n), samples)[0] < 0
+        for j, n in enumerate(rpms)
+    ]
 
 
 def _bisect(program, tm, lo, hi, samples) -> float:
