@@ -328,9 +328,10 @@ def _losses(program: Program, tm: TrainModel, rpms: list[float], samples: int) -
     one batch (:func:`laws.response.grid_least_loads`) where it is sure and clear of 0."""
     trains = [tm.train(rpm_to_omega(n)) for n in rpms]
     t0 = trains[0]
-    least, size, sure = grid_least_loads(
-        program, np.array([t.rho for t in trains]), samples, ratio=t0.ratio, zeta=t0.zeta, offset=t0.offset
-    )
+    with np.errstate(over="ignore", invalid="ignore"):  # a speed whose figures overflow is asked again below
+        least, size, sure = grid_least_loads(
+            program, np.array([t.rho for t in trains]), samples, ratio=t0.ratio, zeta=t0.zeta, offset=t0.offset
+        )
     return [
         bool(least[j] < 0)
         if sure[j] and abs(least[j]) > 1e-8 * size[j]
