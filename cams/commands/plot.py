@@ -50,7 +50,8 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progre
     if names:
         bar.stage(f"drawing {len(names)} picture{'s' if len(names) > 1 else ''}")
     with bar.held():  # no redraw from the bar's thread while processes are forked
-        files = forked_map([partial(render, name) for name in names], jobs=jobs, done=lambda k: bar.advance())
+        files = forked_map([partial(render, name) for name in names], jobs=jobs, done=lambda k: bar.advance(),
+                           effort=[plots.EFFORT.get(presenter(cam).pictures.get(name, ""), 10) for name in names])
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
     for name, drawn in zip(names, files, strict=True):

@@ -32,7 +32,7 @@ __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "p
            "plot_forces", "picture", "PICTURES", "NEEDS", "missing", "no_forces", "plot_contact", "no_contact",
            "no_vibration", "plot_vibration", "lay_out",
            "animate_profile", "save", "prepare", "rendered", "write_rendered",
-           "FORMATS", "DPI", "fix_layout", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
+           "FORMATS", "DPI", "EFFORT", "fix_layout", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
 A4_WIDTH_IN = 7.5
@@ -828,6 +828,11 @@ def plot_vibration(cam):
     _title(ax_s, f"{d.name}: follower train at {v.rpm:.4g} rpm, natural frequency {v.natural_frequency:.4g} Hz")
     return fig
 
+
+#: How long each kind of picture takes to draw, relative to the others (CPU seconds x 10 on the examples): the
+#: order in which processes drawing side by side take them up (:func:`cams.present.forked.forked_map`).
+EFFORT = {"zone": 8, "vibration": 6, "motion": 5, "forces": 5, "profile": 4, "contact": 4, "curvature": 4,
+          "pressure": 2, "flat_pressure": 2}
 
 #: The pictures drawn only for a design that has their data, each with why not (None: it has it).
 NEEDS = {

@@ -61,9 +61,10 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
 
 
 def _drawings(cam):
-    """The pictures as ``(title, draw)``, ``draw()`` the matplotlib Figure, titled as failing when the cam is not
-    usable (:mod:`cams.assess`): the face's, less the profile where none can be built and the forces where there
-    are none."""
+    """The pictures as ``(title, kind, draw)``: ``kind`` the picture's (:data:`cams.present.plots.PICTURES`, or
+    ``"optimized"``), ``draw()`` the matplotlib Figure, titled as failing when the cam is not usable
+    (:mod:`cams.assess`): the face's, less the profile where none can be built and the forces where there are
+    none."""
     from cams.present import plots
     from cams.present.faces import presenter
 
@@ -82,16 +83,16 @@ def _drawings(cam):
 
         return plots.mark_failing(plot_motion_design(cam), title)
 
-    out: list[tuple[str, Callable[[], Any]]] = [(name, partial(draw, kind)) for name, kind in
-                                               presenter(cam).report_pictures if drawn(kind)]
+    out: list[tuple[str, str, Callable[[], Any]]] = [(name, kind, partial(draw, kind)) for name, kind in
+                                                    presenter(cam).report_pictures if drawn(kind)]
     if cam.solution.optimization is not None:
-        out.append(("Motion design: the designed laws and cam beside the original", draw_design))
+        out.append(("Motion design: the designed laws and cam beside the original", "optimized", draw_design))
     return out
 
 
 def _figures(cam):
     """The pictures of :func:`_drawings`, drawn: ``(title, Figure)``."""
-    return [(name, draw()) for name, draw in _drawings(cam)]
+    return [(name, draw()) for name, _, draw in _drawings(cam)]
 
 
 def _version() -> str:
@@ -280,15 +281,16 @@ def write_report(cam, out: str | Path, *, source: str | Path | None = None,
     """
     from cams.io.files import atomic_write, ensure_folder
     from cams.present.forked import forked_map
-    from cams.present.plots import prepare
+    from cams.present.plots import EFFORT, prepare
 
     out = ensure_folder(out, "--out")
     sections = report_sections(cam)
     drawings = _drawings(cam)
     data = report_data(cam, source=source, sections=sections)
     prepare()
-    svgs = [(title, *svg) for (title, _), svg in
-            zip(drawings, forked_map([partial(_drawn_svg, draw) for _, draw in drawings], jobs=jobs), strict=True)]
+    drawn = forked_map([partial(_drawn_svg, draw) for _, _, draw in drawings], jobs=jobs,
+                       effort=[EFFORT.get(kind, 10) for _, kind, _ in drawings])
+    svgs = [(title, *svg) for (title, _, _), svg in zip(drawings, drawn, strict=True)]
 
     def write_pdf(tmp):
         Path(tmp).write_bytes(_typeset(data, svgs))

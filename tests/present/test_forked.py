@@ -87,3 +87,20 @@ def test_jobs_below_one_is_refused(tmp_path, jobs):
         assert r.returncode == 2
         assert "--jobs" in r.stderr and ">= 1" in r.stderr and len(r.stderr.strip().splitlines()) == 1
         assert not (tmp_path / command).exists()
+
+
+@pytest.mark.skipif(not LINUX, reason="processes are forked on Linux only; elsewhere the tasks run in order here")
+def test_effort_orders_what_is_handed_out_not_what_comes_back():
+    """Two processes, four tasks of half a second: the two of most effort are handed out first (they start
+    together, the others half a second later); the results still come back in the tasks' order."""
+    import time
+
+    def task(k):
+        start = time.monotonic()
+        time.sleep(0.5)
+        return k, start
+
+    out = forked_map([lambda k=k: task(k) for k in range(4)], jobs=2, effort=[1.0, 4.0, 2.0, 3.0])
+    assert [k for k, _ in out] == [0, 1, 2, 3]
+    starts = sorted(out, key=lambda r: r[1])
+    assert {k for k, _ in starts[:2]} == {1, 3}
