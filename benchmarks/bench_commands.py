@@ -176,6 +176,11 @@ def _imports_by_package(stderr: str) -> tuple[dict, float]:
 
 
 def _prepare(tree: Path, out: Path) -> None:
+    """The scratch folder ``out`` with the tree's files the commands read; the tree's modules compiled to bytecode,
+    as an installation has them (pip compiles them; an editable one on its first run), whatever
+    ``PYTHONDONTWRITEBYTECODE`` says: every run then reads them instead of compiling the sources."""
+    subprocess.run([sys.executable, "-m", "compileall", "-q", *(str(tree / p) for p in ("cams", "laws", "optimize"))],
+                   check=True, capture_output=True)
     out.mkdir(parents=True, exist_ok=True)
     text = (tree / "examples" / "translating_designed_rise.toml").read_text()
     assert PRESSURE_OBJECTIVE[0] in text, "the motion-design example's objective line moved"
