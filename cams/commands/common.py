@@ -1,6 +1,8 @@
 """Exit codes and small helpers shared by the subcommands."""
 
-__all__ = ["EXIT_OK", "EXIT_CHECK_FAILED", "EXIT_BAD_INPUT", "face_cam"]
+from laws.errors import InputError
+
+__all__ = ["EXIT_OK", "EXIT_CHECK_FAILED", "EXIT_BAD_INPUT", "face_cam", "check_jobs"]
 
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT = 0, 1, 2
 #: Exit code after Ctrl-C (128 + SIGINT), as shells report it.
@@ -15,3 +17,9 @@ def face_cam(design, args):
     cam = Cam(design, method=args.method, tolerance=getattr(args, "tolerance", None))  # nothing solved yet
     cam.face.check_method(args.method, "--method")
     return cam
+
+
+def check_jobs(jobs: int | None) -> None:
+    """Refuse a ``--jobs`` below 1 (None: the default, one a core)."""
+    if jobs is not None and jobs < 1:
+        raise InputError("--jobs", f"must be an integer >= 1 (processes), got {jobs}")

@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import argparse
 import sys
+from functools import partial
 from pathlib import Path
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, check_jobs
 from cams.commands.progress import Progress, progress, wanted
 from cams.present.faces import FlatPresenter, RollerPresenter
 from laws.errors import InputError
@@ -21,31 +22,40 @@ FLAT_PICTURES = tuple(FlatPresenter.pictures)
 #: Every picture name ``--only`` takes ("optimized": a design with an [optimize] table, drawn for it by default).
 NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "contact", "vibration", "optimized")
 
-def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progress | None = None) -> list[Path]:
+def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progress | None = None,
+         jobs: int | None = None) -> list[Path]:
     """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.
 
     ``title`` (:meth:`cams.assess.Assessment.title`) marks every picture of a failing cam; ``bar`` counts one
-    step a picture.
+    step a picture. The pictures are drawn side by side by up to ``jobs`` processes (None: one a core;
+    :func:`cams.present.forked.forked_map`), each from the cam solved here; the files are written here.
     """
     from cams.present import plots
     from cams.present.faces import presenter
+    from cams.present.forked import forked_map
 
     bar = bar or Progress()
+    names = [name for name in (*presenter(cam).pictures, "optimized") if name in which]
 
-    stem = out / _slug(cam.design.name)
-    written: list[Path] = []
-    for name in (*presenter(cam).pictures, "optimized"):
-        if name not in which:
-            continue
-        bar.stage(f"drawing the {name} picture")
+    def render(name: str) -> dict[str, bytes]:
         if name == "optimized":
             from cams.present.motion_plots import plot_motion_design
 
             fig = plot_motion_design(cam)
         else:
             fig = plots.picture(presenter(cam).pictures[name], cam)
-        written += plots.save(plots.mark_failing(fig, title), f"{stem}_{name}")
-        bar.advance()
+        return plots.rendered(plots.mark_failing(fig, title))
+
+    plots.prepare()
+    if names:
+        bar.stage(f"drawing {len(names)} picture{'s' if len(names) > 1 else ''}")
+    with bar.held():  # no redraw from the bar's thread while processes are forked
+        files = forked_map([partial(render, name) for name in names], jobs=jobs, done=lambda k: bar.advance(),
+                           effort=[plots.EFFORT.get(presenter(cam).pictures.get(name, ""), 10) for name in names])
+    stem = out / _slug(cam.design.name)
+    written: list[Path] = []
+    for name, drawn in zip(names, files, strict=True):
+        written += plots.write_rendered(drawn, f"{stem}_{name}")
     return written
 
 
@@ -73,6 +83,7 @@ def run(args) -> int:
     from cams.cam import Cam
     from cams.io.files import all_or_nothing, atomic_write, ensure_folder
 
+    check_jobs(args.jobs)
     which = _only(args.only)
     from cams.present.faces import presenter
     from cams.present.plots import NEEDS, missing
@@ -108,7 +119,7 @@ def run(args) -> int:
         # so a failure (a design that cannot be solved for the zone ...) leaves none of them behind
         with all_or_nothing():
             out = ensure_folder(args.out, "--out")
-            written = draw(cam, which, out, title="" if a is None else a.title(), bar=bar)
+            written = draw(cam, which, out, title="" if a is None else a.title(), bar=bar, jobs=args.jobs)
             if turn:
                 from cams.present.plots import animate_profile
 
@@ -152,6 +163,8 @@ def register(sub) -> None:
                    "with [optimize] adds optimized (the designed laws, pressure "
                    "angles and cam beside the original ones)")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
+    q.add_argument("--jobs", type=int, help="processes drawing the pictures side by side, >= 1 (default: one a "
+                   "core; 1 draws them here, one after another)")
     q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "
                    "runs past about two seconds)")
     q.set_defaults(func=run)

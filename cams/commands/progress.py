@@ -46,8 +46,17 @@ class Progress:
     Without a bar (:func:`wanted` false) every method does nothing, so the commands call them unconditionally.
     """
 
-    def __init__(self, bar: Any = None) -> None:
+    def __init__(self, bar: Any = None, drawing: threading.Lock | None = None) -> None:
         self._bar = bar
+        self._drawing = drawing if drawing is not None else threading.Lock()
+
+    @contextmanager
+    def held(self) -> Iterator[None]:
+        """No redraw from the bar's own thread inside the block (its steps still count and draw): a process
+        forked inside it (:mod:`cams.present.forked`) finds no lock of the bar's, or of standard error, taken by
+        that thread."""
+        with self._drawing:
+            yield
 
     @property
     def drawn(self) -> bool:
@@ -108,17 +117,20 @@ def progress(enabled: bool, what: str, total: int | None = None, unit: str = "st
     bar = tqdm(total=total, desc=what, unit=unit, file=sys.stderr, delay=DELAY_S, leave=False, bar_format=fmt, **size)
     stop = threading.Event()
 
+    drawing = threading.Lock()
+
     def beat() -> None:  # redraw while one long step holds the main thread (a solve releases the GIL often)
         while not stop.wait(_HEARTBEAT_S):
             if time.monotonic() - started >= DELAY_S:
-                bar.refresh()
-                bar.last_print_t = time.time()  # drawn (tqdm's clock): erased on close
+                with drawing:
+                    bar.refresh()
+                    bar.last_print_t = time.time()  # drawn (tqdm's clock): erased on close
 
     started = time.monotonic()
     thread = threading.Thread(target=beat, name="cams-progress", daemon=True)
     thread.start()
     try:
-        yield Progress(bar)
+        yield Progress(bar, drawing)
     finally:
         stop.set()
         thread.join()

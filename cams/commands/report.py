@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, check_jobs
 from laws.errors import InputError
 
 __all__ = ["register", "run"]
@@ -16,6 +16,7 @@ def run(args) -> int:
     from cams.io.files import all_or_nothing, check_output_paths
     from cams.present.report import write_report
 
+    check_jobs(args.jobs)
     cam = Cam.from_file(args.file)
     if not args.out.strip():
         raise InputError("--out", "must name a folder, got an empty path")
@@ -27,8 +28,9 @@ def run(args) -> int:
     with progress(wanted(args), "solving the cam") as bar:  # seconds of work: its progress on a terminal
         a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
         bar.stage("drawing and writing the report")
-        with all_or_nothing():  # report.html and report.pdf appear together or not at all
-            written = write_report(cam, args.out, source=args.file)
+        # together or not at all; no redraw from the bar's thread while the pictures' processes are forked
+        with all_or_nothing(), bar.held():
+            written = write_report(cam, args.out, source=args.file, jobs=args.jobs)
     for p in written:
         print(p)
     if not a.usable:
@@ -50,6 +52,8 @@ def register(sub) -> None:
     )
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--out", default="report", help="output folder (default: report)")
+    q.add_argument("--jobs", type=int, help="processes drawing the pictures side by side, >= 1 (default: one a "
+                   "core; 1 draws them here, one after another)")
     q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "
                    "runs past about two seconds)")
     q.set_defaults(func=run)

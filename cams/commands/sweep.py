@@ -6,7 +6,7 @@ import shutil
 import sys
 from pathlib import Path
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_INTERRUPTED, EXIT_OK
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_INTERRUPTED, EXIT_OK, check_jobs
 from laws.errors import InputError
 
 __all__ = ["register", "run"]
@@ -103,8 +103,7 @@ def _run(args, state: dict) -> int:
     from cams.sweep import run_grid
     from cams.sweep.output import check_identity, csv_header, parts_dir, read_rows, sink_for, write_identity
 
-    if args.jobs is not None and args.jobs < 1:
-        raise InputError("--jobs", f"must be an integer >= 1 (processes), got {args.jobs}")
+    check_jobs(args.jobs)
     ins = [("FILE", f) for f in (args.files or [])] + ([("--sweep-file", args.sweep_file)] if args.sweep_file else [])
     (out,) = check_output_paths([("--out", args.out)], inputs=ins)
     if str(args.out) == "-" or not (out.parent.is_dir() and (not out.exists() or out.is_file())):

@@ -31,7 +31,8 @@ from laws.units import TWO_PI, rpm_to_omega
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
            "plot_forces", "picture", "PICTURES", "NEEDS", "missing", "no_forces", "plot_contact", "no_contact",
            "no_vibration", "plot_vibration", "lay_out",
-           "animate_profile", "save", "fix_layout", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
+           "animate_profile", "save", "prepare", "rendered", "write_rendered",
+           "FORMATS", "DPI", "EFFORT", "fix_layout", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
 A4_WIDTH_IN = 7.5
@@ -107,21 +108,17 @@ def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0,
     above and below a wide drawing of a fixed aspect (``ax``), nor beside a tall one.
 
     The height stays within ``[min_h, max_h]`` inches and above what the legend ``beside`` the axes needs.
-    Each round lays the figure out and takes up the difference between the figure and the
-    box around everything drawn (the layout is constrained). Returns ``fig``, which keeps the fitting as
-    ``fig.refit`` for a caller that adds a title afterwards (:func:`mark_failing`).
+    Each round lays the figure out (as at :data:`DPI`, :func:`_execute_layout`) and takes up the difference
+    between the figure and the box around everything drawn. The last round's layout is the figure's
+    (:func:`lay_out` keeps it). Returns
+    ``fig``, which keeps the fitting as ``fig.refit`` for a caller that adds a title afterwards
+    (:func:`mark_failing`).
     """
 
     def refit():
         for _ in range(rounds):
-            # the layout alone (a drawing without rendering adds nothing the box below needs: the same sizes)
-            engine = fig.get_layout_engine()
-            if engine is not None:
-                engine.execute(fig)
-            else:
-                fig.draw_without_rendering()
+            drawn = _execute_layout(fig, DPI)
             w, h = fig.get_size_inches()
-            drawn = fig.get_tightbbox()  # inches
             spare_h, spare_w = h - drawn.height - 0.1, w - drawn.width - 0.1
             if spare_h > 0.05:  # the axes span the width: the spare height goes
                 new = h - spare_h
@@ -141,6 +138,22 @@ def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0,
     return refit()
 
 
+def _execute_layout(fig, dpi: float):
+    """Compute ``fig``'s constrained layout as at ``dpi`` (dots per inch) and return the box around everything it
+    draws (inches); the figure remembers its size and ``dpi`` for :func:`lay_out`. A figure without a layout
+    engine is only measured."""
+    before = fig.dpi
+    fig.dpi = dpi
+    try:
+        engine = fig.get_layout_engine()
+        if engine is not None:
+            engine.execute(fig)
+            fig._cams_laid_out = (*fig.get_size_inches(), dpi)
+        return fig.get_tightbbox()
+    finally:
+        fig.dpi = before
+
+
 def fix_layout(fig):
     """Keep the positions ``fig``'s constrained layout computed when it was last drawn: its later draws (another
     format, the frames of an animation) skip the layout, which costs a third of a draw. Returns ``fig``; call it
@@ -154,30 +167,65 @@ def lay_out(fig, dpi: float):
     """Compute ``fig``'s constrained layout once, as at ``dpi`` (dots per inch), and keep it (:func:`fix_layout`).
 
     ``savefig`` of a figure with a layout engine draws it twice, once to lay it out and once to render it, each
-    time computing the layout; a figure laid out here is rendered by one drawing. Returns ``fig``."""
-    engine = fig.get_layout_engine()
-    if engine is None:
+    time computing the layout; a figure laid out here is rendered by one drawing. A figure whose last fitting
+    round (:func:`_fit_height`) laid it out at its present size and ``dpi`` keeps that layout. Returns ``fig``."""
+    if fig.get_layout_engine() is None:
         return fig
-    before = fig.dpi
-    fig.dpi = dpi
-    try:
-        engine.execute(fig)
-    finally:
-        fig.dpi = before
+    if getattr(fig, "_cams_laid_out", None) != (*fig.get_size_inches(), dpi):
+        _execute_layout(fig, dpi)
     return fix_layout(fig)
 
 
-def save(fig, stem: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
-    """Write ``fig`` as ``stem.png`` and ``stem.svg`` (150 dpi), each whole or not at all.
+#: The formats every picture is written in (:func:`save`), at :data:`DPI` for PNG.
+FORMATS = ("png", "svg")
+#: Dots per inch of a PNG picture.
+DPI = 150
 
-    The layout is computed once, as at 150 dpi (:func:`lay_out`), and kept for every format: the figure is final
-    when it is saved."""
+
+def prepare() -> None:
+    """Import what drawing a picture needs and load the default font: done once before the pictures are drawn in
+    processes forked from this one (:mod:`cams.present.forked`), each child inherits them instead of loading its
+    own."""
+    import matplotlib.backends.backend_agg  # PNG
+    import matplotlib.backends.backend_svg  # SVG
+    import matplotlib.figure  # noqa: F401  (the figures)
+    from matplotlib.font_manager import FontProperties, findfont, get_font
+
+    get_font(findfont(FontProperties()))
+
+
+def rendered(fig, formats: tuple[str, ...] = FORMATS) -> dict[str, bytes]:
+    """``fig`` drawn as each of ``formats`` (PNG at :data:`DPI`): the files' bytes by format.
+
+    The layout is computed once, as at :data:`DPI` (:func:`lay_out`), and kept for every format: the figure is
+    final when it is rendered."""
+    import io
+
+    lay_out(fig, DPI)
+    files = {}
+    for ext in formats:
+        buf = io.BytesIO()
+        fig.savefig(buf, format=ext, dpi=DPI)
+        files[ext] = buf.getvalue()
+    return files
+
+
+def write_rendered(files: dict[str, bytes], stem: str | Path) -> list[Path]:
+    """Write the files of :func:`rendered` as ``stem.<format>``, each whole or not at all; returns their paths."""
     from cams.io.files import atomic_write
 
     stem = Path(stem)
-    lay_out(fig, 150)
-    return [atomic_write(stem.with_suffix(f".{ext}"), "--out", partial(fig.savefig, format=ext, dpi=150))
-            for ext in formats]
+    return [atomic_write(stem.with_suffix(f".{ext}"), "--out", partial(_write_bytes, data=data))
+            for ext, data in files.items()]
+
+
+def _write_bytes(path, *, data: bytes) -> None:
+    Path(path).write_bytes(data)
+
+
+def save(fig, stem: str | Path, formats: tuple[str, ...] = FORMATS) -> list[Path]:
+    """Write ``fig`` as ``stem.png`` and ``stem.svg`` (:func:`rendered`), each whole or not at all."""
+    return write_rendered(rendered(fig, formats), stem)
 
 
 def mark_failing(fig, title: str):
@@ -780,6 +828,11 @@ def plot_vibration(cam):
     _title(ax_s, f"{d.name}: follower train at {v.rpm:.4g} rpm, natural frequency {v.natural_frequency:.4g} Hz")
     return fig
 
+
+#: How long each kind of picture takes to draw, relative to the others (CPU seconds x 10 on the examples): the
+#: order in which processes drawing side by side take them up (:func:`cams.present.forked.forked_map`).
+EFFORT = {"zone": 8, "vibration": 6, "motion": 5, "forces": 5, "profile": 4, "contact": 4, "curvature": 4,
+          "pressure": 2, "flat_pressure": 2}
 
 #: The pictures drawn only for a design that has their data, each with why not (None: it has it).
 NEEDS = {

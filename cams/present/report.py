@@ -35,7 +35,10 @@ import datetime
 import html
 import io
 import json
+from collections.abc import Callable
+from functools import partial
 from pathlib import Path
+from typing import Any
 
 __all__ = ["report_sections", "report_data", "render_pdf", "write_report", "PAGE_MM", "MARGIN_MM",
            "PICTURE_MAX_H_MM", "PICTURE_SHRINK"]
@@ -57,9 +60,11 @@ def report_sections(cam) -> list[tuple[str, list[tuple[str, str]]]]:
     return presenter(cam).report_sections(cam)
 
 
-def _figures(cam):
-    """The pictures, each titled as failing when the cam is not usable (:mod:`cams.assess`): the face's, less the
-    profile where none can be built and the forces where there are none."""
+def _drawings(cam):
+    """The pictures as ``(title, kind, draw)``: ``kind`` the picture's (:data:`cams.present.plots.PICTURES`, or
+    ``"optimized"``), ``draw()`` the matplotlib Figure, titled as failing when the cam is not usable
+    (:mod:`cams.assess`): the face's, less the profile where none can be built and the forces where there are
+    none."""
     from cams.present import plots
     from cams.present.faces import presenter
 
@@ -68,13 +73,26 @@ def _figures(cam):
             return cam.face.no_profile(cam.design) is None
         return plots.missing(kind, cam) is None
 
-    figs = [(title, plots.picture(kind, cam)) for title, kind in presenter(cam).report_pictures if drawn(kind)]
-    if cam.solution.optimization is not None:
+    title = cam.assessment.title()
+
+    def draw(kind: str):
+        return plots.mark_failing(plots.picture(kind, cam), title)
+
+    def draw_design():
         from cams.present.motion_plots import plot_motion_design
 
-        figs.append(("Motion design: the designed laws and cam beside the original", plot_motion_design(cam)))
-    title = cam.assessment.title()
-    return [(name, plots.mark_failing(fig, title)) for name, fig in figs]
+        return plots.mark_failing(plot_motion_design(cam), title)
+
+    out: list[tuple[str, str, Callable[[], Any]]] = [(name, kind, partial(draw, kind)) for name, kind in
+                                                    presenter(cam).report_pictures if drawn(kind)]
+    if cam.solution.optimization is not None:
+        out.append(("Motion design: the designed laws and cam beside the original", "optimized", draw_design))
+    return out
+
+
+def _figures(cam):
+    """The pictures of :func:`_drawings`, drawn: ``(title, Figure)``."""
+    return [(name, draw()) for name, _, draw in _drawings(cam)]
 
 
 def _version() -> str:
@@ -200,15 +218,20 @@ def _svg(fig) -> tuple[bytes, float, float]:
     """
     import re
 
-    from cams.present.plots import fix_layout
+    from cams.present.plots import DPI, lay_out
 
     buf = io.BytesIO()
+    lay_out(fig, DPI)  # the layout of the figure's PNG (cams plot), computed once and kept
     fig.savefig(buf, format="svg", bbox_inches="tight", pad_inches=0.04)
-    fix_layout(fig)  # the figure is final: a later drawing keeps this layout
     svg = buf.getvalue()
     head = svg[:svg.index(b"<svg") + 400].decode("utf-8", "replace")
     w, h = (float(re.search(rf'{k}="([0-9.]+)pt"', head).group(1)) for k in ("width", "height"))  # type: ignore[union-attr]
     return svg, w, h
+
+
+def _drawn_svg(draw) -> tuple[bytes, float, float]:
+    """:func:`_svg` of the Figure ``draw()`` makes."""
+    return _svg(draw())
 
 
 def render_pdf(data: dict, pictures: list[tuple[str, object]]) -> bytes:
@@ -248,19 +271,26 @@ def _typeset(data: dict, svgs: list[tuple[str, bytes, float, float]]) -> bytes:
     return bytes(pdf)
 
 
-def write_report(cam, out: str | Path, *, source: str | Path | None = None) -> tuple[Path, Path]:
+def write_report(cam, out: str | Path, *, source: str | Path | None = None,
+                 jobs: int | None = None) -> tuple[Path, Path]:
     """Write ``report.html`` and ``report.pdf`` for ``cam`` into folder ``out``.
 
     ``source`` is the design file shown in the PDF's title block. Returns the two paths. Pictures are drawn once,
-    as SVG (vector, their text as paths), and used by both files.
+    as SVG (vector, their text as paths), and used by both files; up to ``jobs`` processes draw them side by side
+    (None: one a core; :func:`cams.present.forked.forked_map`).
     """
     from cams.io.files import atomic_write, ensure_folder
+    from cams.present.forked import forked_map
+    from cams.present.plots import EFFORT, prepare
 
     out = ensure_folder(out, "--out")
     sections = report_sections(cam)
-    figs = _figures(cam)
+    drawings = _drawings(cam)
     data = report_data(cam, source=source, sections=sections)
-    svgs = [(title, *_svg(fig)) for title, fig in figs]
+    prepare()
+    drawn = forked_map([partial(_drawn_svg, draw) for _, _, draw in drawings], jobs=jobs,
+                       effort=[EFFORT.get(kind, 10) for _, kind, _ in drawings])
+    svgs = [(title, *svg) for (title, _, _), svg in zip(drawings, drawn, strict=True)]
 
     def write_pdf(tmp):
         Path(tmp).write_bytes(_typeset(data, svgs))

@@ -197,7 +197,8 @@ def test_plot_draws_the_pictures_titled_failing_and_exits_1(designs, capsys, tmp
 
     monkeypatch.setattr(plots, "mark_failing", spy)
     out = tmp_path / "pics"
-    rc = main(["plot", str(designs[name]), "--out", str(out), "--only", "pressure,profile"])
+    # drawn here (--jobs 1), where the spy sees them: a forked process's calls stay in that process
+    rc = main(["plot", str(designs[name]), "--out", str(out), "--only", "pressure,profile", "--jobs", "1"])
     cap = capsys.readouterr()
     assert rc == 1 and "buildable: NO" in cap.out
     pngs = sorted(p.name for p in out.glob("*.png"))

@@ -156,6 +156,6 @@ def test_plot_counts_its_pictures(capsys, monkeypatch, tmp_path):
     rc = main(["plot", str(EXAMPLES / "rocker_force.toml"), "--out", str(tmp_path), "--only", "motion,pressure"])
     out, err = capsys.readouterr()
     assert rc == 0 and len(out.split()) == 4  # two pictures, PNG and SVG each
-    assert "/2 [" in err and "drawing the pressure picture" in err
+    assert "/2 [" in err and "drawing 2 pictures" in err
     rc = main(["plot", str(EXAMPLES / "rocker_force.toml"), "--out", str(tmp_path), "--only", "motion", "--quiet"])
     assert rc == 0 and capsys.readouterr().err == ""
