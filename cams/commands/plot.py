@@ -23,19 +23,22 @@ FLAT_PICTURES = tuple(FlatPresenter.pictures)
 NAMES = ("motion", "zone", "pressure", "curvature", "profile", "forces", "contact", "vibration", "optimized")
 
 def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progress | None = None,
-         jobs: int | None = None) -> list[Path]:
-    """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.
+         jobs: int | None = None, turn: bool = False) -> list[Path]:
+    """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``, and with ``turn`` one turn of
+    the cam as an animated GIF (:func:`cams.present.plots.animate_profile`, ``NAME_turn.gif``).
 
     ``title`` (:meth:`cams.assess.Assessment.title`) marks every picture of a failing cam; ``bar`` counts one
-    step a picture. The pictures are drawn side by side by up to ``jobs`` processes (None: one a core;
-    :func:`cams.present.forked.forked_map`), each from the cam solved here; the files are written here.
+    step a picture (and a turn's frames, when the turn is drawn here). The pictures and the turn are drawn side by
+    side by up to ``jobs`` processes (None: one a core; :func:`cams.present.forked.forked_map`), each from the cam
+    solved here; the files are written here, in that order.
     """
     from cams.present import plots
     from cams.present.faces import presenter
-    from cams.present.forked import forked_map
+    from cams.present.forked import forked_map, workers
 
     bar = bar or Progress()
     names = [name for name in (*presenter(cam).pictures, "optimized") if name in which]
+    forked = workers(jobs, len(names) + turn) > 1
 
     def render(name: str) -> dict[str, bytes]:
         if name == "optimized":
@@ -46,15 +49,28 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progre
             fig = plots.picture(presenter(cam).pictures[name], cam)
         return plots.rendered(plots.mark_failing(fig, title))
 
+    def animate() -> dict[str, bytes]:
+        import tempfile
+
+        done = len(names)
+        # frames are counted when drawn here: a forked process's bar is not the one on the terminal
+        frames = None if forked else (lambda k, n: bar.to(done + k, done + n))
+        with tempfile.TemporaryDirectory(prefix="cams-turn-") as tmp:
+            return {"gif": plots.animate_profile(cam, Path(tmp) / "turn.gif", title=title,
+                                                 progress=frames).read_bytes()}
+
     plots.prepare()
-    if names:
-        bar.stage(f"drawing {len(names)} picture{'s' if len(names) > 1 else ''}")
+    tasks = [partial(render, name) for name in names] + ([animate] if turn else [])
+    effort = [plots.EFFORT.get(presenter(cam).pictures.get(name, ""), 10) for name in names] + [20] * turn
+    if tasks:
+        bar.stage(f"drawing {len(names)} picture{'' if len(names) == 1 else 's'}" + (" and one turn" * turn))
     with bar.held():  # no redraw from the bar's thread while processes are forked
-        files = forked_map([partial(render, name) for name in names], jobs=jobs, done=lambda k: bar.advance(),
-                           effort=[plots.EFFORT.get(presenter(cam).pictures.get(name, ""), 10) for name in names])
+        # a step a picture, and the turn's when it was drawn elsewhere (here, its frames count it)
+        files = forked_map(tasks, jobs=jobs, effort=effort,
+                           done=lambda k: bar.advance() if k < len(names) or forked else None)
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
-    for name, drawn in zip(names, files, strict=True):
+    for name, drawn in zip([*names, *(["turn"] * turn)], files, strict=True):
         written += plots.write_rendered(drawn, f"{stem}_{name}")
     return written
 
@@ -81,7 +97,7 @@ def _only(spec: str | None) -> tuple[str, ...] | None:
 
 def run(args) -> int:
     from cams.cam import Cam
-    from cams.io.files import all_or_nothing, atomic_write, ensure_folder
+    from cams.io.files import all_or_nothing, ensure_folder
 
     check_jobs(args.jobs)
     which = _only(args.only)
@@ -119,19 +135,8 @@ def run(args) -> int:
         # so a failure (a design that cannot be solved for the zone ...) leaves none of them behind
         with all_or_nothing():
             out = ensure_folder(args.out, "--out")
-            written = draw(cam, which, out, title="" if a is None else a.title(), bar=bar, jobs=args.jobs)
-            if turn:
-                from cams.present.plots import animate_profile
-
-                title = "" if a is None else a.title()  # --animate always assesses
-                bar.stage("animating one turn")
-                done = len(which)
-
-                def turn_into(tmp):
-                    return animate_profile(cam, tmp, title=title, progress=lambda k, n: bar.to(done + k, done + n))
-
-                written.append(atomic_write(out / f"{_slug(cam.design.name)}_turn.gif", "--out", turn_into,
-                                            suffix=".gif"))
+            written = draw(cam, which, out, title="" if a is None else a.title(), bar=bar, jobs=args.jobs,
+                           turn=turn)
     for p in written:
         print(p)
     if a is not None and not a.usable:

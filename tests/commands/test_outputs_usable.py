@@ -259,7 +259,9 @@ def test_plot_animation_of_a_failing_cam_is_titled(designs, capsys, tmp_path, mo
     real = plots.mark_failing
     monkeypatch.setattr(plots, "mark_failing", lambda fig, title: titles.append(title) or real(fig, title))
     monkeypatch.setattr(plots.animate_profile, "__kwdefaults__", {"frames": 2, "fps": 12, "title": ""})
-    rc = main(["plot", str(designs["bore"]), "--out", str(tmp_path / "a"), "--only", "motion", "--animate"])
+    # drawn here (--jobs 1), where the spy sees them: a forked process's calls stay in that process
+    rc = main(["plot", str(designs["bore"]), "--out", str(tmp_path / "a"), "--only", "motion", "--animate",
+               "--jobs", "1"])
     capsys.readouterr()
     assert rc == 1 and len(list((tmp_path / "a").glob("*_turn.gif"))) == 1
     assert titles and all(t == "FAILS: bore" for t in titles)

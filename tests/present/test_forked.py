@@ -104,3 +104,21 @@ def test_effort_orders_what_is_handed_out_not_what_comes_back():
     assert [k for k, _ in out] == [0, 1, 2, 3]
     starts = sorted(out, key=lambda r: r[1])
     assert {k for k, _ in starts[:2]} == {1, 3}
+
+
+def test_the_turn_is_drawn_beside_the_pictures_and_is_the_same(tmp_path):
+    """--animate: the turn is one more task; its GIF is the same, frame for frame, drawn here or elsewhere."""
+    from PIL import Image, ImageSequence
+
+    gifs = []
+    for jobs in ("1", "2"):
+        out = tmp_path / jobs
+        r = cams_cli("plot", "examples/translating_force.toml", "--out", out, "--only", "motion", "--animate",
+                     "--jobs", jobs, "--quiet")
+        assert r.returncode == 0, r.stderr
+        assert [line.rsplit("_", 1)[-1] for line in r.stdout.split()] == ["motion.png", "motion.svg", "turn.gif"]
+        (gif,) = out.glob("*_turn.gif")
+        with Image.open(gif) as im:
+            gifs.append([np.asarray(f.convert("RGB")) for f in ImageSequence.Iterator(im)])
+    assert len(gifs[0]) == len(gifs[1]) == 72
+    assert all(np.array_equal(a, b) for a, b in zip(*gifs, strict=True))
