@@ -213,8 +213,9 @@ def _svg(fig) -> tuple[bytes, float, float]:
     """``fig`` as SVG, its text drawn as paths (the picture looks the same wherever it is shown), and its width and
     height (pt).
 
-    Saved to the bounding box of everything drawn (``bbox_inches="tight"``): a legend that reaches past the
-    figure's edge is in the picture, not drawn over the page's margin (an SVG image is not clipped to its box).
+    Saved to the bounding box of everything drawn, padded by 0.04 in (as ``bbox_inches="tight"``): a legend that
+    reaches past the figure's edge is in the picture, not drawn over the page's margin (an SVG image is not
+    clipped to its box).
     """
     import re
 
@@ -222,7 +223,8 @@ def _svg(fig) -> tuple[bytes, float, float]:
 
     buf = io.BytesIO()
     lay_out(fig, DPI)  # the layout of the figure's PNG (cams plot), computed once and kept
-    fig.savefig(buf, format="svg", bbox_inches="tight", pad_inches=0.04)
+    # the box measured on that layout: savefig's "tight" would draw the whole figure once more to measure it
+    fig.savefig(buf, format="svg", bbox_inches=fig.get_tightbbox().padded(0.04))
     svg = buf.getvalue()
     head = svg[:svg.index(b"<svg") + 400].decode("utf-8", "replace")
     w, h = (float(re.search(rf'{k}="([0-9.]+)pt"', head).group(1)) for k in ("width", "height"))  # type: ignore[union-attr]
