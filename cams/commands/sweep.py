@@ -101,7 +101,7 @@ def _indexes(out: Path, rows: list[dict], size: int) -> set[int]:
 def _run(args, state: dict) -> int:
     from cams.io.files import check_output_paths
     from cams.sweep import run_grid
-    from cams.sweep.output import check_identity, csv_header, parts_dir, read_rows, sink_for, write_identity
+    from cams.sweep.output import check_identity, check_out, csv_header, parts_dir, read_rows, sink_for, write_identity
 
     if args.jobs is not None and args.jobs < 1:
         raise InputError("--jobs", f"must be an integer >= 1 (processes), got {args.jobs}")
@@ -110,6 +110,8 @@ def _run(args, state: dict) -> int:
     if str(args.out) == "-" or not (out.parent.is_dir() and (not out.exists() or out.is_file())):
         raise InputError("--out", f"{args.out!r}: a sweep streams its rows into a regular file (to resume from it)")
     fmt = _format(args, out)
+    resumed = args.resume and (out.exists() or (fmt == "parquet" and parts_dir(out).exists()))
+    check_out(out, resumed=resumed)
     if fmt == "parquet":
         try:
             import pyarrow  # noqa: F401
@@ -121,7 +123,7 @@ def _run(args, state: dict) -> int:
     identity = {**grid.identity(), "format": fmt, "columns": csv_header(grid.keys)}
     done: set[int] = set()
     before_failed = 0
-    if args.resume and (out.exists() or (fmt == "parquet" and parts_dir(out).exists())):
+    if resumed:
         check_identity(out, identity)
         rows = read_rows(fmt, out, grid.keys)
         done = _indexes(out, rows, grid.size)

@@ -1,6 +1,7 @@
 """``cams sweep``: --jobs and --vary checked, a wrong base design refused, Ctrl-C one line, a bar only on a terminal."""
 
 import csv
+import json
 import os
 import signal
 import subprocess
@@ -188,3 +189,27 @@ def test_sweep_output_is_not_the_design_file(tmp_path, capsys):
     rc, _, err = _run(capsys, design, "--vary", "follower.arm=100,120", "--out", design, "--quiet")
     assert rc == 2 and err.startswith("cams sweep: error: --out: ") and "input file" in err
     assert design.read_text() == ROCKER.read_text()
+
+
+def test_out_never_writes_over_another_sweeps_sidecar(tmp_path, capsys):
+    """A sidecar's name as --out, or an --out whose sidecar's place holds another file: one line, exit 2,
+    the other sweep's files byte for byte as they were and nothing new written."""
+    first = tmp_path / "a.csv"
+    rc, _, _ = _run(capsys, ROCKER, "--vary", "follower.arm=100,120", "--out", first, "--quiet")
+    assert rc == 0
+    side = tmp_path / "a.csv.sweep.json"
+    kept = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert set(kept) == {"a.csv", "a.csv.sweep.json"} and json.loads(kept[side.name])["format"] == "csv"
+    # the other sweep's sidecar itself, any name of that form, and a table whose sidecar's place is a.csv's table
+    table_named_like_a_sidecar = tmp_path / "b.sweep.json"
+    table_named_like_a_sidecar.write_bytes(kept["a.csv"])
+    kept[table_named_like_a_sidecar.name] = kept["a.csv"]
+    for out in (side, tmp_path / "new.CSV.SWEEP.JSON", tmp_path / "b"):
+        rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100,130", "--out", out, "--quiet")
+        assert rc == 2 and stdout == "" and err.count("\n") == 1, err
+        assert err.startswith("cams sweep: error: --out: ") and ("give the table another name" in err or
+                                                                  "give --out another name" in err)
+        assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == kept
+    # the same --out again writes over its own sidecar: allowed
+    rc, _, _ = _run(capsys, ROCKER, "--vary", "follower.arm=100,130", "--out", first, "--quiet")
+    assert rc == 0 and json.loads(side.read_text())["values"] == [[100, 130]]
