@@ -34,10 +34,10 @@ def _n(k: int, what: str) -> str:
 def _format(args, out: Path) -> str:
     from cams.sweep.outfile import PARQUET_SUFFIXES
 
-    by_name = "parquet" if out.suffix.lower() in PARQUET_SUFFIXES else "csv"  # as cams front reads it back
+    by_name = "parquet" if out.suffix.lower() in PARQUET_SUFFIXES else "csv"
     if args.format is not None:
         named = by_name if out.suffix.lower() in (".csv", *PARQUET_SUFFIXES) else args.format
-        if named != args.format:  # a Parquet file named .csv (or back) is read as the other by its name
+        if named != args.format:  # a Parquet file named .csv (or back) would mislead whoever opens it by its name
             raise InputError("--format", f"{args.format} does not fit --out {str(out)!r} (a .{named} name): "
                              f"give --out a .{'parquet' if args.format == 'parquet' else 'csv'} name")
         return args.format

@@ -25,7 +25,7 @@ from typing import Any
 from laws.errors import InputError
 
 __all__ = ["COLUMNS", "COLUMN_UNITS", "LENGTHS", "csv_header", "csv_row", "cell", "sidecar_path", "write_identity",
-           "check_out", "check_identity", "CsvSink", "ParquetSink", "sink_for", "read_rows", "failed"]
+           "check_out", "sidecar_format", "check_identity", "CsvSink", "ParquetSink", "sink_for", "read_rows", "failed"]
 
 #: Result columns after ``index``, ``file`` and the varied keys.
 COLUMNS = ("R0", "L", "offset", "centre_x", "centre_y", "blank_diameter", "max_pressure_angle_rise",
@@ -128,6 +128,16 @@ def _is_identity(path: Path) -> bool:
     except (OSError, ValueError):
         return False
     return isinstance(held, dict) and {"files", "keys", "values", "mode", "method", "format", "columns"} <= set(held)
+
+
+def sidecar_format(out: Path) -> str | None:
+    """The format (``"csv"``, ``"parquet"``) the sidecar beside ``out`` says the sweep wrote; None: no
+    sidecar, or none that says."""
+    side = sidecar_path(out)
+    if not side.is_file() or not _is_identity(side):
+        return None
+    fmt = json.loads(side.read_text(encoding="utf-8"))["format"]
+    return fmt if fmt in ("csv", "parquet") else None
 
 
 def check_out(out: Path, *, resumed: bool = False) -> None:
