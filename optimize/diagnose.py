@@ -434,11 +434,11 @@ def _solver_failed(design: CamDesign, half_planes, err: InfeasibleError) -> Solv
 
 def _lmax(design: CamDesign) -> float:
     """Largest centre distance in the zone (inf when the zone is unbounded)."""
-    from optimize.bounds import _recession_direction
+    from optimize.bounds import recession_direction
     from optimize.planar import clip_polygon
     from optimize.zone import sample_wedges
 
-    if _recession_direction(design) is not None:
+    if recession_direction(design) is not None:
         return float("inf")
     N, c = sample_wedges(design, 512).lines()
     # a bounded zone reaching beyond this box (100 times the follower) would be clipped, L max too small (open)

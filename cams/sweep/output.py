@@ -22,15 +22,16 @@ import shutil
 from pathlib import Path
 from typing import Any
 
+from cams.batch import SIZE_KEYS, VERDICT_KEYS
 from laws.errors import InputError
 
 __all__ = ["COLUMNS", "COLUMN_UNITS", "LENGTHS", "csv_header", "csv_row", "cell", "sidecar_path", "write_identity",
            "check_out", "sidecar_format", "check_identity", "CsvSink", "ParquetSink", "sink_for", "read_rows", "failed"]
 
-#: Result columns after ``index``, ``file`` and the varied keys.
-COLUMNS = ("R0", "L", "offset", "centre_x", "centre_y", "blank_diameter", "max_pressure_angle_rise",
-           "max_pressure_angle_return", "Ca_rise", "max_contact_stress", "residual_vibration", "verified",
-           "buildable", "error_bound", "failures", "error")
+#: Result columns after ``index``, ``file`` and the varied keys: a sized cam's numbers (the batch's, the one home of
+#: a row's keys), what only the per-design results carry (the rise's Ca, the contact stress, the residual
+#: vibration), then the verdict.
+COLUMNS = (*SIZE_KEYS, "Ca_rise", "max_contact_stress", "residual_vibration", *VERDICT_KEYS)
 
 #: Unit of each result column, written into the header as ``name_unit`` (none for flags, text and ratios).
 COLUMN_UNITS = {"R0": "mm", "L": "mm", "offset": "mm", "centre_x": "mm", "centre_y": "mm", "blank_diameter": "mm",
