@@ -92,6 +92,13 @@ def check_front_arguments(args, table: str | None, inputs: list, table_field: st
             raise InputError("--plot", f"{args.plot!r}: the chart is written as .png, .svg or .pdf")
         if x is None and (args.pareto is None or len(parse_objectives(args.pareto)) < 2):
             raise InputError("--plot", "give --axes X,Y, or --pareto with two columns (the chart's axes)")
+    if args.pareto is not None:
+        from cams.sweep.output import SIDECAR_SUFFIX, sidecar_path
+
+        front = pareto_path(table)
+        if sidecar_path(front).exists() or front.name.lower().endswith(SIDECAR_SUFFIX):
+            raise InputError("--pareto", f"the front is saved as {front}, another sweep's table (its sidecar is "
+                             "beside it): give the table another name")
     outs = [("--pareto", pareto_path(table) if args.pareto is not None else None), ("--plot", args.plot)]
     return check_output_paths(outs, inputs=[*inputs, ("--out", table)])
 

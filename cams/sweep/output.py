@@ -26,7 +26,8 @@ from cams.batch import SIZE_KEYS, VERDICT_KEYS
 from laws.errors import InputError
 
 __all__ = ["COLUMNS", "COLUMN_UNITS", "LENGTHS", "csv_header", "csv_row", "cell", "sidecar_path", "write_identity",
-           "check_out", "sidecar_format", "check_identity", "CsvSink", "ParquetSink", "sink_for", "read_rows", "failed"]
+           "check_out", "sidecar_format", "SIDECAR_SUFFIX", "check_identity", "CsvSink", "ParquetSink", "sink_for",
+           "read_rows", "failed"]
 
 #: Result columns after ``index``, ``file`` and the varied keys: a sized cam's numbers (the batch's, the one home of
 #: a row's keys), what only the per-design results carry (the rise's Ca, the contact stress, the residual

@@ -213,3 +213,21 @@ def test_out_never_writes_over_another_sweeps_sidecar(tmp_path, capsys):
     # the same --out again writes over its own sidecar: allowed
     rc, _, _ = _run(capsys, ROCKER, "--vary", "follower.arm=100,130", "--out", first, "--quiet")
     assert rc == 0 and json.loads(side.read_text())["values"] == [[100, 130]]
+
+
+def test_the_front_never_writes_over_another_sweeps_table(tmp_path, capsys):
+    """--pareto saves OUT's front as NAME.pareto.csv: when that is another sweep's table (its sidecar beside it),
+    one line naming --pareto, exit 2, that sweep's files as they were; cams front refuses it the same way."""
+    other = tmp_path / "a.pareto.csv"
+    rc, _, _ = _run(capsys, ROCKER, "--vary", "follower.arm=100,120", "--out", other, "--quiet")
+    assert rc == 0
+    kept = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100,130", "--out", tmp_path / "a.csv",
+                           "--pareto", "R0,L", "--quiet")
+    assert rc == 2 and stdout == "" and err.count("\n") == 1 and err.startswith("cams sweep: error: --pareto: ")
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == kept
+    (tmp_path / "a.csv").write_bytes(kept["a.pareto.csv"])
+    rc = main(["front", str(tmp_path / "a.csv"), "--pareto", "R0,L"])
+    err = capsys.readouterr().err
+    assert rc == 2 and err.startswith("cams front: error: --pareto: ") and "another sweep's table" in err
+    assert (tmp_path / "a.pareto.csv").read_bytes() == kept["a.pareto.csv"]
