@@ -206,8 +206,11 @@ def _format_held(path: Path, data: bytes, field: str) -> str:
         held = "csv"
     said = sidecar_format(path)
     if said is not None and said != held:
-        raise InputError(field, f"cannot read {path}: it holds {held}, but its sidecar says the sweep wrote {said} "
-                         "(an edited or replaced table)")
+        raise InputError(
+            field,
+            f"cannot read {path}: it holds {held}, but its sidecar says the sweep wrote {said} "
+            "(an edited or replaced table)",
+        )
     return held
 
 

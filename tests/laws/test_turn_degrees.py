@@ -17,8 +17,15 @@ def test_turn_degrees_is_the_same_direction_within_one_turn():
     got = turn_degrees(angles)
     assert got.shape == angles.shape and np.all(got >= 0.0) and np.all(got < 360.0)
     back = np.radians(got)
-    assert np.allclose(np.cos(back), np.cos(angles), atol=1e-12) and np.allclose(np.sin(back), np.sin(angles), atol=1e-12)
+    assert np.allclose(np.cos(back), np.cos(angles), atol=1e-12) and np.allclose(
+        np.sin(back), np.sin(angles), atol=1e-12
+    )
     turns = (math.degrees(1.0) * angles - got) / 360.0
     assert np.allclose(turns, np.round(turns), atol=1e-9)
     assert [float(turn_degrees(a)) for a in (0.0, math.pi, -math.pi / 2, 2 * math.pi, 7.5 * math.pi)] == [
-        0.0, 180.0, 270.0, 0.0, 270.0]
+        0.0,
+        180.0,
+        270.0,
+        0.0,
+        270.0,
+    ]
