@@ -1,7 +1,8 @@
 """One-dimensional searches on a bracket: a minimum and a root, both by Brent's methods.
 
 For the few places that refine an extremum or a crossing on a small bracket (a law's peak, the best point and
-the ends of an arc): plain Python and numpy, no derivative; ``scipy.optimize`` costs 0.3 s to import, more than
+the ends of an arc), and the boundary of a yes/no test (where a zone empties, the least proven ratio, the
+deepest keyway): plain Python and numpy, no derivative; ``scipy.optimize`` costs 0.3 s to import, more than
 the work it would do here.
 """
 
@@ -12,7 +13,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["bounded_minimum", "bracketed_root"]
+__all__ = ["bounded_minimum", "bracketed_root", "bisect_boundary"]
 
 
 def bounded_minimum(
@@ -165,3 +166,54 @@ def bracketed_root(
         xcur += scur if abs(scur) > delta else (delta if sbis > 0 else -delta)
         fcur = float(f(xcur))
     return xcur
+
+
+def bisect_boundary(
+    holds: Callable[[float], bool],
+    good: float,
+    bad: float,
+    *,
+    xtol: float = 0.0,
+    max_steps: int | None = None,
+) -> float:
+    """Where a yes/no test stops holding, by bisection: the last point found at which it holds.
+
+    ``holds(good)`` is true and ``holds(bad)`` false (neither is evaluated; ``good`` may lie on either side of
+    ``bad``). The midpoint of the bracket replaces the end with its answer until the bracket is no wider than
+    ``xtol`` (the unit of x), after ``max_steps`` halvings (None: no limit), or when the midpoint rounds to an
+    end (no float lies between them).
+
+    Parameters
+    ----------
+    holds : callable
+        The test, ``float -> bool``; evaluated once per halving, at the midpoint only.
+    good, bad : float
+        The bracket's ends: where the test holds, where it does not.
+    xtol : float
+        The bracket's width at which to stop, >= 0 (0: only ``max_steps`` or the floats' resolution stop it).
+    max_steps : int or None
+        The most halvings.
+
+    Returns
+    -------
+    float
+        The end of the final bracket where the test holds (``good`` itself when no midpoint held).
+
+    Examples
+    --------
+    >>> bisect_boundary(lambda x: x * x <= 2.0, 0.0, 2.0, xtol=1e-12)  # doctest: +ELLIPSIS
+    1.41421356237...
+    >>> bisect_boundary(lambda x: x >= 0.3, 1.0, 0.0, max_steps=2)  # 0.5, then 0.25 (fails)
+    0.5
+    """
+    steps = 0
+    while abs(good - bad) > xtol and (max_steps is None or steps < max_steps):
+        mid = 0.5 * (good + bad)
+        if mid in (good, bad):
+            break
+        if holds(mid):
+            good = mid
+        else:
+            bad = mid
+        steps += 1
+    return good

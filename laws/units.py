@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["TWO_PI", "LENGTH_UNITS", "rpm_to_omega", "omega_to_rpm"]
+__all__ = ["TWO_PI", "LENGTH_UNITS", "rpm_to_omega", "omega_to_rpm", "turn_degrees"]
 
 #: One turn, radians: the one home of ``2 pi`` for every layer.
 TWO_PI = 2.0 * np.pi
@@ -64,3 +64,30 @@ def omega_to_rpm(omega: float) -> float:
     123.4
     """
     return float(omega * 30.0 / np.pi)
+
+
+def turn_degrees(angle):
+    """An angle in radians (a cam angle, any number of turns, or negative) in degrees within one turn, [0, 360).
+
+    The one way every output states where on the cam something lies: ``np.degrees(angle) % 360``, so the
+    float is the same wherever it is printed or written. (As with any floating modulo, an angle a rounding
+    below 0 gives 360.0.)
+
+    Parameters
+    ----------
+    angle : float or ndarray
+        Radians.
+
+    Returns
+    -------
+    numpy float or ndarray
+        Degrees, the shape of ``angle``.
+
+    Examples
+    --------
+    >>> float(turn_degrees(-np.pi / 2))
+    270.0
+    >>> float(turn_degrees(5 * np.pi))
+    180.0
+    """
+    return np.degrees(angle) % 360.0

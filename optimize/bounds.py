@@ -21,16 +21,22 @@ import numpy as np
 from cams.model.design import CamDesign
 from optimize.zone import GRID, max_violation, scan_peaks, zone_table
 
-__all__ = ["interior_point", "push_inside"]
+__all__ = ["interior_point", "push_inside", "recession_direction"]
 
 
-def _recession_direction(design: CamDesign, grid: int = GRID) -> tuple[np.ndarray, float] | None:
+def recession_direction(design: CamDesign, grid: int = GRID) -> tuple[np.ndarray, float] | None:
     """A direction inside every wedge's cone, and its angular margin (radians).
 
     From the wedges at the scan positions of :func:`optimize.zone.zone_table`;
     the margin is reduced by how far a wedge's axis can turn between two scan
     positions (it turns with the follower: ``turn s``), so it holds for every
     cam angle.
+
+    Returns
+    -------
+    (direction, margin) or None
+        A unit vector (fixed frame) and the margin, radians; None when the cones share no direction (or no phase
+        is constrained): the zone may then be bounded.
     """
     t = zone_table(design, grid)
     if not t.phases:
@@ -74,7 +80,7 @@ def interior_point(design: CamDesign, near: np.ndarray) -> tuple[np.ndarray, flo
         found.
     """
     scale = design.scale
-    rd = _recession_direction(design)
+    rd = recession_direction(design)
     if rd is not None:
         d, _ = rd
         t = zone_table(design)
@@ -134,7 +140,7 @@ def push_inside(design: CamDesign, centre: np.ndarray, violation: float) -> np.n
     centre = np.asarray(centre, dtype=float)
     if violation <= 0:
         return centre
-    rd = _recession_direction(design)
+    rd = recession_direction(design)
     if rd is not None:
         d, margin = rd
         return centre + (violation / np.sin(margin)) * d

@@ -20,7 +20,7 @@ from optimize.planar import EPS, nearest_point
 from optimize.result import Binding, CentreSolution
 from optimize.zone import sample_wedges
 
-__all__ = ["nearest_convex", "weighted_convex"]
+__all__ = ["nearest_convex", "weighted_convex", "sampling_bound"]
 
 
 def _solve(design, objective, samples, half_planes):
@@ -76,7 +76,7 @@ def nearest_convex(
     obj = float(np.linalg.norm(O - T))
     return CentreSolution(
         centre=O, objective=obj, method="convex", samples=samples,
-        binding=binding, error_bound=_sampling_bound(design, O, T, obj), violation=float(np.max(N @ O - c)),
+        binding=binding, error_bound=sampling_bound(design, O, T, obj), violation=float(np.max(N @ O - c)),
     )
 
 
@@ -85,12 +85,17 @@ def _magnitude(design: CamDesign, *points: np.ndarray) -> float:
     return float(design.scale + sum(np.abs(p).sum() for p in points))
 
 
-def _sampling_bound(design: CamDesign, O: np.ndarray, T: np.ndarray, obj: float) -> float | None:
+def sampling_bound(design: CamDesign, O: np.ndarray, T: np.ndarray, obj: float) -> float | None:
     """Gap between the sampled optimum (a lower bound) and a feasible point of the continuum, with the rounding.
 
     ``obj = |O - T|`` is the sampled zone's nearest distance (a relaxation of
     the continuous zone); the point moved inside by
     :func:`optimize.bounds.push_inside` bounds the optimum from above.
+
+    Returns
+    -------
+    float or None
+        The gap (mm); None when no feasible point was found to bound it.
     """
     from optimize.bounds import push_inside
     from optimize.zone import max_violation

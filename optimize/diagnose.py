@@ -39,6 +39,7 @@ import numpy as np
 from cams.model.design import CamDesign
 from cams.model.follower import Rocker
 from laws.errors import InfeasibleError, SolverError
+from laws.search import bisect_boundary
 from optimize.result import CentreSolution
 
 __all__ = ["admissible_L_range", "diagnosed", "explain_infeasible", "Relaxation", "relaxations", "zone_margin",
@@ -180,23 +181,6 @@ def least_R0(design: CamDesign) -> float | None:
         return None
 
 
-def _bisect(empty: Callable[[float], bool], good: float, bad: float, tol: float) -> float:
-    """The boundary between a feasible ``good`` and an infeasible ``bad`` value: the last feasible value.
-
-    ``empty(v)`` tells whether the zone is empty at ``v``; the bracket is
-    halved until narrower than ``tol``.
-    """
-    while abs(good - bad) > tol:
-        mid = 0.5 * (good + bad)
-        if mid in (good, bad):
-            break
-        if empty(mid):
-            bad = mid
-        else:
-            good = mid
-    return good
-
-
 def _attained(R0_at: Callable[[float], float | None], bound: float, span: float) -> bool:
     """False when the least R0 grows without bound as the limit approaches ``bound``.
 
@@ -272,7 +256,8 @@ def relaxations(design: CamDesign, half_planes=None, L: float | None = None) -> 
 
         if empty(with_value(loose), half_planes):
             continue
-        bound = _bisect(lambda v: empty(with_value(v), half_planes), loose, given, math.radians(ANGLE_TOL_DEG))
+        bound = bisect_boundary(lambda v: not empty(with_value(v), half_planes), loose, given,
+                                xtol=math.radians(ANGLE_TOL_DEG))
         attained = half_planes is not None or L is not None or _attained(lambda v: least_R0(with_value(v)), bound,
                                                                     loose - bound)
         out.append(Relaxation(name, given, bound, attained))
@@ -282,7 +267,8 @@ def relaxations(design: CamDesign, half_planes=None, L: float | None = None) -> 
 
         given = max(lim.pressure_angle, lim.return_limit)
         if given < loose and not empty(both(loose), half_planes):
-            bound = _bisect(lambda v: empty(both(v), half_planes), loose, given, math.radians(ANGLE_TOL_DEG))
+            bound = bisect_boundary(lambda v: not empty(both(v), half_planes), loose, given,
+                                    xtol=math.radians(ANGLE_TOL_DEG))
             attained = L is not None or _attained(lambda v: least_R0(both(v)), bound, loose - bound)
             out.append(Relaxation("limits.pressure_angle", given, bound, attained, joint=True))
     if isinstance(design.follower, Rocker) and lim.safety_factor > 1.0:
@@ -290,7 +276,7 @@ def relaxations(design: CamDesign, half_planes=None, L: float | None = None) -> 
             return design.with_(limits=replace(lim, safety_factor=v))
 
         if not empty(with_k(1.0), half_planes):
-            bound = _bisect(lambda v: empty(with_k(v), half_planes), 1.0, lim.safety_factor, K_TOL)
+            bound = bisect_boundary(lambda v: not empty(with_k(v), half_planes), 1.0, lim.safety_factor, xtol=K_TOL)
             attained = half_planes is not None or L is not None or _attained(lambda v: least_R0(with_k(v)), bound,
                                                                         1.0 - bound)
             out.append(Relaxation("limits.safety_factor", lim.safety_factor, bound, attained))
@@ -434,11 +420,11 @@ def _solver_failed(design: CamDesign, half_planes, err: InfeasibleError) -> Solv
 
 def _lmax(design: CamDesign) -> float:
     """Largest centre distance in the zone (inf when the zone is unbounded)."""
-    from optimize.bounds import _recession_direction
+    from optimize.bounds import recession_direction
     from optimize.planar import clip_polygon
     from optimize.zone import sample_wedges
 
-    if _recession_direction(design) is not None:
+    if recession_direction(design) is not None:
         return float("inf")
     N, c = sample_wedges(design, 512).lines()
     # a bounded zone reaching beyond this box (100 times the follower) would be clipped, L max too small (open)

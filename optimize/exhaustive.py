@@ -233,11 +233,11 @@ def nearest_exhaustive(
         raise empty
     O = pts[best]
     binding = tuple(Binding.of_line(W, int(k)) for k in lines[best] if k >= 0)
-    from optimize.convex import _sampling_bound
+    from optimize.convex import sampling_bound
 
     obj = float(np.linalg.norm(O - T))
     return CentreSolution(
         centre=np.asarray(O, dtype=float), objective=obj, method="exhaustive",
-        samples=samples, binding=binding, error_bound=_sampling_bound(design, O, T, obj),
+        samples=samples, binding=binding, error_bound=sampling_bound(design, O, T, obj),
         violation=float(np.max(W.violation(O))),
     )

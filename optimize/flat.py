@@ -38,6 +38,7 @@ from cams.model.design import FlatFaceDesign
 from cams.model.follower import FlatRocker, FlatTranslating, check_length
 from laws.errors import InputError
 from laws.program import Program
+from laws.units import turn_degrees
 
 __all__ = [
     "min_base_radius_translating",
@@ -207,7 +208,7 @@ def _renamed(e: InputError, field: str | None = None) -> InputError:
 
 
 def _deg(phi) -> float | None:
-    return None if phi is None or not np.isfinite(phi) else float(np.degrees(phi) % 360.0)
+    return None if phi is None or not np.isfinite(phi) else float(turn_degrees(phi))
 
 
 @dataclass(frozen=True, eq=False)

@@ -152,10 +152,10 @@ def _seeds(design: CamDesign, ref: np.ndarray, radius: float, inner: np.ndarray)
     recession direction lies outside; by convexity their segment crosses the
     circle inside the zone.
     """
-    from optimize.bounds import _recession_direction
+    from optimize.bounds import recession_direction
     from optimize.circle import crossing_seed
 
-    rd = _recession_direction(design)
+    rd = recession_direction(design)
     if rd is None:
         return ()
     far = inner + (2 * radius + np.linalg.norm(inner - ref) + design.scale) * rd[0]

@@ -53,7 +53,7 @@ are (``s', s'', s'''`` from the laws)
     h'' = turn (s'' m - turn s'^2 p) - b1 s''' - bt s'',
 
 which :func:`max_violation` uses to locate the largest violation by safeguarded
-Newton steps. :func:`_side_constants` is the one place of the wedge geometry;
+Newton steps. :func:`side_constants` is the one place of the wedge geometry;
 everything else here is built on these three formulas.
 """
 
@@ -69,7 +69,8 @@ from cams.model.design import CamDesign
 from cams.model.follower import Rocker
 
 __all__ = ["Wedges", "wedges", "phase_wedges", "side_terms", "sample_wedges", "max_violation", "ViolationPeak",
-           "ZoneTable", "zone_table", "clear_cache", "Peaks", "scan_peaks", "GRID"]
+           "ZoneTable", "zone_table", "clear_cache", "Peaks", "scan_peaks", "GRID", "rigid_motion",
+           "side_constants", "scan_positions"]
 
 #: Even steps per phase of the violation scan (:class:`ZoneTable`).
 GRID = 384
@@ -121,19 +122,41 @@ class Wedges:
 
 # -- the wedge geometry ------------------------------------------------------------------------
 
-def _rigid_motion(design: CamDesign) -> tuple[float, np.ndarray]:
-    """``(turn, tau)``: the follower's geometry at ``s`` is that at 0 turned by ``turn s``, moved by ``tau s``."""
+def rigid_motion(design: CamDesign) -> tuple[float, np.ndarray]:
+    """How the follower's geometry moves with its displacement ``s``.
+
+    Returns
+    -------
+    turn : float
+        The geometry at ``s`` is that at ``s = 0`` turned by ``turn * s`` radians about the pivot (a rocker:
+        its ``sense``, +1 counter-clockwise; a translating follower: 0).
+    tau : ndarray, shape (2,)
+        ... and moved by ``tau * s`` (mm): a translating follower's unit rise direction ``(0, 1)``; a rocker:
+        zero.
+    """
     f = design.follower
     if isinstance(f, Rocker):
         return float(f.sense), np.zeros(2)
     return 0.0, np.array([0.0, 1.0])
 
 
-def _side_constants(design: CamDesign, limit: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def side_constants(design: CamDesign, limit: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Wedge of the follower at ``s = 0``: ``n0 (2, 2)``, ``P0 (2, 2)``, ``Q0 (2,)`` (sides t, t1).
 
-    ``n0[k]`` is the unit outward normal of side k, ``P0[k] + s' Q0`` its apex
-    D (with the K_C shift) at analogue velocity ``s'``; see the module notes.
+    The one place of the wedge geometry (the zone's scan and the batch sizing, :mod:`cams.batch.sizing`).
+
+    Parameters
+    ----------
+    design : CamDesign
+        Its follower, cam sense and K_C (``limits.safety_factor``).
+    limit : float
+        The pressure-angle limit of the phase, radians.
+
+    Returns
+    -------
+    n0, P0, Q0 : ndarray
+        ``n0[k]`` is the unit outward normal of side k, ``P0[k] + s' Q0`` its apex D (mm, with the K_C shift)
+        at analogue velocity ``s'`` (mm/rad), in the fixed frame; see the module notes.
     """
     f = design.follower
     A, T, lever = (v.tolist() for v in f.frame(np.float64(0.0)))  # scalars: plain floats are quicker
@@ -164,8 +187,8 @@ def phase_wedges(design: CamDesign, i: int, limit: float, u: np.ndarray) -> Wedg
     """Wedges of phase ``i`` at normalized positions ``u`` (one-sided at its ends)."""
     u = np.asarray(u, dtype=float)
     m = design.program.evaluate_phase(i, u)
-    turn, tau = _rigid_motion(design)
-    n0, P0, Q0 = _side_constants(design, limit)
+    turn, tau = rigid_motion(design)
+    n0, P0, Q0 = side_constants(design, limit)
     c, sn = np.cos(turn * m.s)[:, None], np.sin(turn * m.s)[:, None]
     n = len(u)
     normals = np.empty((n, 2, 2))
@@ -210,8 +233,8 @@ def side_terms(design: CamDesign, limit: float, s: np.ndarray, ds: np.ndarray,
     """
     s = np.asarray(s, dtype=float)
     ds = np.asarray(ds, dtype=float)
-    turn, tau = _rigid_motion(design)
-    n0, P0, Q0 = _side_constants(design, limit)
+    turn, tau = rigid_motion(design)
+    n0, P0, Q0 = side_constants(design, limit)
     c, sn = np.cos(turn * s)[:, None], np.sin(turn * s)[:, None]
     normals = np.empty((s.size, 2, 2))
     normals[..., 0], normals[..., 1] = _turn(c, sn, n0[:, 0], n0[:, 1])
@@ -334,7 +357,12 @@ def _even_and_ends(grid: int) -> np.ndarray:
     return u
 
 
-def _scan_positions(design: CamDesign, grid: int) -> np.ndarray:
+def scan_positions(design: CamDesign, grid: int) -> np.ndarray:
+    """Normalized positions ``u`` in [0, 1] where each constrained phase's wedges are scanned.
+
+    ``grid`` even steps and geometric steps into each end, plus every law's breakpoints and a point just
+    either side of each (a law's s'' may jump there). The same positions for every phase.
+    """
     u = _even_and_ends(grid)
     found = {b for i, _ in design.constrained_phases() for b in design.program.law_of(i).breakpoints}
     if not found:
@@ -357,14 +385,14 @@ def clear_cache() -> None:
 def _zone_table(design: CamDesign, grid: int) -> ZoneTable:
     phases = design.constrained_phases()
     P = len(phases)
-    turn, tau = _rigid_motion(design)
+    turn, tau = rigid_motion(design)
     n0 = np.zeros((P, 2, 2))
     b0, b1, bt = np.zeros((P, 2)), np.zeros((P, 2)), np.zeros((P, 2))
     for j, (_, lim) in enumerate(phases):
-        n0[j], P0, Q0 = _side_constants(design, lim)
+        n0[j], P0, Q0 = side_constants(design, lim)
         b0[j] = np.einsum("ki,ki->k", n0[j], P0)
         b1[j], bt[j] = n0[j] @ Q0, n0[j] @ tau
-    u = _scan_positions(design, grid)
+    u = scan_positions(design, grid)
     M = len(u)
     mo = np.zeros((4, P, 1, M))
     for j, (i, _) in enumerate(phases):

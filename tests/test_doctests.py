@@ -26,6 +26,7 @@ DOCTEST_MODULES = [
     "laws.polynomial",
     "laws.program",
     "laws.registry",
+    "laws.search",
     "laws.standard",
     "laws.spline",
     "laws.table",

@@ -23,24 +23,25 @@ import numpy as np
 
 from laws.errors import CamsError
 
-__all__ = ["size_batch", "ROW_KEYS", "MARGIN", "PRESSURE_MARGIN"]
+__all__ = ["size_batch", "ROW_KEYS", "SIZE_KEYS", "VERDICT_KEYS", "MARGIN", "PRESSURE_MARGIN"]
 
-#: The keys of a row, in order (lengths in the design's unit, angles in degrees).
-ROW_KEYS = (
+#: A sized cam's numbers, in a row's order (lengths in the design's unit, angles in degrees): the batch's rows and
+#: the sweep's columns (:data:`cams.sweep.output.COLUMNS`) begin with them.
+SIZE_KEYS = (
     "R0",
     "L",
     "offset",
     "centre_x",
     "centre_y",
+    "blank_diameter",
     "max_pressure_angle_rise",
     "max_pressure_angle_return",
-    "blank_diameter",
-    "verified",
-    "buildable",
-    "error_bound",
-    "failures",
-    "error",
 )
+#: A row's verdict (the one rule, :mod:`cams.assess`) and its error bound (mm): the batch's rows and the sweep's
+#: columns end with them.
+VERDICT_KEYS = ("verified", "buildable", "error_bound", "failures", "error")
+#: The keys of a row, in order.
+ROW_KEYS = SIZE_KEYS + VERDICT_KEYS
 
 #: The pressure angle's largest excess over its limit (radians) a row may have: a tenth of the per-design check's
 #: tolerance (1e-7 rad), so that both judge it within the limit.
@@ -195,9 +196,9 @@ def _row(design, centre, R0: float, bound: float, rise: float, ret: float, large
         "offset": offset_x(float(centre[0])) + 0.0 if isinstance(f, Translating) else None,
         "centre_x": float(centre[0]),
         "centre_y": float(centre[1]),
+        "blank_diameter": 2.0 * largest,
         "max_pressure_angle_rise": deg(rise),
         "max_pressure_angle_return": deg(ret),
-        "blank_diameter": 2.0 * largest,
         "verified": True,
         "buildable": True,
         "error_bound": bound,

@@ -2,7 +2,7 @@
 
 The problem is the exact method's (:mod:`optimize.exact`): the admissible centre ``O`` nearest to the roller
 centre at the near dwell ``A0``, over every cam angle of every constrained phase, each position's two half-planes
-``n(s) . O <= b0 + b1 s' + bt s`` of :mod:`optimize.zone` (its constants, :func:`optimize.zone._side_constants`,
+``n(s) . O <= b0 + b1 s' + bt s`` of :mod:`optimize.zone` (its constants, :func:`optimize.zone.side_constants`,
 per design). Every design of a group shares the program, so the law is evaluated once for all on the zone's scan
 positions; the designs differ by their half-planes' constants only, and one array holds them all.
 
@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from optimize.planar import EPS
-from optimize.zone import GRID, _rigid_motion, _scan_positions, _side_constants
+from optimize.zone import GRID, rigid_motion, scan_positions, side_constants
 
 __all__ = ["BatchSizing", "size_group"]
 
@@ -70,10 +70,10 @@ def _constants(designs, phases):
     n0 = np.zeros((B, P, 2, 2))
     b0, b1, bt = np.zeros((B, P, 2)), np.zeros((B, P, 2)), np.zeros((B, P, 2))
     for d, design in enumerate(designs):
-        turn[d], tau[d] = _rigid_motion(design)
+        turn[d], tau[d] = rigid_motion(design)
         A0[d] = design.follower.position(0.0)
         for j, (_, lim) in enumerate(design.constrained_phases()):
-            n, P0, Q0 = _side_constants(design, lim)
+            n, P0, Q0 = side_constants(design, lim)
             n0[d, j] = n
             b0[d, j] = np.einsum("ki,ki->k", n, P0)
             b1[d, j], bt[d, j] = n @ Q0, n @ tau[d]
@@ -232,7 +232,7 @@ def size_group(designs, phases: list[int], program) -> BatchSizing:
     turn, _, n0, b0, b1, bt, A0 = _constants(designs, phases)
     scale = np.array([d.scale for d in designs], float)
     angle = np.array([program.phases[i].angle for i in phases])
-    u = _scan_positions(designs[0], GRID)
+    u = scan_positions(designs[0], GRID)
     mo = np.array(
         [[getattr(m, k) for k in ("s", "ds", "d2s")] for m in (program.evaluate_phase(i, u) for i in phases)]
     )  # (P, 3, M)

@@ -11,6 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from laws.units import turn_degrees
+
 __all__ = ["Check", "ChecksMixin", "polygon_check", "bore_check", "PRESSURE_CHECKS", "finite_or_none"]
 
 #: The checks of a profile that repeat the verified side (the pressure angle; a flat face's radius of
@@ -82,7 +84,7 @@ class ChecksMixin:
 
 
 def _deg(phi: float | None) -> float | None:
-    return None if phi is None else float(np.degrees(phi) % 360.0)
+    return None if phi is None else float(turn_degrees(phi))
 
 
 def polygon_check(name: str, pts: np.ndarray, phi: np.ndarray) -> Check:

@@ -62,13 +62,14 @@ def parse_axes(args) -> tuple[str | None, str | None, str | None]:
     return parts[0], parts[1], parts[2] if len(parts) == 3 else None
 
 
-def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
+def check_front_arguments(args, table: str | None, inputs: list, table_field: str = "--out") -> list[Path]:
     """Check ``--pareto``'s form, ``--plot``'s extension and paths, before anything is solved or read.
 
-    ``table`` is the sweep's output (None: written to standard output, which cannot be read back).
+    ``table`` is the sweep's output (None: written to standard output, which cannot be read back), given by the
+    option ``table_field``.
     Returns the paths written: the front's CSV and the chart, those asked for.
     """
-    from cams.io.files import STDOUT, check_output_paths
+    from cams.io.files import check_output_paths, output_kind
     from cams.present.sweepplot import FORMATS
     from cams.sweep.pareto import parse_objectives
 
@@ -78,10 +79,12 @@ def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
     x, _, _ = parse_axes(args)
     if not asked:
         return []
-    if table is None or str(table) == STDOUT or str(table).startswith("/dev/"):
+    # a table is a regular file (or a name not yet taken) or a folder of Parquet parts; anything else is a stream
+    # (standard output, /dev/fd/N, a device, a FIFO), which cannot be read back nor have the front saved beside it
+    if table is None or output_kind(table)[0] not in ("file", "folder"):
         raise InputError(
             "--pareto" if args.pareto is not None else "--plot",
-            "the front and the chart are read back from the table: give --out a file",
+            f"the front and the chart are read back from the table: give {table_field} a file, not a stream",
         )
     if args.plot is not None:
         ext = Path(args.plot).suffix.lower().lstrip(".")
@@ -89,6 +92,13 @@ def check_front_arguments(args, table: str | None, inputs: list) -> list[Path]:
             raise InputError("--plot", f"{args.plot!r}: the chart is written as .png, .svg or .pdf")
         if x is None and (args.pareto is None or len(parse_objectives(args.pareto)) < 2):
             raise InputError("--plot", "give --axes X,Y, or --pareto with two columns (the chart's axes)")
+    if args.pareto is not None:
+        from cams.sweep.output import SIDECAR_SUFFIX, sidecar_path
+
+        front = pareto_path(table)
+        if sidecar_path(front).exists() or front.name.lower().endswith(SIDECAR_SUFFIX):
+            raise InputError("--pareto", f"the front is saved as {front}, another sweep's table (its sidecar is "
+                             "beside it): give the table another name")
     outs = [("--pareto", pareto_path(table) if args.pareto is not None else None), ("--plot", args.plot)]
     return check_output_paths(outs, inputs=[*inputs, ("--out", table)])
 
@@ -217,7 +227,7 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
 
 
 def run(args) -> int:
-    check_front_arguments(args, args.table, inputs=[("TABLE", args.table)])
+    check_front_arguments(args, args.table, inputs=[("TABLE", args.table)], table_field="TABLE")
     if args.pareto is None and args.plot is None:
         raise InputError("--pareto", "give --pareto COL,COL or --plot CHART.png (or both)")
     return front_and_chart(args, args.table, field="TABLE")

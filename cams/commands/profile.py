@@ -10,6 +10,7 @@ import numpy as np
 
 from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, face_cam
 from cams.words import length_format
+from laws.units import turn_degrees
 
 __all__ = ["register"]
 
@@ -169,13 +170,13 @@ def _marks(args, cam, prof, rep: dict) -> dict:
     exact = cam.face.exact(design, cam.solution)
     datum = exact.datum
     rep["datum"] = {"x": float(datum[0]), "y": float(datum[1]),
-                    "angle_deg": float(np.degrees(np.arctan2(datum[1], datum[0])) % 360.0)}
+                    "angle_deg": float(turn_degrees(np.arctan2(datum[1], datum[0])))}
     keyway = keyway_of(design, datum)
     if keyway is not None:
         wall = check_keyway_wall(exact, float(design.bore_radius), keyway, design.hub_wall)
         rep["keyway"] = {"width": keyway.width, "depth": keyway.depth,
                          "angle_deg": float(np.degrees(design.keyway_angle or 0.0)),
-                         "direction_deg": float(np.degrees(keyway.alpha) % 360.0), "wall": wall}
+                         "direction_deg": float(turn_degrees(keyway.alpha)), "wall": wall}
     return {"exact": exact, "datum": datum, "keyway": keyway, "curves": None}
 
 

@@ -34,10 +34,10 @@ def _n(k: int, what: str) -> str:
 def _format(args, out: Path) -> str:
     from cams.sweep.outfile import PARQUET_SUFFIXES
 
-    by_name = "parquet" if out.suffix.lower() in PARQUET_SUFFIXES else "csv"  # as cams front reads it back
+    by_name = "parquet" if out.suffix.lower() in PARQUET_SUFFIXES else "csv"
     if args.format is not None:
         named = by_name if out.suffix.lower() in (".csv", *PARQUET_SUFFIXES) else args.format
-        if named != args.format:  # a Parquet file named .csv (or back) is read as the other by its name
+        if named != args.format:  # a Parquet file named .csv (or back) would mislead whoever opens it by its name
             raise InputError("--format", f"{args.format} does not fit --out {str(out)!r} (a .{named} name): "
                              f"give --out a .{'parquet' if args.format == 'parquet' else 'csv'} name")
         return args.format
@@ -101,7 +101,7 @@ def _indexes(out: Path, rows: list[dict], size: int) -> set[int]:
 def _run(args, state: dict) -> int:
     from cams.io.files import check_output_paths
     from cams.sweep import run_grid
-    from cams.sweep.output import check_identity, csv_header, parts_dir, read_rows, sink_for, write_identity
+    from cams.sweep.output import check_identity, check_out, csv_header, parts_dir, read_rows, sink_for, write_identity
 
     check_jobs(args.jobs)
     ins = [("FILE", f) for f in (args.files or [])] + ([("--sweep-file", args.sweep_file)] if args.sweep_file else [])
@@ -109,6 +109,8 @@ def _run(args, state: dict) -> int:
     if str(args.out) == "-" or not (out.parent.is_dir() and (not out.exists() or out.is_file())):
         raise InputError("--out", f"{args.out!r}: a sweep streams its rows into a regular file (to resume from it)")
     fmt = _format(args, out)
+    resumed = args.resume and (out.exists() or (fmt == "parquet" and parts_dir(out).exists()))
+    check_out(out, resumed=resumed)
     if fmt == "parquet":
         try:
             import pyarrow  # noqa: F401
@@ -120,7 +122,7 @@ def _run(args, state: dict) -> int:
     identity = {**grid.identity(), "format": fmt, "columns": csv_header(grid.keys)}
     done: set[int] = set()
     before_failed = 0
-    if args.resume and (out.exists() or (fmt == "parquet" and parts_dir(out).exists())):
+    if resumed:
         check_identity(out, identity)
         rows = read_rows(fmt, out, grid.keys)
         done = _indexes(out, rows, grid.size)

@@ -75,6 +75,7 @@ from cams.model.design import FlatFaceDesign
 from cams.model.dynamics import FollowerDynamics
 from cams.model.follower import FlatTranslating
 from laws.errors import InputError
+from laws.units import turn_degrees
 
 __all__ = ["FlatContact", "flat_contact", "FlatCamForces", "flat_cam_forces", "flat_design_forces"]
 
@@ -231,7 +232,7 @@ def _lock_error(dyn: FollowerDynamics, phi: float) -> InputError:
     field = "dynamics.face_friction" if dyn.face_friction > 0 else "dynamics.friction"
     return InputError(
         field,
-        f"the follower locks at cam angle {np.degrees(phi) % 360:.4g} deg: with friction "
+        f"the follower locks at cam angle {turn_degrees(phi):.4g} deg: with friction "
         f"{dyn.friction:g} and face_friction {dyn.face_friction:g} the friction outweighs the cam's push along "
         "the follower's motion; lower the friction",
     )

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 import numpy as np
 
 from laws.errors import InputError
+from laws.units import turn_degrees
 
 if TYPE_CHECKING:
     from cams.checks.base import Check
@@ -145,7 +146,7 @@ class Face(ABC):
         i = cycle.at_max
         p0 = cycle.max_pressure
         return Check("contact_stress", bool(p0 <= allowable), p0, float(cycle.phi[i]), float(allowable), "MPa",
-                     f"largest Hertz pressure {p0:.6g} MPa at cam angle {np.degrees(cycle.phi[i]) % 360:.2f} deg "
+                     f"largest Hertz pressure {p0:.6g} MPa at cam angle {turn_degrees(cycle.phi[i]):.2f} deg "
                      f"against the allowable {allowable:.6g} MPa")
 
     def contact_geometry(self, design, solution: SolveResult, phi: np.ndarray, length_unit: float) -> Any:

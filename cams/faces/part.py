@@ -44,6 +44,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from laws.errors import CamsError, InfeasibleError
+from laws.units import turn_degrees
 
 if TYPE_CHECKING:
     from cams.checks.base import Check
@@ -327,7 +328,7 @@ def size_to_part(face: Face, design, base: SolveResult,
     corner = next((c for c in v0.checks if c.name in SIZELESS and not c.passed and c.worst == 0.0), None)
     if corner is not None:      # a corner of the pitch curve (a velocity jump): radius 0 at every size
         return replace(base, notes=(*base.notes, f"not sized to the part: the pitch curve has a corner (a velocity "
-                                    f"jump) at cam angle {np.degrees(corner.at or 0.0) % 360:.4f} deg, radius of "
+                                    f"jump) at cam angle {turn_degrees(corner.at or 0.0):.4f} deg, radius of "
                                     "curvature 0 at every size, which no larger cam clears; use a law without "
                                     "velocity jumps")), None
     lo, g_lo = float(base.R0), v0.margin

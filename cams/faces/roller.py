@@ -25,6 +25,7 @@ from cams.model.follower import Rocker, Translating
 from cams.model.options import ProfileOptions
 from cams.verify.pressure import PressureReport, check_pressure
 from laws.errors import InputError, check_option
+from laws.units import turn_degrees
 from optimize.result import Binding
 from optimize.sizing import OBJECTIVES, offset_x, roller_travel, size, vanishing_error
 
@@ -98,9 +99,9 @@ class RollerSizing:
             "follower": design.follower.kind,
             "R0": float(result.R0),
             "smallest_cam_radius": small,
-            "smallest_cam_radius_at_deg": float(np.degrees(small_at) % 360.0),
+            "smallest_cam_radius_at_deg": float(turn_degrees(small_at)),
             "largest_cam_radius": large,
-            "largest_cam_radius_at_deg": float(np.degrees(large_at) % 360.0),
+            "largest_cam_radius_at_deg": float(turn_degrees(large_at)),
             "L": None if result.L is None else float(result.L),
             "offset": None if result.offset is None else float(result.offset),
             "centre": {"x": float(centre[0]), "y": float(centre[1])},
@@ -190,7 +191,7 @@ def pressure_failures(pressure: PressureReport) -> list[str]:
             continue
         d = np.degrees
         out.append(f"{kind} pressure angle {d(g):.4f} deg exceeds the limit {d(lim):.4f} deg by {d(g - lim):.4f} deg "
-                   f"at cam angle {d(at) % 360:.4f} deg")
+                   f"at cam angle {turn_degrees(at):.4f} deg")
     safety = None if pressure.safety is None else pressure.safety.failure()  # K_C (seed 3.26)
     return out if safety is None else [*out, safety]
 

@@ -55,6 +55,7 @@ from cams.model.design import FlatFaceDesign
 from cams.model.follower import FlatTranslating
 from laws.errors import InputError
 from laws.program import Program
+from laws.units import turn_degrees
 
 __all__ = [
     "PhaseFunction",
@@ -202,7 +203,7 @@ def cusp_error(program: Program, found: list[tuple[float, float, int]]) -> Input
     """The error for a program whose velocity drops (``found``: :func:`cusps`): a cusp whatever the size."""
     phi, dv, phase = found[0]
     return InputError(f"motion[{phase}]", f"the follower's velocity jumps by {dv:.6g} per radian at "
-                      f"{np.degrees(phi) % 360:.4g} deg (a hard impact): a flat-faced follower's cam has a cusp "
+                      f"{turn_degrees(phi):.4g} deg (a hard impact): a flat-faced follower's cam has a cusp "
                       "there whatever its base radius; use laws without velocity jumps (e.g. cycloidal, poly345)")
 
 

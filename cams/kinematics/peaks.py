@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from laws.program import Program
-from laws.units import rpm_to_omega
+from laws.units import rpm_to_omega, turn_degrees
 
 __all__ = ["Peak", "Peaks", "motion_peaks", "KINDS"]
 
@@ -49,7 +49,7 @@ class Peak:
 
     def to_dict(self) -> dict:
         """JSON-ready ``{value, at_deg, unit}`` (value None: unbounded)."""
-        return {"value": self.value, "at_deg": float(np.degrees(self.at) % 360.0), "unit": self.unit}
+        return {"value": self.value, "at_deg": float(turn_degrees(self.at)), "unit": self.unit}
 
 
 @dataclass(frozen=True)

@@ -24,6 +24,7 @@ import numpy as np
 
 from cams.profile.exact import ExactCam
 from laws.errors import InputError
+from laws.search import bisect_boundary
 
 __all__ = ["Keyway", "keyway_of", "bore_outline", "keyway_wall", "check_keyway_wall", "WALL_SAMPLES"]
 
@@ -148,7 +149,7 @@ def check_keyway_wall(exact: ExactCam, bore: float, keyway: Keyway, hub_wall: fl
     got = wall(keyway.depth)
     if got >= need:
         return got
-    lo, hi = 0.0, keyway.depth
+    lo = 0.0
     if wall(lo) < need:
         corner = float(np.hypot(bore, keyway.width / 2.0))
         raise InputError(
@@ -158,10 +159,7 @@ def check_keyway_wall(exact: ExactCam, bore: float, keyway: Keyway, hub_wall: fl
             f"than the hub wall {need:g} mm: choose another cam.keyway_angle or a narrower keyway",
         )
     for _ in range(3):  # each pass refined where the last one's deepest keyway leaves the least wall
-        hi = keyway.depth
-        for _ in range(40):
-            mid = 0.5 * (lo + hi)
-            lo, hi = (mid, hi) if wall(mid) >= need else (lo, mid)
+        lo = bisect_boundary(lambda depth: wall(depth) >= need, lo, keyway.depth, max_steps=40)
         samples = _refined(exact, bore, Keyway(keyway.width, lo, keyway.alpha))
     raise InputError(
         "cam.keyway_depth",

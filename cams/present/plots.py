@@ -26,7 +26,7 @@ from cams.kinematics.inversion import (
 )
 from cams.present.mechanism import radii_label
 from cams.words import binding_text, phase_words
-from laws.units import TWO_PI, rpm_to_omega
+from laws.units import TWO_PI, rpm_to_omega, turn_degrees
 
 __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "plot_curvature", "plot_profile",
            "plot_forces", "picture", "PICTURES", "NEEDS", "missing", "no_forces", "plot_contact", "no_contact",
@@ -476,8 +476,8 @@ def plot_curvature(solution, *, n: int = 721):
     ax1, ax2 = fig.subplots(2, 1, sharex=True)
     ax1.plot(x, c["rho"], color="#2b6cb0", lw=1.3, label="radius of curvature ρ")
     ax1.axhline(d.min_radius, color="#c53030", ls="--", lw=1, label=f"limits.min_radius = {d.min_radius:g} mm")
-    ax1.plot(np.degrees(solution.min_rho_at) % 360, solution.min_rho, "o", color="#c53030", ms=5,
-             label=f"smallest ρ = {solution.min_rho:.3f} mm at {np.degrees(solution.min_rho_at) % 360:.1f}°")
+    ax1.plot(turn_degrees(solution.min_rho_at), solution.min_rho, "o", color="#c53030", ms=5,
+             label=f"smallest ρ = {solution.min_rho:.3f} mm at {turn_degrees(solution.min_rho_at):.1f}°")
     ax1.set_ylim(min(0.0, np.nanmin(c["rho"])), 1.1 * np.nanmax(c["rho"]))
     ax1.set_ylabel("ρ, mm")
     _title(ax1, f"{d.name}: radius of curvature (R0 = {solution.R0:.3f} mm) and contact on the face")
@@ -555,7 +555,7 @@ def plot_forces(cam):
     ax_t.set_xlabel("cam angle φ from the timing datum, deg")
     for k, imp in enumerate(cf.impacts):
         for ax in axes:
-            ax.axvline(np.degrees(imp.phi) % 360, color="#c53030", lw=1.0, ls=":",
+            ax.axvline(turn_degrees(imp.phi), color="#c53030", lw=1.0, ls=":",
                        label="rigid impact (force unbounded or contact lost)" if k == 0 else None)
     for ax in axes:
         ax.grid(True, lw=0.3)
@@ -612,7 +612,7 @@ def plot_contact(cam):
         ax_h.set_ylabel("entrainment velocity, m/s")
     for k, z in enumerate(co.zero_entrainment):
         for ax in (ax_p, ax_h):
-            ax.axvline(np.degrees(z) % 360, color="#b7791f", lw=1.0, ls=":",
+            ax.axvline(turn_degrees(z), color="#b7791f", lw=1.0, ls=":",
                        label="entrainment velocity zero" if k == 0 else None)
     ax_h.set_xlabel("cam angle φ from the timing datum, deg")
     for ax in (ax_p, ax_h):

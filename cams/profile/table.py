@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from cams.kinematics.inversion import curvature, invert_at, outward_normal, pressure_angle
+from laws.units import turn_degrees
 
 __all__ = ["roller_table", "flat_table", "lift_column", "polar_columns"]
 
@@ -29,7 +30,7 @@ def lift_column(design, phi: np.ndarray) -> tuple[str, np.ndarray]:
 def polar_columns(name: str, pts: np.ndarray) -> list[tuple[str, np.ndarray]]:
     """``name_r_mm``, ``name_theta_deg`` (in [0, 360)), ``name_x_mm``, ``name_y_mm`` of the points ``pts``."""
     r = np.hypot(pts[:, 0], pts[:, 1])
-    theta = np.degrees(np.arctan2(pts[:, 1], pts[:, 0])) % 360.0
+    theta = turn_degrees(np.arctan2(pts[:, 1], pts[:, 0]))
     return [(f"{name}_r_mm", r), (f"{name}_theta_deg", theta), (f"{name}_x_mm", pts[:, 0]),
             (f"{name}_y_mm", pts[:, 1])]
 

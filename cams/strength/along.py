@@ -21,7 +21,7 @@ from cams.model.contact import ContactSpec
 from cams.strength import film, hertz, life
 from cams.strength.materials import material
 from laws.errors import InputError
-from laws.units import omega_to_rpm
+from laws.units import omega_to_rpm, turn_degrees
 
 __all__ = [
     "ContactGeometry",
@@ -345,7 +345,7 @@ class ContactCycle:
         """``(short, line)`` of each contact limit the cam fails."""
         out = []
         i = self.at_max
-        at = np.degrees(self.phi[i]) % 360.0
+        at = turn_degrees(self.phi[i])
         a = self.materials.allowable
         if a is not None and not self.max_pressure <= a:
             out.append(
@@ -363,7 +363,7 @@ class ContactCycle:
                 (
                     "film",
                     f"lubricant film: film parameter {lam:.3g} at cam angle "
-                    f"{np.degrees(self.phi[j]) % 360:.2f} deg is below contact.min_film_parameter "
+                    f"{turn_degrees(self.phi[j]):.2f} deg is below contact.min_film_parameter "
                     f"{self.spec.min_film_parameter:g}",
                 )
             )
@@ -381,7 +381,7 @@ class ContactCycle:
         if z:
             out.append(
                 "the entrainment velocity falls to zero at cam angle "
-                + ", ".join(f"{np.degrees(p) % 360:.2f} deg" for p in z)
+                + ", ".join(f"{turn_degrees(p):.2f} deg" for p in z)
                 + ": no film is drawn in there (only squeezed); a larger nose radius lowers p0 but can bring "
                 "this about"
             )
@@ -413,7 +413,7 @@ class ContactCycle:
         return {
             "force_model": self.spec.force_model,
             "max_pressure": fin(self.max_pressure),
-            "max_pressure_at_deg": float(np.degrees(self.phi[i]) % 360.0),
+            "max_pressure_at_deg": float(turn_degrees(self.phi[i])),
             "at_max": {
                 "force": fin(self.force[i]),
                 "cam_curvature_radius": fin(self.cam_radius[i]),
@@ -425,7 +425,7 @@ class ContactCycle:
             "max_von_mises": fin(float(np.max(self.von_mises))),
             "min_film": None if self.film is None else fin(float(np.min(self.film))),
             "min_film_parameter": fin(self.min_film_parameter),
-            "zero_entrainment_at_deg": [float(np.degrees(p) % 360.0) for p in self.zero_entrainment],
+            "zero_entrainment_at_deg": [float(turn_degrees(p)) for p in self.zero_entrainment],
             "min_width": fin(self.min_width),
             "bearing_life_hours": fin(self.life_hours),
             "limit": self.limit,

@@ -11,6 +11,7 @@ suffix.
 from __future__ import annotations
 
 import csv
+import io
 import math
 import os
 from collections.abc import Sequence
@@ -21,10 +22,13 @@ import numpy as np
 
 from laws.errors import InputError
 
-__all__ = ["UNITS", "PARQUET_SUFFIXES", "SweepTable", "split_unit", "read_table", "write_rows"]
+__all__ = ["UNITS", "PARQUET_SUFFIXES", "PARQUET_MAGIC", "SweepTable", "split_unit", "read_table", "write_rows"]
 
-#: The names of a Parquet table (any other is read and written as CSV).
+#: The names of a Parquet table (``cams sweep`` writes any other as CSV unless ``--format`` says Parquet).
 PARQUET_SUFFIXES = (".parquet", ".pq")
+
+#: The four bytes a Parquet file begins and ends with: a table is read as what it holds, not by its name.
+PARQUET_MAGIC = b"PAR1"
 
 #: The unit suffixes a result column's name may end with (``_mm``, ``_deg``...), longest tried first.
 UNITS = (
@@ -137,12 +141,13 @@ def _cells_to_column(values: list[str]) -> np.ndarray | list:
         return [None if v == "" else v for v in values]
 
 
-def _read_csv(path: Path, field: str) -> tuple[list[str], list[list[str]], int]:
+def _read_csv(path: Path, data: bytes, field: str) -> tuple[list[str], list[list[str]], int]:
+    if b"\0" in data:  # text never holds a NUL byte: binary data read as text would give garbled cells
+        raise InputError(field, f"cannot read {path}: it holds binary data, neither a CSV nor Parquet")
     try:
-        with open(path, newline="", encoding="utf-8") as fh:
-            rows = list(csv.reader(fh))
-    except (OSError, UnicodeDecodeError, csv.Error) as e:
-        raise InputError(field, f"cannot read {path}: {e}") from None
+        rows = list(csv.reader(io.StringIO(data.decode("utf-8"), newline="")))
+    except (UnicodeDecodeError, csv.Error) as e:
+        raise InputError(field, f"cannot read {path} as a CSV: {e}") from None
     if not rows or not rows[0]:
         raise InputError(field, f"{path} is empty: no header line")
     header, body = rows[0], rows[1:]
@@ -150,19 +155,20 @@ def _read_csv(path: Path, field: str) -> tuple[list[str], list[list[str]], int]:
     return header, kept, len(body) - len(kept)
 
 
-def _read_parquet(path: Path, field: str) -> tuple[list[str], list[list[str]], int]:
+def _read_parquet(path: Path, data: bytes | None, field: str) -> tuple[list[str], list[list[str]], int]:
     import importlib
 
     try:
-        pq = importlib.import_module("pyarrow.parquet")  # optional: a module of no type stubs
+        pa = importlib.import_module("pyarrow")  # optional: a module of no type stubs
+        pq = importlib.import_module("pyarrow.parquet")
     except ImportError:
         raise InputError(field, f"{path} is Parquet: install pyarrow (pip install pyarrow) to read it") from None
     try:
-        t = pq.read_table(path)  # a file, or a folder of parts
+        t = pq.read_table(path if data is None else pa.BufferReader(data))  # a folder of parts, or the bytes
     except (OSError, ValueError) as e:
         raise InputError(field, f"cannot read {path}: {e}") from None
     header = list(t.column_names)
-    data = t.to_pydict()
+    data_ = t.to_pydict()
 
     def cell(v) -> str:
         if v is None or (isinstance(v, float) and math.isnan(v)):
@@ -172,23 +178,66 @@ def _read_parquet(path: Path, field: str) -> tuple[list[str], list[list[str]], i
             return r[:-2] if r.endswith(".0") else r
         return str(v)
 
-    cells = [[cell(data[h][i]) for h in header] for i in range(t.num_rows)]
+    cells = [[cell(data_[h][i]) for h in header] for i in range(t.num_rows)]
     return header, cells, 0
 
 
-def read_table(path: str | os.PathLike, field: str = "--from") -> SweepTable:
-    """Read a sweep's output: CSV, or Parquet (a ``.parquet`` file or folder of parts, through pyarrow).
+def _format_held(path: Path, data: bytes, field: str) -> str:
+    """``"parquet"`` or ``"csv"``: what the bytes of the table at ``path`` are (its name does not decide).
+
+    A Parquet file begins and ends with :data:`PARQUET_MAGIC`; anything else is read as a CSV. The sidecar
+    ``path.sweep.json``, when there, must name the same format.
 
     Raises
     ------
     InputError
-        Naming ``field``: the file cannot be read, has no header, or is Parquet without pyarrow.
+        Naming ``field``: Parquet's first mark without its last (a file cut short), a ``.parquet`` name on other
+        bytes, or a sidecar that names the other format.
+    """
+    from cams.sweep.output import sidecar_format
+
+    if data[:4] == PARQUET_MAGIC:
+        if len(data) < 8 or data[-4:] != PARQUET_MAGIC:
+            raise InputError(field, f"cannot read {path}: it begins as Parquet but does not end as one (cut short)")
+        held = "parquet"
+    elif path.suffix.lower() in PARQUET_SUFFIXES:
+        raise InputError(field, f"cannot read {path}: named as Parquet, but it is not (no {PARQUET_MAGIC!r} marks)")
+    else:
+        held = "csv"
+    said = sidecar_format(path)
+    if said is not None and said != held:
+        raise InputError(
+            field,
+            f"cannot read {path}: it holds {held}, but its sidecar says the sweep wrote {said} "
+            "(an edited or replaced table)",
+        )
+    return held
+
+
+def read_table(path: str | os.PathLike, field: str = "--from") -> SweepTable:
+    """Read a sweep's output: CSV, or Parquet (through pyarrow), told apart by the bytes the file holds (Parquet
+    begins and ends with ``PAR1``) whatever its name; a folder is read as Parquet parts.
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: the file cannot be read, has no header, is binary but not Parquet, is Parquet cut
+        short, is named ``.parquet`` and is not, holds another format than its sidecar says, or is Parquet
+        without pyarrow.
     """
     p = Path(path)
-    if p.suffix.lower() in PARQUET_SUFFIXES:
-        header, cells, dropped = _read_parquet(p, field)
+    if p.is_dir():  # a folder of Parquet parts
+        header, cells, dropped = _read_parquet(p, None, field)
     else:
-        header, cells, dropped = _read_csv(p, field)
+        try:
+            with open(p, "rb") as fh:  # a file, or a stream read once
+                data = fh.read()
+        except OSError as e:
+            raise InputError(field, f"cannot read {path}: {e}") from None
+        if _format_held(p, data, field) == "parquet":
+            header, cells, dropped = _read_parquet(p, data, field)
+        else:
+            header, cells, dropped = _read_csv(p, data, field)
     names = [split_unit(h)[0] for h in header]
     if len(set(names)) != len(names):  # e.g. "R0" and "R0_mm" both: keep the headers whole
         names = list(header)

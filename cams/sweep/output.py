@@ -22,15 +22,17 @@ import shutil
 from pathlib import Path
 from typing import Any
 
+from cams.batch import SIZE_KEYS, VERDICT_KEYS
 from laws.errors import InputError
 
 __all__ = ["COLUMNS", "COLUMN_UNITS", "LENGTHS", "csv_header", "csv_row", "cell", "sidecar_path", "write_identity",
-           "check_identity", "CsvSink", "ParquetSink", "sink_for", "read_rows", "failed"]
+           "check_out", "sidecar_format", "SIDECAR_SUFFIX", "check_identity", "CsvSink", "ParquetSink", "sink_for",
+           "read_rows", "failed"]
 
-#: Result columns after ``index``, ``file`` and the varied keys.
-COLUMNS = ("R0", "L", "offset", "centre_x", "centre_y", "blank_diameter", "max_pressure_angle_rise",
-           "max_pressure_angle_return", "Ca_rise", "max_contact_stress", "residual_vibration", "verified",
-           "buildable", "error_bound", "failures", "error")
+#: Result columns after ``index``, ``file`` and the varied keys: a sized cam's numbers (the batch's, the one home of
+#: a row's keys), what only the per-design results carry (the rise's Ca, the contact stress, the residual
+#: vibration), then the verdict.
+COLUMNS = (*SIZE_KEYS, "Ca_rise", "max_contact_stress", "residual_vibration", *VERDICT_KEYS)
 
 #: Unit of each result column, written into the header as ``name_unit`` (none for flags, text and ratios).
 COLUMN_UNITS = {"R0": "mm", "L": "mm", "offset": "mm", "centre_x": "mm", "centre_y": "mm", "blank_diameter": "mm",
@@ -112,9 +114,53 @@ def failed(row: dict) -> bool:
     return bool(row.get("error")) or bool(row.get("failures"))
 
 
+#: What a sidecar's name ends with: ``OUT.sweep.json`` beside the table ``OUT``.
+SIDECAR_SUFFIX = ".sweep.json"
+
+
 def sidecar_path(out: Path) -> Path:
     """``OUT.sweep.json`` beside the output ``OUT``."""
-    return out.with_name(out.name + ".sweep.json")
+    return out.with_name(out.name + SIDECAR_SUFFIX)
+
+
+def _is_identity(path: Path) -> bool:
+    """Whether ``path`` holds a sweep's identity: a JSON object with the keys every sidecar has."""
+    try:
+        held = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    return isinstance(held, dict) and {"files", "keys", "values", "mode", "method", "format", "columns"} <= set(held)
+
+
+def sidecar_format(out: Path) -> str | None:
+    """The format (``"csv"``, ``"parquet"``) the sidecar beside ``out`` says the sweep wrote; None: no
+    sidecar, or none that says."""
+    side = sidecar_path(out)
+    if not side.is_file() or not _is_identity(side):
+        return None
+    fmt = json.loads(side.read_text(encoding="utf-8"))["format"]
+    return fmt if fmt in ("csv", "parquet") else None
+
+
+def check_out(out: Path, *, resumed: bool = False) -> None:
+    """``--out`` may not write over another sweep's files: it may not be a sidecar's name (``*.sweep.json``),
+    and where its own sidecar goes there may be nothing, or a sweep's identity (this table's, from an
+    earlier run), nothing else (another sweep's table named ``OUT.sweep.json``, or any other file).
+    ``resumed``: the sweep goes on with the table there, so its sidecar is read (:func:`check_identity`),
+    not written.
+
+    Raises
+    ------
+    InputError
+        Naming ``--out``, with what is allowed.
+    """
+    if out.name.lower().endswith(SIDECAR_SUFFIX):
+        raise InputError("--out", f"{str(out)!r} ends in {SIDECAR_SUFFIX}, the name of a sweep's sidecar (the "
+                         "identity beside its table): give the table another name, .csv or .parquet")
+    side = sidecar_path(out)
+    if not resumed and (side.exists() or side.is_symlink()) and not _is_identity(side):
+        raise InputError("--out", f"{str(out)!r}: its sidecar would replace {side}, which is not a sweep's "
+                         "identity (another sweep's table, or another file): give --out another name")
 
 
 def write_identity(out: Path, identity: dict) -> Path:

@@ -28,6 +28,7 @@ from cams.model.follower import Rocker
 from cams.verify.safety import safety_terms
 from cams.words import phase_words
 from laws.errors import InputError, show_value
+from laws.units import turn_degrees
 
 __all__ = ["pressure_angle", "contact_normal", "PressureReport", "SafetyReport", "check_pressure",
            "check_pressure_many"]
@@ -184,14 +185,14 @@ class SafetyReport:
         return (f"safety factor K_C = {self.factor:g} not met: the largest K_C the centre meets is "
                 f"{self.met:.{digits}g}; "
                 f"it lies {self.outside:.6g} mm outside the K_C zone's {self.line} line at cam angle "
-                f"{np.degrees(self.at) % 360:.4f} deg in {phase_words(self.kind, self.phase)}")
+                f"{turn_degrees(self.at):.4f} deg in {phase_words(self.kind, self.phase)}")
 
     def to_dict(self) -> dict:
         """JSON-ready: ``required``, ``met`` (None when not finite), ``outside`` (mm), ``at_deg``, ``phase``,
         ``line``, ``ok``."""
         return {"required": float(self.factor), "met": float(self.met) if np.isfinite(self.met) else None,
                 "outside": float(self.outside),
-                "at_deg": float(np.degrees(self.at) % 360), "phase": int(self.phase), "line": self.line,
+                "at_deg": float(turn_degrees(self.at)), "phase": int(self.phase), "line": self.line,
                 "ok": bool(self.ok)}
 
 

@@ -510,14 +510,9 @@ def _proven_above(base: Request, ratio: float) -> bool:
 def _least_ratio_proven(base: Request, lo: float, hi: float) -> float:
     """The largest ratio in ``[lo, hi]`` at which :func:`_proven_above` holds, by bisection (``lo`` where it is
     known to hold, else 0): no law of the space has a smaller ratio of pressure angle to limit."""
-    a, b = lo, hi
-    for _ in range(BISECTION_STEPS):
-        mid = 0.5 * (a + b)
-        if _proven_above(base, mid):
-            a = mid
-        else:
-            b = mid
-    return a
+    from laws.search import bisect_boundary
+
+    return bisect_boundary(lambda r: _proven_above(base, r), lo, hi, max_steps=BISECTION_STEPS)
 
 
 def _down(x: float, digits: int = 6) -> str:

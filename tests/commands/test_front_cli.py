@@ -197,3 +197,70 @@ def test_a_column_that_cannot_be_compared_is_one_line(swept, capsys, tmp_path, o
     assert code == 2 and text == "" and err == f"cams front: error: {said}" + err.split(said, 1)[1]
     assert err.count("\n") == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["t.csv"]
+
+
+@pytest.fixture(scope="module")
+def parquet_txt(swept):
+    """The same sweep as ``swept``'s, written as Parquet under a name that is not ``.parquet``."""
+    pytest.importorskip("pyarrow.parquet")  # the test extra installs it
+    d = swept[0] / "pq"
+    d.mkdir()
+    out = d / "x.txt"
+    code = main(["sweep", str(EXAMPLES / "rocker_force.toml"), *VARY, "--out", str(out), "--format", "parquet",
+                 "--quiet", "--jobs", "1"])
+    assert code == 0 and out.read_bytes()[:4] == b"PAR1"
+    return out
+
+
+def test_parquet_under_any_name_is_read_as_parquet(swept, parquet_txt, capsys):
+    """``--format parquet --out x.txt`` then ``cams front x.txt``: read as the Parquet it holds (it was read as a
+    CSV by its name), its front the definition's over the rows pyarrow reads, the same designs as the CSV's."""
+    import pyarrow.parquet as pq
+
+    code, text, err = _run(capsys, "front", parquet_txt, "--pareto", "R0,L")
+    assert code == 0, err
+    rows = [{k: ("" if v is None else str(v)) for k, v in r.items()} for r in pq.read_table(parquet_txt).to_pylist()]
+    expected = _brute(rows, ["R0_mm", "L_mm"])
+    front = _read(parquet_txt.with_name("x.pareto.csv"))
+    assert sorted(int(r["index"]) for r in front) == sorted(int(r["index"]) for r in expected)
+    from_csv = _brute(_read(swept[1]), ["R0_mm", "L_mm"])  # the same sweep written as a CSV
+    assert sorted(int(r["index"]) for r in front) == sorted(int(r["index"]) for r in from_csv)
+    assert f"{len(expected)} of 6 rows" in text
+
+
+def _front_err(capsys, table):
+    code, _, err = _run(capsys, "front", table, "--pareto", "R0,L")
+    assert code == 2 and err.count("\n") == 1 and err.startswith("cams front: error: TABLE: "), err
+    return err
+
+
+def test_a_garbled_table_is_never_read_silently(swept, parquet_txt, capsys, tmp_path):
+    """Parquet cut short, a CSV named .parquet, a table its sidecar says is another format, binary data: one line
+    naming TABLE, exit 2."""
+    data = parquet_txt.read_bytes()
+    cut = tmp_path / "cut.txt"
+    cut.write_bytes(data[: len(data) // 2])
+    assert "does not end as one (cut short)" in _front_err(capsys, cut)
+    named = tmp_path / "t.parquet"
+    named.write_bytes((swept[0] / "s.csv").read_bytes())
+    assert "named as Parquet, but it is not" in _front_err(capsys, named)
+    replaced = tmp_path / "x.txt"  # the Parquet sweep's table replaced by a CSV, its sidecar kept
+    replaced.write_bytes((swept[0] / "s.csv").read_bytes())
+    replaced.with_name("x.txt.sweep.json").write_bytes(parquet_txt.with_name("x.txt.sweep.json").read_bytes())
+    assert "holds csv, but its sidecar says the sweep wrote parquet" in _front_err(capsys, replaced)
+    binary = tmp_path / "b.csv"
+    binary.write_bytes(b"R0_mm,L_mm\n\x00\x01,2\n")
+    assert "binary data" in _front_err(capsys, binary)
+
+
+def test_a_stream_is_not_a_table(capsys, tmp_path):
+    """Standard input, a descriptor and a FIFO are streams: refused before reading (a FIFO was opened and waited
+    for a writer); a table is a file or a folder of parts."""
+    import os
+
+    fifo = tmp_path / "t.csv"
+    os.mkfifo(fifo)
+    for table in ("-", "/dev/stdin", "/dev/fd/0", fifo):
+        code, _, err = _run(capsys, "front", table, "--pareto", "R0,L")
+        assert code == 2 and err.count("\n") == 1, err
+        assert "--pareto: the front and the chart are read back from the table: give TABLE a file, not a stream" in err

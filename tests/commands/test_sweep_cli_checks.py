@@ -1,6 +1,7 @@
 """``cams sweep``: --jobs and --vary checked, a wrong base design refused, Ctrl-C one line, a bar only on a terminal."""
 
 import csv
+import json
 import os
 import signal
 import subprocess
@@ -188,3 +189,45 @@ def test_sweep_output_is_not_the_design_file(tmp_path, capsys):
     rc, _, err = _run(capsys, design, "--vary", "follower.arm=100,120", "--out", design, "--quiet")
     assert rc == 2 and err.startswith("cams sweep: error: --out: ") and "input file" in err
     assert design.read_text() == ROCKER.read_text()
+
+
+def test_out_never_writes_over_another_sweeps_sidecar(tmp_path, capsys):
+    """A sidecar's name as --out, or an --out whose sidecar's place holds another file: one line, exit 2,
+    the other sweep's files byte for byte as they were and nothing new written."""
+    first = tmp_path / "a.csv"
+    rc, _, _ = _run(capsys, ROCKER, "--vary", "follower.arm=100,120", "--out", first, "--quiet")
+    assert rc == 0
+    side = tmp_path / "a.csv.sweep.json"
+    kept = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert set(kept) == {"a.csv", "a.csv.sweep.json"} and json.loads(kept[side.name])["format"] == "csv"
+    # the other sweep's sidecar itself, any name of that form, and a table whose sidecar's place is a.csv's table
+    table_named_like_a_sidecar = tmp_path / "b.sweep.json"
+    table_named_like_a_sidecar.write_bytes(kept["a.csv"])
+    kept[table_named_like_a_sidecar.name] = kept["a.csv"]
+    for out in (side, tmp_path / "new.CSV.SWEEP.JSON", tmp_path / "b"):
+        rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100,130", "--out", out, "--quiet")
+        assert rc == 2 and stdout == "" and err.count("\n") == 1, err
+        assert err.startswith("cams sweep: error: --out: ") and ("give the table another name" in err or
+                                                                  "give --out another name" in err)
+        assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == kept
+    # the same --out again writes over its own sidecar: allowed
+    rc, _, _ = _run(capsys, ROCKER, "--vary", "follower.arm=100,130", "--out", first, "--quiet")
+    assert rc == 0 and json.loads(side.read_text())["values"] == [[100, 130]]
+
+
+def test_the_front_never_writes_over_another_sweeps_table(tmp_path, capsys):
+    """--pareto saves OUT's front as NAME.pareto.csv: when that is another sweep's table (its sidecar beside it),
+    one line naming --pareto, exit 2, that sweep's files as they were; cams front refuses it the same way."""
+    other = tmp_path / "a.pareto.csv"
+    rc, _, _ = _run(capsys, ROCKER, "--vary", "follower.arm=100,120", "--out", other, "--quiet")
+    assert rc == 0
+    kept = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100,130", "--out", tmp_path / "a.csv",
+                           "--pareto", "R0,L", "--quiet")
+    assert rc == 2 and stdout == "" and err.count("\n") == 1 and err.startswith("cams sweep: error: --pareto: ")
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == kept
+    (tmp_path / "a.csv").write_bytes(kept["a.pareto.csv"])
+    rc = main(["front", str(tmp_path / "a.csv"), "--pareto", "R0,L"])
+    err = capsys.readouterr().err
+    assert rc == 2 and err.startswith("cams front: error: --pareto: ") and "another sweep's table" in err
+    assert (tmp_path / "a.pareto.csv").read_bytes() == kept["a.pareto.csv"]

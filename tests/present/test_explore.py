@@ -420,3 +420,46 @@ def test_page_smallest_convex_radius_equals_the_pitch_polygons(pages, name):
     page_min = float(np.min(rho[rho > 0]))
     ref = float(np.min(_three_point_radii(np.asarray(cam.profile.pitch, float))))
     assert page_min == pytest.approx(ref, rel=1e-4)
+
+
+def _chosen(name: str, centre, roller: float):
+    """The example ``name`` with its cam centre chosen (``[cam] centre``) and its roller radius ``roller`` (mm)."""
+    d = load_design(EXAMPLES / f"{name}.toml")
+    f = replace(d.follower, roller_radius=float(roller))
+    if getattr(f, "offset", None) is not None:
+        f = replace(f, offset=None)
+    lim = replace(d.limits, centre_distance=None, min_base_radius=None)
+    return Cam(d.with_(follower=f, limits=lim, base_radius=None, objective="R0", centre=tuple(map(float, centre))))
+
+
+@pytest.mark.skipif(NODE is None, reason="node is not installed: the page's script cannot run outside a browser")
+@pytest.mark.parametrize(
+    ("name", "centre"),
+    [("rocker_form", (128.28528875457778, 28.512954711665643)), ("translating_form_centric", (0.0, -50.0))],
+)
+def test_page_says_undercut_exactly_when_the_check_does(name, centre):
+    """The page's undercut verdict (a red point where the roller's radius is above the pitch curve's convex radius
+    of curvature) against the pipeline's ``undercut`` check of the same cam, with the roller 0.2 % below and above
+    the pitch curve's smallest convex radius (on both designs it lies on a flank, not on the base circle: 27.17 mm
+    on rocker_form's sized centre, 47.77 mm with translating_form_centric's centre 50 mm from the cam's)."""
+    least = next(c for c in _chosen(name, centre, 1.0).checks.checks if c.name == "undercut").worst
+    verdicts = []
+    for roller in (least * 0.998, least * 1.002):
+        cam = _chosen(name, centre, roller)
+        check = next(c for c in cam.checks.checks if c.name == "undercut")
+        assert check.limit == pytest.approx(roller) and check.worst == pytest.approx(least, rel=1e-12)
+        html = page(explore_data(cam))
+        script = _math_of(html) + (
+            "\nconst inp = JSON.parse(require('fs').readFileSync(0, 'utf8'));\n"
+            "const m = camsMath(inp.data);\n"
+            "console.log(JSON.stringify(m.profile(...inp.c).map((p) => [p.undercut, p.rho])));"
+        )
+        run = subprocess.run([NODE, "-e", script], input=json.dumps({"data": _data_of(html), "c": list(centre)}),
+                             capture_output=True, text=True, timeout=120, check=True)
+        pts = json.loads(run.stdout)
+        page_cuts = any(cut for cut, _ in pts)
+        assert page_cuts == (not check.passed)
+        # where the page marks an undercut, the radius there is below the roller's (and convex)
+        assert all(0.0 < rho < roller for cut, rho in pts if cut)
+        verdicts.append(page_cuts)
+    assert verdicts == [False, True]  # the roller below the least radius does not undercut; above, it does

@@ -72,5 +72,6 @@ def test_unreadable_tables_are_input_errors(tmp_path, monkeypatch):
         read_table(tmp_path / "empty.csv", "--from")
     monkeypatch.setitem(sys.modules, "pyarrow", None)
     monkeypatch.setitem(sys.modules, "pyarrow.parquet", None)
+    (tmp_path / "s.parquet").write_bytes(b"PAR1" + bytes(8) + b"PAR1")  # Parquet's marks: read as Parquet
     with pytest.raises(InputError, match=r"^TABLE: .*s\.parquet is Parquet: install pyarrow"):
         read_table(tmp_path / "s.parquet", "TABLE")

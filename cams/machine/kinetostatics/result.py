@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from cams.machine.kinetostatics.model import Model
-from laws.units import omega_to_rpm
+from laws.units import omega_to_rpm, turn_degrees
 
 __all__ = ["ForceResult", "cross"]
 
@@ -82,7 +82,7 @@ class ForceResult:
     @property
     def angle_reference(self) -> str:
         """The name of the angle of :attr:`rotation` in reports and plots."""
-        return self.reference or f"crank rotation from {np.degrees(self.phi[0]) % 360:.1f} deg (frame)"
+        return self.reference or f"crank rotation from {turn_degrees(self.phi[0]):.1f} deg (frame)"
 
     @property
     def omega(self) -> float:

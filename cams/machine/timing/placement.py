@@ -18,7 +18,7 @@ import numpy as np
 from cams.machine.timing.cycle import Windows, deg
 from laws.errors import InfeasibleError, InputError, check_option, show_value
 from laws.program import Program
-from laws.units import TWO_PI
+from laws.units import TWO_PI, turn_degrees
 
 __all__ = ["Drive", "Timing", "CamTiming", "check_follower_direction", "place_cam", "PLACEMENTS"]
 
@@ -251,7 +251,7 @@ def place_cam(win: Windows, program: Program, drive: Drive, timing: Timing) -> C
         raise InfeasibleError(
             "motion",
             f"feed window too short: the tool is out of the work for {np.degrees(Lw):.4g} deg of crank angle "
-            f"({np.degrees(w0) % 360:.4g} to {np.degrees(w1) % 360:.4g} deg after position 1); "
+            f"({turn_degrees(w0):.4g} to {turn_degrees(w1):.4g} deg after position 1); "
             f"{what} take{'s' if len(rises) == 1 else ''} "
             f"{np.degrees(b1 - a0):.4g} deg of cam = {np.degrees(span):.4g} deg of crank at ratio {i:g}, plus 2 x "
             f"{np.degrees(m):.4g} deg margin; the largest feasible rise angle is {np.degrees(largest):.4g} deg"
