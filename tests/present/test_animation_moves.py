@@ -47,3 +47,32 @@ def test_move_draws_what_a_fresh_drawing_draws(example):
     # the artists that move are the ones whose data changed, and the cam itself is among them
     changed = [not np.array_equal(x, y) for x, y in zip(before, after, strict=True)]
     assert sum(changed) == len(moved) >= 3
+
+
+def test_one_palette_keeps_every_frame_close_to_what_was_drawn(tmp_path, monkeypatch):
+    """The GIF's frames (one palette for the turn, cams.present.plots._paletted) against the frames as drawn
+    (RGBA, taken before the palette): the same size and count, no pixel off by more than a few levels on average,
+    and the colours of the drawing (its lines and fills, fully saturated or not) kept to within a small distance."""
+    from PIL import Image, ImageSequence
+
+    from cams.present import plots
+
+    drawn = []
+    real = plots._paletted
+
+    def keep(images, **kw):
+        drawn.extend(np.asarray(im.convert("RGB"), float) for im in images)
+        return real(images, **kw)
+
+    monkeypatch.setattr(plots, "_paletted", keep)
+    cam = Cam.from_file(EXAMPLES / "rocker_force.toml")
+    path = plots.animate_profile(cam, tmp_path / "turn.gif", frames=12)
+    with Image.open(path) as im:
+        shown = [np.asarray(f.convert("RGB"), float) for f in ImageSequence.Iterator(im)]
+    assert len(shown) == len(drawn) == 12
+    for a, b in zip(drawn, shown, strict=True):
+        assert a.shape == b.shape
+        err = np.abs(a - b).max(axis=-1)
+        assert err.mean() < 1.0  # of 255 levels
+        assert np.quantile(err, 0.999) < 16 and err.max() < 32
+    assert shown[0][2, 2].tolist() == [255.0, 255.0, 255.0]  # the background's white, exact
