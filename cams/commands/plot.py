@@ -27,7 +27,7 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progre
     """Draw the pictures ``which`` of ``cam`` (a :class:`cams.cam.Cam`) into ``out``.
 
     ``title`` (:meth:`cams.assess.Assessment.title`) marks every picture of a failing cam; ``bar`` counts one
-    step a picture. The pictures are drawn side by side by up to ``jobs`` processes (None: one a core;
+    step a picture. The pictures are drawn side by side by up to ``jobs`` processes (None: one per core;
     :func:`cams.present.forked.forked_map`), each from the cam solved here; the files are written here.
     """
     from cams.present import plots
@@ -49,9 +49,9 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progre
     plots.prepare()
     if names:
         bar.stage(f"drawing {len(names)} picture{'s' if len(names) > 1 else ''}")
-    with bar.held():  # no redraw from the bar's thread while processes are forked
-        files = forked_map([partial(render, name) for name in names], jobs=jobs, done=lambda k: bar.advance(),
-                           effort=[plots.EFFORT.get(presenter(cam).pictures.get(name, ""), 10) for name in names])
+    files = forked_map([partial(render, name) for name in names], jobs=jobs, done=lambda k: bar.advance(),
+                       effort=[plots.EFFORT.get(presenter(cam).pictures.get(name, ""), 10) for name in names],
+                       note=lambda words: bar.note(f"cams plot: note: {words}"))
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
     for name, drawn in zip(names, files, strict=True):
@@ -163,8 +163,9 @@ def register(sub) -> None:
                    "with [optimize] adds optimized (the designed laws, pressure "
                    "angles and cam beside the original ones)")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
-    q.add_argument("--jobs", type=int, help="processes drawing the pictures side by side, >= 1 (default: one a "
-                   "core; 1 draws them here, one after another)")
+    q.add_argument("--jobs", type=int, metavar="N", help="processes drawing the pictures side by side, >= 1 "
+                   "(default: one per core, at most one per picture; 1 draws them in this process, one after "
+                   "another)")
     q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "
                    "runs past about two seconds)")
     q.set_defaults(func=run)
