@@ -100,6 +100,10 @@ def _after_fork_in_parent() -> None:
         lock.release()
 
 
+def _after_fork_in_child() -> None:
+    _DRAWING.clear()  # no bar is drawn in a child (its thread was not forked): a fork of its own waits on none
+
+
 @contextmanager
 def progress(enabled: bool, what: str, total: int | None = None, unit: str = "step") -> Iterator[Progress]:
     """A bar on standard error for the work inside the ``with`` block, when ``enabled`` (see :func:`wanted`).
@@ -124,7 +128,9 @@ def progress(enabled: bool, what: str, total: int | None = None, unit: str = "st
 
     global _FORK_GUARDED
     if not _FORK_GUARDED and hasattr(os, "register_at_fork"):
-        os.register_at_fork(before=_before_fork, after_in_parent=_after_fork_in_parent)
+        os.register_at_fork(
+            before=_before_fork, after_in_parent=_after_fork_in_parent, after_in_child=_after_fork_in_child
+        )
         _FORK_GUARDED = True
     tqdm.monitor_interval = 0  # no thread of tqdm's own that may draw at any time: the heartbeat below redraws
     fmt = None if total is not None else "{desc}: {elapsed}"
@@ -154,5 +160,6 @@ def progress(enabled: bool, what: str, total: int | None = None, unit: str = "st
     finally:
         stop.set()
         thread.join()
-        _DRAWING.remove(drawing)
+        if drawing in _DRAWING:
+            _DRAWING.remove(drawing)
         bar.close()
