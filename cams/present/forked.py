@@ -157,7 +157,7 @@ def _forked(tasks, n, done, effort, note, results, failed) -> None:
             left = len(tasks) - len(results)
             note(
                 f"a process drawing side by side ended abruptly; the {left} drawing{'s' if left > 1 else ''} "
-                f"not yet back {'are' if left > 1 else 'is'} drawn here, one after another"
+                f"not yet back {'are' if left > 1 else 'is'} drawn in this process, one after another"
             )
     finally:
         _TASKS = ()
