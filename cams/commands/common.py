@@ -20,6 +20,6 @@ def face_cam(design, args):
 
 
 def check_jobs(jobs: int | None) -> None:
-    """Refuse a ``--jobs`` below 1 (None: the default, one a core)."""
+    """Refuse a ``--jobs`` below 1 (None: the default, one per core)."""
     if jobs is not None and jobs < 1:
         raise InputError("--jobs", f"must be an integer >= 1 (processes), got {jobs}")

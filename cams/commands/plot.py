@@ -29,8 +29,8 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progre
 
     ``title`` (:meth:`cams.assess.Assessment.title`) marks every picture of a failing cam; ``bar`` counts one
     step a picture (and a turn's frames, when the turn is drawn here). The pictures and the turn are drawn side by
-    side by up to ``jobs`` processes (None: one a core; :func:`cams.present.forked.forked_map`), each from the cam
-    solved here; the files are written here, in that order.
+    side by up to ``jobs`` processes (None: one per core; :func:`cams.present.forked.forked_map`), each from the
+    cam solved here; the files are written here, in that order.
     """
     from cams.present import plots
     from cams.present.faces import presenter
@@ -64,10 +64,10 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progre
     effort = [plots.EFFORT.get(presenter(cam).pictures.get(name, ""), 10) for name in names] + [20] * turn
     if tasks:
         bar.stage(f"drawing {len(names)} picture{'' if len(names) == 1 else 's'}" + (" and one turn" * turn))
-    with bar.held():  # no redraw from the bar's thread while processes are forked
-        # a step a picture, and the turn's when it was drawn elsewhere (here, its frames count it)
-        files = forked_map(tasks, jobs=jobs, effort=effort,
-                           done=lambda k: bar.advance() if k < len(names) or forked else None)
+    # a step a picture, and the turn's when it was drawn elsewhere (here, its frames count it)
+    files = forked_map(tasks, jobs=jobs, effort=effort,
+                       done=lambda k: bar.advance() if k < len(names) or forked else None,
+                       note=lambda words: bar.note(f"cams plot: note: {words}"))
     stem = out / _slug(cam.design.name)
     written: list[Path] = []
     for name, drawn in zip([*names, *(["turn"] * turn)], files, strict=True):
@@ -168,8 +168,9 @@ def register(sub) -> None:
                    "with [optimize] adds optimized (the designed laws, pressure "
                    "angles and cam beside the original ones)")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
-    q.add_argument("--jobs", type=int, help="processes drawing the pictures side by side, >= 1 (default: one a "
-                   "core; 1 draws them here, one after another)")
+    q.add_argument("--jobs", type=int, metavar="N", help="processes drawing the pictures side by side, >= 1 "
+                   "(default: one per core, at most one per picture; 1 draws them in this process, one after "
+                   "another)")
     q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "
                    "runs past about two seconds)")
     q.set_defaults(func=run)

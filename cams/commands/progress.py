@@ -9,7 +9,9 @@ The library is tqdm: one pure-Python wheel with no dependencies of its own, main
 (rich, the other candidate, brings pygments and markdown-it and draws far more than a bar needs). tqdm's
 ``delay`` keeps a bar off the screen until the work has run :data:`DELAY_S` seconds, so quick commands stay
 quiet; a background thread redraws the bar while one long step (a solve, a motion design) runs, so its elapsed
-time keeps counting.
+time keeps counting. That thread never draws while this process forks (:func:`os.register_at_fork`): a forked
+child (:mod:`cams.present.forked`, a sweep's workers) inherits no lock of the bar's or of standard error taken by
+a thread it does not have, which would hang the child the first time it wrote to standard error.
 """
 
 from __future__ import annotations
@@ -46,17 +48,15 @@ class Progress:
     Without a bar (:func:`wanted` false) every method does nothing, so the commands call them unconditionally.
     """
 
-    def __init__(self, bar: Any = None, drawing: threading.Lock | None = None) -> None:
+    def __init__(self, bar: Any = None) -> None:
         self._bar = bar
-        self._drawing = drawing if drawing is not None else threading.Lock()
 
-    @contextmanager
-    def held(self) -> Iterator[None]:
-        """No redraw from the bar's own thread inside the block (its steps still count and draw): a process
-        forked inside it (:mod:`cams.present.forked`) finds no lock of the bar's, or of standard error, taken by
-        that thread."""
-        with self._drawing:
-            yield
+    def note(self, line: str) -> None:
+        """Write ``line`` on standard error, above the bar when one is drawn (the bar is drawn again below it)."""
+        if self._bar is not None:
+            self._bar.write(line, file=sys.stderr)
+        else:
+            print(line, file=sys.stderr)
 
     @property
     def drawn(self) -> bool:
@@ -85,6 +85,25 @@ class Progress:
             bar.refresh()  # the last step is shown even when it came quicker than tqdm redraws
 
 
+#: The drawing locks of the bars drawn now (one a :func:`progress` block): each is taken while this process forks.
+_DRAWING: list[threading.Lock] = []
+_FORK_GUARDED = False
+
+
+def _before_fork() -> None:
+    for lock in _DRAWING:
+        lock.acquire()
+
+
+def _after_fork_in_parent() -> None:
+    for lock in reversed(_DRAWING):
+        lock.release()
+
+
+def _after_fork_in_child() -> None:
+    _DRAWING.clear()  # no bar is drawn in a child (its thread was not forked): a fork of its own waits on none
+
+
 @contextmanager
 def progress(enabled: bool, what: str, total: int | None = None, unit: str = "step") -> Iterator[Progress]:
     """A bar on standard error for the work inside the ``with`` block, when ``enabled`` (see :func:`wanted`).
@@ -107,6 +126,13 @@ def progress(enabled: bool, what: str, total: int | None = None, unit: str = "st
         return
     from tqdm import tqdm
 
+    global _FORK_GUARDED
+    if not _FORK_GUARDED and hasattr(os, "register_at_fork"):
+        os.register_at_fork(
+            before=_before_fork, after_in_parent=_after_fork_in_parent, after_in_child=_after_fork_in_child
+        )
+        _FORK_GUARDED = True
+    tqdm.monitor_interval = 0  # no thread of tqdm's own that may draw at any time: the heartbeat below redraws
     fmt = None if total is not None else "{desc}: {elapsed}"
     try:
         sized = os.get_terminal_size(sys.stderr.fileno()).columns > 0
@@ -116,8 +142,7 @@ def progress(enabled: bool, what: str, total: int | None = None, unit: str = "st
     size = {"dynamic_ncols": True} if sized else {"ncols": 80, "nrows": 24}
     bar = tqdm(total=total, desc=what, unit=unit, file=sys.stderr, delay=DELAY_S, leave=False, bar_format=fmt, **size)
     stop = threading.Event()
-
-    drawing = threading.Lock()
+    drawing = threading.Lock()  # held by the heartbeat while it draws, and by this thread while it forks
 
     def beat() -> None:  # redraw while one long step holds the main thread (a solve releases the GIL often)
         while not stop.wait(_HEARTBEAT_S):
@@ -128,10 +153,13 @@ def progress(enabled: bool, what: str, total: int | None = None, unit: str = "st
 
     started = time.monotonic()
     thread = threading.Thread(target=beat, name="cams-progress", daemon=True)
+    _DRAWING.append(drawing)
     thread.start()
     try:
-        yield Progress(bar, drawing)
+        yield Progress(bar)
     finally:
         stop.set()
         thread.join()
+        if drawing in _DRAWING:
+            _DRAWING.remove(drawing)
         bar.close()

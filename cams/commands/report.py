@@ -28,9 +28,9 @@ def run(args) -> int:
     with progress(wanted(args), "solving the cam") as bar:  # seconds of work: its progress on a terminal
         a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
         bar.stage("drawing and writing the report")
-        # together or not at all; no redraw from the bar's thread while the pictures' processes are forked
-        with all_or_nothing(), bar.held():
-            written = write_report(cam, args.out, source=args.file, jobs=args.jobs)
+        with all_or_nothing():  # together or not at all
+            written = write_report(cam, args.out, source=args.file, jobs=args.jobs,
+                                   note=lambda words: bar.note(f"cams report: note: {words}"))
     for p in written:
         print(p)
     if not a.usable:
@@ -52,8 +52,9 @@ def register(sub) -> None:
     )
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--out", default="report", help="output folder (default: report)")
-    q.add_argument("--jobs", type=int, help="processes drawing the pictures side by side, >= 1 (default: one a "
-                   "core; 1 draws them here, one after another)")
+    q.add_argument("--jobs", type=int, metavar="N", help="processes drawing the pictures side by side, >= 1 "
+                   "(default: one per core, at most one per picture; 1 draws them in this process, one after "
+                   "another)")
     q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "
                    "runs past about two seconds)")
     q.set_defaults(func=run)

@@ -7,11 +7,18 @@ again, nothing is pickled on the way in) and sends back only the bytes of the fi
 
 Forking is used where it is the operating system's own way of starting a process (Linux); elsewhere, or with one
 core, or with one drawing, everything runs here, one after another, with the same results.
+
+The children ignore Ctrl-C: the parent takes it and ends them at once (one line from the command, no traceback
+from each child), and they end with the parent however it ends (``PR_SET_PDEATHSIG``). A child that dies (killed)
+costs time, not pictures: what it had not sent back is drawn here. A child has only the thread that forked it, so
+no other thread may hold a lock at the fork that the child would then wait on for ever: the progress bar's thread
+is kept from drawing while this process forks (:mod:`cams.commands.progress`).
 """
 
 from __future__ import annotations
 
 import os
+import signal
 import sys
 from collections.abc import Callable, Sequence
 from typing import TypeVar
@@ -26,8 +33,8 @@ _TASKS: Sequence[Callable[[], object]] = ()
 
 
 def workers(jobs: int | None, tasks: int) -> int:
-    """How many processes draw ``tasks`` drawings: ``jobs`` (None: every core this process may use), at most one a
-    task, and 1 where processes are not forked (not Linux)."""
+    """How many processes draw ``tasks`` drawings: ``jobs`` (None: every core this process may use), at most one per
+    task (a huge ``jobs`` starts no more), and 1 where processes are not forked (not Linux)."""
     if jobs is None:
         jobs = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     if not sys.platform.startswith("linux"):
@@ -43,12 +50,39 @@ def _run(k: int) -> object:
     """Task ``k`` of :data:`_TASKS`, in a child; :class:`_Failed` if it raised."""
     try:
         return _TASKS[k]()
-    except Exception:
+    except BaseException:
         return _Failed()
 
 
-def forked_map(tasks: Sequence[Callable[[], T]], *, jobs: int | None = None,
-               done: Callable[[int], None] | None = None, effort: Sequence[float] | None = None) -> list[T]:
+#: The process the children of the :func:`forked_map` running now were forked from.
+_PARENT = 0
+#: Linux's ``prctl`` option: the signal a process gets when the thread that forked it ends.
+_PR_SET_PDEATHSIG = 1
+
+
+def _child() -> None:
+    """What a child does first: Ctrl-C is left to the parent (which ends the children: no traceback from each),
+    and the child ends with the parent however that ends (killed, it leaves no child waiting for work for ever)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # held back while it was forked
+    try:
+        import ctypes
+
+        ctypes.CDLL(None, use_errno=True).prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
+    except (OSError, AttributeError):  # no prctl: the parent still ends its children when it ends normally
+        pass
+    if os.getppid() != _PARENT:  # the parent ended before the line above
+        os._exit(1)
+
+
+def forked_map(
+    tasks: Sequence[Callable[[], T]],
+    *,
+    jobs: int | None = None,
+    done: Callable[[int], None] | None = None,
+    effort: Sequence[float] | None = None,
+    note: Callable[[str], None] | None = None,
+) -> list[T]:
     """``[task() for task in tasks]``, the tasks run by up to ``jobs`` forked processes (:func:`workers`).
 
     ``effort`` (one number a task, any unit) orders the tasks handed out, the longest first: the processes then
@@ -56,45 +90,81 @@ def forked_map(tasks: Sequence[Callable[[], T]], *, jobs: int | None = None,
 
     Each task may use anything this process holds (the children are forked from it); what it returns must pickle
     (the bytes of a file: a few hundred kB). ``done(k)`` is called here, in this process, as task ``k`` ends
-    (in the order they end); the results come back in the tasks' order. A task that raised in a child is run again
-    here, after the others are cancelled, so that its exception is raised here as the task raises it.
+    (in the order they end); the results come back in the tasks' order.
+
+    When a task raises in a child, or a child ends abruptly (killed), the children are ended and the tasks not yet
+    back are run here, one after another, the one that raised first: its exception is raised here as the task
+    raises it (an exception need not pickle), and a child that was killed costs time, not pictures (``note`` is
+    told so in one line). Ctrl-C (:class:`KeyboardInterrupt`, here: the children ignore it) ends the children
+    at once.
     """
     n = workers(jobs, len(tasks))
-    if n <= 1:
-        out = []
-        for k, task in enumerate(tasks):
-            out.append(task())
-            if done is not None:
-                done(k)
-        return out
+    results: dict[int, T] = {}
+    failed: list[int] = []  # the tasks that raised in a child, to be run here first
+    if n > 1:
+        _forked(tasks, n, done, effort, note, results, failed)
+    for k in [*failed, *(k for k in range(len(tasks)) if k not in results and k not in failed)]:
+        results[k] = tasks[k]()
+        if done is not None:
+            done(k)
+    return [results[k] for k in range(len(tasks))]
 
+
+def _forked(tasks, n, done, effort, note, results, failed) -> None:
+    """The children's part of :func:`forked_map`: ``results`` filled with what came back, ``failed`` with the
+    tasks that raised; what is in neither is left to be run here."""
     import multiprocessing
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+    from concurrent.futures.process import BrokenProcessPool
 
-    global _TASKS
-    _TASKS = tasks
+    global _TASKS, _PARENT
+    _TASKS, _PARENT = tasks, os.getpid()
     for stream in (sys.stdout, sys.stderr):  # a child would write what waits in a buffer a second time
         stream.flush()
-    failed = None
+    pool = ProcessPoolExecutor(max_workers=n, mp_context=multiprocessing.get_context("fork"), initializer=_child)
+    whole = False
     try:
-        with ProcessPoolExecutor(max_workers=n, mp_context=multiprocessing.get_context("fork")) as pool:
-            first = sorted(range(len(tasks)), key=lambda k: -effort[k]) if effort is not None else range(len(tasks))
+        first = sorted(range(len(tasks)), key=lambda k: -effort[k]) if effort is not None else range(len(tasks))
+        # Ctrl-C held back while the children are forked (all at the first submit): none gets it before it
+        # ignores it; it reaches this process just after
+        old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+        try:
             index = {pool.submit(_run, k): k for k in first}
-            futures = sorted(index, key=index.__getitem__)
-            pending = set(futures)
-            while pending and failed is None:
-                finished, pending = wait(pending, return_when=FIRST_COMPLETED)
-                for f in finished:
-                    if isinstance(f.result(), _Failed):
-                        failed = index[f]
-                    elif done is not None:
-                        done(index[f])
-            for f in pending:
-                f.cancel()
-            results = [f.result() for f in futures] if failed is None else []
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, old)
+        pending = set(index)
+        broken = False
+        while pending and not failed and not broken:
+            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for f in sorted(finished, key=index.__getitem__):
+                k = index[f]
+                try:
+                    value = f.result()
+                except BrokenProcessPool:
+                    broken = True
+                    continue
+                except Exception:  # what it returned did not pickle: run again here
+                    failed.append(k)
+                    continue
+                if isinstance(value, _Failed):
+                    failed.append(k)
+                else:
+                    results[k] = value
+                    if done is not None:
+                        done(k)
+        whole = not pending and not failed and not broken
+        if broken and note is not None:
+            left = len(tasks) - len(results)
+            note(
+                f"a process drawing side by side ended abruptly; the {left} drawing{'s' if left > 1 else ''} "
+                f"not yet back {'are' if left > 1 else 'is'} drawn in this process, one after another"
+            )
     finally:
         _TASKS = ()
-    if failed is None:
-        return results  # type: ignore[return-value]
-    tasks[failed]()  # raises here what it raised in the child
-    raise RuntimeError(f"drawing {failed} failed in a child process but not when drawn again here")
+        if whole:
+            pool.shutdown(wait=True)
+        else:  # the children are ended now: a Ctrl-C or a failure does not wait for the drawings under way
+            for p in list((getattr(pool, "_processes", None) or {}).values()):
+                if p.is_alive():
+                    p.kill()
+            pool.shutdown(wait=True, cancel_futures=True)

@@ -273,13 +273,14 @@ def _typeset(data: dict, svgs: list[tuple[str, bytes, float, float]]) -> bytes:
     return bytes(pdf)
 
 
-def write_report(cam, out: str | Path, *, source: str | Path | None = None,
-                 jobs: int | None = None) -> tuple[Path, Path]:
+def write_report(cam, out: str | Path, *, source: str | Path | None = None, jobs: int | None = None,
+                 note: Callable[[str], None] | None = None) -> tuple[Path, Path]:
     """Write ``report.html`` and ``report.pdf`` for ``cam`` into folder ``out``.
 
     ``source`` is the design file shown in the PDF's title block. Returns the two paths. Pictures are drawn once,
     as SVG (vector, their text as paths), and used by both files; up to ``jobs`` processes draw them side by side
-    (None: one a core; :func:`cams.present.forked.forked_map`).
+    (None: one per core; :func:`cams.present.forked.forked_map`, which tells ``note`` in one line when a process
+    ended abruptly and its pictures were drawn here instead).
     """
     from cams.io.files import atomic_write, ensure_folder
     from cams.present.forked import forked_map
@@ -291,7 +292,7 @@ def write_report(cam, out: str | Path, *, source: str | Path | None = None,
     data = report_data(cam, source=source, sections=sections)
     prepare()
     drawn = forked_map([partial(_drawn_svg, draw) for _, _, draw in drawings], jobs=jobs,
-                       effort=[EFFORT.get(kind, 10) for _, kind, _ in drawings])
+                       effort=[EFFORT.get(kind, 10) for _, kind, _ in drawings], note=note)
     svgs = [(title, *svg) for (title, _, _), svg in zip(drawings, drawn, strict=True)]
 
     def write_pdf(tmp):

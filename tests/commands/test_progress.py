@@ -159,3 +159,36 @@ def test_plot_counts_its_pictures(capsys, monkeypatch, tmp_path):
     assert "/2 [" in err and "drawing 2 pictures" in err
     rc = main(["plot", str(EXAMPLES / "rocker_force.toml"), "--out", str(tmp_path), "--only", "motion", "--quiet"])
     assert rc == 0 and capsys.readouterr().err == ""
+
+
+@pytest.mark.skipif(not hasattr(os, "register_at_fork"), reason="no fork to guard")
+def test_the_bar_does_not_draw_while_the_process_forks(capsys):
+    """A process forked while a bar is drawn (cams plot's pictures, a sweep's workers) is forked while the bar's
+    thread holds none of its locks: the bar's drawing lock is taken around the fork (held in the child's copy,
+    free again here), and tqdm runs no monitor thread of its own that could be drawing at that moment."""
+    import threading
+
+    from tqdm import TMonitor
+
+    import cams.commands.progress as progress_module
+
+    with progress_module.progress(True, "working") as bar:
+        (drawing,) = progress_module._DRAWING
+        assert not drawing.locked()
+        pid = os.fork()
+        if pid == 0:  # the child: only os._exit, nothing of the test's own; a fork of its own would not wait
+            os._exit(0 if drawing.locked() and progress_module._DRAWING == [] else 1)
+        _, status = os.waitpid(pid, 0)
+        assert os.waitstatus_to_exitcode(status) == 0  # taken while forking
+        assert not drawing.locked()  # and given back here
+        assert not any(isinstance(t, TMonitor) for t in threading.enumerate())
+        bar.note("a note above the bar")
+    assert progress_module._DRAWING == []
+    assert "a note above the bar\n" in capsys.readouterr().err
+
+
+def test_a_note_without_a_bar_is_one_line_on_stderr(capsys):
+    from cams.commands.progress import Progress
+
+    Progress().note("cams plot: note: something")
+    assert capsys.readouterr() == ("", "cams plot: note: something\n")

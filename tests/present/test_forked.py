@@ -122,3 +122,117 @@ def test_the_turn_is_drawn_beside_the_pictures_and_is_the_same(tmp_path):
             gifs.append([np.asarray(f.convert("RGB")) for f in ImageSequence.Iterator(im)])
     assert len(gifs[0]) == len(gifs[1]) == 72
     assert all(np.array_equal(a, b) for a, b in zip(*gifs, strict=True))
+
+
+@pytest.mark.skipif(not LINUX, reason="processes are forked on Linux only; elsewhere the tasks run in order here")
+def test_a_child_that_is_killed_costs_time_not_results():
+    """A child killed mid-task (as by the kernel's out-of-memory killer): the tasks not yet back are run here, the
+    results are all there in order, and the caller is told in one line; no child is left."""
+    import signal
+
+    here = os.getpid()
+
+    def task(k):
+        if k == 2 and os.getpid() != here:
+            os.kill(os.getpid(), signal.SIGKILL)
+        return k * k, os.getpid()
+
+    said = []
+    ended = []
+    out = forked_map([lambda k=k: task(k) for k in range(5)], jobs=2, done=ended.append, note=said.append)
+    assert [v for v, _ in out] == [0, 1, 4, 9, 16]
+    assert out[2][1] == here  # the killed task was run here
+    assert sorted(ended) == list(range(5))  # each counted once
+    assert len(said) == 1 and "ended abruptly" in said[0] and "\n" not in said[0]
+
+
+@pytest.mark.skipif(not LINUX, reason="processes are forked on Linux only; elsewhere the tasks run in order here")
+def test_a_task_that_raises_only_in_a_child_gives_what_it_gives_here():
+    here = os.getpid()
+
+    def flaky():
+        if os.getpid() != here:
+            raise MemoryError("a child's own trouble")
+        return "drawn here"
+
+    said = []
+    assert forked_map([lambda: 1, flaky, lambda: 3], jobs=2, note=said.append) == [1, "drawn here", 3]
+    assert said == []  # nothing went wrong that the caller must hear about
+
+
+_SLEEPERS = """
+import os, sys, time
+from cams.present.forked import forked_map
+
+folder = sys.argv[1]
+
+def task(k):
+    open(os.path.join(folder, str(os.getpid())), "w").close()
+    time.sleep(60)
+    return k
+
+try:
+    forked_map([lambda k=k: task(k) for k in range(4)], jobs=2)
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+    sys.exit(130)
+"""
+
+
+def _alive(pid: int) -> bool:
+    """Whether process ``pid`` runs (a zombie, ended but not yet reaped by whoever adopted it, does not)."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().rsplit(")", 1)[1].split()[0] not in ("Z", "X")
+    except FileNotFoundError:
+        return False
+
+
+@pytest.mark.skipif(not LINUX, reason="processes are forked on Linux only; elsewhere the tasks run in order here")
+@pytest.mark.parametrize("how", ["ctrl-c to the group", "ctrl-c to the parent", "the parent killed"])
+def test_no_child_outlives_an_interrupted_or_killed_parent(tmp_path, how):
+    """Ctrl-C (to the terminal's process group, or to the parent alone) ends the parent with its
+    KeyboardInterrupt at once, not when the drawings under way end (a minute here), and no child prints a
+    traceback; a parent killed outright takes its children with it (none waits for work for ever)."""
+    import signal
+    import subprocess
+    import time
+
+    from tests.inprocess import ROOT
+
+    p = subprocess.Popen(
+        [sys.executable, "-c", _SLEEPERS, str(tmp_path)],
+        cwd=ROOT,
+        start_new_session=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env={**os.environ, "PYTHONPATH": str(ROOT)},
+    )
+    deadline = time.monotonic() + 60
+    while len(list(tmp_path.iterdir())) < 2 and time.monotonic() < deadline:
+        time.sleep(0.05)
+    children = [int(f.name) for f in tmp_path.iterdir()]
+    assert len(children) == 2 and all(_alive(c) for c in children)
+    started = time.monotonic()
+    if how == "ctrl-c to the group":
+        os.killpg(p.pid, signal.SIGINT)
+    elif how == "ctrl-c to the parent":
+        os.kill(p.pid, signal.SIGINT)
+    else:
+        os.kill(p.pid, signal.SIGKILL)
+    rc = p.wait(timeout=30)
+    while any(_alive(c) for c in children) and time.monotonic() - started < 10:
+        time.sleep(0.05)
+    try:
+        assert not any(_alive(c) for c in children)
+        assert time.monotonic() - started < 10  # not the minute the tasks would sleep
+        out, err = p.communicate(timeout=10)
+        if how == "the parent killed":
+            assert rc == -signal.SIGKILL
+        else:
+            assert (rc, out, err) == (130, "interrupted\n", "")
+    finally:
+        for c in children:
+            if _alive(c):
+                os.kill(c, signal.SIGKILL)
