@@ -201,6 +201,22 @@ class Assembly:
         self.n_eq, self.n_zero, self.n_G = n_eq, n_zero, m + G.shape[0]
         self.gs, self.As = gs, As
 
+    def matrix(self, values: np.ndarray | None = None,
+               h: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(data, rhs, scale)``: the scaled matrix's nonzeros in compressed-column order (the indices
+        :attr:`indices`, :attr:`indptr`), the right-hand side, and the norms each row of ``G`` was divided by;
+        the parameter rows (if any) given as in :meth:`solve`."""
+        m = self.m
+        if not m:
+            return self.data, self.rhs, self.gs
+        if values is None or h is None:
+            raise ValueError("the parameter rows' values and right-hand sides are needed")
+        ps = _row_norms_of(self.prow, values, m)
+        data, rhs = self.data.copy(), self.rhs.copy()
+        data[self.slots] = values / ps[self.prow]
+        rhs[self.n_zero:self.n_zero + m] = h / ps
+        return data, rhs, np.concatenate([ps, self.gs])
+
     def solve(self, values: np.ndarray | None = None, h: np.ndarray | None = None) -> Solution:
         """Solve the program, the parameter rows (if any) given by their ``values`` (in the pattern's order)
         and right-hand sides ``h`` (``m``).
@@ -212,16 +228,8 @@ class Assembly:
         """
         import clarabel  # type: ignore[import-untyped]  # it ships no types
 
-        n, m = self.n, self.m
-        data, rhs, gs = self.data, self.rhs, self.gs
-        if m:
-            if values is None or h is None:
-                raise ValueError("the parameter rows' values and right-hand sides are needed")
-            ps = _row_norms_of(self.prow, values, m)
-            data, rhs = data.copy(), rhs.copy()
-            data[self.slots] = values / ps[self.prow]
-            rhs[self.n_zero:self.n_zero + m] = h / ps
-            gs = np.concatenate([ps, gs])
+        n = self.n
+        data, rhs, gs = self.matrix(values, h)
         M = _Csc(data.tolist(), self.indices, self.indptr, self.shape)
         P = _Csc([], [], [0] * (n + 1), (n, n))
         n_zero, n_lin, socs = self.cones

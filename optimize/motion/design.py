@@ -355,12 +355,12 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
                    min_radius=min_radius, length=design.scale)
     squared = spec.objective in ("jerk_squared", "snap_squared")
     if spec.objective == "pressure_angle":
-        result, lb = _least_pressure(base, limits)
+        result, lb, conservative = _least_pressure(base, limits)
         # the second stage: the feasibility program at the ratio found times (1 + slack), its slack at most 0; the
         # ratio found is the first stage's point's own in the conservative rows (the iteration ends at it)
         found = min(conservative_ratio(base, result.v), float(result.value))
         ratio = min(allowance(found, spec.smoothing_slack), _top(limits))
-        stage, bound = build(replace(base, objective="feasibility", ratio=ratio), "conservative"), 0.0
+        stage, bound = conservative.program(ratio), 0.0
     else:
         stage = build(base, "conservative")
         result = _solve_or_explain(stage, base)
@@ -724,8 +724,9 @@ def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
     return _least_ratio_proven(base, 0.0, r, relaxed)
 
 
-def _least_pressure(base: Request, limits: dict[int, float]):
-    """The least ratio of pressure angle to limit, at most 1, and a proven lower bound of it.
+def _least_pressure(base: Request, limits: dict[int, float]) -> tuple[Solution, float, _Programs]:
+    """The least ratio of pressure angle to limit, at most 1, a proven lower bound of it and the conservative
+    programs (the second stage's is one of them).
 
     Upper end: Dinkelbach's iteration (:func:`_descend`) on the conservative program from the limits
     themselves (ratio 1): each step's point meets every limit times its own ratio at every cam angle; it stops
@@ -742,4 +743,4 @@ def _least_pressure(base: Request, limits: dict[int, float]):
         _no_law_at_size(base)
     if lb is None:
         lb = _lower_end(base, relaxed, hi, feas.v)
-    return replace(feas, value=hi), lb
+    return replace(feas, value=hi), lb, conservative
