@@ -49,17 +49,24 @@ def base() -> Request:
     spec = MotionDesignSpec(objective="pressure_angle", max_Ca=("poly4567",), max_Cj=("poly4567",), spans=6)
     free = free_phases(spec, design.program)
     space = Space(design.program, free, spec.degree, spec.spans, spec.continuity)
-    return Request(space=space, follower="roller", cam_sense=design.cam_sense,
-                   limits=dict(design.constrained_phases()), caps=resolve_caps(spec, free),
-                   objective="pressure_angle", bound=100.0 * (design.scale + float(design.program.lift) + held),
-                   hold=held, length=design.scale)
+    return Request(
+        space=space,
+        follower="roller",
+        cam_sense=design.cam_sense,
+        limits=dict(design.constrained_phases()),
+        caps=resolve_caps(spec, free),
+        objective="pressure_angle",
+        bound=100.0 * (design.scale + float(design.program.lift) + held),
+        hold=held,
+        length=design.scale,
+    )
 
 
 def _dense(asm: Assembly, data: np.ndarray) -> np.ndarray:
     M = np.zeros(asm.shape)
     ptr = np.asarray(asm.indptr)
     for j in range(asm.shape[1]):
-        M[np.asarray(asm.indices[ptr[j]:ptr[j + 1]]), j] = data[ptr[j]:ptr[j + 1]]
+        M[np.asarray(asm.indices[ptr[j] : ptr[j + 1]]), j] = data[ptr[j] : ptr[j + 1]]
     return M
 
 
@@ -70,24 +77,42 @@ def test_the_assembly_is_the_programs_matrix():
     rng = np.random.default_rng(3)
     n = 6
     G = rng.standard_normal((5, n)) * (rng.random((5, n)) < 0.5)
-    G[2] = 0.0                                      # a zero row keeps its scale 1
+    G[2] = 0.0  # a zero row keeps its scale 1
     A = rng.standard_normal((2, n))
     a, F = rng.standard_normal(n), rng.standard_normal((2, n))
     lo, hi = -np.ones(n), np.ones(n)
     lo[4] = hi[4] = 0.25
     enforce = np.zeros(n, bool)
     enforce[[1, 4]] = True
-    prog = ConicProgram(cost=rng.standard_normal(n), G=G, h=rng.standard_normal(5), A=A, b=rng.standard_normal(2),
-                        lo=lo, hi=hi, cones=(Cone(a, 0.5, F, np.array([0.1, -0.2])),), enforce=enforce)
+    prog = ConicProgram(
+        cost=rng.standard_normal(n),
+        G=G,
+        h=rng.standard_normal(5),
+        A=A,
+        b=rng.standard_normal(2),
+        lo=lo,
+        hi=hi,
+        cones=(Cone(a, 0.5, F, np.array([0.1, -0.2])),),
+        enforce=enforce,
+    )
     asm = Assembly(prog)
     data, rhs, _ = asm.matrix()
     gn = [np.sqrt(sum(x * x for x in row)) or 1.0 for row in G]
     an = [np.sqrt(sum(x * x for x in row)) for row in A]
     e = np.eye(n)
-    want = np.array([*(A[i] / an[i] for i in range(2)), e[4], *(G[i] / gn[i] for i in range(5)), -e[1], e[1],
-                     -a, *(-F)])
-    want_rhs = [*(prog.b[i] / an[i] for i in range(2)), 0.25, *(prog.h[i] / gn[i] for i in range(5)), 1.0, 1.0,
-                0.5, 0.1, -0.2]
+    want = np.array(
+        [*(A[i] / an[i] for i in range(2)), e[4], *(G[i] / gn[i] for i in range(5)), -e[1], e[1], -a, *(-F)]
+    )
+    want_rhs = [
+        *(prog.b[i] / an[i] for i in range(2)),
+        0.25,
+        *(prog.h[i] / gn[i] for i in range(5)),
+        1.0,
+        1.0,
+        0.5,
+        0.1,
+        -0.2,
+    ]
     assert _dense(asm, data) == pytest.approx(want, rel=1e-15, abs=0)
     assert rhs == pytest.approx(want_rhs, rel=1e-15, abs=0)
 
@@ -104,8 +129,8 @@ def test_the_rows_as_parameters_are_the_built_programs(base, form):
     for ratio in (0.6, 0.93):
         built = build(replace(base, objective="feasibility", ratio=ratio), form)
         G, h = built.G.copy(), built.h.copy()
-        G[:rows.m, :-1] /= w[:, None]
-        h[:rows.m] /= w
+        G[: rows.m, :-1] /= w[:, None]
+        h[: rows.m] /= w
         prog = rows.program_at(ratio, w)
         assert prog.G == pytest.approx(G, rel=1e-13, abs=1e-15)
         assert prog.h == pytest.approx(h, rel=1e-13, abs=1e-15)
@@ -135,7 +160,7 @@ def test_the_decrease_still_possible_bounds_the_rest_of_the_descent(base):
     assert len(steps) >= 2
     for got, left in steps:
         assert got - end <= left + 1e-9
-    assert steps[0][1] > 1e-4         # the first weighted step still had far to go: the estimate is not 0
+    assert steps[0][1] > 1e-4  # the first weighted step still had far to go: the estimate is not 0
 
 
 @pytest.mark.parametrize("rtol", [RATIO_RTOL, 1e-12])
