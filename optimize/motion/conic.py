@@ -136,7 +136,9 @@ class Assembly:
         n = prog.n
         self.n = n
         self.q = np.asarray(prog.cost, float).tolist()
-        m = 0 if pattern is None else int(pattern[0].max(initial=-1)) + 1
+        empty = np.zeros(0, np.intp)
+        pr, pc = (empty, empty) if pattern is None else pattern
+        m = int(pr.max(initial=-1)) + 1
         self.m = m
         G, h = prog.G[m:], prog.h[m:]
         gs = _row_norms(G)
@@ -171,7 +173,6 @@ class Assembly:
         dense(prog.A, As)
         unit(fixed, 1.0)
         if m:
-            pr, pc = pattern  # type: ignore[misc]
             rows.append(pr + at)
             cols.append(pc)
             vals.append(np.zeros(pr.size))
@@ -193,8 +194,8 @@ class Assembly:
         self.shape = (at, n)
         if m:
             start = len(rows[0]) + len(rows[1])
-            self.slots = where[start:start + pattern[0].size]  # type: ignore[index]
-            self.prow = pattern[0]  # type: ignore[index]
+            self.slots = where[start:start + pr.size]
+            self.prow = pr
         self.rhs = np.concatenate([prog.b / As, prog.lo[fixed], np.zeros(m), h / gs, -prog.lo[ranged],
                                    prog.hi[ranged], *cone_rhs]).astype(float)
         self.cones = (n_zero, n_lin, tuple(1 + c.F.shape[0] for c in prog.cones))

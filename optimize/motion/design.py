@@ -64,7 +64,8 @@ RELAXED_STEPS = 1
 #: The first ratio tried for the proof of the lower end is below the relaxed program's least found by this many
 #: times the solver's loss in the bound over the slack's slope (:func:`_proven_below`).
 PROOF_SAFETY = 2.0
-#: Ratios tried for that proof (the distance doubled each time) before the bisection.
+#: Ratios tried for that proof (each lower than the last by what its slack lacked, :func:`_proven_below`) before
+#: the bisection.
 PROOF_TRIES = 4
 #: The conservative program's descent stops when the decrease of the ratio still possible
 #: (:func:`_still_possible`) is below this share of the certificate's gap (the ratio found less the proven
@@ -614,10 +615,10 @@ def _still_possible(ratio: float, least: float, moved: np.ndarray, limits: np.nd
 
     The step solved the weighted program at ``ratio`` (weights ``w``, the rows' ``d + s`` at the step's start)
     and found the least slack ``least`` (``F <= 0``) at a point of ratio ``got``; ``moved`` is the rows'
-    ``d + s`` at that point over ``w``. For any point ``y`` of ratio ``rho`` below ``ratio``, each weighted
-    row at ``ratio`` is at most ``-(T_i(ratio) - T_i(rho)) (d + s)_i(y) / w_i`` (``T_i(r) = tan(r limit_i)``),
-    so ``F`` is at most that, and with ``m <= (d + s)_i(y) / w_i`` for every row (Crouzeix, Ferland and
-    Schaible's bound)::
+    ``d + s`` at that point over ``w`` (both floored as :func:`_weights` floors them). For any point ``y`` of
+    ratio ``rho`` below ``ratio``, each weighted row at ``ratio`` is at most
+    ``-(T_i(ratio) - T_i(rho)) (d + s)_i(y) / w_i`` (``T_i(r) = tan(r limit_i)``), so ``F`` is at most that,
+    and with ``m <= (d + s)_i(y) / w_i`` for every row (Crouzeix, Ferland and Schaible's bound)::
 
         rho >= min over the limits of arctan(tan(ratio limit) - |F| / m) / limit
 
@@ -647,8 +648,8 @@ def _descend(base: Request, programs: _Programs, ratio: float, v: np.ndarray | N
 
     Returns ``(ratio, best, last, lower)``: the least ratio of the points found, the solution whose point has it
     (``None`` when none was found below ``ratio``; from no ``v``, when the program at ``ratio`` has no point
-    with slack at most 0), ``(program, solution)`` of the last program solved and the lower end proven on the
-    way (``None`` if none). Each step's point meets the rows at its own ratio
+    with slack at most 0), ``(programs, ratio, weights, solution)`` of the last program solved and the lower
+    end proven on the way (``None`` if none). Each step's point meets the rows at its own ratio
     (:func:`optimize.motion.translating.form_ratio`, computed on the point), so the ratio returned is a point's
     own (or, when the first point's is not below ``ratio`` from no ``v``, ``ratio`` itself, met to the solver's
     tolerance): an upper end of the program's least ratio.
@@ -702,8 +703,8 @@ def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
     of ``last`` over the slope (the least ``limit sec^2(ratio limit)``: the weighted rows' derivative in the
     ratio); when the proof fails there, the next ``r`` is lower by what the slack still lacks, PROOF_SAFETY
     times the loss measured at that ``r`` less the least slack found there, over the slope (the distance at
-    least 1.5 times the last); the bisection (:func:`_least_ratio_proven`) below the last tried if none is
-    proven after :data:`PROOF_TRIES`.
+    least 1.5 times the last; doubled when the solver gave no point there); the bisection
+    (:func:`_least_ratio_proven`) below the last tried if none is proven after :data:`PROOF_TRIES`.
     """
     relaxed, at, w, sol = last
     weights = _weights(pressure_terms(base, v, "relaxed"))
@@ -719,7 +720,10 @@ def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
         bound = lower_bound(relaxed.program(r, weights), tried)
         if bound > 0:
             return r
-        lacks = PROOF_SAFETY * (float(tried.value) - bound) - float(tried.value) if tried.feasible else np.inf
+        if not tried.feasible:      # no measure of the loss there (the solver's trouble): double the distance
+            step *= 2
+            continue
+        lacks = PROOF_SAFETY * (float(tried.value) - bound) - float(tried.value)
         step = max(step + lacks / slope, 1.5 * step)
     return _least_ratio_proven(base, 0.0, r, relaxed)
 
