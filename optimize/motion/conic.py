@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Cone", "ConicProgram", "Solution", "solve", "lower_bound", "SolverFailure"]
+__all__ = ["Cone", "ConicProgram", "Solution", "Assembly", "solve", "lower_bound", "SolverFailure"]
 
 #: Clarabel's settings tried in turn when it stops on numerical trouble: its defaults, then without
 #: equilibration, then with more static regularization (each rescued a program the others did not).
@@ -99,13 +99,7 @@ class Solution:
 
 def solve(prog: ConicProgram) -> Solution:
     """Solve ``prog`` with Clarabel, called directly (no modelling layer: cvxpy's import and its
-    canonicalization cost more than the solve).
-
-    The rows are handed over in Clarabel's form ``A x + s = b``, ``s`` in a product of cones: the equalities and
-    the fixed variables (zero cone), the inequalities and the enforced bounds (nonnegative cone), each
-    second-order cone as ``s = (a @ v + a0, F @ v + f)``. With that form the multipliers Clarabel returns satisfy
-    ``cost + G' lam + A' nu - sum_k (mu0_k a_k + F_k' mu_k) = 0`` at its tolerance, as :func:`lower_bound`
-    takes them.
+    canonicalization cost more than the solve): :class:`Assembly` of ``prog``, solved once.
 
     Returns a :class:`Solution` whose status is ``"infeasible"`` when the
     solver proves the program infeasible (no point, no multipliers), else
@@ -117,61 +111,180 @@ def solve(prog: ConicProgram) -> Solution:
         Any other ending (numerical trouble after every setting of :data:`RETRIES`, unbounded: the box forbids
         it).
     """
-    import clarabel  # type: ignore[import-untyped]  # it ships no types
-    import scipy.sparse as sp
+    return Assembly(prog).solve()
 
-    n = prog.n
-    # rows scaled to unit norm: the derivatives' rows carry powers of the spans' count
-    gs = _row_norms(prog.G)
-    As = _row_norms(prog.A)
-    mask = np.zeros(n, bool) if prog.enforce is None else prog.enforce
-    fixed = np.flatnonzero(mask & (prog.lo == prog.hi))
-    ranged = np.flatnonzero(mask & (prog.lo != prog.hi))
-    eye = np.eye(n)
-    zero_rows = [prog.A / As[:, None], eye[fixed]]
-    zero_rhs = [prog.b / As, prog.lo[fixed]]
-    lin_rows = [prog.G / gs[:, None], -eye[ranged], eye[ranged]]
-    lin_rhs = [prog.h / gs, -prog.lo[ranged], prog.hi[ranged]]
-    cone_rows = [np.vstack([-c.a[None], -c.F]) for c in prog.cones]
-    cone_rhs = [np.concatenate([[c.a0], c.f]) for c in prog.cones]
-    n_eq, n_fix = prog.A.shape[0], fixed.size
-    n_zero = n_eq + n_fix
-    n_lin = prog.G.shape[0] + 2 * ranged.size
-    M = sp.csc_matrix(np.vstack([*zero_rows, *lin_rows, *cone_rows]))
-    rhs = np.concatenate([*zero_rhs, *lin_rhs, *cone_rhs]).astype(float)
-    cones = []
-    if n_zero:
-        cones.append(clarabel.ZeroConeT(n_zero))
-    if n_lin:
-        cones.append(clarabel.NonnegativeConeT(n_lin))
-    cones += [clarabel.SecondOrderConeT(r.shape[0]) for r in cone_rows]
-    P = sp.csc_matrix((n, n))
-    q = np.asarray(prog.cost, float)
-    for settings in RETRIES:
-        options = clarabel.DefaultSettings()
-        options.verbose = False
-        for key, value in settings.items():
-            setattr(options, key, value)
-        sol = clarabel.DefaultSolver(P, q, M, rhs, cones, options).solve()
-        status = str(sol.status)
-        if status not in _RETRY:
-            break
-    else:
-        raise SolverFailure("solver error")
-    if status in ("PrimalInfeasible", "AlmostPrimalInfeasible"):
-        return Solution("infeasible", np.full(n, np.nan), np.inf, np.zeros(0), np.zeros(0))
-    if status not in _OPTIMAL:
-        raise SolverFailure(status)
-    z = np.asarray(sol.z, float)
-    nu = z[:n_eq] / As
-    lam = np.maximum(z[n_zero:n_zero + prog.G.shape[0]], 0.0) / gs
-    mu = []
-    at = n_zero + n_lin
-    for r in cone_rows:
-        mu.append((float(z[at]), z[at + 1:at + r.shape[0]].copy()))
-        at += r.shape[0]
-    x = np.asarray(sol.x, float)
-    return Solution(_OPTIMAL[status], x, float(sol.obj_val), lam, nu, tuple(mu))
+
+class Assembly:
+    """A :class:`ConicProgram` in Clarabel's form, assembled once, sparse, without scipy.
+
+    The rows are handed over as ``M x + s = rhs``, ``s`` in a product of cones: the equalities and the fixed
+    variables (zero cone), the inequalities and the enforced bounds (nonnegative cone), each second-order cone
+    as ``s = (a @ v + a0, F @ v + f)``. With that form the multipliers Clarabel returns satisfy
+    ``cost + G' lam + A' nu - sum_k (mu0_k a_k + F_k' mu_k) = 0`` at its tolerance, as :func:`lower_bound`
+    takes them. Every row is scaled to unit norm (the derivatives' rows carry powers of the spans' count) and
+    the multipliers scaled back.
+
+    ``M`` is built in compressed-column form from each block's nonzeros (no dense stack of the whole matrix).
+    With ``pattern = (rows, cols)`` the first ``m = rows.max() + 1`` rows of ``prog.G`` are parameters: their
+    nonzeros lie in ``pattern`` (row-major order, every row present), their values and right-hand sides are
+    given to :meth:`solve` (``prog.G[:m]`` and ``prog.h[:m]`` are not read), the rest of the matrix, its order
+    and its scaling are kept from one solve to the next. The programs of one family (the least pressure angle's
+    programs at every ratio and weighting) are so assembled once.
+    """
+
+    def __init__(self, prog: ConicProgram, pattern: tuple[np.ndarray, np.ndarray] | None = None):
+        n = prog.n
+        self.n = n
+        self.q = np.asarray(prog.cost, float).tolist()
+        empty = np.zeros(0, np.intp)
+        pr, pc = (empty, empty) if pattern is None else pattern
+        m = int(pr.max(initial=-1)) + 1
+        self.m = m
+        G, h = prog.G[m:], prog.h[m:]
+        gs = _row_norms(G)
+        As = _row_norms(prog.A)
+        mask = np.zeros(n, bool) if prog.enforce is None else prog.enforce
+        fixed = np.flatnonzero(mask & (prog.lo == prog.hi))
+        ranged = np.flatnonzero(mask & (prog.lo != prog.hi))
+        n_eq = prog.A.shape[0]
+        n_zero = n_eq + fixed.size
+        n_lin = m + G.shape[0] + 2 * ranged.size
+        # the blocks' nonzeros (row, column, value), rows increasing block after block
+        rows: list[np.ndarray] = []
+        cols: list[np.ndarray] = []
+        vals: list[np.ndarray] = []
+        at = 0
+
+        def dense(B: np.ndarray, scale: np.ndarray | None = None) -> None:
+            nonlocal at
+            r, c = np.nonzero(B)
+            rows.append(r + at)
+            cols.append(c)
+            vals.append(B[r, c] / scale[r] if scale is not None else B[r, c])
+            at += B.shape[0]
+
+        def unit(columns: np.ndarray, value: float) -> None:
+            nonlocal at
+            rows.append(at + np.arange(columns.size))
+            cols.append(columns)
+            vals.append(np.full(columns.size, value))
+            at += columns.size
+
+        dense(prog.A, As)
+        unit(fixed, 1.0)
+        if m:
+            rows.append(pr + at)
+            cols.append(pc)
+            vals.append(np.zeros(pr.size))
+            at += m
+        dense(G, gs)
+        unit(ranged, -1.0)
+        unit(ranged, 1.0)
+        cone_rhs = []
+        for c in prog.cones:
+            dense(np.vstack([-c.a[None], -c.F]))
+            cone_rhs.append(np.concatenate([[c.a0], c.f]))
+        r_all, c_all, v_all = np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
+        order = np.argsort(c_all, kind="stable")        # by column, rows increasing within each (CSC)
+        where = np.empty(order.size, np.intp)
+        where[order] = np.arange(order.size)
+        self.data = v_all[order]
+        self.indices = r_all[order].tolist()
+        self.indptr = np.concatenate([[0], np.cumsum(np.bincount(c_all, minlength=n))]).tolist()
+        self.shape = (at, n)
+        if m:
+            start = len(rows[0]) + len(rows[1])
+            self.slots = where[start:start + pr.size]
+            self.prow = pr
+        self.rhs = np.concatenate([prog.b / As, prog.lo[fixed], np.zeros(m), h / gs, -prog.lo[ranged],
+                                   prog.hi[ranged], *cone_rhs]).astype(float)
+        self.cones = (n_zero, n_lin, tuple(1 + c.F.shape[0] for c in prog.cones))
+        self.n_eq, self.n_zero, self.n_G = n_eq, n_zero, m + G.shape[0]
+        self.gs, self.As = gs, As
+
+    def matrix(self, values: np.ndarray | None = None,
+               h: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(data, rhs, scale)``: the scaled matrix's nonzeros in compressed-column order (the indices
+        :attr:`indices`, :attr:`indptr`), the right-hand side, and the norms each row of ``G`` was divided by;
+        the parameter rows (if any) given as in :meth:`solve`."""
+        m = self.m
+        if not m:
+            return self.data, self.rhs, self.gs
+        if values is None or h is None:
+            raise ValueError("the parameter rows' values and right-hand sides are needed")
+        ps = _row_norms_of(self.prow, values, m)
+        data, rhs = self.data.copy(), self.rhs.copy()
+        data[self.slots] = values / ps[self.prow]
+        rhs[self.n_zero:self.n_zero + m] = h / ps
+        return data, rhs, np.concatenate([ps, self.gs])
+
+    def solve(self, values: np.ndarray | None = None, h: np.ndarray | None = None) -> Solution:
+        """Solve the program, the parameter rows (if any) given by their ``values`` (in the pattern's order)
+        and right-hand sides ``h`` (``m``).
+
+        Raises
+        ------
+        SolverFailure
+            As :func:`solve`.
+        """
+        import clarabel  # type: ignore[import-untyped]  # it ships no types
+
+        n = self.n
+        data, rhs, gs = self.matrix(values, h)
+        M = _Csc(data.tolist(), self.indices, self.indptr, self.shape)
+        P = _Csc([], [], [0] * (n + 1), (n, n))
+        n_zero, n_lin, socs = self.cones
+        cones = []
+        if n_zero:
+            cones.append(clarabel.ZeroConeT(n_zero))
+        if n_lin:
+            cones.append(clarabel.NonnegativeConeT(n_lin))
+        cones += [clarabel.SecondOrderConeT(k) for k in socs]
+        b = rhs.tolist()
+        for settings in RETRIES:
+            options = clarabel.DefaultSettings()
+            options.verbose = False
+            for key, value in settings.items():
+                setattr(options, key, value)
+            sol = clarabel.DefaultSolver(P, self.q, M, b, cones, options).solve()
+            status = str(sol.status)
+            if status not in _RETRY:
+                break
+        else:
+            raise SolverFailure("solver error")
+        if status in ("PrimalInfeasible", "AlmostPrimalInfeasible"):
+            return Solution("infeasible", np.full(n, np.nan), np.inf, np.zeros(0), np.zeros(0))
+        if status not in _OPTIMAL:
+            raise SolverFailure(status)
+        z = np.asarray(sol.z, float)
+        n_eq = self.n_eq
+        nu = z[:n_eq] / self.As
+        lam = np.maximum(z[n_zero:n_zero + self.n_G], 0.0) / gs
+        mu = []
+        at = n_zero + n_lin
+        for k in socs:
+            mu.append((float(z[at]), z[at + 1:at + k].copy()))
+            at += k
+        x = np.asarray(sol.x, float)
+        return Solution(_OPTIMAL[status], x, float(sol.obj_val), lam, nu, tuple(mu))
+
+
+class _Csc:
+    """A matrix in compressed-column form as Clarabel reads it (the attributes of scipy's ``csc_matrix``, whose
+    import a solve then does not pay), indices sorted, no duplicates."""
+
+    has_canonical_format = True
+
+    def __init__(self, data: list, indices: list, indptr: list, shape: tuple[int, int]):
+        self.data, self.indices, self.indptr, self.shape = data, indices, indptr, shape
+        self.nnz = len(data)
+
+
+def _row_norms_of(rows: np.ndarray, values: np.ndarray, m: int) -> np.ndarray:
+    """Euclidean norms of the ``m`` rows of a matrix given by its nonzeros' ``rows`` and ``values`` (1 for a zero
+    row)."""
+    n = np.sqrt(np.bincount(rows, weights=values * values, minlength=m))
+    return np.where(n > 0, n, 1.0)
 
 
 #: Clarabel's endings with a solution, as the statuses :class:`Solution` keeps.

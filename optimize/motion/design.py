@@ -37,11 +37,18 @@ from cams.model.motiondesign import (
 )
 from laws.errors import InfeasibleError, InputError
 from laws.program import Program
-from optimize.motion.conic import ConicProgram, SolverFailure, lower_bound, solve
+from optimize.motion.conic import Assembly, ConicProgram, Solution, SolverFailure, lower_bound, solve
 from optimize.motion.lawrows import check_lift
 from optimize.motion.smooth import allowance, pulled_back, smoothing_derivative, smoothing_program
 from optimize.motion.space import CONSISTENT, Space
-from optimize.motion.translating import Request, build, conservative_ratio, form_ratio, pressure_terms
+from optimize.motion.translating import (
+    Request,
+    build,
+    conservative_ratio,
+    form_ratio,
+    pressure_rows,
+    pressure_terms,
+)
 
 __all__ = ["LawDesign", "design_laws", "free_phases", "resolve_caps", "BISECTION_STEPS"]
 
@@ -56,9 +63,18 @@ MAX_DESCENT = 30
 RELAXED_STEPS = 1
 #: The first ratio tried for the proof of the lower end is below the relaxed program's least found by this many
 #: times the solver's loss in the bound over the slack's slope (:func:`_proven_below`).
-PROOF_SAFETY = 1.25
-#: Ratios tried for that proof (the distance doubled each time) before the bisection.
+PROOF_SAFETY = 2.0
+#: Ratios tried for that proof (each lower than the last by what its slack lacked, :func:`_proven_below`) before
+#: the bisection.
 PROOF_TRIES = 4
+#: The conservative program's descent stops when the decrease of the ratio still possible
+#: (:func:`_still_possible`) is below this share of the certificate's gap (the ratio found less the proven
+#: lower bound): a further step could not change what the certificate says beyond its last digits.
+GAP_SHARE = 0.01
+#: The lower end is proven (the relaxed step and the proof) once a step of the conservative descent moved every
+#: pressure row's ``d + s`` by less than this share (the iteration has settled: the relaxed step from there is
+#: as good as from its end).
+SETTLED = 1e-3
 
 
 @dataclass(frozen=True)
@@ -340,12 +356,12 @@ def _design_laws(design: CamDesign | FlatFaceDesign, spec: MotionDesignSpec, hol
                    min_radius=min_radius, length=design.scale)
     squared = spec.objective in ("jerk_squared", "snap_squared")
     if spec.objective == "pressure_angle":
-        result, lb = _least_pressure(base, limits)
+        result, lb, conservative = _least_pressure(base, limits)
         # the second stage: the feasibility program at the ratio found times (1 + slack), its slack at most 0; the
         # ratio found is the first stage's point's own in the conservative rows (the iteration ends at it)
         found = min(conservative_ratio(base, result.v), float(result.value))
         ratio = min(allowance(found, spec.smoothing_slack), _top(limits))
-        stage, bound = build(replace(base, objective="feasibility", ratio=ratio), "conservative"), 0.0
+        stage, bound = conservative.program(ratio), 0.0
     else:
         stage = build(base, "conservative")
         result = _solve_or_explain(stage, base)
@@ -500,19 +516,40 @@ def _top(limits: dict[int, float]) -> float:
     return (np.pi / 2) / max(limits.values()) * (1 - 1e-9)
 
 
-def _proven_above(base: Request, ratio: float) -> bool:
+class _Programs:
+    """The feasibility programs of one form (:func:`optimize.motion.translating.build`, objective
+    ``"feasibility"``) at every ratio and weighting of their pressure rows: built and assembled for the solver
+    once (:class:`optimize.motion.translating.PressureRows`, :class:`optimize.motion.conic.Assembly`); each ratio
+    then changes only the pressure rows' values."""
+
+    def __init__(self, base: Request, form: str):
+        self.form = form
+        self.rows = pressure_rows(replace(base, objective="feasibility"), form)
+        self.assembly = Assembly(self.rows.program, self.rows.pattern)
+
+    def solve(self, ratio: float, weights: np.ndarray | None = None) -> Solution:
+        return self.assembly.solve(*self.rows.values(ratio, weights))
+
+    def program(self, ratio: float, weights: np.ndarray | None = None) -> ConicProgram:
+        return self.rows.program_at(ratio, weights)
+
+
+def _proven_above(base: Request, ratio: float, relaxed: _Programs | None = None) -> bool:
     """Whether no law of the space meets the limits times ``ratio`` at ``base``'s cam: the relaxed program's
-    proven lower bound of the pressure rows' least slack is above 0 (weak duality; the samples a relaxation)."""
-    rel = build(replace(base, objective="feasibility", ratio=ratio), "relaxed")
-    return lower_bound(rel, solve(rel)) > 0
+    proven lower bound of the pressure rows' least slack is above 0 (weak duality; the samples a relaxation).
+    ``relaxed``: the relaxed programs already built, if any."""
+    if relaxed is None:
+        rel = build(replace(base, objective="feasibility", ratio=ratio), "relaxed")
+        return lower_bound(rel, solve(rel)) > 0
+    return lower_bound(relaxed.program(ratio), relaxed.solve(ratio)) > 0
 
 
-def _least_ratio_proven(base: Request, lo: float, hi: float) -> float:
+def _least_ratio_proven(base: Request, lo: float, hi: float, relaxed: _Programs | None = None) -> float:
     """The largest ratio in ``[lo, hi]`` at which :func:`_proven_above` holds, by bisection (``lo`` where it is
     known to hold, else 0): no law of the space has a smaller ratio of pressure angle to limit."""
     from laws.search import bisect_boundary
 
-    return bisect_boundary(lambda r: _proven_above(base, r), lo, hi, max_steps=BISECTION_STEPS)
+    return bisect_boundary(lambda r: _proven_above(base, r, relaxed), lo, hi, max_steps=BISECTION_STEPS)
 
 
 def _down(x: float, digits: int = 6) -> str:
@@ -558,50 +595,69 @@ def _no_law_at_size(base: Request) -> None:
                           "let the cam grow (objective 'R0') or choose a larger cam")
 
 
-def _weighted(prog: ConicProgram, terms: list[tuple[np.ndarray, np.ndarray, float]]) -> ConicProgram:
-    """``prog`` (a feasibility program of :func:`optimize.motion.translating.build`) with each pressure row's
-    ``sign (s' + eps x) - T (d + s)`` divided by its ``d + s`` at the previous point (``terms``, in the rows'
-    order): the normalized step of the generalized fractional programs' Dinkelbach method (Crouzeix, Ferland and
-    Schaible, *J. Optim. Theory Appl.* 47, 1985). A positive weight per row changes no row's feasible set."""
+def _weights(terms: list[tuple[np.ndarray, np.ndarray, float]]) -> np.ndarray:
+    """The pressure rows' weights at a point (``terms``, :func:`optimize.motion.translating.pressure_terms`, in
+    the rows' order): each row's ``d + s`` there, floored at 1e-3 of the largest. Each row
+    ``sign (s' + eps x) - T (d + s)`` divided by its weight is the normalized step of the generalized fractional
+    programs' Dinkelbach method (Crouzeix, Ferland and Schaible, *J. Optim. Theory Appl.* 47, 1985). A
+    positive weight per row changes no row's feasible set."""
     w = np.concatenate([np.concatenate([b, b]) for _, b, _ in terms])
-    floor = 1e-3 * max(float(np.max(w, initial=0.0)), 1e-12)
-    w = np.maximum(w, floor)
-    m = w.size
-    it = prog.n - 1
-    if not np.all(prog.G[:m, it] == -1.0):
-        raise AssertionError("the pressure rows are not the feasibility program's first rows")
-    G, h = prog.G.copy(), prog.h.copy()
-    G[:m, :it] /= w[:, None]
-    h[:m] /= w
-    return replace(prog, G=G, h=h)
+    return np.maximum(w, 1e-3 * max(float(np.max(w, initial=0.0)), 1e-12))
 
 
-def _feasibility(base: Request, ratio: float, form: str, terms) -> ConicProgram:
-    """The feasibility program (least slack of the pressure rows) at ``ratio``, weighted by ``terms`` if any."""
-    prog = build(replace(base, objective="feasibility", ratio=ratio), form)
-    return prog if terms is None else _weighted(prog, terms)
+def _still_possible(ratio: float, least: float, moved: np.ndarray, limits: np.ndarray, got: float) -> float:
+    """How much further Dinkelbach's iteration could still lower the ratio ``got`` of the point a step found.
 
+    The step solved the weighted program at ``ratio`` (weights ``w``, the rows' ``d + s`` at the step's start)
+    and found the least slack ``least`` (``F <= 0``) at a point of ratio ``got``; ``moved`` is the rows'
+    ``d + s`` at that point over ``w`` (both floored as :func:`_weights` floors them). For any point ``y`` of
+    ratio ``rho`` below ``ratio``, each weighted row at ``ratio`` is at most
+    ``-(T_i(ratio) - T_i(rho)) (d + s)_i(y) / w_i`` (``T_i(r) = tan(r limit_i)``), so ``F`` is at most that,
+    and with ``m <= (d + s)_i(y) / w_i`` for every row (Crouzeix, Ferland and Schaible's bound)::
 
-def _descend(base: Request, form: str, ratio: float, v: np.ndarray | None, steps: int = MAX_DESCENT):
-    """Dinkelbach's iteration from ``ratio`` (and the point ``v`` that meets it, if any): the feasibility
-    program of ``form`` at the ratio of the last point found, its rows weighted at that point (:func:`_weighted`),
-    until the ratio decreases by less than :data:`RATIO_RTOL` (relative) or the program has no point with a
-    smaller ratio.
+        rho >= min over the limits of arctan(tan(ratio limit) - |F| / m) / limit
 
-    Returns ``(ratio, best, last)``: the least ratio of the points found, the solution whose point has it
-    (``None`` when none was found below ``ratio``; from no ``v``, when the program at ``ratio`` has no point
-    with slack at most 0) and ``(program, solution)`` of the last program solved. Each step's point meets the
-    rows at its own ratio (:func:`optimize.motion.translating.form_ratio`, computed on the point), so the
-    ratio returned is a point's own (or, when the first point's is not below ``ratio`` from no ``v``, ``ratio``
-    itself, met to the solver's tolerance): an upper end of the program's least ratio.
+    The least point ``y`` is not known: ``m`` is taken as ``1 - 2 delta`` with ``delta`` the largest relative
+    change of ``d + s`` in the step just made (``moved``), the iteration's next change being smaller than its
+    last (it converges superlinearly near the least). Returns ``got`` less that lower end (``inf`` when ``m``
+    is not positive): an estimate, which bounds how much of the value a stop can leave, never the certificate's
+    truth (the value is a point's own ratio, the lower bound proven apart).
     """
+    m = 1.0 - 2.0 * float(np.max(np.abs(moved - 1.0)))
+    if not m > 0:
+        return float("inf")
+    drop = max(-least, 0.0) / m
+    low = min(float(np.arctan(max(np.tan(ratio * lim) - drop, 0.0))) / lim for lim in np.unique(limits))
+    return got - low
+
+
+def _descend(base: Request, programs: _Programs, ratio: float, v: np.ndarray | None, steps: int = MAX_DESCENT,
+             relaxed: _Programs | None = None):
+    """Dinkelbach's iteration from ``ratio`` (and the point ``v`` that meets it, if any): the feasibility
+    program of ``programs``' form at the ratio of the last point found, its rows weighted at that point
+    (:func:`_weights`), until the ratio decreases by less than :data:`RATIO_RTOL` (relative) or the program has
+    no point with a smaller ratio, or, with ``relaxed`` given, until the decrease still possible
+    (:func:`_still_possible`) is below :data:`RATIO_RTOL` of the ratio or :data:`GAP_SHARE` of the certificate's
+    gap, the ratio less the lower end proven (:func:`_lower_end` with ``relaxed``, once the iteration has
+    settled, :data:`SETTLED`): a step that could not change the certificate beyond its last digits is not taken.
+
+    Returns ``(ratio, best, last, lower)``: the least ratio of the points found, the solution whose point has it
+    (``None`` when none was found below ``ratio``; from no ``v``, when the program at ``ratio`` has no point
+    with slack at most 0), ``(programs, ratio, weights, solution)`` of the last program solved and the lower
+    end proven on the way (``None`` if none). Each step's point meets the rows at its own ratio
+    (:func:`optimize.motion.translating.form_ratio`, computed on the point), so the ratio returned is a point's
+    own (or, when the first point's is not below ``ratio`` from no ``v``, ``ratio`` itself, met to the solver's
+    tolerance): an upper end of the program's least ratio.
+    """
+    form = programs.form
     best = None
-    terms = None if v is None else pressure_terms(base, v, form)
+    weights = None if v is None else _weights(pressure_terms(base, v, form))
     last = None
+    lower = None
+    limits = programs.rows.limit
     for _ in range(steps):
-        prog = _feasibility(base, ratio, form, terms)
-        sol = solve(prog)
-        last = (prog, sol)
+        sol = programs.solve(ratio, weights)
+        last = (programs, ratio, weights, sol)
         if not sol.feasible or (best is None and v is None and sol.value > 0):
             break
         got = form_ratio(base, sol.v, form)
@@ -610,10 +666,25 @@ def _descend(base: Request, form: str, ratio: float, v: np.ndarray | None, steps
                 best = sol
             break
         done = got > ratio * (1 - RATIO_RTOL)
-        ratio, best, terms = got, sol, pressure_terms(base, sol.v, form)
+        at = _weights(pressure_terms(base, sol.v, form))
+        if relaxed is not None and weights is not None:
+            moved = at / weights
+            left = _still_possible(ratio, float(sol.value), moved, limits, got)
+            done = done or left <= RATIO_RTOL * got
+            if not done and lower is None and np.max(np.abs(moved - 1.0)) <= SETTLED:
+                lower = _lower_end(base, relaxed, got, sol.v)
+            done = done or (lower is not None and left <= GAP_SHARE * (got - lower))
+        ratio, best, weights = got, sol, at
         if done:
             break
-    return ratio, best, last
+    return ratio, best, last, lower
+
+
+def _lower_end(base: Request, relaxed: _Programs, ratio: float, v: np.ndarray) -> float:
+    """A ratio proven below every law's, from the conservative program's point ``v`` of ratio ``ratio``: the
+    relaxed program's Dinkelbach step from there (:data:`RELAXED_STEPS`), then :func:`_proven_below`."""
+    rel, rsol, last, _ = _descend(base, relaxed, ratio, v, RELAXED_STEPS)
+    return _proven_below(base, rel, v if rsol is None else rsol.v, last)
 
 
 def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
@@ -621,15 +692,18 @@ def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
     bound of its least slack above 0 (weak duality, :func:`optimize.motion.conic.lower_bound`).
 
     ``ratio`` is the relaxed program's least found from above (:func:`_descend`, its point ``v``, ``last`` its
-    last program and solution). The proof at a ratio ``r`` below it holds when the least slack there, about
-    ``slope (ratio - r)``, exceeds what the bound loses to the solver's accuracy (``last``'s value less its
-    proven bound): the first ``r`` tried is ``ratio`` less :data:`PROOF_SAFETY` times that loss over the slope
-    (the least ``limit sec^2(ratio limit)``: the weighted rows' derivative in the ratio), then the distance is
-    doubled; the bisection (:func:`_least_ratio_proven`) below the last tried if none is proven.
+    last programs, ratio, weights and solution). The proof at a ratio ``r`` below it holds when the least slack
+    there, about ``slope (ratio - r)``, exceeds what the bound loses to the solver's accuracy (the solver's
+    value less the proven bound): the first ``r`` tried is ``ratio`` less :data:`PROOF_SAFETY` times the loss
+    of ``last`` over the slope (the least ``limit sec^2(ratio limit)``: the weighted rows' derivative in the
+    ratio); when the proof fails there, the next ``r`` is lower by what the slack still lacks, PROOF_SAFETY
+    times the loss measured at that ``r`` less the least slack found there, over the slope (the distance at
+    least 1.5 times the last; doubled when the solver gave no point there); the bisection
+    (:func:`_least_ratio_proven`) below the last tried if none is proven after :data:`PROOF_TRIES`.
     """
-    terms = pressure_terms(base, v, "relaxed")
-    prog, sol = last
-    loss = max(float(sol.value) - lower_bound(prog, sol), 0.0) if sol.feasible else 0.0
+    relaxed, at, w, sol = last
+    weights = _weights(pressure_terms(base, v, "relaxed"))
+    loss = max(float(sol.value) - lower_bound(relaxed.program(at, w), sol), 0.0) if sol.feasible else 0.0
     slope = min(lim / np.cos(ratio * lim) ** 2 for lim in base.limits.values())
     step = max(PROOF_SAFETY * loss / slope, RATIO_RTOL * ratio)
     r = ratio
@@ -637,26 +711,35 @@ def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
         r = ratio - step
         if r <= 0:
             return 0.0
-        rel = _feasibility(base, r, "relaxed", terms)
-        if lower_bound(rel, solve(rel)) > 0:
+        tried = relaxed.solve(r, weights)
+        bound = lower_bound(relaxed.program(r, weights), tried)
+        if bound > 0:
             return r
-        step *= 2
-    return _least_ratio_proven(base, 0.0, r)
+        if not tried.feasible:      # no measure of the loss there (the solver's trouble): double the distance
+            step *= 2
+            continue
+        lacks = PROOF_SAFETY * (float(tried.value) - bound) - float(tried.value)
+        step = max(step + lacks / slope, 1.5 * step)
+    return _least_ratio_proven(base, 0.0, r, relaxed)
 
 
-def _least_pressure(base: Request, limits: dict[int, float]):
-    """The least ratio of pressure angle to limit, at most 1, and a proven lower bound of it.
+def _least_pressure(base: Request, limits: dict[int, float]) -> tuple[Solution, float, _Programs]:
+    """The least ratio of pressure angle to limit, at most 1, a proven lower bound of it and the conservative
+    programs (the second stage's is one of them).
 
     Upper end: Dinkelbach's iteration (:func:`_descend`) on the conservative program from the limits
-    themselves (ratio 1): each step's point meets every limit times its own ratio at every cam angle. When no
-    law found meets the limits themselves (ratio 1), :func:`_no_law_at_size` says so.
-    Lower end: the same iteration on the relaxed program from the upper end, then that ratio less a margin
+    themselves (ratio 1): each step's point meets every limit times its own ratio at every cam angle; it stops
+    at the certificate's own gap (:data:`GAP_SHARE`). When no law found meets the limits themselves (ratio 1),
+    :func:`_no_law_at_size` says so.
+    Lower end (:func:`_lower_end`, proven during the iteration once it has settled, else from its end): the same
+    iteration on the relaxed program from the conservative program's point, then that ratio less a margin
     proven infeasible (:func:`_proven_below`).
     """
-    hi = min(1.0, _top(limits))
-    hi, feas, _ = _descend(base, "conservative", hi, None)
+    conservative = _Programs(base, "conservative")
+    relaxed = _Programs(base, "relaxed")
+    hi, feas, _, lb = _descend(base, conservative, min(1.0, _top(limits)), None, relaxed=relaxed)
     if feas is None:
         _no_law_at_size(base)
-    rel, rsol, last = _descend(base, "relaxed", hi, feas.v, RELAXED_STEPS)
-    lb = _proven_below(base, rel, feas.v if rsol is None else rsol.v, last)
-    return replace(feas, value=hi), lb
+    if lb is None:
+        lb = _lower_end(base, relaxed, hi, feas.v)
+    return replace(feas, value=hi), lb, conservative

@@ -27,7 +27,7 @@ The variables: the free phases' coefficients, then the geometry (``x, d`` or
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -35,7 +35,8 @@ from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram
 from optimize.motion.space import Space
 
-__all__ = ["Request", "build", "conservative_ratio", "form_ratio", "pressure_terms", "SAMPLES_PER_SPAN",
+__all__ = ["Request", "build", "PressureRows", "pressure_rows", "conservative_ratio", "form_ratio",
+           "pressure_terms", "SAMPLES_PER_SPAN",
            "FIXED_SAMPLES", "TIGHTEN", "S_MARGIN"]
 #: Sample points per span of the relaxation (ends included).
 SAMPLES_PER_SPAN = 17
@@ -262,6 +263,104 @@ def build(req: Request, form: str) -> ConicProgram:
     enforce[nc:] = True             # the geometry and t; the coefficients' box is declared, not handed over
     return ConicProgram(cost=cost, G=np.vstack(G) if G else np.zeros((0, n)), h=np.concatenate(h) if h else
                         np.zeros(0), A=A, b=b, lo=lo, hi=hi, cones=tuple(cones), enforce=enforce)
+
+
+@dataclass(frozen=True)
+class PressureRows:
+    """The pressure rows of :func:`build`'s feasibility program (roller) with the ratio as a parameter.
+
+    Row ``i`` (in :func:`build`'s order: per limited phase, the sign +1 rows, then the sign -1 rows) at ratio
+    ``r`` is ``U_i v + u0_i - tan(r limit_i) (W_i v + c_i) <= t``: ``U v + u0`` is ``sign (s' + eps x)`` and
+    ``W v + c`` is ``d + s`` (lengths over ``req.length``), ``t`` the program's last variable.
+
+    Attributes
+    ----------
+    program : ConicProgram
+        :func:`build`'s feasibility program; its first ``m`` rows of ``G`` are these (at the request's ratio).
+    U, W : ndarray, shape (m, n)
+        The rows' two sides (the column of ``t`` zero).
+    u0, c : ndarray, shape (m,)
+    limit : ndarray, shape (m,)
+        Each row's pressure-angle limit, radians.
+    pattern : (ndarray, ndarray)
+        The rows' possible nonzeros ``(row, column)``, row-major, ``t``'s column included: the pattern of
+        :class:`optimize.motion.conic.Assembly`.
+    """
+
+    program: ConicProgram
+    U: np.ndarray
+    W: np.ndarray
+    u0: np.ndarray
+    c: np.ndarray
+    limit: np.ndarray
+    pattern: tuple[np.ndarray, np.ndarray]
+
+    @property
+    def m(self) -> int:
+        return int(self.c.size)
+
+    def values(self, ratio: float, weights: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """The rows at ``ratio``, each divided by its positive weight (``weights``, ``m``; none: 1) but in
+        ``t``'s column: their values on :attr:`pattern` and their right-hand sides."""
+        T = np.tan(ratio * self.limit)
+        w = np.ones(self.m) if weights is None else weights
+        r, k = self.pattern
+        vals = (self.U[r, k] - T[r] * self.W[r, k]) / w[r]
+        vals[k == self.U.shape[1] - 1] = -1.0
+        return vals, (T * self.c - self.u0) / w
+
+    def program_at(self, ratio: float, weights: np.ndarray | None = None) -> ConicProgram:
+        """The whole program at ``ratio``, its rows weighted (dense, as :func:`build` gives it)."""
+        vals, rhs = self.values(ratio, weights)
+        G, h = self.program.G.copy(), self.program.h.copy()
+        G[:self.m] = 0.0
+        G[self.pattern] = vals
+        h[:self.m] = rhs
+        return replace(self.program, G=G, h=h)
+
+
+def pressure_rows(req: Request, form: str) -> PressureRows:
+    """The feasibility program of ``req`` in ``form`` with its pressure rows' two sides (:class:`PressureRows`),
+    built once for every ratio (roller, objective ``"feasibility"``)."""
+    if req.follower == "flat" or req.objective != "feasibility":
+        raise ValueError("the pressure rows of a roller's feasibility program")
+    prog = build(req, form)
+    sp = req.space
+    nc = sp.size
+    n = prog.n
+    samples = None if form == "conservative" else _samples(sp)
+    index = {i: k for k, i in enumerate(sp.free)}
+    ell = float(req.length)
+    eps = float(req.cam_sense)
+    U, W, u0, c, lim = [], [], [], [], []
+    for i, limit in req.limits.items():
+        if i in index:
+            k = index[i]
+            sh, beta, lev = sp.phase_scale(i)
+            top = sh / ell / beta * sp.rows(k, 1, n, samples=samples, elevate=True)
+            bottom = sh / ell * sp.rows(k, 0, n, samples=samples)
+            top0, bottom0 = np.zeros(top.shape[0]), np.full(top.shape[0], lev / ell)
+        else:
+            s, ds, _ = _fixed_motion(sp.program, i, FIXED_SAMPLES)
+            top, bottom = np.zeros((s.size, n)), np.zeros((s.size, n))
+            top0, bottom0 = ds / ell, s / ell
+        top[:, nc] = eps
+        bottom[:, nc + 1] = 1.0
+        for sign in (1.0, -1.0):
+            U.append(sign * top)
+            u0.append(sign * top0)
+            W.append(bottom)
+            c.append(bottom0)
+            lim.append(np.full(top0.size, float(limit)))
+    Um, Wm = np.vstack(U), np.vstack(W)
+    m = Um.shape[0]
+    if not (np.all(prog.G[:m, n - 1] == -1.0) and (m == prog.G.shape[0] or prog.G[m, n - 1] == 0.0)):
+        raise AssertionError("the pressure rows are not the feasibility program's first rows")
+    nz = (Um != 0) | (Wm != 0)
+    nz[:, n - 1] = True
+    rr, kk = np.nonzero(nz)
+    return PressureRows(program=prog, U=Um, W=Wm, u0=np.concatenate(u0), c=np.concatenate(c),
+                        limit=np.concatenate(lim), pattern=(rr, kk))
 
 
 def pressure_terms(req: Request, v: np.ndarray,
