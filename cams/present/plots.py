@@ -103,17 +103,21 @@ def _legend_below(fig, ax, ncol: int = 2):
     return fig.legend(*_unique_handles(ax), loc="outside lower center", ncol=ncol, fontsize=7)
 
 
-def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0, rounds: int = 6):
+def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0, rounds: int = 6,
+                guess: float | None = None):
     """Set the height of ``fig`` (its width kept) so that what it draws fills it: no band of empty figure
     above and below a wide drawing of a fixed aspect (``ax``), nor beside a tall one.
 
     The height stays within ``[min_h, max_h]`` inches and above what the legend ``beside`` the axes needs.
     Each round lays the figure out (as at :data:`DPI`, :func:`_execute_layout`) and takes up the difference
     between the figure and the box around everything drawn. The last round's layout is the figure's
-    (:func:`lay_out` keeps it). Returns
+    (:func:`lay_out` keeps it). ``guess`` (inches) is where the first round starts, when the caller can tell
+    about where the rounds end (each round costs a layout; the rounds still decide). Returns
     ``fig``, which keeps the fitting as ``fig.refit`` for a caller that adds a title afterwards
     (:func:`mark_failing`).
     """
+    if guess is not None:
+        fig.set_size_inches(fig.get_size_inches()[0], float(np.clip(guess, min_h, max_h)))
 
     def refit():
         for _ in range(rounds):
@@ -121,6 +125,8 @@ def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0,
             w, h = fig.get_size_inches()
             spare_h, spare_w = h - drawn.height - 0.1, w - drawn.width - 0.1
             if spare_h > 0.05:  # the axes span the width: the spare height goes
+                new = h - spare_h
+            elif spare_h < -0.02:  # what is drawn reaches past the figure (a start below the fit): that much taller
                 new = h - spare_h
             elif spare_w > 0.05:  # the axes span the height: taller until they span the width
                 box = ax.get_position()
@@ -632,6 +638,12 @@ def _draw(ax, cam, profile, phi: float) -> Callable[[float], list]:
     return presenter(cam).draw_mechanism(ax, cam, profile, phi)
 
 
+#: The profile picture's axes' width (inches) on an A4-wide figure, and the height of its title, axis labels and
+#: legend below (inches), as the examples' fitted pictures have them: the height the fitting starts from
+#: (:func:`_fit_height`'s ``guess``), so that it ends in one or two rounds instead of four.
+PROFILE_AXES_WIDTH_IN, PROFILE_MARGINS_IN = 6.83, 1.27
+
+
 def plot_profile(cam, *, phi: float | None = None):
     """The cam: working profile, pitch curve, base circle, and the follower at cam angle ``phi``.
 
@@ -653,7 +665,10 @@ def plot_profile(cam, *, phi: float | None = None):
     _draw(ax, cam, profile, phi)
     _title(ax, f"{d.name}: cam at φ = {np.degrees(phi):.1f}°")
     _legend_below(fig, ax)
-    return _fit_height(fig, ax, max_h=8.5)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()  # the drawing's extent, to scale (equal aspect)
+    title_lines = ax.get_title().count("\n")  # a long name's title wrapped: a line of 11 pt each
+    guess = PROFILE_AXES_WIDTH_IN * (y1 - y0) / (x1 - x0) + PROFILE_MARGINS_IN + title_lines * 11 * 1.2 / 72
+    return _fit_height(fig, ax, max_h=8.5, guess=guess)
 
 
 def _animation_box(cam, profile) -> tuple[np.ndarray, np.ndarray]:
