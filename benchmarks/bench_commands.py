@@ -40,8 +40,10 @@ from pathlib import Path
 from hardware import machine
 
 ROOT = Path(__file__).resolve().parents[1]
-#: The command line's entry, run the same way in both trees (the base has no ``cams/__main__.py``).
-ENTRY = "import sys; from cams.cli import main; sys.exit(main(sys.argv[1:]))"
+#: The command line's entry, run the same way in both trees: the console script's function (``cams.cli.entry``,
+#: ``main`` in a tree that has no other; the base has no ``cams/__main__.py``), on the arguments after ``-c``.
+ENTRY = ("import sys; import cams.cli as cli; sys.argv[0] = 'cams'; "
+         "sys.exit(cli.entry() if hasattr(cli, 'entry') else cli.main(sys.argv[1:]))")
 #: What a benchmark sets for itself and a user's shell does not: removed from the children's environment.
 BLAS_VARS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
 #: The least-pressure-angle objective: the motion-design example with its objective changed (written per tree).

@@ -113,6 +113,7 @@ def forked_map(
 def _forked(tasks, n, done, effort, note, results, failed) -> None:
     """The children's part of :func:`forked_map`: ``results`` filled with what came back, ``failed`` with the
     tasks that raised; what is in neither is left to be run here."""
+    import gc
     import multiprocessing
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
     from concurrent.futures.process import BrokenProcessPool
@@ -123,6 +124,9 @@ def _forked(tasks, n, done, effort, note, results, failed) -> None:
         stream.flush()
     pool = ProcessPoolExecutor(max_workers=n, mp_context=multiprocessing.get_context("fork"), initializer=_child)
     whole = False
+    # the objects made so far out of the collector's reach while the children live: a child's collections then
+    # do not walk (and copy, page by page) everything it inherited, which it never frees
+    gc.freeze()
     try:
         first = sorted(range(len(tasks)), key=lambda k: -effort[k]) if effort is not None else range(len(tasks))
         # Ctrl-C held back while the children are forked (all at the first submit): none gets it before it
@@ -168,3 +172,4 @@ def _forked(tasks, n, done, effort, note, results, failed) -> None:
                 if p.is_alive():
                     p.kill()
             pool.shutdown(wait=True, cancel_futures=True)
+        gc.unfreeze()  # a caller that goes on running collects them again
