@@ -17,7 +17,7 @@ def test_the_console_script_is_the_entry():
 
 
 def test_entry_prints_and_exits_as_main():
-    for args, code in ((["check", "examples/rocker_force.toml"], 0), (["solve", "no/such/file.toml"], 2)):
+    for args, code in ((["check", "examples/rocker_force.toml"], 0), (["solve", "examples/no_such_design.toml"], 2)):
         here = cams_cli(*args)
         there = subprocess.run([sys.executable, "-m", "cams.cli", *args], cwd=ROOT, capture_output=True, text=True)
         assert here.returncode == there.returncode == code
