@@ -456,6 +456,10 @@ def design_motion(design: Design, *, method: str | None = None) -> SolveResult:
         notes.append("the designed laws' cam's size is not proven: the exact method's bounds disagree")
     if proven and gap is None:
         notes.append("no gap: the value is 0")
+    elif proven and ld.lower_bound == 0 and value > 0:
+        notes.append("no lower bound above 0 was proven (weak duality proved no smaller value impossible at the "
+                     "accuracy the solver reached): the value is the checked laws' own, how near it is to the least "
+                     "is not known")
     original = {i: base.program.law_of(i) for i in ld.free}
     phases = []
     for i in ld.free:

@@ -185,3 +185,19 @@ def test_the_descent_stopped_at_the_gap_leaves_less_than_its_share(base, rtol, m
     assert full <= early + 1e-12
     assert early - full <= max(GAP_SHARE * (early - lower), rtol * early)
     assert lower < full
+
+
+def test_a_bound_that_proves_nothing_is_said(tmp_path):
+    """translating_force with its rise free, the least pressure angle at 20 spans and no caps: the relaxed programs
+    prove no ratio above 0 at the solver's accuracy. The bound 0 is true but says nothing: a note says so, beside
+    the gap of 1 (either a bound above 0 is proven, or the note is there)."""
+    from cams.cam import Cam
+    from tests.conftest import EXAMPLES
+
+    text = (EXAMPLES / "translating_force.toml").read_text()
+    f = tmp_path / "least_pressure.toml"
+    f.write_text(text + '\n[optimize]\nfree = ["rise"]\nobjective = "pressure_angle"\nspans = 20\n')
+    o = Cam.from_file(f).solution.optimization
+    said = any(n.startswith("no lower bound above 0 was proven") for n in o.notes)
+    assert o.value > 0 and 0 <= o.lower_bound <= o.value
+    assert (o.lower_bound > 0) != said
