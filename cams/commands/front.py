@@ -202,7 +202,8 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
             title=f"{Path(path).name}: {n} designs, {int(usable.sum())} usable",
         )
     if table.dropped:
-        print(f"{path}: {table.dropped} line(s) cut short left out (an interrupted writer)", file=sys.stderr)
+        print(f"{path}: {table.dropped} line(s) left out: another count of cells than the header's (cut short by an "
+              "interrupted writer, or edited)", file=sys.stderr)
     code = EXIT_OK
     if front is not None:
         saved = write_rows(pareto_path(path), table, front.rows, "--pareto")

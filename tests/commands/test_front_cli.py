@@ -264,3 +264,21 @@ def test_a_stream_is_not_a_table(capsys, tmp_path):
         code, _, err = _run(capsys, "front", table, "--pareto", "R0,L")
         assert code == 2 and err.count("\n") == 1, err
         assert "--pareto: the front and the chart are read back from the table: give TABLE a file, not a stream" in err
+
+
+def test_a_line_with_another_count_of_cells_is_left_out_and_said(tmp_path, capsys):
+    """A line with a cell too many (an edit) and one cut short (an interrupted writer): both left out, counted in
+    one line that names neither as the other."""
+    from cams.cli import main
+
+    out = tmp_path / "t.csv"
+    assert main(["sweep", "examples/rocker_force.toml", "--vary", "limits.pressure_angle=30,35,40", "--out", str(out),
+                 "--quiet"]) == 0
+    lines = out.read_text().splitlines()
+    lines[1] += ",extra"
+    lines[2] = lines[2][: len(lines[2]) // 2]
+    out.write_text("\n".join(lines) + "\n")
+    capsys.readouterr()
+    assert main(["front", str(out), "--pareto", "R0,max_pressure_angle_rise"]) == 0
+    err = capsys.readouterr().err
+    assert "2 line(s) left out: another count of cells than the header's" in err
