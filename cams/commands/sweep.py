@@ -72,7 +72,8 @@ def _grid(args):
     for b in bases:
         if args.sweep_file is None and "files" in b.design:
             raise InputError("FILE", f"{b.label!r} is a sweep file: give it as --sweep-file {b.label}")
-    return files, make_grid(bases, vary, mode=mode, method=method)
+    origin = "--vary" if args.sweep_file is None else f"--sweep-file {args.sweep_file}"
+    return files, make_grid(bases, vary, mode=mode, method=method, origin=origin)
 
 
 def _indexes(out: Path, rows: list[dict], size: int) -> set[int]:

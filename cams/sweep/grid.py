@@ -294,9 +294,11 @@ def _probe(base: dict, assign: dict[str, Any]) -> CamsError | None:
     return None
 
 
-def _check_base(base: dict, keys: tuple[str, ...], first: tuple, last: tuple) -> InputError | None:
+def _check_base(base: dict, keys: tuple[str, ...], first: tuple, last: tuple,
+                origin: str = "--vary") -> InputError | None:
     """A base design that is wrong whatever the varied keys are: its error (exit 2, not a table of the same
-    error); an unknown varied key: an ``--vary`` error; None when the rows can say what is wrong."""
+    error); an unknown varied key: an error naming ``origin`` (where the keys were given); None when the rows can
+    say what is wrong."""
     e = _probe(base, dict(zip(keys, first, strict=True)))
     if e is None:
         return None
@@ -305,7 +307,7 @@ def _check_base(base: dict, keys: tuple[str, ...], first: tuple, last: tuple) ->
         if b is not None and str(b) == str(e):
             return e  # type: ignore[return-value]  # the design file's own unknown key
         # a varied key that does not exist in the schema is a mistake in the sweep, not an infeasible design
-        return InputError("--vary", str(e))
+        return InputError(origin, str(e))
     if _involves(getattr(e, "field", "") or "", keys):
         return None  # the varied values may be at fault: the rows say so
     e2 = _probe(base, dict(zip(keys, last, strict=True)))
@@ -314,9 +316,10 @@ def _check_base(base: dict, keys: tuple[str, ...], first: tuple, last: tuple) ->
     return None
 
 
-def _check_kinds(grid: Grid) -> None:
+def _check_kinds(grid: Grid, origin: str = "--vary") -> None:
     """Each value of each key, of every kind given, tried in a design of each base file (the other keys at their
-    first values): a value of the wrong kind for its key is refused, naming the key."""
+    first values): a value of the wrong kind for its key is refused, naming the key and where it was given
+    (``origin``)."""
     for b in grid.files:
         first = dict(zip(grid.keys, (v[0] for v in grid.values), strict=True))
         for key, vals in zip(grid.keys, grid.values, strict=True):
@@ -337,12 +340,15 @@ def _check_kinds(grid: Grid) -> None:
                     same = False
                 if same:
                     what = _message(e)
-                    raise InputError(key, f"{what} (--vary {key}={as_number(v)})")
+                    given = (f"--vary {key}={as_number(v)}" if origin == "--vary"
+                             else f"{origin} [vary] {key} = {as_number(v)!r}")
+                    raise InputError(key, f"{what} ({given})")
 
 
 def make_grid(files: list[BaseFile], vary: list[tuple[str, Any]], *, mode: str = "grid",
-              method: str | None = None) -> Grid:
-    """The sweep's grid, checked before anything is solved.
+              method: str | None = None, origin: str = "--vary") -> Grid:
+    """The sweep's grid, checked before anything is solved. ``origin`` names where the keys and values were given
+    in the errors about them (``"--vary"``, or ``"--sweep-file S.toml"``'s ``[vary]``).
 
     Raises
     ------
@@ -361,31 +367,31 @@ def make_grid(files: list[BaseFile], vary: list[tuple[str, Any]], *, mode: str =
         parts = key_parts(key)
         if parts in seen:
             same = "" if seen[parts] == key else f" (as {seen[parts]!r})"
-            raise InputError("--vary", f"{key!r} is varied twice{same}; give each key once with all its values")
+            raise InputError(origin, f"{key!r} is varied twice{same}; give each key once with all its values")
         seen[parts] = key
     values = tuple(tuple(v.tolist() if isinstance(v, np.ndarray) else v) for _, v in vary)
     for key, vals in zip(keys, values, strict=True):
         if len(vals) == 0:
-            raise InputError("--vary", f"{key!r} has no values")
+            raise InputError(origin, f"{key!r} has no values")
         twice = [v for k, v in enumerate(vals) if v in vals[:k]]
         if mode == "grid" and twice:  # the same designs solved twice (zip pairs may repeat one key's value)
-            raise InputError("--vary", f"{key!r}: the value {as_number(twice[0])!r} is given twice; give each once")
+            raise InputError(origin, f"{key!r}: the value {as_number(twice[0])!r} is given twice; give each once")
     if mode == "zip" and len({len(v) for v in values}) > 1:
         counts = ", ".join(f"{k}: {len(v)}" for k, v in zip(keys, values, strict=True))
         raise InputError("--zip", f"zipped keys give as many values each, got {counts}")
     grid = Grid(files=tuple(files), keys=keys, values=values, mode=mode, method=method)
     count = len(files) * (math.prod(len(v) for v in values) if mode == "grid" else len(values[0]) if values else 1)
     if count > MAX_DESIGNS:
-        raise InputError("--vary", f"the sweep has {count:,} designs; at most {MAX_DESIGNS:,} are accepted")
+        raise InputError(origin, f"the sweep has {count:,} designs; at most {MAX_DESIGNS:,} are accepted")
     first = tuple(v[0] for v in values)
     last = tuple(v[-1] for v in values)
-    errors = [_check_base(b.design, keys, first, last) for b in files]
+    errors = [_check_base(b.design, keys, first, last, origin) for b in files]
     for b, e in zip(files, errors, strict=True):
-        if e is not None and (e.field != "--vary" or all(x is not None for x in errors)):
-            if len(files) > 1 and e.field != "--vary":
+        if e is not None and (e.field != origin or all(x is not None for x in errors)):
+            if len(files) > 1 and e.field != origin:
                 raise InputError(e.field, f"{_message(e)} (in {b.label})")
             raise e
-    _check_kinds(grid)
+    _check_kinds(grid, origin)
     return grid
 
 

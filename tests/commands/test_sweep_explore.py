@@ -413,3 +413,22 @@ def test_a_file_twice_or_a_sweep_file_as_file_is_one_line(tmp_path, capsys):
     assert rc == 2 and f"is a sweep file: give it as --sweep-file {s}" in err
     _one_line(err, "FILE")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["rocker.toml", "s.toml"]
+
+
+@pytest.mark.parametrize(
+    "vary, field, said",
+    [
+        ('"motion[0].law" = ["cycloidal", "nosuchlaw"]', "motion[0].law", "[vary] motion[0].law = 'nosuchlaw'"),
+        ('"limits.pressure_angle" = ["30", "35"]', "limits.pressure_angle", "[vary] limits.pressure_angle = '30'"),
+        ('"follower.arm" = [100, 100]', None, "given twice"),
+    ],
+)
+def test_a_sweep_files_wrong_value_names_the_sweep_file_not_vary(tmp_path, capsys, vary, field, said):
+    """A value given in a sweep file's [vary] is refused naming that file and its [vary] key, not --vary (which the
+    user did not type)."""
+    s = tmp_path / "s.toml"
+    s.write_text(f'files = ["{ROCKER.as_posix()}"]\n[vary]\n{vary}\n')
+    rc, err = _sweep(capsys, "--sweep-file", s, "--out", tmp_path / "t.csv")
+    assert rc == 2 and said in err and "--vary" not in err
+    _one_line(err, field or f"--sweep-file {s}")
+    assert not (tmp_path / "t.csv").exists()
