@@ -202,7 +202,7 @@ def test_a_column_that_cannot_be_compared_is_one_line(swept, capsys, tmp_path, o
 @pytest.fixture(scope="module")
 def parquet_txt(swept):
     """The same sweep as ``swept``'s, written as Parquet under a name that is not ``.parquet``."""
-    pytest.importorskip("pyarrow.parquet")  # the test extra installs it
+    pytest.importorskip("pyarrow.parquet", reason="Parquet tables need pyarrow (the test extra installs it)")
     d = swept[0] / "pq"
     d.mkdir()
     out = d / "x.txt"

@@ -161,7 +161,7 @@ def test_plot_counts_its_pictures(capsys, monkeypatch, tmp_path):
     assert rc == 0 and capsys.readouterr().err == ""
 
 
-@pytest.mark.skipif(not hasattr(os, "register_at_fork"), reason="no fork to guard")
+@pytest.mark.skipif(not hasattr(os, "register_at_fork"), reason="no os.register_at_fork (not POSIX): processes are not forked there, no fork to guard")
 def test_the_bar_does_not_draw_while_the_process_forks(capsys):
     """A process forked while a bar is drawn (cams plot's pictures, a sweep's workers) is forked while the bar's
     thread holds none of its locks: the bar's drawing lock is taken around the fork (held in the child's copy,

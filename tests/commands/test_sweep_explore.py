@@ -217,7 +217,7 @@ def _interrupt_after(monkeypatch, calls_before: int):
 
 
 def test_parquet_round_trip_and_resume(tmp_path, capsys, monkeypatch):
-    pq = pytest.importorskip("pyarrow.parquet")  # the test extra installs it
+    pq = pytest.importorskip("pyarrow.parquet", reason="Parquet tables need pyarrow (the test extra installs it)")
     # each design by itself (--per-design): one design a call, so that the interruption falls between designs (the
     # streaming is the engine's, the same on both paths)
     argv = [ROCKER, "--vary", "follower.arm=100:130:4", "--vary", "motion[0].law=cycloidal", "--jobs", "1",
@@ -285,7 +285,7 @@ def _wait_rows(p: subprocess.Popen, out: Path, at_least: int) -> bool:
     return False
 
 
-@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="signals to a process group")
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the test sends SIGINT to a process group (Linux)")
 def test_killed_and_resumed_loses_and_repeats_no_row(straight_per_design, tmp_path, capsys):
     """The issue's test: interrupted (Ctrl-C, then kill -9), resumed, equal to a straight run."""
     out = tmp_path / "k.csv"
@@ -368,7 +368,7 @@ def test_an_unreadable_sweep_file_names_the_option(tmp_path, capsys, text, said)
 def test_an_unreachable_cluster_is_said_before_any_design(tmp_path, capsys, monkeypatch):
     """A sweep small enough to be all timed in this process never asked for the cluster (exit 0 on this
     machine); a larger one wrote its timed rows, then failed. Now: one line, exit 2, no file left."""
-    pytest.importorskip("distributed")
+    pytest.importorskip("distributed", reason="--dask needs dask.distributed (the test extra installs it)")
     import cams.sweep.cluster
 
     monkeypatch.setattr(cams.sweep.cluster, "CONNECT_TIMEOUT", 0.2)
