@@ -70,7 +70,7 @@ from cams.model.follower import Rocker
 
 __all__ = ["Wedges", "wedges", "phase_wedges", "side_terms", "sample_wedges", "max_violation", "ViolationPeak",
            "ZoneTable", "zone_table", "clear_cache", "Peaks", "scan_peaks", "GRID", "rigid_motion",
-           "side_constants", "scan_positions"]
+           "side_constants", "scan_positions", "turned", "side_offset", "side_slopes"]
 
 #: Even steps per phase of the violation scan (:class:`ZoneTable`).
 GRID = 384
@@ -178,7 +178,7 @@ def side_constants(design: CamDesign, limit: float) -> tuple[np.ndarray, np.ndar
     return n0, P0, Q0
 
 
-def _turn(c: np.ndarray, s: np.ndarray, x, y) -> tuple[np.ndarray, np.ndarray]:
+def turned(c: np.ndarray, s: np.ndarray, x, y) -> tuple[np.ndarray, np.ndarray]:
     """Components of the vector ``(x, y)`` turned by the angle whose cosine and sine are ``c``, ``s``."""
     return c * x - s * y, s * x + c * y
 
@@ -192,15 +192,15 @@ def phase_wedges(design: CamDesign, i: int, limit: float, u: np.ndarray) -> Wedg
     c, sn = np.cos(turn * m.s)[:, None], np.sin(turn * m.s)[:, None]
     n = len(u)
     normals = np.empty((n, 2, 2))
-    normals[..., 0], normals[..., 1] = _turn(c, sn, n0[:, 0], n0[:, 1])
+    normals[..., 0], normals[..., 1] = turned(c, sn, n0[:, 0], n0[:, 1])
     apex = np.empty((n, 2, 2))
     dx = P0[:, 0] + m.ds[:, None] * Q0[0]
     dy = P0[:, 1] + m.ds[:, None] * Q0[1]
-    ex, ey = _turn(c, sn, dx, dy)
+    ex, ey = turned(c, sn, dx, dy)
     apex[..., 0] = ex + tau[0] * m.s[:, None]
     apex[..., 1] = ey + tau[1] * m.s[:, None]
     b0 = np.einsum("ki,ki->k", n0, P0)
-    offsets = _offset(b0, n0 @ Q0, n0 @ tau, m.s[:, None], m.ds[:, None])
+    offsets = side_offset(b0, n0 @ Q0, n0 @ tau, m.s[:, None], m.ds[:, None])
     p = design.program
     phi = p.starts[i] + u * p.phases[i].angle
     return Wedges(phase=np.full(n, i), phi=phi, normals=normals, offsets=offsets, apex=apex,
@@ -237,22 +237,22 @@ def side_terms(design: CamDesign, limit: float, s: np.ndarray, ds: np.ndarray,
     n0, P0, Q0 = side_constants(design, limit)
     c, sn = np.cos(turn * s)[:, None], np.sin(turn * s)[:, None]
     normals = np.empty((s.size, 2, 2))
-    normals[..., 0], normals[..., 1] = _turn(c, sn, n0[:, 0], n0[:, 1])
+    normals[..., 0], normals[..., 1] = turned(c, sn, n0[:, 0], n0[:, 1])
     b0 = np.einsum("ki,ki->k", n0, P0)
     b1, bt = n0 @ Q0, n0 @ tau
     O = np.asarray(centre, dtype=float)
     p = normals @ O
-    h = p - _offset(b0, b1, bt, s[:, None], ds[:, None])
+    h = p - side_offset(b0, b1, bt, s[:, None], ds[:, None])
     m = normals[..., 0] * O[1] - normals[..., 1] * O[0]
     return h, turn * m - bt, np.broadcast_to(-b1, h.shape).copy(), normals
 
 
-def _offset(b0, b1, bt, s, ds):
+def side_offset(b0, b1, bt, s, ds):
     """``n . D``: the offset of a side's half-plane at displacement ``s`` and analogue velocity ``ds``."""
     return b0 + b1 * ds + bt * s
 
 
-def _slopes(turn, O, nx, ny, p, b1, bt, ds, d2s, d3s=None):
+def side_slopes(turn, O, nx, ny, p, b1, bt, ds, d2s, d3s=None):
     """``h'`` and, given ``s'''``, also ``h''`` along the cam angle (module notes); ``p = n . O``."""
     m = nx * O[1] - ny * O[0]
     d1 = turn * ds * m - b1 * d2s - bt * ds
@@ -404,8 +404,8 @@ def _zone_table(design: CamDesign, grid: int) -> ZoneTable:
     angle = np.array([design.program.phases[i].angle for i, _ in phases])
     sides = np.stack([n0[..., 0], n0[..., 1], b0, b1, bt, np.repeat(angle[:, None], 2, axis=1)], axis=-1)
     sides = sides.reshape(2 * P, 6)
-    nx, ny = _turn(c, sn, n0[..., 0, None], n0[..., 1, None])
-    off = _offset(B0, B1, BT, s, ds)
+    nx, ny = turned(c, sn, n0[..., 0, None], n0[..., 1, None])
+    off = side_offset(B0, B1, BT, s, ds)
     return ZoneTable(
         design=design, phases=tuple(i for i, _ in phases), limit=np.array([lim for _, lim in phases], float),
         turn=turn, n0=n0, b0=b0, b1=b1, bt=bt,
@@ -482,13 +482,13 @@ def _refine(t: ZoneTable, O: np.ndarray, jk, i, cell, H, iters: int) -> Peaks:
                     mo[:, lo:hi] = t.motion(jj, x[lo:hi])
             s, ds, d2s, d3s = mo
             if turn:
-                nx, ny = _turn(np.cos(turn * s), np.sin(turn * s), n0x, n0y)
+                nx, ny = turned(np.cos(turn * s), np.sin(turn * s), n0x, n0y)
             else:
                 nx, ny = n0x, n0y
             p = nx * O[0] + ny * O[1]
-            off = _offset(b0, b1, bt, s, ds)
+            off = side_offset(b0, b1, bt, s, ds)
             hx = p - off
-            d1, d2 = _slopes(turn, O, nx, ny, p, b1, bt, ds, d2s, d3s)
+            d1, d2 = side_slopes(turn, O, nx, ny, p, b1, bt, ds, d2s, d3s)
             better = active & (hx > best_v)
             for dst, src in ((best_u, x), (best_v, hx), (best_x, nx), (best_y, ny), (best_c, off)):
                 np.copyto(dst, src, where=better)
@@ -518,7 +518,7 @@ def scan_peaks(t: ZoneTable, centre: np.ndarray, *, iters: int = 8) -> Peaks:
     O = np.asarray(centre, dtype=float)
     p = t.nx * O[0] + t.ny * O[1]
     h = p - t.off
-    h1, h2 = _slopes(t.turn, O, t.nx, t.ny, p, t.sides[:, 3].reshape(-1, 2, 1), t.sides[:, 4].reshape(-1, 2, 1),
+    h1, h2 = side_slopes(t.turn, O, t.nx, t.ny, p, t.sides[:, 3].reshape(-1, 2, 1), t.sides[:, 4].reshape(-1, 2, 1),
                      t.ds, t.d2s, t.d3s)
     up, down = h1 > 0, h1 < 0
     point = ~up & ~down

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from optimize.planar import EPS
-from optimize.zone import GRID, rigid_motion, scan_positions, side_constants
+from optimize.zone import GRID, rigid_motion, scan_positions, side_constants, side_offset, side_slopes, turned
 
 __all__ = ["BatchSizing", "size_group"]
 
@@ -81,10 +81,10 @@ def _constants(designs, phases):
 
 
 def _lines(turn, n0x, n0y, b0, b1, bt, s, ds):
-    """Half-planes ``nx x + ny y <= off`` at motion ``s, s'`` (broadcast): :mod:`optimize.zone`'s formulas."""
+    """Half-planes ``nx x + ny y <= off`` at motion ``s, s'`` (broadcast): :mod:`optimize.zone`'s sides."""
     a = turn * s
-    c, sn = np.cos(a), np.sin(a)
-    return c * n0x - sn * n0y, sn * n0x + c * n0y, b0 + b1 * ds + bt * s
+    nx, ny = turned(np.cos(a), np.sin(a), n0x, n0y)
+    return nx, ny, side_offset(b0, b1, bt, s, ds)
 
 
 def _best_of_three(lines: np.ndarray, tol: np.ndarray):
@@ -346,9 +346,7 @@ def _peaks(rows, O, grid, turn, n0, b0, b1, bt, scale, program, phases, angle, u
             lx, ly, lo_off = _lines(tn, n0x, n0y, c0, c1, ct, S, D1)
             pp = lx * Ox + ly * Oy
             hx = pp - lo_off
-            mm = lx * Oy - ly * Ox
-            g1 = tn * D1 * mm - c1 * D2 - ct * D1
-            g2 = tn * (D2 * mm - tn * D1 * D1 * pp) - c1 * D3 - ct * D2
+            g1, g2 = side_slopes(tn, (Ox, Oy), lx, ly, pp, c1, ct, D1, D2, D3)
             sel = act[hx > best_v[act]]
             better = hx > best_v[act]
             best_v[sel], best_u[sel] = hx[better], x[better]
