@@ -40,8 +40,14 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progre
     names = [name for name in (*presenter(cam).pictures, "optimized") if name in which]
     forked = workers(jobs, len(names) + turn) > 1
 
-    def render(name: str) -> dict[str, bytes]:  # a face's picture by the kind it draws; "optimized" as it is
-        return plots.rendered(plots.mark_failing(plots.picture(presenter(cam).pictures.get(name, name), cam), title))
+    def render(name: str) -> dict[str, bytes]:
+        if name == "optimized":
+            from cams.present.motion_plots import plot_motion_design
+
+            fig = plot_motion_design(cam)
+        else:
+            fig = plots.picture(presenter(cam).pictures[name], cam)
+        return plots.rendered(plots.mark_failing(fig, title))
 
     def animate() -> dict[str, bytes]:
         import tempfile
@@ -55,7 +61,7 @@ def draw(cam, which: tuple[str, ...], out: Path, *, title: str = "", bar: Progre
 
     plots.prepare()
     tasks = [partial(render, name) for name in names] + ([animate] if turn else [])
-    effort = [plots.EFFORT[presenter(cam).pictures.get(name, name)] for name in names] + [20] * turn
+    effort = [plots.EFFORT.get(presenter(cam).pictures.get(name, ""), 10) for name in names] + [20] * turn
     if tasks:
         bar.stage(f"drawing {len(names)} picture{'' if len(names) == 1 else 's'}" + (" and one turn" * turn))
     # a step a picture, and the turn's when it was drawn elsewhere (here, its frames count it)

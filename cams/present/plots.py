@@ -779,16 +779,7 @@ PICTURES = {
     "forces": lambda cam: plot_forces(cam),
     "contact": lambda cam: plot_contact(cam),
     "vibration": lambda cam: plot_vibration(cam),
-    "optimized": lambda cam: _motion_design(cam),
 }
-
-
-def _motion_design(cam):
-    """The designed laws beside the original ones (:func:`cams.present.motion_plots.plot_motion_design`, which
-    draws with this module's helpers: imported when drawn)."""
-    from cams.present.motion_plots import plot_motion_design
-
-    return plot_motion_design(cam)
 
 
 def no_vibration(cam) -> str | None:
@@ -879,8 +870,8 @@ def plot_vibration(cam):
 
 #: How long each kind of picture takes to draw, relative to the others (CPU seconds x 10 on the examples): the
 #: order in which processes drawing side by side take them up (:func:`cams.present.forked.forked_map`).
-EFFORT = {"optimized": 10, "zone": 8, "vibration": 6, "motion": 5, "forces": 5, "profile": 4, "contact": 4,
-          "curvature": 4, "pressure": 2, "flat_pressure": 2}
+EFFORT = {"zone": 8, "vibration": 6, "motion": 5, "forces": 5, "profile": 4, "contact": 4, "curvature": 4,
+          "pressure": 2, "flat_pressure": 2}
 
 #: The pictures drawn only for a design that has their data, each with why not (None: it has it).
 NEEDS = {

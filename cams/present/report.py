@@ -78,11 +78,15 @@ def _drawings(cam):
     def draw(kind: str):
         return plots.mark_failing(plots.picture(kind, cam), title)
 
+    def draw_design():
+        from cams.present.motion_plots import plot_motion_design
+
+        return plots.mark_failing(plot_motion_design(cam), title)
+
     out: list[tuple[str, str, Callable[[], Any]]] = [(name, kind, partial(draw, kind)) for name, kind in
                                                     presenter(cam).report_pictures if drawn(kind)]
     if cam.solution.optimization is not None:
-        out.append(("Motion design: the designed laws and cam beside the original", "optimized",
-                    partial(draw, "optimized")))
+        out.append(("Motion design: the designed laws and cam beside the original", "optimized", draw_design))
     return out
 
 
@@ -288,7 +292,7 @@ def write_report(cam, out: str | Path, *, source: str | Path | None = None, jobs
     data = report_data(cam, source=source, sections=sections)
     prepare()
     drawn = forked_map([partial(_drawn_svg, draw) for _, _, draw in drawings], jobs=jobs,
-                       effort=[EFFORT[kind] for _, kind, _ in drawings], note=note)
+                       effort=[EFFORT.get(kind, 10) for _, kind, _ in drawings], note=note)
     svgs = [(title, *svg) for (title, _, _), svg in zip(drawings, drawn, strict=True)]
 
     def write_pdf(tmp):

@@ -236,10 +236,3 @@ def test_no_child_outlives_an_interrupted_or_killed_parent(tmp_path, how):
         for c in children:
             if _alive(c):
                 os.kill(c, signal.SIGKILL)
-
-
-def test_every_picture_has_an_effort():
-    """The pictures are handed out by their effort (plots.EFFORT): every kind drawn has one."""
-    from cams.present import plots
-
-    assert set(plots.EFFORT) == set(plots.PICTURES)
