@@ -102,7 +102,16 @@ def _indexes(out: Path, rows: list[dict], size: int) -> set[int]:
 def _run(args, state: dict) -> int:
     from cams.io.files import check_output_paths
     from cams.sweep import run_grid
-    from cams.sweep.output import check_identity, check_out, csv_header, parts_dir, read_rows, sink_for, write_identity
+    from cams.sweep.output import (
+        check_identity,
+        check_out,
+        csv_header,
+        failed,
+        parts_dir,
+        read_rows,
+        sink_for,
+        write_identity,
+    )
 
     check_jobs(args.jobs)
     ins = [("FILE", f) for f in (args.files or [])] + ([("--sweep-file", args.sweep_file)] if args.sweep_file else [])
@@ -127,8 +136,7 @@ def _run(args, state: dict) -> int:
         check_identity(out, identity)
         rows = read_rows(fmt, out, grid.keys)
         done = _indexes(out, rows, grid.size)
-        before_failed = sum(1 for r in rows if r.get("error") not in (None, "") or
-                            r.get("failures") not in (None, ""))
+        before_failed = sum(map(failed, rows))
     else:
         write_identity(out, identity)
     append = bool(done) or (fmt == "parquet" and args.resume)
@@ -163,14 +171,14 @@ def _run(args, state: dict) -> int:
             shutil.rmtree(parts_dir(out), ignore_errors=True)
         raise
     sink.close(finished=True)
-    failed = res.failed + before_failed
+    infeasible = res.failed + before_failed
     none = "" if not done else f", {len(done)} resumed"
     # one rule for every command (cams.assess): a row without a solution, or not usable (certified, verified,
     # buildable)
-    print(f"{out}: {_n(grid.size, 'design')} ({failed} infeasible: without a solution, or not certified, verified or "
-          f"buildable{none}); {res.solved} solved in {res.seconds:.2f} s, {res.per_second:.1f} designs/s on "
+    print(f"{out}: {_n(grid.size, 'design')} ({infeasible} infeasible: without a solution, or not certified, verified "
+          f"or buildable{none}); {res.solved} solved in {res.seconds:.2f} s, {res.per_second:.1f} designs/s on "
           f"{res.workers} process(es)", file=sys.stderr)
-    code = EXIT_OK if failed == 0 else EXIT_CHECK_FAILED
+    code = EXIT_OK if infeasible == 0 else EXIT_CHECK_FAILED
     return max(code, _after_sweep(args, out))
 
 

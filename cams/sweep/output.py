@@ -110,8 +110,15 @@ def csv_row(row: dict) -> list[str]:
 
 
 def failed(row: dict) -> bool:
-    """A row that is not usable: no solution (an ``error``) or failures of the one rule (:mod:`cams.assess`)."""
-    return bool(row.get("error")) or bool(row.get("failures"))
+    """A row that is not usable: no solution (an ``error``) or failures of the one rule (:mod:`cams.assess`).
+
+    Either cell counts when it holds something: None, NaN (an empty Parquet cell) and blank text are empty, as
+    in a table read back."""
+    return _given(row.get("error")) or _given(row.get("failures"))
+
+
+def _given(v) -> bool:
+    return bool(v) and not (isinstance(v, float) and math.isnan(v)) and not (isinstance(v, str) and not v.strip())
 
 
 #: What a sidecar's name ends with: ``OUT.sweep.json`` beside the table ``OUT``.

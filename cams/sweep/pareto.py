@@ -135,12 +135,11 @@ def non_dominated(points: np.ndarray, maximise: Sequence[bool] | None = None) ->
 
 
 def usable_mask(error: Sequence, failures: Sequence) -> np.ndarray:
-    """True for the rows with neither an ``error`` nor ``failures`` (None, NaN and ``""`` are empty)."""
-
-    def empty(v) -> bool:
-        return v is None or (isinstance(v, float) and np.isnan(v)) or (isinstance(v, str) and not v.strip())
-
-    return np.array([empty(e) and empty(f) for e, f in zip(error, failures, strict=True)], dtype=bool)
+    """True for the rows with neither an ``error`` nor ``failures`` (None, NaN and ``""`` are empty): the rows
+    :func:`cams.sweep.output.failed` passes."""
+    from cams.sweep.output import failed  # the package's __init__ imports this module: no cycle at import
+    return np.array([not failed({"error": e, "failures": f}) for e, f in zip(error, failures, strict=True)],
+                    dtype=bool)
 
 
 @dataclass(frozen=True)
