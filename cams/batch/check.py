@@ -276,15 +276,13 @@ def _check(designs, centres: np.ndarray, program) -> GroupCheck:
     rise = np.full(B, np.nan)
     ret = np.full(B, np.nan)
     excess = np.full(B, -np.inf)
-    lims = [dict(d.constrained_phases()) for d in designs]
     for q, i in enumerate(moving):
         col = g[:, q]
         if kinds[i] == "rise":
             rise = np.fmax(rise, col)
         else:
             ret = np.fmax(ret, col)
-        lim = np.array([lm.get(i, np.inf) for lm in lims])
-        excess = np.maximum(excess, col - lim)
+        excess = np.maximum(excess, col - np.where(np.isnan(inv.limits[i]), np.inf, inv.limits[i]))
     # the safety factor K_C of a rocker (seed 3.26): the independent check's moved lines, over the constrained phases
     if (inv.factor > 1.0).any():
         limited = {i: grid[i] for i in moving if np.isfinite(inv.limits[i]).any()}
