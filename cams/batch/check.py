@@ -32,13 +32,12 @@ from typing import Any
 
 import numpy as np
 
+from cams.verify.pressure import ZOOM_POINTS, ZOOM_STEPS  # the independent check's zoom, the same
+
 __all__ = ["GroupCheck", "check_group", "GRID", "ZOOM_POINTS", "ZOOM_STEPS"]
 
 #: Even steps per phase of the search.
 GRID = 300
-#: Points of a bracket at each zoom step, and the zoom steps (the bracket ends 1e-10 times a step wide).
-ZOOM_POINTS = 21
-ZOOM_STEPS = 10
 #: Designs checked at once.
 CHUNK = 64
 #: Even steps of a dwell (its values are constant but for the profile's outline, an arc round the cam centre).
