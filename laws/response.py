@@ -455,7 +455,7 @@ def response(program: Program, train: Train, phi, y0: np.ndarray, *, start: floa
             X[:, sel] = x, rho * v, rho**2 * acc
             S[:, sel] = s0, s1
         y = (flow(sp.end - sp.start) @ _start(sp, y))[:2]
-    load = r * (S[0] - X[0]) + 2 * zeta * (S[1] - X[1]) / rho
+    load = _load(r, zeta, rho, S[0], S[1], X[0], X[1])
     shape = phi.shape
     return Response(phi, *(a.reshape(shape) for a in (X[0], X[1], X[2], S[0], S[1], load)))
 
@@ -489,8 +489,15 @@ def grid_response(program: Program, train: Train, y0: np.ndarray, samples: int) 
             X[:, k0:k1] = x, rho * v, rho**2 * acc
             S[:, k0:k1] = s0, s1
         y = (flow(sp.end - sp.start) @ start)[:2]
-    load = r * (S[0] - X[0]) + 2 * zeta * (S[1] - X[1]) / rho
+    load = _load(r, zeta, rho, S[0], S[1], X[0], X[1])
     return Response(phi, X[0], X[1], X[2], S[0], S[1], load)
+
+
+def _load(r, zeta, rho, s, ds, x, dx):
+    """The train's load ``Q`` (dimensionless, the spring's and damper's across the train): ``r (s - x) +
+    2 zeta (s' - x') / rho``, ``s, s'`` the rigid motion and ``x, x'`` the output and their derivatives in the cam
+    angle; the one formula of every response here."""
+    return r * (s - x) + 2 * zeta * (ds - dx) / rho
 
 
 def _oscillators(rho: np.ndarray, zeta: float, t: float) -> np.ndarray:
@@ -604,7 +611,7 @@ def grid_least_loads(
             for j in range(1, k1 - k0):
                 xs[j] = np.einsum("kij,kj->ki", sa, xs[j - 1]) + push[j - 1]
             s1 = zs[:, 1] if sp.generator.shape[0] >= 2 else np.zeros(k1 - k0)
-            load = ratio * (zs[:, :1] - xs[..., 0]) + 2 * zeta * (s1[:, None] - rho * xs[..., 1]) / rho
+            load = _load(ratio, zeta, rho, zs[:, :1], s1[:, None], xs[..., 0], rho * xs[..., 1])
             least = np.minimum(least, np.min(load, axis=0))
             size = np.maximum(size, np.max(np.abs(load), axis=0))
         ea, ec, _ = flow(g, y, sp.end - sp.start)
