@@ -394,9 +394,8 @@ class Vibration:
     contact_lost_at : float or None
         The first sampled cam angle (rad) with ``Q < 0`` under force closure.
     jump_search : JumpSearch or None
-        The dynamic jump speed's search, run when :attr:`jump_rpm` is first read; None under form closure.
-    jump_top_rpm : float
-        The top of the search (rev/min).
+        The dynamic jump speed's search, run when :attr:`jump_rpm` is first read (its ``top_rpm``: the top of the
+        search, rev/min); None under form closure.
     flight : Flight or None
         The event-driven response when contact is lost.
     force_closed : bool
@@ -416,7 +415,6 @@ class Vibration:
     phases: tuple[PhaseVibration, ...]
     contact_lost_at: float | None
     jump_search: JumpSearch | None
-    jump_top_rpm: float
     flight: Flight | None
     force_closed: bool
 
@@ -433,6 +431,11 @@ class Vibration:
         speed, its assessment and its pictures do not need it.
         """
         return None if self.jump_search is None else self.jump_search.run()
+
+    @property
+    def jump_top_rpm(self) -> float | None:
+        """The top of the jump speed's search (rev/min); None under form closure (no search)."""
+        return None if self.jump_search is None else self.jump_search.top_rpm
 
     @property
     def rpm(self) -> float:
@@ -505,9 +508,9 @@ def vibration(
         phases.append(PhaseVibration(i, p.kind, float(rho * p.angle / TWO_PI), rest, steady))
     lost = np.flatnonzero(load < 0) if tm.force_closed else np.array([], int)
     lost_at = float(r.phi[lost[0]]) if lost.size else None
-    top = 3 * max(n_rpm, rigid_jump_rpm if rigid_jump_rpm and np.isfinite(rigid_jump_rpm) else 0.0)
     search = None
     if tm.force_closed:
+        top = 3 * max(n_rpm, rigid_jump_rpm if rigid_jump_rpm and np.isfinite(rigid_jump_rpm) else 0.0)
         speeds = [n for n in (n_rpm, rigid_jump_rpm) if n is not None and 0 < n < np.inf]
         start = 0.05 * min(speeds)  # a rigid jump speed of 0 (a velocity drop) is no place to start
         search = JumpSearch(prog, tm, start, top, samples)  # run only when the jump speed is read
@@ -530,7 +533,6 @@ def vibration(
         tuple(phases),
         lost_at,
         search,
-        top,
         flight,
         tm.force_closed,
     )
