@@ -206,7 +206,7 @@ Element = Line | Arc | SplinePiece
 
 def _unit_normal(b1: np.ndarray) -> np.ndarray:
     """The unit left normal ``(-y', x') / |B'|`` of tangents ``b1`` (..., 2)."""
-    return np.stack([-b1[..., 1], b1[..., 0]], axis=-1) / np.hypot(b1[..., 0], b1[..., 1])[..., None]
+    return perp(b1) / np.hypot(b1[..., 0], b1[..., 1])[..., None]
 
 
 def check_closed(elements: list[Element], field: str = "PROFILE") -> None:
@@ -680,7 +680,7 @@ def _knife_normal(e: Element, foot: np.ndarray, q: np.ndarray, qs: np.ndarray) -
         ts = np.linspace(0, 1, 65)
         j = int(np.argmin([np.hypot(*(e.derivatives(t)[0] - foot)) for t in ts]))
         b1 = e.derivatives(ts[j])[1]
-        n = perp(b1 / np.hypot(*b1))
+        n = _unit_normal(b1)
     return n if float(n @ qs) > 0 else -n
 
 

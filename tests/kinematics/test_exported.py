@@ -365,3 +365,18 @@ def test_a_joint_takes_the_nearer_side_of_the_law():
         assert np.max(_law_errors(d, c)) < 1e-9
     c = Contact(joint, np.array([10.0]), np.array([0.0]), np.array([1.0]), np.array([0]))
     assert _law_errors(d, c)[2, 0] == pytest.approx(1.0)
+
+
+def test_a_pieces_derivatives_at_one_number_are_its_derivatives_bit_for_bit():
+    """SplinePiece._derivatives_at (Python floats, for the root searches) promises the same IEEE results as
+    SplinePiece.derivatives (numpy): compared exactly, at the ends and inside, on rational pieces (w != 1)."""
+    rng = np.random.default_rng(7)
+    pieces = _bezier_circle(RC, 2.0, -3.0)
+    c = np.array(pieces[0].coeffs, float)
+    c[:, 2] += np.array([0.1, -0.2, 0.3, 0.0])  # a rational piece: its weight varies along it
+    pieces.append(SplinePiece(c))
+    for p in pieces:
+        for t in [0.0, 1.0, 0.5, *rng.uniform(0.0, 1.0, 20)]:
+            fast, ref = p._derivatives_at(float(t)), p.derivatives(float(t))
+            for a, b in zip(fast, ref, strict=True):
+                assert np.array_equal(a, b), (t, a, b)
