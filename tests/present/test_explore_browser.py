@@ -104,8 +104,12 @@ CASES = {
     ),
 }
 
+#: Pages of a test of their own (not dragged): the example each edits.
+OTHER_PAGES = {"translating_flat_offset": "translating_flat.toml"}
+
 #: The cases that edit their example: (table, key) -> value, as written in the file.
-EDITS = {"rocker_flat_offset": {("follower", "face_offset"): "15.0"}}
+EDITS = {"rocker_flat_offset": {("follower", "face_offset"): "15.0"},
+         "translating_flat_offset": {("follower", "offset"): "12.0"}}
 
 #: The cases of the button and slider tests: one of each face and follower.
 BASIC = ["rocker_form", "translating_force", "rocker_flat"]
@@ -139,7 +143,7 @@ def _with(text: str, table: str, key: str, value: str) -> str:
 
 def _design_text(name: str) -> str:
     """The case's design file: its example with the case's edits."""
-    text = (EXAMPLES / CASES[name][0]).read_text(encoding="utf-8")
+    text = (EXAMPLES / (CASES[name][0] if name in CASES else OTHER_PAGES[name])).read_text(encoding="utf-8")
     for (table, key), value in EDITS.get(name, {}).items():
         text = _with(text, table, key, value)
     return text
@@ -441,3 +445,32 @@ def test_no_feasible_zone_the_page_opens_and_says_why(browser, tmp_path, shots):
         assert _state(page)["inside"] is False, (x, y)
     assert blocked == [] and errors == [], (blocked, errors)
     page.context.close()
+
+
+def test_a_translating_flat_faces_stem_is_on_its_axis(browser, pages, shots):
+    """translating_flat with its axis 12 mm off the cam centre: the page draws the stem where cams plot's picture
+    has it (cams.present.mechanism: the face's origin on the follower's axis), +12 mm from the cam centre."""
+    from matplotlib.figure import Figure
+
+    from cams.cam import Cam
+    from cams.present.mechanism import draw_flat_mechanism
+
+    design, html = pages("translating_flat_offset")
+    cam = Cam.from_file(design)
+    ax = Figure().add_subplot()
+    draw_flat_mechanism(ax, cam, cam.profile, 0.0)  # the follower's frame
+    body = [ln for ln in ax.lines if ln.get_label() == "follower (flat face and stem)"]  # the face, the stem
+    (stem,) = [ln for ln in body if ln.get_xdata()[0] == ln.get_xdata()[-1]]  # the stem: upright
+    expected = float(stem.get_xdata()[0] - cam.solution.centre[0])  # the stem's x from the cam centre, mm
+    assert expected == pytest.approx(12.0)
+    page, blocked, errors = open_offline(browser, html)
+    try:
+        x1, x2 = page.evaluate(
+            "() => { const s = document.querySelector('[data-part=stem]');"
+            " return [Number(s.getAttribute('x1')), Number(s.getAttribute('x2'))]; }"
+        )
+        page.screenshot(path=str(shots / "translating_flat_offset.png"))
+    finally:
+        page.close()
+    assert x1 == x2 == pytest.approx(expected)
+    assert blocked == [] and errors == []
