@@ -23,6 +23,8 @@ import sys
 from collections.abc import Callable, Sequence
 from typing import TypeVar
 
+from cams.io.processes import cores, end_pool, ignore_sigint, sigint_held
+
 __all__ = ["forked_map", "workers"]
 
 T = TypeVar("T")
@@ -36,7 +38,7 @@ def workers(jobs: int | None, tasks: int) -> int:
     """How many processes draw ``tasks`` drawings: ``jobs`` (None: every core this process may use), at most one per
     task (a huge ``jobs`` starts no more), and 1 where processes are not forked (not Linux)."""
     if jobs is None:
-        jobs = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+        jobs = cores()
     if not sys.platform.startswith("linux"):
         return 1
     return max(1, min(jobs, tasks))
@@ -63,8 +65,7 @@ _PR_SET_PDEATHSIG = 1
 def _child() -> None:
     """What a child does first: Ctrl-C is left to the parent (which ends the children: no traceback from each),
     and the child ends with the parent however that ends (killed, it leaves no child waiting for work for ever)."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # held back while it was forked
+    ignore_sigint()
     try:
         import ctypes
 
@@ -131,11 +132,8 @@ def _forked(tasks, n, done, effort, note, results, failed) -> None:
         first = sorted(range(len(tasks)), key=lambda k: -effort[k]) if effort is not None else range(len(tasks))
         # Ctrl-C held back while the children are forked (all at the first submit): none gets it before it
         # ignores it; it reaches this process just after
-        old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
-        try:
+        with sigint_held():
             index = {pool.submit(_run, k): k for k in first}
-        finally:
-            signal.pthread_sigmask(signal.SIG_SETMASK, old)
         pending = set(index)
         broken = False
         while pending and not failed and not broken:
@@ -168,8 +166,5 @@ def _forked(tasks, n, done, effort, note, results, failed) -> None:
         if whole:
             pool.shutdown(wait=True)
         else:  # the children are ended now: a Ctrl-C or a failure does not wait for the drawings under way
-            for p in list((getattr(pool, "_processes", None) or {}).values()):
-                if p.is_alive():
-                    p.kill()
-            pool.shutdown(wait=True, cancel_futures=True)
+            end_pool(pool)
         gc.unfreeze()  # a caller that goes on running collects them again

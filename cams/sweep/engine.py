@@ -18,13 +18,12 @@ from __future__ import annotations
 
 import contextlib
 import math
-import os
-import signal
 import time
 from collections.abc import Callable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Executor, Future, ProcessPoolExecutor, wait
 from typing import Any
 
+from cams.io.processes import cores, end_pool, ignore_sigint, sigint_held
 from cams.sweep.grid import Chunk, Grid
 from cams.sweep.output import COLUMNS
 from laws.errors import CamsError, InputError, SolverError
@@ -46,35 +45,6 @@ MAX_BATCH_CHUNK = 256
 BATCH_TIMED = 32
 
 
-def _ignore_sigint() -> None:
-    """In the workers: Ctrl-C is the parent's to handle (it stops the pool); no traceback per process."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    if hasattr(signal, "pthread_sigmask"):
-        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
-
-
-@contextlib.contextmanager
-def _sigint_held():
-    """Hold SIGINT back (POSIX) while the pool forks its workers, so that none gets it before ignoring it."""
-    if not hasattr(signal, "pthread_sigmask"):
-        yield
-        return
-    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
-    try:
-        yield
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, old)
-
-
-def _stop(ex: ProcessPoolExecutor) -> None:
-    """Shut the pool down now: cancel the pending designs, end the running ones."""
-    procs = list((getattr(ex, "_processes", None) or {}).values())
-    for p in procs:
-        if p.is_alive():
-            p.terminate()
-    ex.shutdown(wait=True, cancel_futures=True)
-
-
 class _Here(Executor):
     """One worker: the chunks run in this process when submitted (Ctrl-C reaches them directly)."""
 
@@ -91,7 +61,7 @@ class _Pool(ProcessPoolExecutor):
     """A process pool whose workers ignore Ctrl-C; its workers start with SIGINT held back."""
 
     def submit(self, fn, /, *args, **kwargs):
-        with _sigint_held():  # a Ctrl-C while a worker starts reaches this process only, just after
+        with sigint_held():  # a Ctrl-C while a worker starts reaches this process only, just after
             return super().submit(fn, *args, **kwargs)
 
 
@@ -122,9 +92,9 @@ def executor(spec: str | None, workers: int) -> Iterator[tuple[Executor, Callabl
     if workers == 1:
         yield _Here(), lambda: None
         return
-    ex = _Pool(max_workers=workers, initializer=_ignore_sigint)
+    ex = _Pool(max_workers=workers, initializer=ignore_sigint)
     try:
-        yield ex, lambda: _stop(ex)
+        yield ex, lambda: end_pool(ex)
     finally:
         ex.shutdown(wait=True, cancel_futures=True)
 
@@ -248,7 +218,7 @@ def workers_for(workers: int | None, n: int) -> int:
     :data:`MAX_WORKERS_PER_CPU` per core."""
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
         raise InputError("workers", f"must be an integer >= 1 (processes), got {workers!r}")
-    cpus = os.cpu_count() or 1
+    cpus = cores()
     return max(1, min(workers or cpus, n, MAX_WORKERS_PER_CPU * cpus))
 
 
