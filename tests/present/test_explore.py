@@ -23,6 +23,7 @@ import pytest
 
 from cams.cam import Cam
 from cams.io.designfile import design_from_dict, load_design
+from cams.kinematics.inversion import invert, pressure_angle
 from cams.present.explore import explore_data, page
 from tests.conftest import EXAMPLES, rocker_dict
 
@@ -186,16 +187,20 @@ def test_a_name_cannot_end_the_script():
 # -- the page's numbers against cams check ------------------------------------------------------------------------
 
 
-def _checked(cam, centre):
-    """``cams check``'s numbers at ``[cam] centre = centre``: the chosen cam's solve report (as ``--json``); what
-    a chosen centre fixes (L, the offset) and the floor are taken off the file, as they must be."""
+def _chosen_design(cam, centre):
+    """The design with ``[cam] centre = centre``: what a chosen centre fixes (L, the offset) and the floor are
+    taken off the file, as they must be."""
     d = cam.design
     f = d.follower
     if getattr(f, "offset", None) is not None:
         f = replace(f, offset=None)
     lim = replace(d.limits, centre_distance=None, min_base_radius=None)
-    d = d.with_(follower=f, limits=lim, base_radius=None, objective="R0", centre=(float(centre[0]), float(centre[1])))
-    return Cam(d).solution.to_dict()
+    return d.with_(follower=f, limits=lim, base_radius=None, objective="R0", centre=(float(centre[0]), float(centre[1])))
+
+
+def _checked(cam, centre):
+    """``cams check``'s numbers at ``[cam] centre = centre``: the chosen cam's solve report (as ``--json``)."""
+    return Cam(_chosen_design(cam, centre)).solution.to_dict()
 
 
 def _sized(cam, R0, L):
@@ -213,7 +218,8 @@ def _run_node(html: str, calls: list) -> list:
         "const m = camsMath(inp.data);\n"
         "console.log(JSON.stringify(inp.calls.map((a) => { const e = m.evaluate(...a);"
         " return { state: m.state(...a), minRho: e.minRho === undefined ? null : e.minRho,"
-        " rhoBound: e.rhoBound === undefined ? null : e.rhoBound }; })));"
+        " rhoBound: e.rhoBound === undefined ? null : e.rhoBound,"
+        " riseAt: e.riseAt === undefined ? null : e.riseAt, retAt: e.retAt === undefined ? null : e.retAt }; })));"
     )
     out = subprocess.run(
         [NODE, "-e", script],
@@ -255,6 +261,16 @@ def test_page_math_equals_cams_check_at_five_centres(pages, name):
         assert 0 < bound < 1e-3  # degrees: a bound that says something
         for kind in ("rise", "return"):
             assert abs(st["max_pressure_angle"][kind] - ref["max_pressure_angle"][kind]) <= bound + 1e-9, (c, kind)
+        # where the page says each largest pressure angle lies (its table's "at ... deg"): the pressure angle there,
+        # by the pipeline's own inversion, is the largest the check finds, within the page's bound (at a tie, as at
+        # the sized centre's t-t and t1-t1, either place is right)
+        d = _chosen_design(cam, c)
+        for kind, at in (("rise", g["riseAt"]), ("return", g["retAt"])):
+            if at is None or ref["max_pressure_angle"][kind] is None:
+                continue
+            phi = np.array([float(at)])
+            there = np.degrees(pressure_angle(invert(d, np.asarray(c, float), phi, d.program.evaluate(phi))))[0]
+            assert there >= ref["max_pressure_angle"][kind] - bound - 1e-9, (c, kind, np.degrees(at), there)
         # inside is every limit: compare where no maximum lies within the bound of its limit
         near = any(
             ref["limits"][k] is not None and abs(ref["max_pressure_angle"][k] - ref["limits"][k]) <= bound
