@@ -2,7 +2,7 @@
 
 from laws.errors import InputError
 
-__all__ = ["EXIT_OK", "EXIT_CHECK_FAILED", "EXIT_BAD_INPUT", "face_cam", "check_jobs"]
+__all__ = ["EXIT_OK", "EXIT_CHECK_FAILED", "EXIT_BAD_INPUT", "face_cam", "check_jobs", "add_drawing_jobs"]
 
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT = 0, 1, 2
 #: Exit code after Ctrl-C (128 + SIGINT), as shells report it.
@@ -23,3 +23,11 @@ def check_jobs(jobs: int | None) -> None:
     """Refuse a ``--jobs`` below 1 (None: the default, one per core)."""
     if jobs is not None and jobs < 1:
         raise InputError("--jobs", f"must be an integer >= 1 (processes), got {jobs}")
+
+
+def add_drawing_jobs(parser) -> None:
+    """The ``--jobs N`` of a command that draws pictures side by side (:mod:`cams.present.forked`); checked by
+    :func:`check_jobs`."""
+    parser.add_argument("--jobs", type=int, metavar="N", help="processes drawing the pictures side by side, >= 1 "
+                        "(default: one per core, at most one per picture; 1 draws them in this process, one after "
+                        "another)")

@@ -7,7 +7,7 @@ import sys
 from functools import partial
 from pathlib import Path
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, check_jobs
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, add_drawing_jobs, check_jobs
 from cams.commands.progress import Progress, progress, wanted
 from cams.present.faces import FlatPresenter, RollerPresenter
 from laws.errors import InputError
@@ -168,9 +168,7 @@ def register(sub) -> None:
                    "with [optimize] adds optimized (the designed laws, pressure "
                    "angles and cam beside the original ones)")
     q.add_argument("--animate", action="store_true", help="also write one turn of the cam as an animated GIF")
-    q.add_argument("--jobs", type=int, metavar="N", help="processes drawing the pictures side by side, >= 1 "
-                   "(default: one per core, at most one per picture; 1 draws them in this process, one after "
-                   "another)")
+    add_drawing_jobs(q)
     q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "
                    "runs past about two seconds)")
     q.set_defaults(func=run)

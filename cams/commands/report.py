@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, check_jobs
+from cams.commands.common import EXIT_CHECK_FAILED, EXIT_OK, add_drawing_jobs, check_jobs
 from laws.errors import InputError
 
 __all__ = ["register", "run"]
@@ -52,9 +52,7 @@ def register(sub) -> None:
     )
     q.add_argument("file", help="design file (TOML)")
     q.add_argument("--out", default="report", help="output folder (default: report)")
-    q.add_argument("--jobs", type=int, metavar="N", help="processes drawing the pictures side by side, >= 1 "
-                   "(default: one per core, at most one per picture; 1 draws them in this process, one after "
-                   "another)")
+    add_drawing_jobs(q)
     q.add_argument("--quiet", action="store_true", help="no progress (drawn on a terminal's stderr when the work "
                    "runs past about two seconds)")
     q.set_defaults(func=run)
