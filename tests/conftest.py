@@ -2,9 +2,17 @@
 
 from __future__ import annotations
 
+import signal
 from pathlib import Path
 
 import pytest
+
+# The Ctrl-C tests send SIGINT to the processes they start, as a terminal does. A test runner started with SIGINT
+# ignored (a shell's background job, `cmd &`, is started so) would pass the ignoring on to every process it starts,
+# and Python then installs no handler for it: Ctrl-C would do nothing there. Each process running the tests takes
+# Python's usual handler back, so what it starts begins as a terminal's processes do (a handler is reset by exec).
+if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+    signal.signal(signal.SIGINT, signal.default_int_handler)
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
