@@ -279,14 +279,13 @@ def _augmented(generator: np.ndarray, rho, *, ratio: float, zeta: float, offset:
     ``generator`` is the span's ``G`` (n x n), ``rho`` a float or an array of speeds (``omega_n / omega``);
     ``ratio, zeta, offset`` as in :class:`Train`. Shape ``shape(rho) + (n + 3, n + 3)``.
     """
-    rho = np.asarray(rho, float)
     n = generator.shape[0]
-    m = np.zeros((*rho.shape, n + 3, n + 3))
-    m[..., 0, 1] = rho
-    m[..., 1, 0], m[..., 1, 1] = -rho, -2 * zeta * rho
-    m[..., 1, 2], m[..., 1, n + 2] = rho * ratio, -rho * offset
+    m = np.zeros((*np.shape(rho), n + 3, n + 3))
+    top = m[..., :2, :].T  # the rows of x and v, transposed (a view): top[j, i] is m[..., i, j], speeds last
+    top[1, 0] = rho
+    top[0, 1], top[1, 1], top[2, 1], top[n + 2, 1] = -rho, -2 * zeta * rho, rho * ratio, -rho * offset
     if n >= 2:
-        m[..., 1, 3] = 2 * zeta  # 2 zeta rho ds/dtau = 2 zeta ds/dphi
+        top[3, 1] = 2 * zeta  # 2 zeta rho ds/dtau = 2 zeta ds/dphi
     m[..., 2 : n + 2, 2 : n + 2] = generator
     return m
 
@@ -316,7 +315,7 @@ def _oscillator(rho, zeta: float, t) -> np.ndarray:
     ``c = cos(w t), s = sin(w t) / w`` (``w = sqrt(d)``, d > 0), ``cosh``/``sinh`` (d < 0), ``1, t`` (d = 0); the
     sign of ``d`` is that of ``1 - zeta^2`` at every ``rho > 0``.
     """
-    rho, t = np.broadcast_arrays(np.asarray(rho, float), np.asarray(t, float))
+    rho, t = np.asarray(rho, float), np.asarray(t, float)
     mu = -zeta * rho
     q = 1 - zeta**2
     d = rho**2 * q
@@ -327,8 +326,9 @@ def _oscillator(rho, zeta: float, t) -> np.ndarray:
         w = np.sqrt(-d)
         c, sn = np.cosh(w * t), np.sinh(w * t) / w
     else:
-        c, sn = np.ones_like(t), t.copy()
-    out = np.empty((*rho.shape, 2, 2))  # c I + s (A - mu I), entry by entry
+        c = np.ones(np.broadcast_shapes(rho.shape, t.shape))
+        sn = t * c
+    out = np.empty((*c.shape, 2, 2))  # c I + s (A - mu I), entry by entry
     out[..., 0, 0] = c - sn * mu
     out[..., 0, 1] = sn * rho
     out[..., 1, 0] = -sn * rho
