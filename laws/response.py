@@ -273,16 +273,20 @@ def spans(program: Program) -> tuple[Span, ...]:
     return tuple(out)
 
 
-def _augmented(span: Span, train: Train) -> np.ndarray:
-    """The span's generator per radian of cam angle for ``Y = (x, v, z, 1)``, ``v = dx/dtau``."""
-    n = span.generator.shape[0]
-    rho, zeta = train.rho, train.zeta
-    m = np.zeros((n + 3, n + 3))
-    m[0, 1] = rho
-    m[1, 0], m[1, 1], m[1, 2], m[1, n + 2] = -rho, -2 * zeta * rho, rho * train.ratio, -rho * train.offset
+def _augmented(generator: np.ndarray, rho, *, ratio: float, zeta: float, offset: float) -> np.ndarray:
+    """A span's generator per radian of cam angle for ``Y = (x, v, z, 1)``, ``v = dx/dtau``, at one speed or many.
+
+    ``generator`` is the span's ``G`` (n x n), ``rho`` a float or an array of speeds (``omega_n / omega``);
+    ``ratio, zeta, offset`` as in :class:`Train`. Shape ``shape(rho) + (n + 3, n + 3)``.
+    """
+    n = generator.shape[0]
+    m = np.zeros((*np.shape(rho), n + 3, n + 3))
+    top = m[..., :2, :].T  # the rows of x and v, transposed (a view): top[j, i] is m[..., i, j], speeds last
+    top[1, 0] = rho
+    top[0, 1], top[1, 1], top[2, 1], top[n + 2, 1] = -rho, -2 * zeta * rho, rho * ratio, -rho * offset
     if n >= 2:
-        m[1, 3] = 2 * zeta  # 2 zeta rho ds/dtau = 2 zeta ds/dphi
-    m[2 : n + 2, 2 : n + 2] = span.generator
+        top[3, 1] = 2 * zeta  # 2 zeta rho ds/dtau = 2 zeta ds/dphi
+    m[..., 2 : n + 2, 2 : n + 2] = generator
     return m
 
 
@@ -303,26 +307,43 @@ def _expm_series(a: np.ndarray) -> np.ndarray:
     return out
 
 
-def _oscillator(rho: float, zeta: float, t: np.ndarray) -> np.ndarray:
-    """``exp(A t)`` of ``A = [[0, rho], [-rho, -2 zeta rho]]`` in closed form, stacked over ``t`` (shape (k, 2, 2)).
+def _oscillator(rho, zeta: float, t) -> np.ndarray:
+    """``exp(A t)`` of ``A = [[0, rho], [-rho, -2 zeta rho]]`` in closed form, ``rho`` and ``t`` broadcast
+    together (one speed at many ``t``, or many speeds at one ``t``): shape ``broadcast(rho, t).shape + (2, 2)``.
 
     ``exp(A t) = exp(mu t) (c(t) I + s(t) (A - mu I))`` with ``mu = -zeta rho`` and, for ``d = rho^2 (1 - zeta^2)``:
-    ``c = cos(w t), s = sin(w t) / w`` (``w = sqrt(d)``, d > 0), ``cosh``/``sinh`` (d < 0), ``1, t`` (d = 0).
+    ``c = cos(w t), s = sin(w t) / w`` (``w = sqrt(d)``, d > 0), ``cosh``/``sinh`` (d < 0), ``1, t`` (d = 0); the
+    sign of ``d`` is that of ``1 - zeta^2`` at every ``rho > 0``.
     """
-    t = np.asarray(t, float).reshape(-1)
+    rho, t = np.asarray(rho, float), np.asarray(t, float)
     mu = -zeta * rho
-    a = np.array([[0.0, rho], [-rho, -2 * zeta * rho]])
-    d = rho**2 * (1 - zeta**2)
-    if d > 0:
+    q = 1 - zeta**2
+    d = rho**2 * q
+    if q > 0:
         w = np.sqrt(d)
         c, sn = np.cos(w * t), np.sin(w * t) / w
-    elif d < 0:
+    elif q < 0:
         w = np.sqrt(-d)
         c, sn = np.cosh(w * t), np.sinh(w * t) / w
     else:
-        c, sn = np.ones_like(t), t.copy()
-    n = a - mu * np.eye(2)
-    return np.exp(mu * t)[:, None, None] * (c[:, None, None] * np.eye(2) + sn[:, None, None] * n)
+        c = np.ones(np.broadcast_shapes(rho.shape, t.shape))
+        sn = t * c
+    out = np.empty((*c.shape, 2, 2))  # c I + s (A - mu I), entry by entry
+    out[..., 0, 0] = c - sn * mu
+    out[..., 0, 1] = sn * rho
+    out[..., 1, 0] = -sn * rho
+    out[..., 1, 1] = c + sn * (-2 * zeta * rho - mu)
+    return np.exp(mu * t)[..., None, None] * out
+
+
+def _blocks(rho, zeta: float, g: np.ndarray, y: np.ndarray, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``exp(M t)``'s blocks ``(exp(A t), X(t), exp(G t))`` with ``X(t) = exp(A t) Y - Y exp(G t)`` (see
+    :class:`_Flow`): ``rho`` and ``t`` broadcast as in :func:`_oscillator`, ``y`` of shape ``(2, N)`` or one per
+    speed ``(k, 2, N)``, ``g`` the forcing's ``N x N`` generator."""
+    t = np.asarray(t, float)
+    ea = _oscillator(rho, zeta, t)
+    eg = _expm_series(g * t[..., None, None])
+    return ea, ea @ y - y @ eg, eg
 
 
 class _Flow:
@@ -335,7 +356,7 @@ class _Flow:
     def __init__(self, span: Span, train: Train) -> None:
         from scipy.linalg import solve_sylvester
 
-        self.m = _augmented(span, train)
+        self.m = _augmented(span.generator, train.rho, ratio=train.ratio, zeta=train.zeta, offset=train.offset)
         self.rho, self.zeta = train.rho, train.zeta
         n = self.m.shape[0]
         self.a, self.b, self.g = self.m[:2, :2], self.m[:2, 2:], self.m[2:, 2:]
@@ -357,12 +378,8 @@ class _Flow:
         if self.y is None:
             out = _expm(self.m[None] * tt[:, None, None])
         else:
-            ea = _oscillator(self.rho, self.zeta, tt)
-            eg = _expm_series(self.g[None] * tt[:, None, None])
             out = np.zeros((tt.size, *self.m.shape))
-            out[:, :2, :2] = ea
-            out[:, 2:, 2:] = eg
-            out[:, :2, 2:] = ea @ self.y - self.y @ eg
+            out[:, :2, :2], out[:, :2, 2:], out[:, 2:, 2:] = _blocks(self.rho, self.zeta, self.g, self.y, tt)
         return out[0] if scalar else out
 
 
@@ -500,26 +517,6 @@ def _load(r, zeta, rho, s, ds, x, dx):
     return r * (s - x) + 2 * zeta * (ds - dx) / rho
 
 
-def _oscillators(rho: np.ndarray, zeta: float, t: float) -> np.ndarray:
-    """:func:`_oscillator`'s ``exp(A t)`` at one ``t`` for many ``rho`` (shape (k, 2, 2)); the same closed form."""
-    mu = -zeta * rho
-    d = 1 - zeta**2  # the sign of rho^2 (1 - zeta^2), the same at every rho > 0
-    if d > 0:
-        w = rho * np.sqrt(d)
-        c, sn = np.cos(w * t), np.sin(w * t) / w
-    elif d < 0:
-        w = rho * np.sqrt(-d)
-        c, sn = np.cosh(w * t), np.sinh(w * t) / w
-    else:
-        c, sn = np.ones_like(rho), np.full_like(rho, t)
-    out = np.empty((rho.size, 2, 2))
-    out[:, 0, 0] = c - sn * mu
-    out[:, 0, 1] = sn * rho
-    out[:, 1, 0] = -sn * rho
-    out[:, 1, 1] = c + sn * (-2 * zeta * rho - mu)
-    return np.exp(mu * t)[:, None, None] * out
-
-
 def grid_least_loads(
     program: Program, rho, samples: int, *, ratio: float = 1.0, zeta: float = 0.0, offset: float = 0.0
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -555,52 +552,42 @@ def grid_least_loads(
     sure = np.ones(k, bool)
     step = 2 * PI / samples
     phi = step * np.arange(samples)
-    a = np.zeros((k, 2, 2))
-    a[:, 0, 1], a[:, 1, 0], a[:, 1, 1] = rho, -rho, -2 * zeta * rho
     flows = []
     for sp in spans(program):
-        n = sp.generator.shape[0]
-        g = np.zeros((n + 1, n + 1))
-        g[:n, :n] = sp.generator
-        b = np.zeros((k, 2, n + 1))
-        b[:, 1, 0], b[:, 1, n] = rho * ratio, -rho * offset
-        if n >= 2:
-            b[:, 1, 1] = 2 * zeta
+        m = _augmented(sp.generator, rho, ratio=ratio, zeta=zeta, offset=offset)
+        a, b, g = m[:, :2, :2], m[:, :2, 2:], m[0, 2:, 2:]  # the forcing's G is the same at every speed
+        n = g.shape[0]
         # A Y - Y G = B, column by column: (I kron A - G^T kron I) vec(Y) = vec(B)
-        big = np.kron(np.eye(n + 1), a) - np.kron(g.T, np.eye(2))[None]
+        big = np.kron(np.eye(n), a) - np.kron(g.T, np.eye(2))[None]
         try:
             y = np.linalg.solve(big, b.transpose(0, 2, 1).reshape(k, -1)[..., None])[..., 0]
         except np.linalg.LinAlgError:
             return np.zeros(k), np.ones(k), np.zeros(k, bool)
-        y = y.reshape(k, n + 1, 2).transpose(0, 2, 1)
+        y = y.reshape(k, n, 2).transpose(0, 2, 1)
         scale = np.maximum(np.max(np.abs(b), axis=(1, 2)), 1e-300)
         big_y = np.max(np.abs(y), axis=(1, 2))
         residual = np.max(np.abs(a @ y - y @ g - b), axis=(1, 2))
-        sure &= np.isfinite(big_y) & (residual <= 1e-12 * scale * np.maximum(1.0, big_y) * (n + 3))
+        sure &= np.isfinite(big_y) & (residual <= 1e-12 * scale * np.maximum(1.0, big_y) * (n + 2))
         sure &= big_y < 1e4 * scale  # well conditioned: the batch's rounding stays far below the margin it is read at
         z = np.concatenate([sp.state, [1.0]])
-        flows.append((sp, g, y, z))
-
-    def flow(g, y, t):
-        ea, eg = _oscillators(rho, zeta, t), _expm_series((g * t)[None])[0]
-        return ea, ea @ y - y @ eg, eg
+        ea, ec, _ = _blocks(rho, zeta, g, y, sp.end - sp.start)  # the whole span's map, taken once
+        flows.append((sp, g, y, z, ea, ec @ z))
 
     phi_map, shift = np.broadcast_to(np.eye(2), (k, 2, 2)), np.zeros((k, 2))
-    for sp, g, y, z in flows:
-        ea, ec, _ = flow(g, y, sp.end - sp.start)
-        phi_map, shift = ea @ phi_map, (ea @ shift[..., None])[..., 0] + ec @ z
+    for *_, ea, push in flows:
+        phi_map, shift = ea @ phi_map, (ea @ shift[..., None])[..., 0] + push
     lhs = np.eye(2) - phi_map
     det = lhs[:, 0, 0] * lhs[:, 1, 1] - lhs[:, 0, 1] * lhs[:, 1, 0]
     sure &= np.abs(det) >= 1e-9 * np.maximum(1.0, np.max(np.abs(phi_map), axis=(1, 2)))
     lhs[~sure] = np.eye(2)
     xv = np.linalg.solve(lhs, shift[..., None])[..., 0]  # (x, dx/dtau) at angle 0
     least, size = np.full(k, np.inf), np.zeros(k)
-    for sp, g, y, z in flows:
+    for sp, g, y, z, e_span, push_span in flows:
         k0 = int(np.ceil(sp.start / step - 1e-9))
         k1 = int(np.ceil(sp.end / step - 1e-9))
         if k1 > k0:
-            ea, ec, eg = flow(g, y, phi[k0] - sp.start)
-            sa, sc, sg = flow(g, y, step)
+            ea, ec, eg = _blocks(rho, zeta, g, y, phi[k0] - sp.start)
+            sa, sc, sg = _blocks(rho, zeta, g, y, step)
             zs = np.empty((k1 - k0, z.size))
             zs[0] = eg @ z
             for j in range(1, k1 - k0):
@@ -614,8 +601,7 @@ def grid_least_loads(
             load = _load(ratio, zeta, rho, zs[:, :1], s1[:, None], xs[..., 0], rho * xs[..., 1])
             least = np.minimum(least, np.min(load, axis=0))
             size = np.maximum(size, np.max(np.abs(load), axis=0))
-        ea, ec, _ = flow(g, y, sp.end - sp.start)
-        xv = (ea @ xv[..., None])[..., 0] + ec @ z
+        xv = (e_span @ xv[..., None])[..., 0] + push_span
     return least, size, sure
 
 

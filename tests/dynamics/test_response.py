@@ -14,6 +14,9 @@ closing spring, ratio 1), the error ``e = x - s`` obeys ``e'' + e = -s''`` in ``
   ``S'''(0) = S'''(1) = 60`` (drops out when ``e^(i Lambda) = 1``), ``S''''(1) - S''''(0) = 720`` and ``S^(5) = 720``
   (whose integral vanishes at whole ``lambda``): ``int = 720 / (i Lambda)^3``, amplitude ``720 / Lambda^4
   = 45 / (pi^4 lambda^4)``.
+
+The oscillator's closed-form exponential, at one speed over many times and at many speeds at one time (the jump
+speed's batch), is checked against scipy's Pade exponential of ``A t`` in each damping regime.
 """
 
 from __future__ import annotations
@@ -176,3 +179,23 @@ def test_a_phase_from_rest_runs_on_into_the_next_turn():
         ref[sel] = sol.sol(phi[sel])[0]
         y = sol.y[:, -1]
     assert np.max(np.abs(got.x - ref)) < 1e-8
+
+
+@pytest.mark.parametrize("zeta", [0.0, 0.3, 1.0, 1.6])
+def test_oscillator_against_pade_exponential(zeta):
+    from scipy.linalg import expm
+
+    from laws.response import _oscillator
+
+    def ref(rho, t):
+        return expm(np.array([[0.0, rho], [-rho, -2 * zeta * rho]]) * t)
+
+    rhos, ts = np.array([0.7, 3.1, 12.0, 41.5]), np.array([0.0, 0.013, 0.4, 1.9])
+    many_speeds = _oscillator(rhos, zeta, 0.4)
+    many_times = _oscillator(3.1, zeta, ts)
+    assert many_speeds.shape == many_times.shape == (4, 2, 2)
+    for k in range(4):
+        want = ref(rhos[k], 0.4)
+        assert np.allclose(many_speeds[k], want, rtol=1e-12, atol=1e-12 * np.max(np.abs(want)))
+        want = ref(3.1, ts[k])
+        assert np.allclose(many_times[k], want, rtol=1e-12, atol=1e-12 * np.max(np.abs(want)))
