@@ -21,27 +21,25 @@ average (1 min) before and after (the machine may be shared: the ratio is of the
 
 from __future__ import annotations
 
+import argparse
+import copy
+import itertools
+import json
 import os
-
-for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_v, "1")  # one core per process: must precede the first numpy import
-
-import argparse  # noqa: E402
-import copy  # noqa: E402
-import itertools  # noqa: E402
-import json  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-import tomllib  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-import numpy as np  # noqa: E402
+import sys
+import time
+import tomllib
+from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from hardware import machine  # noqa: E402
+from hardware import machine, one_thread_per_process, write_results  # noqa: E402
+
+one_thread_per_process()  # one BLAS thread: before the first numpy import
+
+import numpy as np  # noqa: E402
 
 KEYS = ("limits.pressure_angle", "follower.arm")
 #: The sweep's columns of the largest pressure angles.
@@ -144,7 +142,7 @@ def main(argv=None) -> int:
     }
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
-    (out / "batch.json").write_text(json.dumps({"machine": machine(), "summary": summary}, indent=2) + "\n")
+    write_results(out / "batch.json", {"machine": machine(), "summary": summary})
     print(json.dumps(summary, indent=2))
     ok = same and _usable(two_rows) == _usable(per.rows) and worst_ratio <= 1.0 and worst_blank <= 1e-9
     return 0 if ok else 1

@@ -37,15 +37,13 @@ import tempfile
 import time
 from pathlib import Path
 
-from hardware import machine
+from hardware import BLAS_THREADS, machine, write_results
 
 ROOT = Path(__file__).resolve().parents[1]
 #: The command line's entry, run the same way in both trees: the console script's function (``cams.cli.entry``,
 #: ``main`` in a tree that has no other; the base has no ``cams/__main__.py``), on the arguments after ``-c``.
 ENTRY = ("import sys; import cams.cli as cli; sys.argv[0] = 'cams'; "
          "sys.exit(cli.entry() if hasattr(cli, 'entry') else cli.main(sys.argv[1:]))")
-#: What a benchmark sets for itself and a user's shell does not: removed from the children's environment.
-BLAS_VARS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
 #: The least-pressure-angle objective: the motion-design example with its objective changed (written per tree).
 PRESSURE_OBJECTIVE = ('objective = "R0"', 'objective = "pressure_angle"')
 
@@ -107,7 +105,8 @@ def commands(out: Path) -> list[dict]:
 
 
 def _env(tree: Path) -> dict:
-    env = {k: v for k, v in os.environ.items() if k not in BLAS_VARS}
+    """The children's environment: the user's, less the BLAS thread counts a benchmark sets for itself."""
+    env = {k: v for k, v in os.environ.items() if k not in BLAS_THREADS}
     env["PYTHONPATH"] = str(tree)
     return env
 
@@ -323,10 +322,7 @@ def main(argv=None) -> int:
         shutil.rmtree(tmp, ignore_errors=True)
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
-    target = out / "commands.json"
-    part = target.with_suffix(".json.part")
-    part.write_text(json.dumps(result, indent=1) + "\n")
-    part.replace(target)
+    target = write_results(out / "commands.json", result, indent=1)
     print(
         "| command | base median s | new median s | ratio (medians) | ratio (minima) | ratio (CPU) | target | "
         "met | new above numpy floor s |"

@@ -23,28 +23,26 @@ Writes ``design.json`` into ``--out``:
 
 from __future__ import annotations
 
+import argparse
+import json
 import os
-
-for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_v, "1")  # one core per process: must precede the first numpy import
-
-import argparse  # noqa: E402
-import json  # noqa: E402
-import shutil  # noqa: E402
-import statistics  # noqa: E402
-import subprocess  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
-from typing import Any  # noqa: E402
-
-import numpy as np  # noqa: E402
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from hardware import machine  # noqa: E402
+from hardware import machine, median_time, one_thread_per_process, write_results  # noqa: E402
+
+one_thread_per_process()  # one BLAS thread: before the first numpy import
+
+import numpy as np  # noqa: E402
 
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
 HEAVY = ("matplotlib", "cvxpy", "ezdxf")
@@ -89,14 +87,9 @@ def whole_design(repeats: int) -> list[dict]:
 
 
 def _wall(cmd: list[str], repeats: int) -> tuple[float, subprocess.CompletedProcess]:
-    """Median wall time of a command (one untimed run first: disk caches)."""
-    r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT)
-    ts = []
-    for _ in range(repeats):
-        t = time.perf_counter()
-        r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT)
-        ts.append(time.perf_counter() - t)
-    return statistics.median(ts), r
+    """Median wall time of a command (one untimed run first: disk caches) and its last run."""
+    r, t = median_time(lambda: subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT), repeats, warm_up=True)
+    return t, r
 
 
 def cli(repeats: int) -> dict:
@@ -195,7 +188,7 @@ def main(argv=None):
     result["imports"] = imports()
     result["sweep"] = sweep_designs(a.sweep_size)
     result["total_seconds"] = time.perf_counter() - t0
-    (out / "design.json").write_text(json.dumps(result, indent=1))
+    write_results(out / "design.json", result, indent=1)
     print(json.dumps({k: result[k] for k in ("cli", "sweep")}, indent=1))
 
 

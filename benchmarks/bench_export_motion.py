@@ -16,24 +16,21 @@ spline (:func:`cams.manufacture.curves.fit_curves`) and the polyline.
 
 from __future__ import annotations
 
-import os
-
-for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_v, "1")  # one core per process: must precede the first numpy import
-
-import argparse  # noqa: E402
-import json  # noqa: E402
-import sys  # noqa: E402
-import tempfile  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
-from typing import Any  # noqa: E402
+import argparse
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from hardware import machine  # noqa: E402
+from hardware import machine, one_thread_per_process, write_results  # noqa: E402
+
+one_thread_per_process()  # one BLAS thread: before the first numpy import
+
 
 EXAMPLES = ("rocker_force.toml", "translating_force.toml")
 
@@ -93,7 +90,7 @@ def main(argv: list[str] | None = None) -> int:
     examples = EXAMPLES[1:] if a.quick else EXAMPLES
     res = run(examples, [0.01] if a.quick else a.tolerances, ("arcs", "polyline") if a.quick else CURVES)
     a.out.mkdir(parents=True, exist_ok=True)
-    (a.out / "export_motion.json").write_text(json.dumps(res, indent=2) + "\n", encoding="utf-8")
+    write_results(a.out / "export_motion.json", res)
     print(f"wrote {a.out / 'export_motion.json'}")
     return 0
 

@@ -17,38 +17,24 @@ freed under the cycloidal law's peaks (C2, 10 spans).
 
 from __future__ import annotations
 
-import os
-
-for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_v, "1")  # one core per process: must precede the first numpy import
-
-import argparse  # noqa: E402
-import json  # noqa: E402
-import statistics  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
-from typing import Any  # noqa: E402
+import argparse
+import sys
+from functools import partial
+from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from hardware import machine  # noqa: E402
+from hardware import machine, median_time, one_thread_per_process, write_results  # noqa: E402
+
+one_thread_per_process()  # one BLAS thread: before the first numpy import
+
 
 EXAMPLE = ROOT / "examples" / "translating_force.toml"
 ROCKER = ROOT / "examples" / "rocker_force.toml"
 FLAT_ROCKER = ROOT / "examples" / "rocker_flat.toml"
-
-
-def _timed(solve, design, repeats: int) -> tuple[Any, float]:
-    """The solution of ``design`` and the median time of ``repeats`` solves (s)."""
-    times = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        res = solve(design)
-        times.append(time.perf_counter() - t0)
-    return res, statistics.median(times)
 
 
 def run(spans: list[int], repeats: int) -> dict[str, Any]:
@@ -66,7 +52,7 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
         doc = dict(base)
         doc["optimize"] = {"free": ["rise"], "max_Ca": "poly4567", "max_Cj": "poly4567", "continuity": 3,
                            "degree": 7, "spans": n}
-        res, seconds = _timed(solve, design_from_dict(doc), repeats)
+        res, seconds = median_time(partial(solve, design_from_dict(doc)), repeats)
         o = res.optimization.to_dict()
         rows.append({"spans": n, "R0_mm": res.R0, "lower_bound_mm": o["lower_bound"], "gap": o["gap"],
                      "verified": bool(res.verified), "certified": bool(o["certified"]),
@@ -75,7 +61,7 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
               f"{seconds:.3f} s", flush=True)
     doc = read_toml(ROCKER)
     doc["optimize"] = {"max_Ca": "cycloidal", "max_Cj": "cycloidal", "continuity": 2, "spans": 10}
-    res, seconds = _timed(solve, design_from_dict(doc), repeats)
+    res, seconds = median_time(partial(solve, design_from_dict(doc)), repeats)
     o = res.optimization.to_dict()
     rocker = {"example": ROCKER.name, "original_R0_mm": o["reference"]["R0"], "R0_mm": res.R0,
               "iterations": o["iterations"], "local_measure": o["local_measure"], "verified": bool(res.verified),
@@ -84,7 +70,7 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
           f"measure {o['local_measure']:.1e}, {seconds:.3f} s", flush=True)
     doc["optimize"] = {"objective": "pressure_angle", "max_Ca": "cycloidal", "max_Cj": "cycloidal",
                        "continuity": 2, "spans": 10}
-    res, seconds = _timed(solve, design_from_dict(doc), repeats)
+    res, seconds = median_time(partial(solve, design_from_dict(doc)), repeats)
     o = res.optimization.to_dict()
     rocker_pressure = {"example": ROCKER.name, "held_R0_mm": o["held_R0"], "R0_mm": res.R0,
                        "ratio": o["value"], "iterations": o["iterations"], "local_measure": o["local_measure"],
@@ -94,7 +80,7 @@ def run(spans: list[int], repeats: int) -> dict[str, Any]:
     doc = read_toml(FLAT_ROCKER)
     doc["optimize"] = {"free": ["rise", "return"], "max_Ca": "cycloidal", "max_Cj": "cycloidal",
                        "continuity": 2, "spans": 10}
-    res, seconds = _timed(solve, design_from_dict(doc), repeats)
+    res, seconds = median_time(partial(solve, design_from_dict(doc)), repeats)
     o = res.optimization.to_dict()
     flat_rocker = {"example": FLAT_ROCKER.name, "original_R0_mm": o["reference"]["R0"], "R0_mm": res.R0,
                    "iterations": o["iterations"], "local_measure": o["local_measure"],
@@ -114,7 +100,7 @@ def main() -> None:
     res = run(args.spans, args.repeats)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    (out / "motion.json").write_text(json.dumps(res, indent=2) + "\n", encoding="utf-8")
+    write_results(out / "motion.json", res)
     print(f"wrote {out / 'motion.json'}")
 
 

@@ -17,27 +17,23 @@ the least at slack 0 is what the solver's choice of a vertex added; the least it
 
 from __future__ import annotations
 
-import os
-
-for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_v, "1")  # one core per process: must precede the first numpy import
-
-import argparse  # noqa: E402
-import json  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-import warnings  # noqa: E402
-from dataclasses import replace  # noqa: E402
-from pathlib import Path  # noqa: E402
-from typing import Any  # noqa: E402
-
-import numpy as np  # noqa: E402
+import argparse
+import sys
+import time
+import warnings
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from hardware import machine  # noqa: E402
+from hardware import machine, one_thread_per_process, write_results  # noqa: E402
+
+one_thread_per_process()  # one BLAS thread: before the first numpy import
+
+import numpy as np  # noqa: E402
 
 EXAMPLE = ROOT / "examples" / "translating_designed_rise.toml"
 #: Samples a span at which the linear program takes the jerk's variation.
@@ -126,7 +122,7 @@ def main(argv: list[str] | None = None) -> int:
     a = ap.parse_args(argv)
     res = run(a.slacks, a.spans)
     a.out.mkdir(parents=True, exist_ok=True)
-    (a.out / "smoothing.json").write_text(json.dumps(res, indent=2) + "\n", encoding="utf-8")
+    write_results(a.out / "smoothing.json", res)
     print(f"wrote {a.out / 'smoothing.json'}")
     return 0
 

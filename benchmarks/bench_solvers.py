@@ -33,26 +33,23 @@ numpy is imported):
 
 from __future__ import annotations
 
-import os
-
-for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_v, "1")  # one core: must precede the first numpy import
-
-import argparse  # noqa: E402
-import json  # noqa: E402
-import statistics  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-import tracemalloc  # noqa: E402
-from pathlib import Path  # noqa: E402
-from typing import Any  # noqa: E402
-
-import numpy as np  # noqa: E402
+import argparse
+import json
+import statistics
+import sys
+import time
+import tracemalloc
+from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hardware import machine  # noqa: E402
+from hardware import machine, median_time, one_thread_per_process, write_results  # noqa: E402
+
+one_thread_per_process()  # one BLAS thread: before the first numpy import
+
+import numpy as np  # noqa: E402
 
 from cams.io.designfile import design_from_dict  # noqa: E402
 from cams.verify.pressure import check_pressure  # noqa: E402
@@ -122,16 +119,9 @@ def designs(quick: bool = False):
 
 
 def _median_time(fn, repeats: int, cold: bool):
-    """Median wall time of ``fn()`` over ``repeats`` runs (after one untimed run); the last result."""
-    r = fn()
-    ts = []
-    for _ in range(repeats):
-        if cold:
-            zone.clear_cache()
-        t = time.perf_counter()
-        r = fn()
-        ts.append(time.perf_counter() - t)
-    return r, statistics.median(ts)
+    """The last result of ``fn()`` and its median wall time over ``repeats`` runs (after one untimed run), the
+    zone's cache cleared before each when ``cold``."""
+    return median_time(fn, repeats, warm_up=True, before=zone.clear_cache if cold else None)
 
 
 def _reference(d, A0):
@@ -356,7 +346,7 @@ def main(argv=None):
     summary["exact_by_phases"] = {r["phases"]: {"seconds": r["seconds"], "peak_mb": r["peak_mb"]} for r in phases}
     summary["total_seconds"] = time.perf_counter() - t0
     result = {"machine": machine(), "summary": summary, "rows": rows, "phases": phases}
-    (out / "solvers.json").write_text(json.dumps(result, indent=1))
+    write_results(out / "solvers.json", result, indent=1)
     plot(rows, out / "solvers.png")
     print(json.dumps(summary, indent=1))
 

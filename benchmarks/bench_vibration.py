@@ -15,33 +15,19 @@ jump speed.
 
 from __future__ import annotations
 
-import os
-
-for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_v, "1")  # one core per process: must precede the first numpy import
-
-import argparse  # noqa: E402
-import json  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-import numpy as np  # noqa: E402
+import argparse
+import sys
+from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from hardware import machine  # noqa: E402
+from hardware import machine, median_time, one_thread_per_process, write_results  # noqa: E402
 
+one_thread_per_process()  # one BLAS thread: before the first numpy import
 
-def _median(f, repeats: int) -> tuple[float, object]:
-    times, out = [], None
-    for _ in range(repeats):
-        t = time.perf_counter()
-        out = f()
-        times.append(time.perf_counter() - t)
-    return float(np.median(times)), out
+import numpy as np  # noqa: E402
 
 
 def _designs(tmp: Path):
@@ -73,8 +59,8 @@ def _row(name: str, cam, repeats: int) -> dict:
     w = rpm_to_omega(d.rpm)
     tr = tm.train(w)
     steady_state(d.program, tr)  # warm the imports
-    t_ss, y0 = _median(lambda: steady_state(d.program, tr), repeats)
-    t_grid, _ = _median(lambda: grid_response(d.program, tr, y0, 720), repeats)
+    y0, t_ss = median_time(lambda: steady_state(d.program, tr), repeats)
+    _, t_grid = median_time(lambda: grid_response(d.program, tr, y0, 720), repeats)
     calls = [0]
     inner, batch = vib._min_load, vib._losses
 
@@ -88,7 +74,7 @@ def _row(name: str, cam, repeats: int) -> dict:
 
     vib._min_load, vib._losses = counted, counted_batch
     try:
-        t_jump, jump = _median(
+        jump, t_jump = median_time(
             lambda: vib.dynamic_jump_rpm(
                 d.program, tm, start_rpm=0.05 * d.rpm, top_rpm=3 * max(d.rpm, df.jump.rpm), samples=720
             ),
@@ -100,7 +86,7 @@ def _row(name: str, cam, repeats: int) -> dict:
     wa = rpm_to_omega(above)
     tra = tm.train(wa)
     ya = steady_state(d.program, tra)
-    t_sim, flight = _median(lambda: vib.simulate(d.program, tm, wa, (ya[0], ya[1] * tra.rho * wa)), 1)
+    flight, t_sim = median_time(lambda: vib.simulate(d.program, tm, wa, (ya[0], ya[1] * tra.rho * wa)), 1)
     return {
         "design": name,
         "spans": len(spans(d.program)),
@@ -134,7 +120,7 @@ def main(argv=None) -> int:
         res = run(a.repeats, Path(tmp))
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
-    (out / "vibration.json").write_text(json.dumps(res, indent=2) + "\n", encoding="utf-8")
+    write_results(out / "vibration.json", res)
     for r in res["rows"]:
         print(
             f"{r['design']}: steady state {r['steady_state_ms']:.3g} ms, 720 angles {r['response_720_ms']:.3g} ms, "

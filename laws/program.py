@@ -216,6 +216,27 @@ class Program:
         idx = np.searchsorted(self.starts, x, side="right") - 1
         return np.clip(idx, 0, len(self.phases) - 1)
 
+    def locate(self, phi: np.ndarray | float) -> tuple[np.ndarray, np.ndarray]:
+        """The phase containing each cam angle and the angle reached within it.
+
+        Parameters
+        ----------
+        phi : array_like or float
+            Cam angles, radians, any real values (periodic, period ``2 pi``).
+
+        Returns
+        -------
+        index : ndarray of int
+            Phase index of each angle (its ``[[motion]]`` index from 0); at a joint between phases, the later
+            phase (half-open ``[start, end)``, as :meth:`phase_of`).
+        within : ndarray of float
+            Cam angle from that phase's start, radians, in ``[0, angle]`` of the phase up to rounding
+            (``within / angle`` is the phase's normalized position ``u``).
+        """
+        x = wrap_angle(phi)
+        idx = self.phase_of(x)
+        return idx, np.asarray(x - self.starts[idx])
+
     # -- evaluation ----------------------------------------------------------
     def evaluate_phase(self, i: int, u: np.ndarray | float) -> Motion:
         """Motion inside phase ``i`` at normalized positions ``u`` in [0, 1].
@@ -239,15 +260,13 @@ class Program:
 
         At a joint between phases the later phase's values are returned.
         """
-        x = wrap_angle(phi)
-        idx = self.phase_of(x)
-        starts = self.starts
-        out = [np.zeros_like(x) for _ in range(4)]
+        idx, within = self.locate(phi)
+        out = [np.zeros_like(within) for _ in range(4)]
         for i, p in enumerate(self.phases):
             m = idx == i
             if not np.any(m):
                 continue
-            mo = self.evaluate_phase(i, (x[m] - starts[i]) / p.angle)
+            mo = self.evaluate_phase(i, within[m] / p.angle)
             for k, arr in enumerate((mo.s, mo.ds, mo.d2s, mo.d3s)):
                 out[k][m] = arr
         return Motion(*out)

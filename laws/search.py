@@ -1,4 +1,5 @@
-"""One-dimensional searches on a bracket: a minimum and a root, both by Brent's methods.
+"""One-dimensional searches on a bracket: a minimum and a root, both by Brent's methods, and a grid's best
+sample refined by the former.
 
 For the few places that refine an extremum or a crossing on a small bracket (a law's peak, the best point and
 the ends of an arc), and the boundary of a yes/no test (where a zone empties, the least proven ratio, the
@@ -10,10 +11,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-__all__ = ["bounded_minimum", "bracketed_root", "bisect_boundary"]
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
+
+__all__ = ["bounded_minimum", "grid_minimum", "bracketed_root", "bisect_boundary"]
 
 
 def bounded_minimum(
@@ -103,6 +108,55 @@ def bounded_minimum(
         if evaluations >= max_evaluations:
             break
     return float(xf), float(fx)
+
+
+def grid_minimum(
+    f: Callable[[float], float],
+    grid: ArrayLike,
+    values: ArrayLike,
+    *,
+    xatol: float,
+    period: float | None = None,
+) -> tuple[float, float]:
+    """The least value of ``f`` sampled on a grid, refined between the best sample's neighbours.
+
+    The best sample (the first, at a tie) brackets the minimum with its two neighbours; :func:`bounded_minimum`
+    searches that bracket and its answer replaces the sample when it is no larger. For a unimodal ``f`` between
+    the neighbours this is the minimum to ``xatol``; elsewhere it is never worse than the grid.
+
+    Parameters
+    ----------
+    f : callable
+        ``f(x) -> float``, the function sampled (the unit of ``x``).
+    grid : array_like, shape (n,)
+        Increasing sample points.
+    values : array_like, shape (n,)
+        ``f`` at ``grid`` (sampled by the caller, vectorized or not).
+    xatol : float
+        The refinement's absolute tolerance on ``x``.
+    period : float or None
+        None: the grid's ends bound the search (an end sample's outer neighbour is itself). Else ``grid`` is
+        ``n`` equal steps over one period of a periodic ``f`` (no end repeated) and the bracket is the best
+        sample plus or minus ``period / n``, across the grid's ends if need be.
+
+    Returns
+    -------
+    x, fx : float
+        The best point and ``f`` there.
+    """
+    grid = np.asarray(grid, float)
+    values = np.asarray(values, float)
+    k = int(np.argmin(values))
+    if period is None:
+        lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
+    else:
+        h = period / len(grid)
+        lo, hi = grid[k] - h, grid[k] + h
+    best = (float(grid[k]), float(values[k]))
+    if not hi > lo:  # a grid of one point
+        return best
+    x, fx = bounded_minimum(f, float(lo), float(hi), xatol=xatol)
+    return (x, fx) if fx <= best[1] else best
 
 
 def _sign(x: float) -> float:

@@ -308,7 +308,7 @@ def best_on_circle(
     """Admissible point of the circle that minimizes ``objective``; None if none.
 
     The objective is evaluated at the arcs' ends and on a fine grid inside each
-    arc, then refined by Brent's bounded minimization (:func:`laws.search.bounded_minimum`).
+    arc, then refined by Brent's bounded minimization (:func:`laws.search.grid_minimum`).
 
     Parameters
     ----------
@@ -331,21 +331,14 @@ def best_on_circle(
         The best admissible point of the circle (same frame), None when the
         circle misses the zone.
     """
-    from laws.search import bounded_minimum
+    from laws.search import grid_minimum
 
     centre = np.asarray(centre, float)
     pt = lambda a: centre + radius * np.array([np.cos(a), np.sin(a)])  # noqa: E731
     best, best_val = None, np.inf
     for a, b in admissible_arcs(design, centre, radius, samples=samples, seeds=seeds):
-        grid = np.linspace(a, b, 65)
-        vals = [objective(pt(x)) for x in grid]
-        k = int(np.argmin(vals))
-        cands = [(vals[0], a), (vals[-1], b), (vals[k], grid[k])]
-        lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
-        if hi > lo:
-            x, fx = bounded_minimum(lambda t: objective(pt(t)), lo, hi, xatol=1e-13)
-            cands.append((fx, x))
-        v, x = min(cands)
+        grid = np.linspace(a, b, 65)  # the arc's ends are samples
+        x, v = grid_minimum(lambda t: objective(pt(t)), grid, [objective(pt(x)) for x in grid], xatol=1e-13)
         if v < best_val:
             best, best_val = pt(x), v
     return best

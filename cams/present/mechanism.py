@@ -14,7 +14,6 @@ import numpy as np
 
 from cams.kinematics.flat import flat_parts
 from cams.kinematics.inversion import smallest_cam_radius, to_fixed_frame
-from laws.program import wrap_angle
 
 __all__ = ["draw_roller_mechanism", "draw_flat_mechanism", "add_polygon", "radii_label", "FACE_WIDTH_PT"]
 
@@ -78,10 +77,9 @@ def draw_flat_mechanism(ax, cam, profile, phi: float):
 
     def position(phi: float) -> float:
         """The contact's position along the face at cam angle ``phi`` (a phase joint: the later phase's)."""
-        x = float(wrap_angle(phi))
-        i = int(prog.phase_of(x))
-        span = prog.phases[i].angle
-        u = min(max((x - prog.starts[i]) / span, 0.0), 1.0) if span > 0 else 0.0
+        index, within = prog.locate(phi)
+        i = int(index)
+        u = min(max(float(within) / prog.phases[i].angle, 0.0), 1.0)  # a Program's phase angles are > 0
         return float(np.asarray(contact_at(i, np.array([u]))).reshape(-1)[0])
 
     def at(phi: float) -> dict[str, Any]:

@@ -26,7 +26,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from laws.search import bounded_minimum
+from laws.search import grid_minimum
 
 __all__ = [
     "contact_modulus",
@@ -129,11 +129,9 @@ class SubsurfaceMaxima:
 
 def _largest(f, lo: float, hi: float) -> tuple[float, float]:
     """The largest value of the unimodal ``f`` on ``[lo, hi]`` and where: a grid, then Brent's bounded search
-    (:func:`laws.search.bounded_minimum`) between the grid's neighbours of its best point."""
+    (:func:`laws.search.grid_minimum`) between the grid's neighbours of its best point."""
     z = np.linspace(lo, hi, 401)
-    k = int(np.argmax(f(z)))
-    a, c = z[max(k - 1, 0)], z[min(k + 1, len(z) - 1)]
-    zm, neg = bounded_minimum(lambda x: -float(f(np.array([x]))[0]), float(a), float(c), xatol=1e-12)
+    zm, neg = grid_minimum(lambda x: -float(f(np.array([x]))[0]), z, -f(z), xatol=1e-12)
     return -neg, zm
 
 

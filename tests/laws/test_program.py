@@ -112,6 +112,35 @@ def test_wrap_of_tiny_negative_angle():
     assert p.phase_of(-1e-17) == 0
 
 
+@settings(PROFILE)
+@given(p=programs(), turns=st.integers(-3, 3))
+def test_locate_lands_in_the_phase_that_contains_the_angle(p, turns):
+    # definition, checked phase by phase: the phase i with start_i <= x < start_i + angle_i (x the angle in the
+    # turn, the starts a running sum of the angles written out here), and within = x - start_i, so that
+    # start_i + within + turns * 2 pi is the angle asked for
+    x = np.concatenate([np.linspace(0.0, TWO_PI, 97, endpoint=False), [1e-3, TWO_PI - 1e-3]])
+    idx, within = p.locate(x + turns * TWO_PI)
+    assert idx.shape == within.shape == x.shape
+    start = 0.0
+    for i, ph in enumerate(p.phases):
+        inside = (x >= start + 1e-9) & (x < start + ph.angle - 1e-9)
+        assert np.all(idx[inside] == i)
+        np.testing.assert_allclose(within[inside], x[inside] - start, rtol=0, atol=1e-12)
+        start += ph.angle
+    assert np.all((within >= -1e-12) & (within <= np.array([ph.angle for ph in p.phases])[idx] + 1e-12))
+
+
+def test_locate_at_a_joint_is_the_later_phase():
+    p = Program(
+        (Phase("rise", 2.0, "cycloidal"), Phase("dwell", 1.0), Phase("return", TWO_PI - 3.0, "cycloidal")), lift=1.0
+    )
+    idx, within = p.locate(np.array([0.0, 2.0, 3.0, TWO_PI, -1e-17]))
+    assert idx.tolist() == [0, 1, 2, 0, 0]
+    assert within.tolist() == [0.0, 0.0, 0.0, 0.0, 0.0]
+    i, w = p.locate(2.5)  # a scalar gives scalars
+    assert (int(i), float(w)) == (1, 0.5)
+
+
 def test_scalar_and_array_shapes():
     p = Program((Phase("rise", math.pi, "cycloidal"), Phase("return", math.pi, "cycloidal")), lift=1.0)
     assert p.evaluate(0.3).s.shape == ()

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from laws.search import bounded_minimum, bracketed_root
+from laws.search import bounded_minimum, bracketed_root, grid_minimum
 
 
 @pytest.mark.parametrize("a, b, x_min, f_min", [(0.0, 1.0, 0.3, 1.0), (0.5, 1.0, 0.5, 1.04), (-2.0, -1.0, -1.0, 2.69)])
@@ -68,3 +68,35 @@ def test_the_same_answers_as_scipy_to_the_last_digit():
             )
         m = minimize_scalar(g, bounds=(-2.0, 2.0), method="bounded", options={"xatol": 1e-12})
         assert bounded_minimum(g, -2.0, 2.0, xatol=1e-12) == (m.x, m.fun)
+
+
+def test_grid_minimum_refines_between_the_best_samples_neighbours():
+    # f(x) = cos(x) + 0.5 cos(2x) on [0, pi]: f' = -sin x (1 + 2 cos x) vanishes at 0, pi and at 2 pi / 3
+    # (cos x = -1/2), the least, f = -1/2 - 1/4 = -3/4 (f(0) = 3/2, f(pi) = -1/2); 2 pi / 3 is not a sample
+    f = lambda x: math.cos(x) + 0.5 * math.cos(2 * x)  # noqa: E731
+    grid = np.linspace(0.0, math.pi, 17)
+    x, fx = grid_minimum(f, grid, np.array([f(t) for t in grid]), xatol=1e-12)
+    assert x == pytest.approx(2 * math.pi / 3, abs=1e-7)
+    assert fx == pytest.approx(-0.75, abs=1e-14)
+
+
+def test_grid_minimum_across_a_periodic_grids_ends():
+    # cos(x - 0.01) is least at pi + 0.01; shifted to x = 0.01 by a phase of pi it lies between the last sample
+    # (2 pi - step) and the first (0), found only by a bracket that crosses the period's end
+    f = lambda x: -math.cos(x - 0.01)  # noqa: E731
+    grid = np.linspace(0.0, 2 * math.pi, 8, endpoint=False)
+    x, fx = grid_minimum(f, grid, np.array([f(t) for t in grid]), xatol=1e-12, period=2 * math.pi)
+    assert x == pytest.approx(0.01, abs=1e-7)
+    assert fx == pytest.approx(-1.0, abs=1e-14)
+    # without the period, the search stays on the grid's side of 0: the end sample's bracket is [0, step]
+    x, _ = grid_minimum(f, grid, np.array([f(t) for t in grid]), xatol=1e-12)
+    assert 0.0 <= x <= grid[1]
+
+
+def test_grid_minimum_keeps_the_sample_when_the_bracket_holds_nothing_better():
+    # a minimum at a grid's end (f increasing): the answer is that end, the sample itself or a point whose value
+    # is no larger; and a grid of one point is its own answer
+    grid = np.linspace(1.0, 2.0, 5)
+    x, fx = grid_minimum(lambda t: t**2, grid, grid**2, xatol=1e-12)
+    assert fx <= 1.0 and x == pytest.approx(1.0, abs=1e-7)
+    assert grid_minimum(lambda t: t**2, np.array([3.0]), np.array([9.0]), xatol=1e-12) == (3.0, 9.0)

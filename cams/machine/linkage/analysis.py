@@ -209,15 +209,16 @@ def analyse(machine: Machine, *, working: str = "slow", samples: int = 720) -> S
         start, end, s0, s1, w_span = b, a, s[1], s[0], span_ba
     r_span = TWO_PI - w_span
 
-    grid = np.linspace(0.0, TWO_PI, samples, endpoint=False)
-    mu = machine.transmission(grid)
-    k = int(np.argmin(mu))
-    from laws.search import bounded_minimum
+    from laws.search import grid_minimum
 
-    h = TWO_PI / samples
-    x, fx = bounded_minimum(lambda p: float(machine.transmission(np.array([p]))[0]), grid[k] - h, grid[k] + h,
-                            xatol=1e-12)
-    mu_min, mu_at = (float(fx), float(x)) if fx <= mu[k] else (float(mu[k]), float(grid[k]))
+    grid = np.linspace(0.0, TWO_PI, samples, endpoint=False)
+    mu_at, mu_min = grid_minimum(
+        lambda p: float(machine.transmission(np.array([p]))[0]),
+        grid,
+        machine.transmission(grid),
+        xatol=1e-12,
+        period=TWO_PI,
+    )
     return StrokeReport(
         start=start,
         end=end,
