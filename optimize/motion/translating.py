@@ -35,8 +35,8 @@ from laws.program import Program
 from optimize.motion.conic import Cone, ConicProgram
 from optimize.motion.space import Space
 
-__all__ = ["Request", "build", "PressureRows", "pressure_rows", "conservative_ratio", "form_ratio",
-           "pressure_terms", "SAMPLES_PER_SPAN",
+__all__ = ["Request", "build", "Sides", "pressure_sides", "PressureRows", "pressure_rows", "conservative_ratio",
+           "form_ratio", "pressure_terms", "SAMPLES_PER_SPAN",
            "FIXED_SAMPLES", "TIGHTEN", "S_MARGIN"]
 #: Sample points per span of the relaxation (ends included).
 SAMPLES_PER_SPAN = 17
@@ -107,19 +107,129 @@ def _fixed_motion(program: Program, i: int, count: int) -> tuple[np.ndarray, np.
     return m.s, m.ds, m.d2s
 
 
+@dataclass(frozen=True)
+class Sides:
+    """One limited phase's pressure rows (roller): ``s' + eps x`` and ``d + s`` at each of the phase's points,
+    linear in the program's variables ``v`` (:func:`build`'s: the laws', then ``x = v[nc]``, ``d = v[nc + 1]``,
+    ``t``), lengths over the request's ``length``, ``s'`` per radian.
+
+    The points are the Bernstein coefficients of every piece (``"conservative"``) or the samples (``"relaxed"``)
+    of a free phase, :data:`FIXED_SAMPLES` positions of a fixed one. At each::
+
+        s' = ds0 + slope_scale (slope @ v),   s = s0 + level_scale (level @ v)
+
+    a free phase's ``slope`` and ``level`` the rows of ``S'`` (its coefficients elevated to the degree of
+    ``S``'s) and of ``S`` (:meth:`optimize.motion.space.Space.rows`), ``slope_scale = sh / beta``,
+    ``level_scale = sh``, ``ds0 = 0`` and ``s0 = lev`` (:meth:`~optimize.motion.space.Space.phase_scale`); a
+    fixed phase's ``slope`` and ``level`` None, ``ds0`` and ``s0`` its law's values. The phase's rows at ratio
+    ``r`` are ``sign (s' + eps x) <= tan(r limit) (d + s)``, for each sign.
+
+    Made by :func:`pressure_sides` alone; :func:`build` (:meth:`rows`), :func:`pressure_rows` (:meth:`matrices`)
+    and :func:`pressure_terms` (:meth:`at`) combine them, each in the order of operations it has always used (the
+    least pressure angle's iteration is sensitive to the last bit of its rows on some designs).
+
+    Attributes
+    ----------
+    nc : int
+        The laws' variables (``x``'s column).
+    eps : float
+        The cam's sense, +1 counter-clockwise.
+    limit : float
+        The phase's pressure-angle limit, radians.
+    ds0, s0 : ndarray, shape (points,)
+    slope, level : ndarray, shape (points, nc + 3), or None
+    slope_scale, level_scale : float
+    """
+
+    nc: int
+    eps: float
+    limit: float
+    ds0: np.ndarray
+    s0: np.ndarray
+    slope: np.ndarray | None = None
+    level: np.ndarray | None = None
+    slope_scale: float = 0.0
+    level_scale: float = 0.0
+
+    def rows(self, sign: float, T: float) -> tuple[np.ndarray, np.ndarray]:
+        """:func:`build`'s rows ``sign (s' + eps x) - T (d + s) <= 0`` (``T = tan(ratio limit)``): ``(G, h)``."""
+        nc = self.nc
+        if self.slope is None or self.level is None:
+            rows = np.zeros((self.s0.size, nc + 3))
+            rhs = T * self.s0 - sign * self.ds0
+        else:
+            rows = sign * self.slope_scale * self.slope - T * self.level_scale * self.level
+            rhs = T * self.s0
+        rows[:, nc] = sign * self.eps
+        rows[:, nc + 1] = -T
+        return rows, rhs
+
+    def matrices(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """``(top, top0, bottom, bottom0)``: ``top @ v + top0 = s' + eps x`` and ``bottom @ v + bottom0 = d + s``
+        (:class:`PressureRows`'s sides)."""
+        nc = self.nc
+        if self.slope is None or self.level is None:
+            top, bottom = np.zeros((self.s0.size, nc + 3)), np.zeros((self.s0.size, nc + 3))
+        else:
+            top, bottom = self.slope_scale * self.slope, self.level_scale * self.level
+        top[:, nc] = self.eps
+        bottom[:, nc + 1] = 1.0
+        return top, self.ds0, bottom, self.s0
+
+    def at(self, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(s' + eps x, d + s)`` at ``v``."""
+        ds, s = self.ds0, self.s0
+        if self.slope is not None and self.level is not None:
+            ds = self.slope_scale * (self.slope @ v)        # ds0 is 0
+            s = s + self.level_scale * (self.level @ v)
+        return ds + self.eps * float(v[self.nc]), float(v[self.nc + 1]) + s
+
+
+def pressure_sides(req: Request, form: str) -> list[Sides]:
+    """The pressure rows of ``req`` (roller) in ``form``, per limited phase in ``req.limits``' order
+    (:class:`Sides`): the one place their coefficients are made.
+
+    A free phase of height ``sh``, angle ``beta`` and start ``lev`` has ``s = lev + sh S`` and
+    ``s' = sh S' / beta``; a fixed phase's ``s`` and ``s'`` are its law's values at :data:`FIXED_SAMPLES`
+    positions.
+    """
+    sp = req.space
+    nc = sp.size
+    n = nc + 3                      # the laws' variables, x, d, t
+    samples = _form_samples(sp, form)
+    index = {i: k for k, i in enumerate(sp.free)}
+    ell = float(req.length)
+    eps = float(req.cam_sense)
+    out = []
+    for i, limit in req.limits.items():
+        if i in index:
+            k = index[i]
+            sh, beta, lev = sp.phase_scale(i)
+            level = sp.rows(k, 0, n, samples=samples)
+            slope = sp.rows(k, 1, n, samples=samples, elevate=True)
+            out.append(Sides(nc=nc, eps=eps, limit=float(limit), ds0=np.zeros(level.shape[0]),
+                             s0=np.full(level.shape[0], lev / ell), slope=slope, level=level,
+                             slope_scale=sh / ell / beta, level_scale=sh / ell))
+        else:
+            s, ds, _ = _fixed_motion(sp.program, i, FIXED_SAMPLES)
+            out.append(Sides(nc=nc, eps=eps, limit=float(limit), ds0=ds / ell, s0=s / ell))
+    return out
+
+
 def build(req: Request, form: str) -> ConicProgram:
     """The program of ``req`` in ``form`` ``"conservative"`` or ``"relaxed"`` (see the module notes)."""
+    return _program(req, form, None if req.follower == "flat" else pressure_sides(req, form))
+
+
+def _program(req: Request, form: str, sides: list[Sides] | None) -> ConicProgram:
+    """:func:`build` with the pressure rows' sides given (:func:`pressure_sides`; None for a flat face)."""
     sp = req.space
     nc = sp.size
     flat = req.follower == "flat"
     ng = 1 if flat else 2           # (R0) or (x, d)
     n = nc + ng + 1
     it = n - 1                      # the epigraph variable t
-    samples = None
-    if form == "relaxed":
-        samples = _samples(sp)
-    elif form != "conservative":
-        raise ValueError(form)
+    samples = _form_samples(sp, form)
     tight = 1.0 - TIGHTEN if form == "conservative" else 1.0
     G: list[np.ndarray] = []
     h: list[np.ndarray] = []
@@ -165,27 +275,10 @@ def build(req: Request, form: str) -> ConicProgram:
                 rows[:, nc] = -1.0
                 add(rows, s + s2 - rho)
     else:
-        eps = float(req.cam_sense)
-        for i, limit in req.limits.items():
-            T = float(np.tan(req.ratio * limit))
-            if i in index:
-                k = index[i]
-                sh, beta, lev = scaled(i)
-                r0 = sp.rows(k, 0, n, samples=samples)
-                r1 = sp.rows(k, 1, n, samples=samples, elevate=True)
-                for sign in (1.0, -1.0):
-                    # sign (s' + eps x) - T (d + s) <= 0, s = lev + sh S, s' = sh S' / beta
-                    rows = sign * sh / beta * r1 - T * sh * r0
-                    rows[:, nc] = sign * eps
-                    rows[:, nc + 1] = -T
-                    add(rows, np.full(rows.shape[0], T * lev), pressure=True)
-            else:
-                s, ds, _ = fixed(i)
-                for sign in (1.0, -1.0):
-                    rows = np.zeros((s.size, n))
-                    rows[:, nc] = sign * eps
-                    rows[:, nc + 1] = -T
-                    add(rows, T * s - sign * ds, pressure=True)
+        for side in sides or ():
+            T = float(np.tan(req.ratio * side.limit))
+            for sign in (1.0, -1.0):
+                add(*side.rows(sign, T), pressure=True)     # sign (s' + eps x) - T (d + s) <= 0
 
     # -- caps on the free phases' normalized derivatives; S within [0, 1] (the follower within its stroke) -------
     for (k, r), cap in req.caps.items():
@@ -324,38 +417,19 @@ def pressure_rows(req: Request, form: str) -> PressureRows:
     built once for every ratio (roller, objective ``"feasibility"``)."""
     if req.follower == "flat" or req.objective != "feasibility":
         raise ValueError("the pressure rows of a roller's feasibility program")
-    prog = build(req, form)
-    sp = req.space
-    nc = sp.size
+    sides = pressure_sides(req, form)
+    prog = _program(req, form, sides)
     n = prog.n
-    samples = None if form == "conservative" else _samples(sp)
-    index = {i: k for k, i in enumerate(sp.free)}
-    ell = float(req.length)
-    eps = float(req.cam_sense)
     U, W, u0, c, lim = [], [], [], [], []
-    for i, limit in req.limits.items():
-        if i in index:
-            k = index[i]
-            sh, beta, lev = sp.phase_scale(i)
-            top = sh / ell / beta * sp.rows(k, 1, n, samples=samples, elevate=True)
-            bottom = sh / ell * sp.rows(k, 0, n, samples=samples)
-            top0, bottom0 = np.zeros(top.shape[0]), np.full(top.shape[0], lev / ell)
-        else:
-            s, ds, _ = _fixed_motion(sp.program, i, FIXED_SAMPLES)
-            top, bottom = np.zeros((s.size, n)), np.zeros((s.size, n))
-            top0, bottom0 = ds / ell, s / ell
-        top[:, nc] = eps
-        bottom[:, nc + 1] = 1.0
+    for side in sides:
+        top, top0, bottom, bottom0 = side.matrices()
         for sign in (1.0, -1.0):
             U.append(sign * top)
             u0.append(sign * top0)
             W.append(bottom)
             c.append(bottom0)
-            lim.append(np.full(top0.size, float(limit)))
+            lim.append(np.full(top0.size, side.limit))
     Um, Wm = np.vstack(U), np.vstack(W)
-    m = Um.shape[0]
-    if not (np.all(prog.G[:m, n - 1] == -1.0) and (m == prog.G.shape[0] or prog.G[m, n - 1] == 0.0)):
-        raise AssertionError("the pressure rows are not the feasibility program's first rows")
     nz = (Um != 0) | (Wm != 0)
     nz[:, n - 1] = True
     rr, kk = np.nonzero(nz)
@@ -367,27 +441,14 @@ def pressure_terms(req: Request, v: np.ndarray,
                    form: str = "conservative") -> list[tuple[np.ndarray, np.ndarray, float]]:
     """The two sides of :func:`build`'s pressure rows at ``v`` (roller): per limited phase, in the rows' order,
     ``(|s' + eps x|, d + s, limit)`` on the Bernstein coefficients of every piece (``"conservative"``) or at the
-    samples (``"relaxed"``) of a free phase, at the samples of a fixed one (lengths over ``req.length``).
+    samples (``"relaxed"``) of a free phase, at the samples of a fixed one (lengths over ``req.length``;
+    :func:`pressure_sides` at ``v``).
 
     A row of ``build`` at ratio ``r`` is ``sign (s' + eps x) <= tan(r limit) (d + s)``, for each sign."""
-    sp = req.space
-    nc = sp.size
-    ell = float(req.length)
-    samples = None if form == "conservative" else _samples(sp)
-    index = {i: k for k, i in enumerate(sp.free)}
-    x, d = float(v[nc]), float(v[nc + 1])
-    eps = float(req.cam_sense)
     out = []
-    for i, limit in req.limits.items():
-        if i in index:
-            sh, beta, lev = sp.phase_scale(i)
-            k = index[i]
-            ds = sh / ell / beta * (sp.rows(k, 1, v.size, samples=samples, elevate=True) @ v)
-            s = lev / ell + sh / ell * (sp.rows(k, 0, v.size, samples=samples) @ v)
-        else:
-            s, ds, _ = _fixed_motion(sp.program, i, FIXED_SAMPLES)
-            s, ds = s / ell, ds / ell
-        out.append((np.abs(ds + eps * x), d + s, float(limit)))
+    for side in pressure_sides(req, form):
+        top, bottom = side.at(v)
+        out.append((np.abs(top), bottom, side.limit))
     return out
 
 
@@ -414,6 +475,11 @@ def conservative_ratio(req: Request, v: np.ndarray) -> float:
     return form_ratio(req, v, "conservative")
 
 
-def _samples(sp: Space) -> np.ndarray:
-    """The relaxation's sample points on a free phase (normalized)."""
+def _form_samples(sp: Space, form: str) -> np.ndarray | None:
+    """The points of a free phase's rows in ``form``: None (the Bernstein coefficients of every piece,
+    ``"conservative"``) or the relaxation's samples (normalized, ``"relaxed"``)."""
+    if form == "conservative":
+        return None
+    if form != "relaxed":
+        raise ValueError(form)
     return np.linspace(0.0, 1.0, (SAMPLES_PER_SPAN - 1) * sp.spans + 1)

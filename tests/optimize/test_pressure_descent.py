@@ -3,7 +3,9 @@
 - The sparse assembly handed to the solver is the program's matrix: densified, it is the rows stacked by hand in
   the solver's order, each divided by its norm.
 - The pressure rows with the ratio as a parameter are :func:`build`'s rows at that ratio (built again there),
-  divided by the weights by hand.
+  divided by the weights by hand: both take their coefficients from ``pressure_sides``, this checks the ratio
+  and the weights as parameters (and the assembly); the coefficients themselves are checked against the
+  kernel's inversion in test_pressure_rows.py.
 - The estimate of the decrease still possible (:func:`_still_possible`) bounds what Dinkelbach's iteration,
   run on to its end, still gives, at every step; the descent stopped at the gap leaves no more than its share of
   the gap. (The certificate itself, value and lower bound, is checked independently in test_motion_pressure.py:
@@ -121,7 +123,9 @@ def test_the_assembly_is_the_programs_matrix():
 def test_the_rows_as_parameters_are_the_built_programs(base, form):
     """At two ratios and a weighting: the pressure rows with the ratio as a parameter are the program built at
     that ratio with its pressure rows divided by the weights (but in the slack's column); the solver's matrix
-    assembled once and given those rows is the one assembled from that program."""
+    assembled once and given those rows is the one assembled from that program. (The rows' coefficients are
+    the same function's, ``pressure_sides``; what differs, and is checked, is how the ratio and the weights
+    enter.)"""
     rows = pressure_rows(replace(base, objective="feasibility"), form)
     asm = Assembly(rows.program, rows.pattern)
     rng = np.random.default_rng(0)
