@@ -1,0 +1,201 @@
+"""docs/files.md documents every JSON key the commands print, with its unit.
+
+The keys are collected from real runs (``cams solve/check/profile/machine/laws --json`` on the examples, and one
+design with rigid impacts for the keys only impacts give), recursively: a key of a nested object is ``a.b``, a
+key of each entry of a list ``a[].b``. A key counts as documented when a code span of docs/files.md (outside fenced
+code) is the path or one of its dotted tails (``forces.spring.rate``: `forces.spring.rate`, `spring.rate` or
+`rate`; an object's also by a span naming one of its keys, `spring.rate`), and each command's top-level keys are named in that command's part of "## JSON output". The names that
+are data, not schema (a machine's pairs, a drawing's layers), are checked against the sections that define them.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from tests.inprocess import cams_cli
+
+ROOT = Path(__file__).resolve().parents[1]
+DOC = ROOT / "docs" / "files.md"
+EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
+
+#: Keys whose children are names from the data: the parent's path, the section of docs/files.md naming them.
+NAMED_CHILDREN = {
+    "forces.linkage.pairs": "#### `[forces.friction]`",
+    "forces.linkage.friction_power_mean_W": "#### `[forces.friction]`",
+    "curves.layers": "## Drawings",
+}
+
+#: A design whose program has velocity jumps (a linear rise) with [dynamics]: its forces carry `impacts` entries
+#: and `between_impacts`, which no example has (the examples' laws are smooth).
+IMPACTS = """name = "impacts"
+[follower]
+kind = "translating"
+stroke = 30.0
+roller_radius = 8.0
+[cam]
+rotation = "ccw"
+rpm = 300
+[[motion]]
+phase = "rise"
+law = "linear"
+angle = 150
+[[motion]]
+phase = "dwell"
+angle = 30
+[[motion]]
+phase = "return"
+law = "cycloidal"
+angle = 120
+[[motion]]
+phase = "dwell"
+[limits]
+pressure_angle = 30
+closure = "force"
+[dynamics]
+mass = 0.5
+load = 5.0
+"""
+
+
+def _fenceless(text: str) -> str:
+    return re.sub(r"^```.*?^```", "", text, flags=re.S | re.M)
+
+
+def _spans(text: str) -> set[str]:
+    return set(re.findall(r"`([^`\n]+)`", _fenceless(text)))
+
+
+def _section(text: str, heading: str) -> str:
+    """The section whose heading starts with ``heading``, down to the next heading of its level or above."""
+    lines = _fenceless(text).splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith(heading))
+    level = len(heading) - len(heading.lstrip("#"))
+    end = next((j for j in range(start + 1, len(lines)) if re.match(rf"#{{1,{level}}} ", lines[j])), len(lines))
+    return "\n".join(lines[start:end])
+
+
+def _paths(obj, prefix: str, out: dict[str, set]) -> None:
+    """Every key path of ``obj`` into ``out`` (path -> the values' types seen)."""
+    if isinstance(obj, dict):
+        for k, v in obj.items():
+            p = f"{prefix}.{k}" if prefix else k
+            out.setdefault(p, set()).add(type(v).__name__)
+            _paths(v, p, out)
+    elif isinstance(obj, list):
+        for v in obj:
+            _paths(v, prefix + "[]", out)
+
+
+def _json(*args) -> Any:
+    r = cams_cli(*args, "--json")
+    assert r.returncode in (0, 1), (args, r.stderr)
+    return json.loads(r.stdout)
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory) -> dict[str, dict[str, set]]:
+    """command -> every key path its JSON had over the runs."""
+    tmp = tmp_path_factory.mktemp("json")
+    impacts = tmp / "impacts.toml"
+    impacts.write_text(IMPACTS, encoding="utf-8")
+    ex = ROOT / "examples"
+    plan: dict[str, list[tuple[Any, ...]]] = {
+        "solve": [("solve", f) for f in [*EXAMPLES, impacts]],
+        "check": [("check", ex / n) for n in ("rocker_form.toml", "translating_flat.toml", "rocker_contact.toml")],
+        "profile": [
+            ("profile", ex / "rocker_form.toml", "--dxf", tmp / "a.dxf", "--svg", tmp / "a.svg"),
+            ("profile", ex / "translating_flat.toml", "--svg", tmp / "b.svg", "--csv", tmp / "b.csv"),
+        ],
+        "machine": [
+            ("machine", ex / "machines" / "slotting_machine_forces.toml", "--forces"),
+            ("machine", ex / "machines" / "pump.toml"),
+        ],
+        "laws": [("laws",)],
+    }
+    out: dict[str, dict[str, set]] = {}
+    for command, calls in plan.items():
+        keys: dict[str, set] = {}
+        for call in calls:
+            _paths(_json(*call), "", keys)
+        out[command] = keys
+    return out
+
+
+def _named(path: str) -> tuple[str, str] | None:
+    """(parent, name) when ``path`` is a data name under one of NAMED_CHILDREN (or its descendant)."""
+    for parent in NAMED_CHILDREN:
+        for p in (parent, "cam." + parent):
+            if path.startswith(p + "."):
+                return parent, path[len(p) + 1 :].split(".")[0]
+    return None
+
+
+def _documented(path: str, spans: set[str], types: set[str]) -> bool:
+    """``path`` or a dotted tail of it is a code span; an object's also when a span names a key of it
+    (`limits.rise` documents `limits`)."""
+    parts = path.replace("[]", "").split(".")
+    named = _named(path)
+    if named:  # a pair's or layer's keys: `NAME.key` or the key itself
+        parent, name = named
+        i = parts.index(name)
+        parts[i] = "NAME"
+        if i == len(parts) - 1:
+            return True  # the name itself: checked against its section below
+    tails = [".".join(parts[i:]) for i in range(len(parts))]
+    if any(t in spans for t in tails):
+        return True
+    return "dict" in types and any(s.startswith(t + ".") for t in tails for s in spans)
+
+
+@pytest.mark.parametrize("command", ["solve", "check", "profile", "machine", "laws"])
+def test_every_json_key_documented(runs, command):
+    spans = _spans(DOC.read_text(encoding="utf-8"))
+    missing = sorted(p for p, types in runs[command].items() if not _documented(p, spans, types))
+    assert missing == [], f"`cams {command} --json` keys not documented in docs/files.md: {missing}"
+
+
+@pytest.mark.parametrize("command", ["solve", "check", "profile", "machine"])
+def test_top_level_keys_in_the_json_reference(runs, command):
+    """Each top-level key is named in that command's part of "## JSON output", not only somewhere."""
+    part = _section(DOC.read_text(encoding="utf-8"), f"### `cams {command} --json`")
+    spans = _spans(part)
+    top = {p: t for p, t in runs[command].items() if "." not in p and "[" not in p}
+    assert top, command
+    assert sorted(k for k, t in top.items() if not _documented(k, spans, t)) == []
+
+
+def test_named_children_documented(runs):
+    """A machine's pair names and a drawing's layer names are the ones their sections define."""
+    text = DOC.read_text(encoding="utf-8")
+    seen: dict[str, set[str]] = {}
+    for keys in runs.values():
+        for p in keys:
+            named = _named(p)
+            if named:
+                seen.setdefault(named[0], set()).add(named[1])
+    assert set(seen) == set(NAMED_CHILDREN)
+    for parent, names in seen.items():
+        spans = _spans(_section(text, NAMED_CHILDREN[parent]))
+        assert sorted(names - spans) == [], parent
+
+
+def test_every_json_table_row_has_a_unit():
+    """The JSON reference's tables have three columns, the last (the unit) never empty."""
+    part = _section(DOC.read_text(encoding="utf-8"), "## JSON output")
+    rows = [r for r in part.splitlines() if r.startswith("| `")]
+    assert len(rows) > 40
+    for row in rows:
+        cells = [c.strip() for c in re.split(r"(?<!\\)\|", row)[1:-1]]
+        assert len(cells) == 3 and cells[2], row
+
+
+def test_impacts_run_reaches_the_impact_keys(runs):
+    """The design with a linear rise does give the keys it is there for (else the check above proves less)."""
+    assert {"forces.impacts[].effect", "forces.between_impacts.jump_rpm"} <= set(runs["solve"])
+    assert "optimize.smoothing.first_stage_laws[].coefficients" in runs["solve"]
+    assert "forces.linkage.pairs.C_guide.mean" in runs["machine"]
