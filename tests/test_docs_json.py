@@ -199,3 +199,42 @@ def test_impacts_run_reaches_the_impact_keys(runs):
     assert {"forces.impacts[].effect", "forces.between_impacts.jump_rpm"} <= set(runs["solve"])
     assert "optimize.smoothing.first_stage_laws[].coefficients" in runs["solve"]
     assert "forces.linkage.pairs.C_guide.mean" in runs["machine"]
+
+
+# --------------------------------------------------------------------------- CSV columns
+@pytest.fixture(scope="module")
+def csv_headers(tmp_path_factory) -> dict[str, list[str]]:
+    """The header of each CSV `cams profile` writes (points, lift table) for a groove and a flat face."""
+    tmp = tmp_path_factory.mktemp("csv")
+    out = {}
+    for name in ("rocker_form", "translating_flat"):
+        points, table = tmp / f"{name}.csv", tmp / f"{name}.table.csv"
+        r = cams_cli("profile", ROOT / "examples" / f"{name}.toml", "--csv", points, "--table", table)
+        assert r.returncode == 0, r.stderr
+        for kind, path in (("points", points), ("table", table)):
+            out[f"{name} {kind}"] = path.read_text(encoding="utf-8").splitlines()[0].split(",")
+    return out
+
+
+def _column_documented(column: str, spans: set[str]) -> bool:
+    """`column` is a span, or a family `outer_*` names it."""
+    return column in spans or any(s.endswith("_*") and column.startswith(s[:-1]) for s in spans)
+
+
+def test_profile_csv_columns_documented(csv_headers):
+    """Every column of the profile's points and of the lift table is named in "Results" (units in the names)."""
+    spans = _spans(_section(DOC.read_text(encoding="utf-8"), "## Results"))
+    assert "outer_x" in csv_headers["rocker_form points"]  # the groove's wall: the widest header of each file
+    assert "outer_r_mm" in csv_headers["rocker_form table"]
+    for what, header in csv_headers.items():
+        assert [c for c in header if not _column_documented(c, spans)] == [], what
+
+
+def test_sweep_columns_documented():
+    """Every result column a sweep writes (cams.sweep.output.csv_header) is in the Sweeps section's table."""
+    from cams.sweep.output import csv_header
+
+    spans = _spans(_section(DOC.read_text(encoding="utf-8"), "## Sweeps"))
+    header = csv_header(())
+    assert "R0_mm" in header
+    assert [c for c in header if c not in spans] == []
