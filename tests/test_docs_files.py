@@ -292,3 +292,26 @@ def test_complete_example_loads(index, tmp_path):
     else:
         d = designfile.load_design(path)
         assert d.program.phases
+
+
+# --------------------------------------------------------------------------- [optimize], law tables, sweep files
+def test_optimize_keys_documented():
+    from cams.io.optimizetable import OPTIMIZE_KEYS
+
+    assert _missing(_section(_design(), "### `[optimize]`"), OPTIMIZE_KEYS) == []
+
+
+def test_law_table_keys_documented():
+    """Each kind of law table (`kind = "spline"`, `"polynomial"`) and its keys, in "Law tables"."""
+    from cams.io.lawtable import LAW_KEYS
+
+    section = _section(_design(), "#### Law tables")
+    for kind, keys in LAW_KEYS.items():
+        assert _documented(section, f'"{kind}"'), kind
+        assert _missing(section, keys) == [], kind
+
+
+def test_sweep_file_keys_documented():
+    from cams.sweep.grid import SWEEP_FILE_KEYS
+
+    assert _missing(_section(_text(), "## Sweeps"), SWEEP_FILE_KEYS) == []
