@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from cams.cli import main
@@ -42,5 +43,92 @@ def test_main_command_output_matches(capsys):
     assert main(["solve", str(README.parent / "examples" / "rocker_force.toml")]) == 0
     out = capsys.readouterr().out
     for line in shown.splitlines():
-        if line.strip().startswith(("R0", "Rmin", "L ", "centre", "max pressure", "binding")) or line.startswith("rocker cam"):
+        if line.strip().startswith(("R0", "Rmin", "L ", "centre", "max pressure", "binding")) or line.startswith(
+            "rocker cam"
+        ):
             assert line in out, line
+
+
+EXAMPLE = README.parent / "examples" / "rocker_force.toml"
+
+
+def _variant(tmp_path, name: str, cam: str = "", limits: str = "", law: str | None = None) -> str:
+    """rocker_force.toml with lines added to [cam] and [limits] (and its cycloidal laws replaced)."""
+    text = EXAMPLE.read_text(encoding="utf-8")
+    text = text.replace('rotation = "ccw"', 'rotation = "ccw"\n' + cam, 1).replace(
+        "[limits]\n", "[limits]\n" + limits, 1
+    )
+    if law:
+        text = text.replace('"cycloidal"', f'"{law}"')
+    path = tmp_path / f"{name}.toml"
+    path.write_text(text, encoding="utf-8")
+    return str(path)
+
+
+def _readme() -> str:
+    """The README's prose on one line per paragraph (its quotes wrap at the margin)."""
+    return " ".join(README.read_text(encoding="utf-8").split())
+
+
+def test_sizing_to_the_part_block_matches(tmp_path, capsys):
+    """The block under "Sizing to the part" is what rocker_force.toml with bore_radius = 10, hub_wall = 5 prints,
+    and the harmonic variant's figures in the text after it too."""
+    shown = next(b for b in _blocks("") if "floor_R0" in b and "bore    =" in b)
+    assert main(["solve", _variant(tmp_path, "bore", cam="bore_radius = 10\nhub_wall = 5\n")]) == 0
+    out = capsys.readouterr().out
+    for line in shown.splitlines():
+        assert line in out, line
+    assert main(["solve", _variant(tmp_path, "harmonic", law="harmonic")]) == 0
+    out = capsys.readouterr().out
+    assert "R0      = 10.000000 mm" in out and "the pressure angle alone: R0 = 9.467812 mm" in out
+    assert "pressure angle alone gives R0 = 9.467812 mm" in _readme()
+
+
+def test_quoted_failures_are_printed(tmp_path, capsys):
+    """The two failures the README quotes, from the files it names, exit 1 with those very lines."""
+    text = _readme()
+    chosen = _variant(tmp_path, "chosen", cam="base_radius = 13\n", limits="centre_distance = 135\n")
+    assert main(["solve", chosen]) == 1
+    line = "rise pressure angle 48.4174 deg exceeds the limit 45.0000 deg by 3.4174 deg at cam angle 0.0000 deg"
+    assert line in capsys.readouterr().out and line in text
+    kc = _variant(tmp_path, "kc", cam="centre = [137.2, 26.6]\n")
+    body = Path(kc).read_text(encoding="utf-8").replace("safety_factor = 1.0", "safety_factor = 1.3")
+    Path(kc).write_text(body, encoding="utf-8")
+    assert main(["check", kc]) == 1
+    line = (
+        "safety factor K_C = 1.3 not met: the largest K_C the centre meets is 1.1302; it lies 13.259 mm outside "
+        "the K_C zone's t-t line at cam angle 50.4854 deg in phase 0 (rise)"
+    )
+    assert line in capsys.readouterr().out and line in text
+
+
+def _anchors(path: Path) -> set[str]:
+    """The anchors a renderer gives the headings of ``path`` (lower case, punctuation dropped, spaces to -)."""
+    text = re.sub(r"^```.*?^```", "", path.read_text(encoding="utf-8"), flags=re.S | re.M)
+    out: set[str] = set()
+    seen: dict[str, int] = {}
+    for m in re.finditer(r"^#{1,6} (.*)$", text, flags=re.M):
+        a = re.sub(r"[^\w\- ]", "", m.group(1).strip().lower()).replace(" ", "-")
+        n = seen.get(a, 0)
+        seen[a] = n + 1
+        out.add(a if n == 0 else f"{a}-{n}")
+    return out
+
+
+def test_links_stay_in_the_repository_and_resolve():
+    """Every link of the README and docs/*.md is to a file of the repository (and a heading of it, when named)."""
+    pages = [README, *sorted((README.parent / "docs").glob("*.md"))]
+    bad = []
+    for page in pages:
+        text = re.sub(r"^```.*?^```", "", page.read_text(encoding="utf-8"), flags=re.S | re.M)
+        for target in re.findall(r"\]\(([^)\s]+)\)", text):
+            file, _, anchor = target.partition("#")
+            path = page.parent / file if file else page
+            if (
+                re.match(r"[a-z]+:", target)
+                or not path.exists()
+                or (anchor and path.suffix == ".md" and anchor not in _anchors(path))
+            ):
+                bad.append((page.name, target))
+    assert bad == []
+    assert "(docs/files.md#the-seeds)" in README.read_text(encoding="utf-8")  # the check reads what it should
