@@ -12,7 +12,9 @@ README = Path(__file__).resolve().parents[1] / "README.md"
 
 def _blocks(lang: str) -> list[str]:
     """The fenced code blocks of the README whose info string is ``lang``."""
-    blocks, current, info = [], None, ""
+    blocks: list[str] = []
+    current: list[str] | None = None
+    info = ""
     for line in README.read_text(encoding="utf-8").splitlines():
         if line.startswith("```"):
             if current is None:
