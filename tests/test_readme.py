@@ -134,3 +134,12 @@ def test_links_stay_in_the_repository_and_resolve():
                 bad.append((page.name, target))
     assert bad == []
     assert "(docs/files.md#the-seeds)" in README.read_text(encoding="utf-8")  # the check reads what it should
+
+
+def test_every_example_is_in_the_examples_table():
+    """A newcomer finds each file of examples/ (design and machine files) in the README's table of examples."""
+    text = README.read_text(encoding="utf-8")
+    table = text[text.index("### Examples") :].split("\n### ", 1)[0]
+    files = sorted(p.relative_to(README.parent).as_posix() for p in (README.parent / "examples").rglob("*.toml"))
+    assert len(files) >= 16
+    assert [f for f in files if f"`{f}`" not in table] == []
