@@ -238,3 +238,13 @@ def test_sweep_columns_documented():
     header = csv_header(())
     assert "R0_mm" in header
     assert [c for c in header if c not in spans] == []
+
+
+# --------------------------------------------------------------------------- quoted output
+def test_quoted_torques_are_printed():
+    """The camshaft torques docs/files.md quotes are what `cams solve` prints for the file it names."""
+    text = " ".join(DOC.read_text(encoding="utf-8").split())
+    r = cams_cli("solve", ROOT / "examples" / "translating_contact.toml")
+    assert r.returncode == 0, r.stderr
+    quoted = "largest driving torque 7.79269 N·m at 69.5000 deg; largest braking torque 8.44312 N·m at 245.5000 deg"
+    assert quoted in r.stdout and f'(`examples/translating_contact.toml`) "{quoted}"' in text
