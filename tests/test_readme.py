@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import json
+import math
 import re
 from pathlib import Path
+
+import pytest
 
 from cams.cli import main
 
@@ -144,3 +148,22 @@ def test_every_example_is_in_the_examples_table():
     files = sorted(p.relative_to(README.parent).as_posix() for p in (README.parent / "examples").rglob("*.toml"))
     assert len(files) >= 16
     assert [f for f in files if f"`{f}`" not in table] == []
+
+
+def test_python_blocks_run(capsys, monkeypatch):
+    """The README's Python blocks run in order from the repository's root and print what their comments say."""
+    monkeypatch.chdir(README.parent)
+    scope: dict = {}
+    for block in _blocks("python"):
+        exec(compile(block, "README.md", "exec"), scope)
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[2] == "True True ()"
+    # "its to_dict() is what cams solve FILE --json prints": R0, L (mm) and the rise's pressure angle (degrees there)
+    assert main(["solve", "examples/rocker_form.toml", "--json"]) == 0
+    shown = json.loads(capsys.readouterr().out)
+    own = scope["result"].to_dict()
+    added = {"forces", "failures"}  # the command's: [dynamics] and the one rule's verdict
+    assert set(shown) - set(own) == added and set(own) <= set(shown)
+    assert {k: v for k, v in own.items() if k != "seconds"} == {k: shown[k] for k in own if k != "seconds"}
+    assert [float(v) for v in lines[0].split()] == [shown["R0"], shown["L"]]
+    assert math.degrees(float(lines[1])) == pytest.approx(shown["max_pressure_angle"]["rise"], rel=1e-12)
