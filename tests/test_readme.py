@@ -167,3 +167,26 @@ def test_python_blocks_run(capsys, monkeypatch):
     assert {k: v for k, v in own.items() if k != "seconds"} == {k: shown[k] for k in own if k != "seconds"}
     assert [float(v) for v in lines[0].split()] == [shown["R0"], shown["L"]]
     assert math.degrees(float(lines[1])) == pytest.approx(shown["max_pressure_angle"]["rise"], rel=1e-12)
+
+
+def test_commands_table_lists_every_option():
+    """Each row of the README's commands table names every option its command's parser takes (but --help)."""
+    import argparse
+
+    from cams.cli import build_parser
+
+    text = README.read_text(encoding="utf-8")
+    table = text[text.index("| command | what it does |") :].split("\n\n", 1)[0]
+    rows = {m.group(1): m.group(0) for m in re.finditer(r"^\| `cams (\w+) [^\n]*", table, flags=re.M)}
+    sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    assert set(sub.choices) == set(rows)
+    missing = {
+        name: [
+            o
+            for a in parser._actions
+            for o in a.option_strings
+            if o.startswith("--") and o != "--help" and o not in rows[name]
+        ]
+        for name, parser in sub.choices.items()
+    }
+    assert {k: v for k, v in missing.items() if v} == {}
