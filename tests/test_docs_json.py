@@ -1,11 +1,14 @@
-"""docs/files.md documents every JSON key the commands print, with its unit.
+"""docs/files.md documents every JSON key the commands print, with its unit, and every CSV column.
 
 The keys are collected from real runs (``cams solve/check/profile/machine/laws --json`` on the examples, and one
 design with rigid impacts for the keys only impacts give), recursively: a key of a nested object is ``a.b``, a
-key of each entry of a list ``a[].b``. A key counts as documented when a code span of docs/files.md (outside fenced
-code) is the path or one of its dotted tails (``forces.spring.rate``: `forces.spring.rate`, `spring.rate` or
-`rate`; an object's also by a span naming one of its keys, `spring.rate`), and each command's top-level keys are named in that command's part of "## JSON output". The names that
-are data, not schema (a machine's pairs, a drawing's layers), are checked against the sections that define them.
+key of each entry of a list ``a[].b``. A nested key counts as documented where its parent is: a dotted tail of two
+keys or more is a code span (`spring.rate`), or the key is a code span in a section that names its parent
+(`max_torque` beside `forces`); ``cams machine``'s ``cam`` and ``forces.cam`` are read as ``cams solve``'s result
+and its ``forces``. Each command's top-level keys are named in that command's part of "## JSON output", whose
+table rows all give a unit. The names that are data, not schema (a machine's pairs, a drawing's layers), are
+checked against the sections that define them. The CSV headers of ``cams profile`` and ``cams sweep`` are checked
+the same way, against their sections.
 """
 
 from __future__ import annotations
