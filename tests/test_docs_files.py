@@ -122,10 +122,23 @@ def test_contact_keys_documented():
 
     section = _section(_design(), "### `[contact]`")
     assert _missing(section, CONTACT_KEYS) == []
-    json_keys = ("max_pressure", "max_pressure_at_deg", "at_max.force", "at_max.cam_curvature_radius",
-                 "at_max.follower_radius", "at_max.half_width", "max_shear", "max_shear_depth", "max_von_mises",
-                 "min_film", "min_film_parameter", "zero_entrainment_at_deg", "min_width", "bearing_life_hours",
-                 "limit")
+    json_keys = (
+        "max_pressure",
+        "max_pressure_at_deg",
+        "at_max.force",
+        "at_max.cam_curvature_radius",
+        "at_max.follower_radius",
+        "at_max.half_width",
+        "max_shear",
+        "max_shear_depth",
+        "max_von_mises",
+        "min_film",
+        "min_film_parameter",
+        "zero_entrainment_at_deg",
+        "min_width",
+        "bearing_life_hours",
+        "limit",
+    )
     assert _missing(section, json_keys) == []
 
 
@@ -184,8 +197,12 @@ def _resolve(node: ast.AST, modules) -> set[str] | None:
     """The strings of a set/tuple/list literal, or of a module-level constant (or ``tuple(NAME)``) it names."""
     if isinstance(node, (ast.Set, ast.Tuple, ast.List)):
         return {e.value for e in node.elts if isinstance(e, ast.Constant) and isinstance(e.value, str)}
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in ("tuple", "set", "sorted") \
-            and len(node.args) == 1:
+    if (
+        isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Name)
+        and node.func.id in ("tuple", "set", "sorted")
+        and len(node.args) == 1
+    ):
         return _resolve(node.args[0], modules)
     if isinstance(node, ast.Name):
         for m in modules:
@@ -204,8 +221,12 @@ def _call_args(func, callee: str, index: int, modules) -> set[str]:
     tree = ast.parse(inspect.getsource(func).lstrip() if inspect.isfunction(func) else inspect.getsource(func))
     out: set[str] = set()
     for node in ast.walk(tree):
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == callee \
-                and len(node.args) > index:
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id == callee
+            and len(node.args) > index
+        ):
             vals = _resolve(node.args[index], modules)
             if vals:
                 out |= vals
@@ -248,7 +269,9 @@ OPTION_MODULES = [designfile, design_mod, machinefile, timing_cycle, timing_plac
 @pytest.mark.parametrize("module", OPTION_MODULES, ids=lambda m: m.__name__)
 def test_option_words_documented(module):
     """Every word a loader accepts through check_option (closure, method, placement, ...) is in docs/files.md."""
-    extra = [importlib.import_module(n) for n in ("cams.machine.flywheel", "cams.machine.linkage.analysis", "cams.solve")]
+    extra = [
+        importlib.import_module(n) for n in ("cams.machine.flywheel", "cams.machine.linkage.analysis", "cams.solve")
+    ]
     words = _call_args(module, "check_option", 2, [module, *extra])
     assert words, f"no check_option options found in {module.__name__}"
     assert _missing(_text(), [f'"{w}"' for w in words]) == []
@@ -292,3 +315,26 @@ def test_complete_example_loads(index, tmp_path):
     else:
         d = designfile.load_design(path)
         assert d.program.phases
+
+
+# --------------------------------------------------------------------------- [optimize], law tables, sweep files
+def test_optimize_keys_documented():
+    from cams.io.optimizetable import OPTIMIZE_KEYS
+
+    assert _missing(_section(_design(), "### `[optimize]`"), OPTIMIZE_KEYS) == []
+
+
+def test_law_table_keys_documented():
+    """Each kind of law table (`kind = "spline"`, `"polynomial"`) and its keys, in "Law tables"."""
+    from cams.io.lawtable import LAW_KEYS
+
+    section = _section(_design(), "#### Law tables")
+    for kind, keys in LAW_KEYS.items():
+        assert _documented(section, f'"{kind}"'), kind
+        assert _missing(section, keys) == [], kind
+
+
+def test_sweep_file_keys_documented():
+    from cams.sweep.grid import SWEEP_FILE_KEYS
+
+    assert _missing(_section(_text(), "## Sweeps"), SWEEP_FILE_KEYS) == []
