@@ -69,6 +69,7 @@ MAY_IMPORT: dict[str, tuple[str, ...]] = {
                       "cams.checks", "cams.dynamics", "cams.io", "cams.faces", "cams.solve", "cams.assess", "cams.cam",
                       "cams.sweep", "cams.machine", "cams.present", "cams.manufacture"),
     "cams.cli": ("laws", "cams.commands"),
+    "cams.__main__": ("cams.cli",),
 }
 
 

@@ -193,3 +193,20 @@ def test_a_solver_failure_in_a_sweep_is_a_row_that_says_so(monkeypatch):
     res = sweep(rocker_dict(), [("follower.arm", np.array([100.0]))], workers=1, per_design=True)
     assert res.rows[0]["error"].startswith("solver failure: the nearest-point method did not settle")
     assert res.rows[0]["R0"] is None and res.failed == 1
+
+
+def test_python_m_cams_is_the_program():
+    """``python -m cams ARGS`` runs the program as the console script does: the same output and exit code as
+    :func:`cams.cli.main` in process, and a bad option is its one line and exit 2."""
+    from tests.inprocess import ROOT, cams_cli
+
+    design = str(ROOT / "examples" / "rocker_force.toml")
+    r = subprocess.run([sys.executable, "-m", "cams", "check", design], capture_output=True, text=True, cwd=ROOT)
+    here = cams_cli("check", design)
+    def strip(text: str) -> str:  # the run's own time
+        return re.sub(r"\d+(\.\d+)? ms", "ms", text)
+
+    assert (r.returncode, strip(r.stdout)) == (here.returncode, strip(here.stdout))
+    bad = subprocess.run([sys.executable, "-m", "cams", "check", design, "--nosuch"], capture_output=True,
+                         text=True, cwd=ROOT)
+    assert bad.returncode == 2 and bad.stderr.count("\n") <= 2 and "--nosuch" in bad.stderr
