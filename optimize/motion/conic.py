@@ -132,18 +132,22 @@ class Assembly:
     programs at every ratio and weighting) are so assembled once.
     """
 
-    def __init__(self, prog: ConicProgram, pattern: tuple[np.ndarray, np.ndarray] | None = None):
+    def __init__(self, prog: ConicProgram, pattern: tuple[np.ndarray, np.ndarray] | None = None, *,
+                 box_scaled: bool = False):
         n = prog.n
         self.n = n
-        self.q = np.asarray(prog.cost, float).tolist()
+        mask = np.zeros(n, bool) if prog.enforce is None else prog.enforce
+        cs = _box_scales(prog, mask) if box_scaled else np.ones(n)
+        self.cs = cs
+        self.q = (np.asarray(prog.cost, float) * cs).tolist()
         empty = np.zeros(0, np.intp)
         pr, pc = (empty, empty) if pattern is None else pattern
         m = int(pr.max(initial=-1)) + 1
         self.m = m
-        G, h = prog.G[m:], prog.h[m:]
+        G, h = prog.G[m:] * cs, prog.h[m:]
+        A = prog.A * cs
         gs = _row_norms(G)
-        As = _row_norms(prog.A)
-        mask = np.zeros(n, bool) if prog.enforce is None else prog.enforce
+        As = _row_norms(A)
         fixed = np.flatnonzero(mask & (prog.lo == prog.hi))
         ranged = np.flatnonzero(mask & (prog.lo != prog.hi))
         n_eq = prog.A.shape[0]
@@ -170,7 +174,7 @@ class Assembly:
             vals.append(np.full(columns.size, value))
             at += columns.size
 
-        dense(prog.A, As)
+        dense(A, As)
         unit(fixed, 1.0)
         if m:
             rows.append(pr + at)
@@ -182,7 +186,7 @@ class Assembly:
         unit(ranged, 1.0)
         cone_rhs = []
         for c in prog.cones:
-            dense(np.vstack([-c.a[None], -c.F]))
+            dense(np.vstack([-c.a[None], -c.F]) * cs)
             cone_rhs.append(np.concatenate([[c.a0], c.f]))
         r_all, c_all, v_all = np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
         order = np.argsort(c_all, kind="stable")        # by column, rows increasing within each (CSC)
@@ -196,6 +200,7 @@ class Assembly:
             start = len(rows[0]) + len(rows[1])
             self.slots = where[start:start + pr.size]
             self.prow = pr
+            self.pcs = cs[pc]
         self.rhs = np.concatenate([prog.b / As, prog.lo[fixed], np.zeros(m), h / gs, -prog.lo[ranged],
                                    prog.hi[ranged], *cone_rhs]).astype(float)
         self.cones = (n_zero, n_lin, tuple(1 + c.F.shape[0] for c in prog.cones))
@@ -212,6 +217,7 @@ class Assembly:
             return self.data, self.rhs, self.gs
         if values is None or h is None:
             raise ValueError("the parameter rows' values and right-hand sides are needed")
+        values = values * self.pcs
         ps = _row_norms_of(self.prow, values, m)
         data, rhs = self.data.copy(), self.rhs.copy()
         data[self.slots] = values / ps[self.prow]
@@ -265,7 +271,7 @@ class Assembly:
         for k in socs:
             mu.append((float(z[at]), z[at + 1:at + k].copy()))
             at += k
-        x = np.asarray(sol.x, float)
+        x = np.asarray(sol.x, float) * self.cs
         return Solution(_OPTIMAL[status], x, float(sol.obj_val), lam, nu, tuple(mu))
 
 
@@ -278,6 +284,13 @@ class _Csc:
     def __init__(self, data: list, indices: list, indptr: list, shape: tuple[int, int]):
         self.data, self.indices, self.indptr, self.shape = data, indices, indptr, shape
         self.nnz = len(data)
+
+
+def _box_scales(prog: ConicProgram, enforce: np.ndarray) -> np.ndarray:
+    """Each variable's scale for the solver: the half-width of its box where the box is declared only (not handed
+    to the solver, ``enforce`` False), else 1."""
+    half = np.maximum(np.abs(prog.lo), np.abs(prog.hi))
+    return np.where(~enforce & np.isfinite(half) & (half > 0), half, 1.0)
 
 
 def _row_norms_of(rows: np.ndarray, values: np.ndarray, m: int) -> np.ndarray:

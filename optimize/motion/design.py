@@ -525,7 +525,7 @@ class _Programs:
     def __init__(self, base: Request, form: str):
         self.form = form
         self.rows = pressure_rows(replace(base, objective="feasibility"), form)
-        self.assembly = Assembly(self.rows.program, self.rows.pattern)
+        self.assembly = Assembly(self.rows.program, self.rows.pattern, box_scaled=True)
 
     def solve(self, ratio: float, weights: np.ndarray | None = None) -> Solution:
         return self.assembly.solve(*self.rows.values(ratio, weights))
@@ -540,7 +540,7 @@ def _proven_above(base: Request, ratio: float, relaxed: _Programs | None = None)
     ``relaxed``: the relaxed programs already built, if any."""
     if relaxed is None:
         rel = build(replace(base, objective="feasibility", ratio=ratio), "relaxed")
-        return lower_bound(rel, solve(rel)) > 0
+        return lower_bound(rel, Assembly(rel, box_scaled=True).solve()) > 0
     return lower_bound(relaxed.program(ratio), relaxed.solve(ratio)) > 0
 
 
@@ -708,9 +708,9 @@ def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
     step = max(PROOF_SAFETY * loss / slope, RATIO_RTOL * ratio)
     r = ratio
     for _ in range(PROOF_TRIES):
+        if ratio - step <= 0:
+            break
         r = ratio - step
-        if r <= 0:
-            return 0.0
         tried = relaxed.solve(r, weights)
         bound = lower_bound(relaxed.program(r, weights), tried)
         if bound > 0:
