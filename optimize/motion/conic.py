@@ -124,6 +124,13 @@ class Assembly:
     takes them. Every row is scaled to unit norm (the derivatives' rows carry powers of the spans' count) and
     the multipliers scaled back.
 
+    With ``scales``, variable ``j`` is handed over as ``v'_j = v_j / scales[j]`` (the point scaled back; an
+    enforced variable's scale is 1), before the rows' scaling. The solver stops when the optimality conditions'
+    residual in the variables it sees is small; :func:`lower_bound` pays each variable's residual times its box's
+    half-width, which with the half-width as the scale is the residual the solver sees: the bound's loss then
+    does not grow with a wide declared box (1e5 on coefficients of size 4.5e4 turned a residual of 5.6e-7,
+    within the solver's tolerance, into a loss of 0.45).
+
     ``M`` is built in compressed-column form from each block's nonzeros (no dense stack of the whole matrix).
     With ``pattern = (rows, cols)`` the first ``m = rows.max() + 1`` rows of ``prog.G`` are parameters: their
     nonzeros lie in ``pattern`` (row-major order, every row present), their values and right-hand sides are
@@ -133,11 +140,13 @@ class Assembly:
     """
 
     def __init__(self, prog: ConicProgram, pattern: tuple[np.ndarray, np.ndarray] | None = None, *,
-                 box_scaled: bool = False):
+                 scales: np.ndarray | None = None):
         n = prog.n
         self.n = n
         mask = np.zeros(n, bool) if prog.enforce is None else prog.enforce
-        cs = _box_scales(prog, mask) if box_scaled else np.ones(n)
+        cs = np.ones(n) if scales is None else np.asarray(scales, float)
+        if cs.shape != (n,) or not np.all((cs > 0) & np.isfinite(cs)) or np.any(mask & (cs != 1)):
+            raise ValueError("scales: one positive finite number per variable, 1 for an enforced one")
         self.cs = cs
         self.q = (np.asarray(prog.cost, float) * cs).tolist()
         empty = np.zeros(0, np.intp)
@@ -284,13 +293,6 @@ class _Csc:
     def __init__(self, data: list, indices: list, indptr: list, shape: tuple[int, int]):
         self.data, self.indices, self.indptr, self.shape = data, indices, indptr, shape
         self.nnz = len(data)
-
-
-def _box_scales(prog: ConicProgram, enforce: np.ndarray) -> np.ndarray:
-    """Each variable's scale for the solver: the half-width of its box where the box is declared only (not handed
-    to the solver, ``enforce`` False), else 1."""
-    half = np.maximum(np.abs(prog.lo), np.abs(prog.hi))
-    return np.where(~enforce & np.isfinite(half) & (half > 0), half, 1.0)
 
 
 def _row_norms_of(rows: np.ndarray, values: np.ndarray, m: int) -> np.ndarray:

@@ -117,11 +117,11 @@ def test_the_assembly_is_the_programs_matrix():
     assert rhs == pytest.approx(want_rhs, rel=1e-15, abs=0)
 
 
-def test_a_box_scaled_assembly_is_the_program_in_unit_boxes():
-    """``box_scaled``: densified, the solver's matrix is each column of a variable whose box is declared only
-    multiplied by its half-width (an enforced one's by 1), then each row divided by its norm, all by hand; the
-    point it returns is the same program's point (a linear program with a unique corner, found by enumerating
-    its vertices), in the caller's variables."""
+def test_a_scaled_assembly_is_the_program_in_the_scaled_variables():
+    """``scales``: densified, the solver's matrix is each column multiplied by its variable's scale, then each row
+    divided by its norm, all by hand; the point it returns is the same program's point (a linear program with a
+    unique corner, found by enumerating its vertices), in the caller's variables; an enforced variable's scale
+    other than 1 is refused."""
     from itertools import combinations
 
     rng = np.random.default_rng(5)
@@ -140,8 +140,10 @@ def test_a_box_scaled_assembly_is_the_program_in_unit_boxes():
         hi=width,
         enforce=enforce,
     )
-    asm = Assembly(prog, box_scaled=True)
     scale = np.array([1e3, 1e5, 1.0])
+    with pytest.raises(ValueError):
+        Assembly(prog, scales=np.array([1e3, 1e5, 2.0]))
+    asm = Assembly(prog, scales=scale)
     Gs = G * scale
     norms = [np.sqrt(sum(x * x for x in row)) for row in Gs]
     e = np.eye(n)
