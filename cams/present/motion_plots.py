@@ -151,6 +151,8 @@ def plot_motion_design(cam):
     else:
         gap = "-" if info["gap"] is None else f"{info['gap']:.2g}"
         how = f"proven lower bound {info['lower_bound']:.6g}{unit}, gap {gap}"
+        if info["lower_bound"] <= 0 < info["value"]:
+            how += " (none above 0 proven)"
     sm = info.get("smoothing")
     smooth = ""
     if sm and sm["smoothed"] and sm["jerk_variation_before"] is not None and sm["jerk_variation_after"] is not None:

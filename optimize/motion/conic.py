@@ -124,6 +124,13 @@ class Assembly:
     takes them. Every row is scaled to unit norm (the derivatives' rows carry powers of the spans' count) and
     the multipliers scaled back.
 
+    With ``scales``, variable ``j`` is handed over as ``v'_j = v_j / scales[j]`` (the point scaled back; an
+    enforced variable's scale is 1), before the rows' scaling. The solver stops when the optimality conditions'
+    residual in the variables it sees is small; :func:`lower_bound` pays each variable's residual times its box's
+    half-width, which with the half-width as the scale is the residual the solver sees: the bound's loss then
+    does not grow with a wide declared box (1e5 on coefficients of size 4.5e4 turned a residual of 5.6e-7,
+    within the solver's tolerance, into a loss of 0.45).
+
     ``M`` is built in compressed-column form from each block's nonzeros (no dense stack of the whole matrix).
     With ``pattern = (rows, cols)`` the first ``m = rows.max() + 1`` rows of ``prog.G`` are parameters: their
     nonzeros lie in ``pattern`` (row-major order, every row present), their values and right-hand sides are
@@ -132,18 +139,24 @@ class Assembly:
     programs at every ratio and weighting) are so assembled once.
     """
 
-    def __init__(self, prog: ConicProgram, pattern: tuple[np.ndarray, np.ndarray] | None = None):
+    def __init__(self, prog: ConicProgram, pattern: tuple[np.ndarray, np.ndarray] | None = None, *,
+                 scales: np.ndarray | None = None):
         n = prog.n
         self.n = n
-        self.q = np.asarray(prog.cost, float).tolist()
+        mask = np.zeros(n, bool) if prog.enforce is None else prog.enforce
+        cs = np.ones(n) if scales is None else np.asarray(scales, float)
+        if cs.shape != (n,) or not np.all((cs > 0) & np.isfinite(cs)) or np.any(mask & (cs != 1)):
+            raise ValueError("scales: one positive finite number per variable, 1 for an enforced one")
+        self.cs = cs
+        self.q = (np.asarray(prog.cost, float) * cs).tolist()
         empty = np.zeros(0, np.intp)
         pr, pc = (empty, empty) if pattern is None else pattern
         m = int(pr.max(initial=-1)) + 1
         self.m = m
-        G, h = prog.G[m:], prog.h[m:]
+        G, h = prog.G[m:] * cs, prog.h[m:]
+        A = prog.A * cs
         gs = _row_norms(G)
-        As = _row_norms(prog.A)
-        mask = np.zeros(n, bool) if prog.enforce is None else prog.enforce
+        As = _row_norms(A)
         fixed = np.flatnonzero(mask & (prog.lo == prog.hi))
         ranged = np.flatnonzero(mask & (prog.lo != prog.hi))
         n_eq = prog.A.shape[0]
@@ -170,7 +183,7 @@ class Assembly:
             vals.append(np.full(columns.size, value))
             at += columns.size
 
-        dense(prog.A, As)
+        dense(A, As)
         unit(fixed, 1.0)
         if m:
             rows.append(pr + at)
@@ -182,7 +195,7 @@ class Assembly:
         unit(ranged, 1.0)
         cone_rhs = []
         for c in prog.cones:
-            dense(np.vstack([-c.a[None], -c.F]))
+            dense(np.vstack([-c.a[None], -c.F]) * cs)
             cone_rhs.append(np.concatenate([[c.a0], c.f]))
         r_all, c_all, v_all = np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
         order = np.argsort(c_all, kind="stable")        # by column, rows increasing within each (CSC)
@@ -196,6 +209,7 @@ class Assembly:
             start = len(rows[0]) + len(rows[1])
             self.slots = where[start:start + pr.size]
             self.prow = pr
+            self.pcs = cs[pc]
         self.rhs = np.concatenate([prog.b / As, prog.lo[fixed], np.zeros(m), h / gs, -prog.lo[ranged],
                                    prog.hi[ranged], *cone_rhs]).astype(float)
         self.cones = (n_zero, n_lin, tuple(1 + c.F.shape[0] for c in prog.cones))
@@ -212,6 +226,7 @@ class Assembly:
             return self.data, self.rhs, self.gs
         if values is None or h is None:
             raise ValueError("the parameter rows' values and right-hand sides are needed")
+        values = values * self.pcs
         ps = _row_norms_of(self.prow, values, m)
         data, rhs = self.data.copy(), self.rhs.copy()
         data[self.slots] = values / ps[self.prow]
@@ -265,7 +280,7 @@ class Assembly:
         for k in socs:
             mu.append((float(z[at]), z[at + 1:at + k].copy()))
             at += k
-        x = np.asarray(sol.x, float)
+        x = np.asarray(sol.x, float) * self.cs
         return Solution(_OPTIMAL[status], x, float(sol.obj_val), lam, nu, tuple(mu))
 
 

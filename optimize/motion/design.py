@@ -520,12 +520,16 @@ class _Programs:
     """The feasibility programs of one form (:func:`optimize.motion.translating.build`, objective
     ``"feasibility"``) at every ratio and weighting of their pressure rows: built and assembled for the solver
     once (:class:`optimize.motion.translating.PressureRows`, :class:`optimize.motion.conic.Assembly`); each ratio
-    then changes only the pressure rows' values."""
+    then changes only the pressure rows' values. The solver sees coefficients over their boxes (:func:`_scales`):
+    in the caller's variables an uncapped space's box
+    (1e5 on the coefficients of ``S^(c)``) times the residual the solver leaves within its tolerance took the
+    whole lower bound (0.45 of a ratio of 0.47: translating_force, its rise free, 20 spans) and stopped the
+    descent short of the least."""
 
     def __init__(self, base: Request, form: str):
         self.form = form
         self.rows = pressure_rows(replace(base, objective="feasibility"), form)
-        self.assembly = Assembly(self.rows.program, self.rows.pattern)
+        self.assembly = Assembly(self.rows.program, self.rows.pattern, scales=_scales(base, self.rows.program, form))
 
     def solve(self, ratio: float, weights: np.ndarray | None = None) -> Solution:
         return self.assembly.solve(*self.rows.values(ratio, weights))
@@ -534,13 +538,35 @@ class _Programs:
         return self.rows.program_at(ratio, weights)
 
 
+def _scales(base: Request, prog: ConicProgram, form: str) -> np.ndarray:
+    """The variables' scales for the solver (:class:`optimize.motion.conic.Assembly`): a coefficient's box's
+    half-width, else 1 (the geometry's and the slack's boxes are enforced).
+
+    The relaxed programs give bounds: every coefficient's box pays the residual there. The conservative ones give
+    the laws: only the coefficients of a free phase without caps are scaled (their boxes declared, far wider than
+    a law's needs). A cap's rows, scaled to unit norm after the columns, would have a right-hand side that
+    small beside the row's norm that the solver's tolerance let the law exceed the cap (by 6e-6 of it, where the
+    conservative program's margin is 1e-7).
+    """
+    sp = base.space
+    out = np.ones(prog.n)
+    take = np.ones(sp.size, bool)
+    if form == "conservative":
+        take = sp.declared(base.caps)
+        for k in {k for k, _ in base.caps}:
+            take[sp.offset(k):sp.offset(k) + sp.per_phase] = False
+    half = np.maximum(np.abs(prog.lo), np.abs(prog.hi))[:sp.size]
+    out[:sp.size] = np.where(take & (half > 0), half, 1.0)
+    return out
+
+
 def _proven_above(base: Request, ratio: float, relaxed: _Programs | None = None) -> bool:
     """Whether no law of the space meets the limits times ``ratio`` at ``base``'s cam: the relaxed program's
     proven lower bound of the pressure rows' least slack is above 0 (weak duality; the samples a relaxation).
     ``relaxed``: the relaxed programs already built, if any."""
     if relaxed is None:
         rel = build(replace(base, objective="feasibility", ratio=ratio), "relaxed")
-        return lower_bound(rel, solve(rel)) > 0
+        return lower_bound(rel, Assembly(rel, scales=_scales(base, rel, "relaxed")).solve()) > 0
     return lower_bound(relaxed.program(ratio), relaxed.solve(ratio)) > 0
 
 
@@ -699,7 +725,12 @@ def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
     ratio); when the proof fails there, the next ``r`` is lower by what the slack still lacks, PROOF_SAFETY
     times the loss measured at that ``r`` less the least slack found there, over the slope (the distance at
     least 1.5 times the last; doubled when the solver gave no point there); the bisection
-    (:func:`_least_ratio_proven`) below the last tried if none is proven after :data:`PROOF_TRIES`.
+    (:func:`_least_ratio_proven`) between 0 and the last ratio tried (``ratio`` if none) when none is proven
+    after :data:`PROOF_TRIES`, or when the next distance would reach 0.
+
+    The loss is what the solver's residual costs at the box (:func:`optimize.motion.conic.lower_bound`): the
+    programs hand the solver their variables over their boxes (:class:`_Programs`), so that it stays of the
+    order of the solver's tolerance.
     """
     relaxed, at, w, sol = last
     weights = _weights(pressure_terms(base, v, "relaxed"))
@@ -708,9 +739,9 @@ def _proven_below(base: Request, ratio: float, v: np.ndarray, last) -> float:
     step = max(PROOF_SAFETY * loss / slope, RATIO_RTOL * ratio)
     r = ratio
     for _ in range(PROOF_TRIES):
+        if ratio - step <= 0:
+            break
         r = ratio - step
-        if r <= 0:
-            return 0.0
         tried = relaxed.solve(r, weights)
         bound = lower_bound(relaxed.program(r, weights), tried)
         if bound > 0:

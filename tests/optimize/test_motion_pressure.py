@@ -36,23 +36,31 @@ def solved():
 
 
 def _least_slack(
-    ratio: float, *, held: float, caps: tuple[float, float], limit: float, stroke: float, beta: float
+    ratio: float,
+    *,
+    held: float,
+    caps: tuple[float, float] | None,
+    limit: float,
+    stroke: float,
+    beta: float,
+    spans: int = SPANS,
 ) -> float:
     """The least slack ``t`` (length over ``held``) of the pressure rows ``|s' + x| - T (d + s) <= t``,
-    ``T = tan(ratio limit)``, over the laws of the space (degree 7 on SPANS equal spans, C3 at the knots, at rest
-    at both ends: the neighbours are dwells) and the cam centres within ``held`` of the roller's, at 64 samples a
-    span (they nest the product's relaxation's 17), with ``|S''|``, ``|S'''|`` within the caps and S within
-    [0, 1] there: above 0 when no law of the space meets the ratio. ``tan gamma = (s' + x) / (d + s)`` is the
+    ``T = tan(ratio limit)``, over the laws of the space (degree 7 on ``spans`` equal spans, C3 at the knots, at
+    rest at both ends: the neighbours are dwells) and the cam centres within ``held`` of the roller's, at 64
+    samples a span (they nest the product's relaxation's 17), with ``|S''|``, ``|S'''|`` within the caps (None:
+    no caps, the coefficients unbounded) and S within [0, 1] there: above 0 when no law of the space meets the
+    ratio. ``tan gamma = (s' + x) / (d + s)`` is the
     textbook form (the offset ``-x``; the disk of centres is symmetric in ``x``, so the cam's sense does not
     matter)."""
     from scipy.interpolate import BSpline
     from scipy.optimize import linprog
 
     p, m = DEGREE, DEGREE - CONTINUITY
-    t = np.concatenate([np.zeros(p + 1), np.repeat(np.arange(1, SPANS) / SPANS, m), np.ones(p + 1)])
+    t = np.concatenate([np.zeros(p + 1), np.repeat(np.arange(1, spans) / spans, m), np.ones(p + 1)])
     nb = t.size - p - 1
     basis = BSpline(t, np.eye(nb), p)
-    u = np.linspace(0.0, 1.0, 64 * SPANS + 1)
+    u = np.linspace(0.0, 1.0, 64 * spans + 1)
     B = [basis.derivative(k)(u) if k else basis(u) for k in range(4)]
     n = nb + 3  # coefficients, the centre (x, d) over held, the slack t
     T = np.tan(ratio * limit)
@@ -68,7 +76,7 @@ def _least_slack(
         a[:, :nb] = sign * s1 - T * s0
         a[:, nb], a[:, nb + 1], a[:, nb + 2] = sign, -T, -1.0
         le(a, np.zeros(u.size))
-        for k, cap in ((2, caps[0]), (3, caps[1])):
+        for k, cap in () if caps is None else ((2, caps[0]), (3, caps[1])):
             a = np.zeros((u.size, n))
             a[:, :nb] = sign * B[k]
             le(a, np.full(u.size, cap))

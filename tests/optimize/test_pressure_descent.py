@@ -119,6 +119,53 @@ def test_the_assembly_is_the_programs_matrix():
     assert rhs == pytest.approx(want_rhs, rel=1e-15, abs=0)
 
 
+def test_a_scaled_assembly_is_the_program_in_the_scaled_variables():
+    """``scales``: densified, the solver's matrix is each column multiplied by its variable's scale, then each row
+    divided by its norm, all by hand; the point it returns is the same program's point (a linear program with a
+    unique corner, found by enumerating its vertices), in the caller's variables; an enforced variable's scale
+    other than 1 is refused."""
+    from itertools import combinations
+
+    rng = np.random.default_rng(5)
+    n = 3
+    G = np.vstack([rng.standard_normal((4, n)), np.eye(n), -np.eye(n)])
+    h = np.concatenate([rng.random(4) + 0.5, np.full(2 * n, 40.0)])
+    width = np.array([1e3, 1e5, 50.0])
+    enforce = np.array([False, False, True])
+    prog = ConicProgram(
+        cost=rng.standard_normal(n),
+        G=G,
+        h=h,
+        A=np.zeros((0, n)),
+        b=np.zeros(0),
+        lo=-width,
+        hi=width,
+        enforce=enforce,
+    )
+    scale = np.array([1e3, 1e5, 1.0])
+    with pytest.raises(ValueError):
+        Assembly(prog, scales=np.array([1e3, 1e5, 2.0]))
+    asm = Assembly(prog, scales=scale)
+    Gs = G * scale
+    norms = [np.sqrt(sum(x * x for x in row)) for row in Gs]
+    e = np.eye(n)
+    want = np.array([*(Gs[i] / norms[i] for i in range(G.shape[0])), -e[2], e[2]])
+    data, rhs, _ = asm.matrix()
+    assert _dense(asm, data) == pytest.approx(want, rel=1e-15, abs=0)
+    assert rhs == pytest.approx([*(h[i] / norms[i] for i in range(G.shape[0])), 50.0, 50.0], rel=1e-15, abs=0)
+    best, point = np.inf, None
+    for rows in combinations(range(G.shape[0]), n):  # every vertex of {G v <= h}
+        M = G[list(rows)]
+        if abs(np.linalg.det(M)) < 1e-9:
+            continue
+        v = np.linalg.solve(M, h[list(rows)])
+        if np.all(G @ v <= h + 1e-9) and prog.cost @ v < best:
+            best, point = float(prog.cost @ v), v
+    sol = asm.solve()
+    assert sol.value == pytest.approx(best, rel=1e-7, abs=1e-9)
+    assert sol.v == pytest.approx(point, rel=1e-5, abs=1e-5)  # an interior point method's vertex
+
+
 @pytest.mark.parametrize("form", ["conservative", "relaxed"])
 def test_the_rows_as_parameters_are_the_built_programs(base, form):
     """At two ratios and a weighting: the pressure rows with the ratio as a parameter are the program built at
@@ -191,17 +238,74 @@ def test_the_descent_stopped_at_the_gap_leaves_less_than_its_share(base, rtol, m
     assert lower < full
 
 
-def test_a_bound_that_proves_nothing_is_said(tmp_path):
-    """translating_force with its rise free, the least pressure angle at 20 spans and no caps: the relaxed programs
-    prove no ratio above 0 at the solver's accuracy. The bound 0 is true but says nothing: a note says so, beside
-    the gap of 1 (either a bound above 0 is proven, or the note is there)."""
-    from cams.cam import Cam
-    from tests.conftest import EXAMPLES
+UNCAPPED_SPANS = 20
 
-    text = (EXAMPLES / "translating_force.toml").read_text()
-    f = tmp_path / "least_pressure.toml"
-    f.write_text(text + '\n[optimize]\nfree = ["rise"]\nobjective = "pressure_angle"\nspans = 20\n')
-    o = Cam.from_file(f).solution.optimization
-    said = any(n.startswith("no lower bound above 0 was proven") for n in o.notes)
-    assert o.value > 0 and 0 <= o.lower_bound <= o.value
-    assert (o.lower_bound > 0) != said
+
+def _uncapped(scale: float):
+    """translating_force with its rise free, the least pressure angle at UNCAPPED_SPANS spans, no caps (the
+    coefficients' box declared: 1e5 on the coefficients of S^(3), which reach about 4.5e4 here), the stroke and
+    the roller times ``scale``."""
+    from cams.io.designfile import design_from_dict
+    from cams.io.document import read_toml
+
+    d = read_toml(FORCE)
+    d["follower"]["stroke"] *= scale
+    d["follower"]["roller_radius"] *= scale
+    d["optimize"] = {"free": ["rise"], "objective": "pressure_angle", "spans": UNCAPPED_SPANS}
+    return solve(design_from_dict(d))
+
+
+@pytest.fixture(scope="module")
+def uncapped():
+    return _uncapped(1.0)
+
+
+def test_the_uncapped_rise_proves_a_tight_true_bound(uncapped):
+    """The design whose certificate proved 0 (the solver's residual, within its tolerance, paid at the declared
+    box of 1e5, cost the bound 0.45): the value is the returned law's own largest ratio (kinematic inversion at
+    200,001 angles); the bound is above 0 and within 0.2 % of it; an independent linear program (the space as
+    B-splines, 64 samples a span, no box on the coefficients, HiGHS) has no law at the bound (least slack above
+    0) and one at the value."""
+    from cams.verify.pressure import pressure_angle
+    from tests.optimize.test_motion_pressure import _least_slack
+
+    o = uncapped.optimization.to_dict()
+    design = uncapped.design
+    g = np.abs(pressure_angle(design, uncapped.centre, 0, np.linspace(0.0, 1.0, 200_001)))
+    own = g.max() / design.limits.pressure_angle
+    assert o["value"] == pytest.approx(own, rel=1e-7)
+    assert 0 < o["lower_bound"] <= own
+    assert o["gap"] < 2e-3 and o["certified"]
+    kw = {
+        "held": o["held_R0"],
+        "caps": None,
+        "limit": design.limits.pressure_angle,
+        "stroke": float(design.program.lift),
+        "beta": float(design.program.phases[0].angle),
+        "spans": UNCAPPED_SPANS,
+    }
+    assert _least_slack(o["lower_bound"], **kw) > 1e-6
+    assert _least_slack(o["value"] * (1 + 1e-6), **kw) <= 1e-9
+
+
+def test_the_bound_does_not_depend_on_the_unit(uncapped):
+    """Every length times 1000 (the stroke, the roller and so the cam held): the same ratio and bound."""
+    o = uncapped.optimization
+    big = _uncapped(1000.0).optimization
+    assert big.held_R0 == pytest.approx(1000.0 * o.held_R0, rel=1e-9)
+    assert big.value == pytest.approx(o.value, rel=1e-6)
+    assert big.lower_bound == pytest.approx(o.lower_bound, rel=1e-6)
+
+
+def test_a_bound_of_0_is_said_beside_it(uncapped):
+    """The certificate's rows: a proven bound reads as one; a bound of 0 (gap 1) says that nothing above 0 was
+    proven, on the bound's row and the certificate's, instead of a plain "yes"."""
+    from cams.present.text import optimization_rows
+
+    o = uncapped.optimization.to_dict()
+    rows = dict(optimization_rows(o))
+    assert rows["certified"] == "yes"
+    assert "none above 0" not in rows["proven lower bound"]
+    rows = dict(optimization_rows({**o, "lower_bound": 0.0, "gap": 1.0}))
+    assert rows["proven lower bound"].startswith("0 (ratio to the limit), gap 1 (relative): none above 0 proven")
+    assert rows["certified"] != "yes" and "no bound proven" in rows["certified"]
