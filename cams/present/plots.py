@@ -120,6 +120,7 @@ def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0,
         fig.set_size_inches(fig.get_size_inches()[0], float(np.clip(guess, min_h, max_h)))
 
     def refit():
+        drawn = None  # the box around what is drawn, as laid out at the figure's present size
         for _ in range(rounds):
             drawn = _execute_layout(fig, DPI)
             w, h = fig.get_size_inches()
@@ -138,10 +139,23 @@ def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0,
             if abs(new - h) < 0.02:
                 break
             fig.set_size_inches(w, new)
+            drawn = None
+        # one layout after a new size starts from the decorations where the old size left them: beside a view of
+        # fixed aspect the axis label can end past the figure's edge (cut off). Laid out again until it is inside.
+        for _ in range(3):
+            if drawn is not None and _inside(drawn, fig):
+                break
+            drawn = _execute_layout(fig, DPI)
         return fig
 
     fig.refit = refit
     return refit()
+
+
+def _inside(box, fig) -> bool:
+    """Whether ``box`` (inches, :func:`_execute_layout`) lies within ``fig``'s edges (to a hundredth of an inch)."""
+    w, h = fig.get_size_inches()
+    return box.x0 >= -0.01 and box.y0 >= -0.01 and box.x1 <= w + 0.01 and box.y1 <= h + 0.01
 
 
 def _execute_layout(fig, dpi: float):

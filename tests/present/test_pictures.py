@@ -25,7 +25,10 @@ ALL_EXAMPLES = sorted(p.stem for p in EXAMPLES.glob("*.toml"))
 
 def _drawn_texts(fig):
     """The texts ``fig`` draws (titles, labels, tick labels in view, annotations, legends), with their extents
-    in pixels, after a draw."""
+    in pixels, after a draw: laid out once and kept, at the dots per inch of the PNG, as the pictures are
+    written (a draw with the layout engine still on would lay the figure out again, hiding a stale layout)."""
+    plots.lay_out(fig, plots.DPI)
+    fig.set_dpi(plots.DPI)
     canvas = FigureCanvasAgg(fig)
     canvas.draw()
     r = canvas.get_renderer()
