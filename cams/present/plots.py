@@ -97,6 +97,15 @@ def legend_once(ax, **kw):
     return ax.legend(*_unique_handles(ax), **kw)
 
 
+def _legend_above(ax, *also, ncol: int = 3):
+    """The legend of ``ax`` (and of the axes ``also`` drawn over it, a twin's other scale) above it, each label
+    once, in one frameless band: it covers none of the curves, wherever they run (the figure's title then goes
+    over the whole figure, :func:`_suptitle`; constrained layout makes room between them)."""
+    handles, labels = (sum(pair, []) for pair in zip(*(_unique_handles(a) for a in (ax, *also)), strict=True))
+    return ax.legend(handles, labels, fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=ncol,
+                     frameon=False)
+
+
 def _legend_below(fig, ax, ncol: int = 2):
     """The legend of ``ax`` under the figure's axes, each label once: it neither covers the drawing nor
     squeezes it sideways (constrained layout makes room for it)."""
@@ -580,8 +589,10 @@ def plot_forces(cam):
     for ax in axes:
         ax.grid(True, lw=0.3)
         _mark_phases(ax, d.program.starts)
+    for ax in axes[1:]:
         legend_once(ax, fontsize=7, loc="best")
-    _title(ax_n, f"{d.name}: forces at the cam at {cf.rpm:.4g} rpm")
+    _legend_above(ax_n)  # a translating follower's pane holds three curves: no room inside that covers none
+    _suptitle(fig, f"{d.name}: forces at the cam at {cf.rpm:.4g} rpm")
     return fig
 
 
@@ -895,9 +906,12 @@ def plot_vibration(cam):
     for ax in (ax_s, ax_a, ax_n):
         ax.grid(True, lw=0.3)
         _mark_phases(ax, d.program.starts)
+    for ax in (ax_a, ax_n):
         legend_once(ax, fontsize=7, loc="best")
-    legend_once(ax_e, fontsize=7, loc="lower right")
-    _title(ax_s, f"{d.name}: follower train at {v.rpm:.4g} rpm, natural frequency {v.natural_frequency:.4g} Hz")
+    # the displacement pane's two scales under one legend, above the pane: "best" weighs one scale's curves
+    # only, and a legend inside would cover the other's (a dwell's flat line runs the whole width)
+    _legend_above(ax_s, ax_e)
+    _suptitle(fig, f"{d.name}: follower train at {v.rpm:.4g} rpm, natural frequency {v.natural_frequency:.4g} Hz")
     return fig
 
 
