@@ -101,7 +101,12 @@ def _legend_above(ax, *also, ncol: int = 3):
     """The legend of ``ax`` (and of the axes ``also`` drawn over it, a twin's other scale) above it, each label
     once, in one frameless band: it covers none of the curves, wherever they run (the figure's title then goes
     over the whole figure, :func:`_suptitle`; constrained layout makes room between them)."""
-    handles, labels = (sum(pair, []) for pair in zip(*(_unique_handles(a) for a in (ax, *also)), strict=True))
+    handles: list = []
+    labels: list[str] = []
+    for a in (ax, *also):
+        h, lab = _unique_handles(a)
+        handles += h
+        labels += lab
     return ax.legend(handles, labels, fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=ncol,
                      frameon=False)
 
