@@ -759,7 +759,9 @@ def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = 
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     angle = ax.set_title("φ = 0°")
-    fig.draw_without_rendering()  # the constrained layout, once: every frame has the same decorations
+    # the height fitted to the view (a wide one leaves no empty bands above and below), the constrained layout
+    # computed once: every frame has the same decorations
+    _fit_height(fig, ax, max_h=6.0, min_h=2.5)
     fix_layout(fig)
     # each frame draws what lies in the axes, the grid among it at its own depth, as the axes would (by zorder,
     # stably): the still parts too (the base circle, the centre), lest the turned cam cover them
