@@ -390,3 +390,15 @@ def test_flywheel_of_given_moments_marks_their_excess_work():
     x = np.linspace(0, 2 * np.pi, 200001)
     want = _excess_work(x, np.zeros_like(x), Mr(x), J(x), np.pi * 300 / 30, 0.05)
     assert _marked_excess_work(fig) == pytest.approx(want, rel=6e-4)
+
+
+def test_no_legend_of_a_machine_picture_covers_a_curve(machine):
+    """The flywheel's work and speed panes end high at the right, where their legends were (no drawn point of a
+    curve lies under a legend's box, in any picture of the machine)."""
+    from cams.present.machine_plots import machine_figures
+    from tests.present.test_pictures import legends_over_curves
+
+    res, forces = machine
+    for name, fig in machine_figures(None, forces, title="machine").items():
+        fig.draw_without_rendering()
+        assert legends_over_curves(fig) == [], name
