@@ -498,3 +498,23 @@ def test_a_flat_faces_page_keeps_its_two_panes_side_by_side(browser, pages, shot
     for value in boxes:
         assert len(value.partition(".")[2]) <= 4, boxes
     assert blocked == [] and errors == []
+
+
+@pytest.mark.parametrize("name", ["rocker_force", "rocker_flat"])
+def test_the_charts_title_stands_above_its_curves(browser, pages, name):
+    """The chart's title (its one text at the top) is drawn in a band of its own: every point of every curve lies
+    below the title's box (a curve's peak ran through it)."""
+    _, html = pages(name)
+    page, blocked, errors = open_offline(browser, html)
+    try:
+        title_bottom, tops = page.evaluate(
+            "() => { const c = document.getElementById('chart');"
+            " const title = [...c.querySelectorAll('text')].find((t) => t.textContent.includes('over the cam angle'));"
+            " const b = title.getBBox();"
+            " const ys = [...c.querySelectorAll('polyline')].flatMap((p) => [...p.points].map((q) => q.y));"
+            " return [b.y + b.height, Math.min(...ys)]; }"
+        )
+    finally:
+        page.context.close()
+    assert tops >= title_bottom, (tops, title_bottom)
+    assert blocked == [] and errors == []
