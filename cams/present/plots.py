@@ -411,7 +411,7 @@ def plot_motion(design, *, n: int = 721):
     impacts = find_impacts(prog)
     for k, ax in enumerate(axes):
         ax.plot(x, Y[k], color="#2b6cb0", lw=1.2)
-        ax.set_ylabel(labels[k], fontsize=8)
+        ax.set_ylabel(labels[k])  # the size of the other pictures' labels, not below the numbers' on the axis
         ax.grid(True, lw=0.3)
         _mark_phases(ax, prog.starts)
     # impacts as marked lines named once in a legend: text labels at each would pile up where impacts are close
