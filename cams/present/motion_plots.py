@@ -152,7 +152,7 @@ def plot_motion_design(cam):
     if info["lower_bound"] is None:
         how = f"a local optimum ({info['iterations']} iterations)"
     else:
-        gap = "-" if info["gap"] is None else f"{info['gap']:.2g}"
+        gap = "-" if info["gap"] is None else f"{info['gap']:.3g} (relative)"  # as cams solve prints it
         how = f"proven lower bound {info['lower_bound']:.6g}{unit}, gap {gap}"
     sm = info.get("smoothing")
     smooth = ""
