@@ -245,8 +245,8 @@ def flywheel_figure(fw: FlywheelResult, *, title: str = "flywheel") -> Figure:
     axes[3].set_xlabel(f"{fw.reference}, deg")
     for ax in axes:
         ax.grid(True, alpha=0.3)
-    for ax in (axes[0], axes[1], axes[3]):
-        ax.legend(loc="upper right", fontsize="small")
+    for ax in (axes[0], axes[1], axes[3]):  # where no curve runs: the works end high at the right, the speed too
+        ax.legend(loc="best", fontsize="small")
     axes[0].set_title(f"{title}: delta = {fw.delta:g}, n = {fw.rpm:.4g} rpm")
     fig.tight_layout()
     return fig

@@ -61,7 +61,8 @@ def _laws_panel(fig, grid, given, designed, free, first=None) -> None:
         if k >= 2:
             ax.set_xlabel("u (normalized phase)", fontsize=8)
         if k == 0 and free:
-            ax.legend(fontsize=7, loc="upper left")
+            # above the pane: inside, its long names would cover the laws
+            ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False)
         elif k == 0:
             ax.text(0.5, 0.5, "no free phase: the laws as given", ha="center", va="center", fontsize=8,
                     transform=ax.transAxes)
@@ -85,7 +86,8 @@ def _pressure_panel(ax, given, designed, centres, n: int = 721) -> None:
     ax.set_ylabel("|pressure angle|, deg", fontsize=8)
     ax.grid(True, lw=0.3)
     ax.tick_params(labelsize=7)
-    legend_once(ax, fontsize=7, loc="upper right")
+    # above the pane: the curves' peaks can lie anywhere along the turn, and a legend inside would cover them
+    legend_once(ax, fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=4, frameon=False)
 
 
 def _cams_panel(ax, given, designed, sizes) -> None:
@@ -106,7 +108,8 @@ def _cams_panel(ax, given, designed, sizes) -> None:
     ax.tick_params(labelsize=7)
     ax.set_xlabel("x, mm (cam frame)", fontsize=8)
     ax.set_ylabel("y, mm", fontsize=8)
-    ax.legend(fontsize=7, loc="upper right")
+    # beside the cams (the view is as tall as the pane, narrower than it): inside, it would cover an outline
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
 
 
 def plot_motion_design(cam):
@@ -149,7 +152,7 @@ def plot_motion_design(cam):
     if info["lower_bound"] is None:
         how = f"a local optimum ({info['iterations']} iterations)"
     else:
-        gap = "-" if info["gap"] is None else f"{info['gap']:.2g}"
+        gap = "-" if info["gap"] is None else f"{info['gap']:.3g} (relative)"  # as cams solve prints it
         how = f"proven lower bound {info['lower_bound']:.6g}{unit}, gap {gap}"
         if info["lower_bound"] <= 0 < info["value"]:
             how += " (none above 0 proven)"

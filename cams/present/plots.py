@@ -97,6 +97,20 @@ def legend_once(ax, **kw):
     return ax.legend(*_unique_handles(ax), **kw)
 
 
+def _legend_above(ax, *also, ncol: int = 3):
+    """The legend of ``ax`` (and of the axes ``also`` drawn over it, a twin's other scale) above it, each label
+    once, in one frameless band: it covers none of the curves, wherever they run (the figure's title then goes
+    over the whole figure, :func:`_suptitle`; constrained layout makes room between them)."""
+    handles: list = []
+    labels: list[str] = []
+    for a in (ax, *also):
+        h, lab = _unique_handles(a)
+        handles += h
+        labels += lab
+    return ax.legend(handles, labels, fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=ncol,
+                     frameon=False)
+
+
 def _legend_below(fig, ax, ncol: int = 2):
     """The legend of ``ax`` under the figure's axes, each label once: it neither covers the drawing nor
     squeezes it sideways (constrained layout makes room for it)."""
@@ -120,6 +134,7 @@ def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0,
         fig.set_size_inches(fig.get_size_inches()[0], float(np.clip(guess, min_h, max_h)))
 
     def refit():
+        drawn = None  # the box around what is drawn, as laid out at the figure's present size
         for _ in range(rounds):
             drawn = _execute_layout(fig, DPI)
             w, h = fig.get_size_inches()
@@ -138,10 +153,23 @@ def _fit_height(fig, ax, *, beside=None, max_h: float = 9.0, min_h: float = 3.0,
             if abs(new - h) < 0.02:
                 break
             fig.set_size_inches(w, new)
+            drawn = None
+        # one layout after a new size starts from the decorations where the old size left them: beside a view of
+        # fixed aspect the axis label can end past the figure's edge (cut off). Laid out again until it is inside.
+        for _ in range(3):
+            if drawn is not None and _inside(drawn, fig):
+                break
+            drawn = _execute_layout(fig, DPI)
         return fig
 
     fig.refit = refit
     return refit()
+
+
+def _inside(box, fig) -> bool:
+    """Whether ``box`` (inches, :func:`_execute_layout`) lies within ``fig``'s edges (to a hundredth of an inch)."""
+    w, h = fig.get_size_inches()
+    return box.x0 >= -0.01 and box.y0 >= -0.01 and box.x1 <= w + 0.01 and box.y1 <= h + 0.01
 
 
 def _execute_layout(fig, dpi: float):
@@ -383,7 +411,7 @@ def plot_motion(design, *, n: int = 721):
     impacts = find_impacts(prog)
     for k, ax in enumerate(axes):
         ax.plot(x, Y[k], color="#2b6cb0", lw=1.2)
-        ax.set_ylabel(labels[k], fontsize=8)
+        ax.set_ylabel(labels[k])  # the size of the other pictures' labels, not below the numbers' on the axis
         ax.grid(True, lw=0.3)
         _mark_phases(ax, prog.starts)
     # impacts as marked lines named once in a legend: text labels at each would pile up where impacts are close
@@ -566,8 +594,10 @@ def plot_forces(cam):
     for ax in axes:
         ax.grid(True, lw=0.3)
         _mark_phases(ax, d.program.starts)
+    for ax in axes[1:]:
         legend_once(ax, fontsize=7, loc="best")
-    _title(ax_n, f"{d.name}: forces at the cam at {cf.rpm:.4g} rpm")
+    _legend_above(ax_n)  # a translating follower's pane holds three curves: no room inside that covers none
+    _suptitle(fig, f"{d.name}: forces at the cam at {cf.rpm:.4g} rpm")
     return fig
 
 
@@ -638,6 +668,24 @@ def _draw(ax, cam, profile, phi: float) -> Callable[[float], list]:
     return presenter(cam).draw_mechanism(ax, cam, profile, phi)
 
 
+def _hold_shifted_lines(ax) -> None:
+    """Widen ``ax``'s view to hold the lines drawn a fixed few points beside their data (a flat face and its stem
+    or arm, whose stroke is shifted off the cam's outline): matplotlib's autoscaling passes over a line whose
+    transform is not the data's, and the follower would run out of the picture. A line in axes units along one
+    direction (a follower's axis drawn across the view) is not shifted by a constant and is left out."""
+    near = 5.0 / 72.0 * ax.figure.dpi  # five points, in pixels
+    for line in ax.get_lines():
+        xy = np.column_stack([line.get_xdata(), line.get_ydata()]).astype(float)
+        xy = xy[np.all(np.isfinite(xy), axis=1)]
+        transform = line.get_transform()
+        if len(xy) == 0 or transform == ax.transData:
+            continue
+        shift = transform.transform(xy) - ax.transData.transform(xy)
+        if np.ptp(shift, axis=0).max() < 1e-6 and np.abs(shift).max() <= near:
+            ax.update_datalim(xy)
+    ax.autoscale_view()
+
+
 #: The profile picture's axes' width (inches) on an A4-wide figure, and the height of its title, axis labels and
 #: legend below (inches), as the examples' fitted pictures have them: the height the fitting starts from
 #: (:func:`_fit_height`'s ``guess``), so that it ends in one or two rounds instead of four.
@@ -663,6 +711,7 @@ def plot_profile(cam, *, phi: float | None = None):
     fig = _figure(w=A4_WIDTH_IN, h=6.0)
     ax = fig.add_subplot()
     _draw(ax, cam, profile, phi)
+    _hold_shifted_lines(ax)
     _title(ax, f"{d.name}: cam at φ = {np.degrees(phi):.1f}°")
     _legend_below(fig, ax)
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()  # the drawing's extent, to scale (equal aspect)
@@ -710,7 +759,9 @@ def animate_profile(cam, path, *, frames: int = 72, fps: int = 12, title: str = 
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     angle = ax.set_title("φ = 0°")
-    fig.draw_without_rendering()  # the constrained layout, once: every frame has the same decorations
+    # the height fitted to the view (a wide one leaves no empty bands above and below), the constrained layout
+    # computed once: every frame has the same decorations
+    _fit_height(fig, ax, max_h=6.0, min_h=2.5)
     fix_layout(fig)
     # each frame draws what lies in the axes, the grid among it at its own depth, as the axes would (by zorder,
     # stably): the still parts too (the base circle, the centre), lest the turned cam cover them
@@ -862,9 +913,12 @@ def plot_vibration(cam):
     for ax in (ax_s, ax_a, ax_n):
         ax.grid(True, lw=0.3)
         _mark_phases(ax, d.program.starts)
+    for ax in (ax_a, ax_n):
         legend_once(ax, fontsize=7, loc="best")
-    legend_once(ax_e, fontsize=7, loc="lower right")
-    _title(ax_s, f"{d.name}: follower train at {v.rpm:.4g} rpm, natural frequency {v.natural_frequency:.4g} Hz")
+    # the displacement pane's two scales under one legend, above the pane: "best" weighs one scale's curves
+    # only, and a legend inside would cover the other's (a dwell's flat line runs the whole width)
+    _legend_above(ax_s, ax_e)
+    _suptitle(fig, f"{d.name}: follower train at {v.rpm:.4g} rpm, natural frequency {v.natural_frequency:.4g} Hz")
     return fig
 
 

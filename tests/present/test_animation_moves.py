@@ -76,3 +76,20 @@ def test_one_palette_keeps_every_frame_close_to_what_was_drawn(tmp_path, monkeyp
         assert err.mean() < 1.0  # of 255 levels
         assert np.quantile(err, 0.999) < 16 and err.max() < 32
     assert shown[0][2, 2].tolist() == [255.0, 255.0, 255.0]  # the background's white, exact
+
+
+@pytest.mark.parametrize("example", ["rocker_force.toml", "translating_flat.toml"])
+def test_the_turn_has_no_empty_band_above_or_below(tmp_path, example):
+    """A wide view (a rocker's arm) on a square frame left a fifth of each frame blank above and below it: the
+    frame's height now fits the view. Measured on the pixels of the GIF's first frame: the rows with no drawn
+    pixel at the top and at the bottom are few."""
+    from PIL import Image
+
+    from cams.present import plots
+
+    cam = Cam.from_file(EXAMPLES / example)
+    path = plots.animate_profile(cam, tmp_path / "turn.gif", frames=2)
+    frame = np.asarray(Image.open(path).convert("L"))
+    drawn = np.flatnonzero((frame < 250).any(axis=1))
+    top, bottom = drawn[0], len(frame) - 1 - drawn[-1]
+    assert top + bottom <= 0.05 * len(frame), (top, bottom, frame.shape)

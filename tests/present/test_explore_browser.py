@@ -474,3 +474,47 @@ def test_a_translating_flat_faces_stem_is_on_its_axis(browser, pages, shots):
         page.close()
     assert x1 == x2 == pytest.approx(expected)
     assert blocked == [] and errors == []
+
+
+def test_a_flat_faces_page_keeps_its_two_panes_side_by_side(browser, pages, shots):
+    """rocker_flat's sizes (R0, L) under the drawing: each slider on a line of its own, so the left pane is no
+    wider than its drawing and the numbers' pane stands beside it at 1400 px (it went below, out of view); the
+    boxes show the sizes to 0.1 um, not a float's seventeen digits."""
+    _, html = pages("rocker_flat")
+    page, blocked, errors = open_offline(browser, html, width=1400, height=1000)
+    try:
+        left, right, drawing = (
+            page.evaluate(f"() => {{ const r = document.getElementById('{i}').getBoundingClientRect();"
+                          " return [r.left, r.top, r.right]; }")
+            for i in ("left", "right", "zone")
+        )
+        boxes = page.evaluate("() => [document.getElementById('R0-input').value,"
+                              " document.getElementById('L-input').value]")
+        page.screenshot(path=str(shots / "rocker_flat_panes.png"))
+    finally:
+        page.context.close()
+    assert right[1] == pytest.approx(left[1], abs=2) and right[0] >= left[2], (left, right)
+    assert left[2] - drawing[2] <= 30, (left, drawing)  # the pane holds its drawing and a margin, no more
+    for value in boxes:
+        assert len(value.partition(".")[2]) <= 4, boxes
+    assert blocked == [] and errors == []
+
+
+@pytest.mark.parametrize("name", ["rocker_force", "rocker_flat"])
+def test_the_charts_title_stands_above_its_curves(browser, pages, name):
+    """The chart's title (its one text at the top) is drawn in a band of its own: every point of every curve lies
+    below the title's box (a curve's peak ran through it)."""
+    _, html = pages(name)
+    page, blocked, errors = open_offline(browser, html)
+    try:
+        title_bottom, tops = page.evaluate(
+            "() => { const c = document.getElementById('chart');"
+            " const title = [...c.querySelectorAll('text')].find((t) => t.textContent.includes('over the cam angle'));"
+            " const b = title.getBBox();"
+            " const ys = [...c.querySelectorAll('polyline')].flatMap((p) => [...p.points].map((q) => q.y));"
+            " return [b.y + b.height, Math.min(...ys)]; }"
+        )
+    finally:
+        page.context.close()
+    assert tops >= title_bottom, (tops, title_bottom)
+    assert blocked == [] and errors == []

@@ -81,3 +81,14 @@ def test_picture_draws_the_first_stage_law_beside_the_smoothed_one(cam):
     u = np.asarray(first.get_xdata())
     assert np.allclose(first.get_ydata(), law.evaluate(u)[3])
     assert "total variation of S'''" in fig.get_suptitle()
+
+
+def test_picture_states_the_gap_as_cams_solve_prints_it():
+    """The optimality gap is a ratio: the picture's title says so, with the digits of ``cams solve``'s line (it
+    printed "gap 0.0053" where the text said "gap 0.00527 (relative)")."""
+    import re
+
+    designed = ROOT / "examples" / "translating_designed_rise.toml"
+    r = cams_cli("solve", designed)
+    (printed,) = re.findall(r"gap \S+ \(relative\)", r.stdout)
+    assert printed in plot_motion_design(Cam.from_file(designed)).get_suptitle()

@@ -243,6 +243,29 @@ def test_flat_face_profile_legend_names_no_pitch_curve(cams_by_name, name):
     assert f"base circle R0 = {cam.solution.R0:.3f} mm" in texts
 
 
+@pytest.mark.parametrize("name", ["translating_flat", "rocker_flat", "translating_flat_contact"])
+def test_the_profile_picture_holds_the_whole_flat_face(cams_by_name, name):
+    """The face's two ends (the solution's contact range on it, placed on the face's line at the picture's cam
+    angle) and a rocker's pivot lie in the view: the face is drawn beside its data (its stroke off the cam's
+    outline), which matplotlib's own limits pass over."""
+    cam = cams_by_name[name]
+    d, sol = cam.design, cam.solution
+    rise = next(k for k, p in enumerate(d.program.phases) if p.kind == "rise")
+    phi = d.program.starts[rise] + 0.5 * d.program.phases[rise].angle  # the picture's angle: mid first rise
+    origin, direction = (v[0] for v in sol.face_line(np.array([phi])))
+    points = [origin + c * direction for c in sol.face_range]
+    if d.follower.kind == "rocker":
+        points.append(np.zeros(2))
+    ax = plots.plot_profile(cam).axes[0]
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    # and the stem or arm as drawn (the follower's lines, the legend's label)
+    body = [ln for ln in ax.get_lines() if ln.get_label().startswith(("follower", "rocker"))]
+    assert len(body) == 2
+    points += [xy for ln in body for xy in np.column_stack([ln.get_xdata(), ln.get_ydata()])]
+    for x, y in points:
+        assert x0 <= x <= x1 and y0 <= y <= y1, ((x, y), (x0, x1, y0, y1))
+
+
 def test_a_failing_title_keeps_the_pictures_own():
     cam = Cam.from_file(EXAMPLES / "rocker_force.toml")
     fig = plots.mark_failing(plots.plot_zone(cam.solution), "FAILS: test")
@@ -367,3 +390,15 @@ def test_flywheel_of_given_moments_marks_their_excess_work():
     x = np.linspace(0, 2 * np.pi, 200001)
     want = _excess_work(x, np.zeros_like(x), Mr(x), J(x), np.pi * 300 / 30, 0.05)
     assert _marked_excess_work(fig) == pytest.approx(want, rel=6e-4)
+
+
+def test_no_legend_of_a_machine_picture_covers_a_curve(machine):
+    """The flywheel's work and speed panes end high at the right, where their legends were (no drawn point of a
+    curve lies under a legend's box, in any picture of the machine)."""
+    from cams.present.machine_plots import machine_figures
+    from tests.present.test_pictures import legends_over_curves
+
+    res, forces = machine
+    for name, fig in machine_figures(None, forces, title="machine").items():
+        fig.draw_without_rendering()
+        assert legends_over_curves(fig) == [], name

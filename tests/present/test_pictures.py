@@ -25,7 +25,10 @@ ALL_EXAMPLES = sorted(p.stem for p in EXAMPLES.glob("*.toml"))
 
 def _drawn_texts(fig):
     """The texts ``fig`` draws (titles, labels, tick labels in view, annotations, legends), with their extents
-    in pixels, after a draw."""
+    in pixels, after a draw: laid out once and kept, at the dots per inch of the PNG, as the pictures are
+    written (a draw with the layout engine still on would lay the figure out again, hiding a stale layout)."""
+    plots.lay_out(fig, plots.DPI)
+    fig.set_dpi(plots.DPI)
     canvas = FigureCanvasAgg(fig)
     canvas.draw()
     r = canvas.get_renderer()
@@ -62,6 +65,29 @@ def text_faults(fig) -> list[str]:
     return faults
 
 
+def legends_over_curves(fig) -> list[str]:
+    """The curves (lines of three or more points, of any axes over the legend's own) with a drawn point under a
+    legend's box, measured on ``fig`` as drawn last (:func:`text_faults` draws it)."""
+    faults = []
+    for owner in fig.axes:
+        legend = owner.get_legend()
+        if legend is None:
+            continue
+        box = legend.get_window_extent()
+        for ax in fig.axes:
+            if not ax.get_window_extent().overlaps(owner.get_window_extent()):
+                continue
+            for line in ax.get_lines():
+                xy = line.get_xydata()
+                if not line.get_visible() or len(xy) < 3:
+                    continue
+                P = line.get_transform().transform(xy)
+                under = (P[:, 0] > box.x0) & (P[:, 0] < box.x1) & (P[:, 1] > box.y0) & (P[:, 1] < box.y1)
+                if under.any():
+                    faults.append(f"legend over {line.get_label()!r} ({under.sum()} points)")
+    return faults
+
+
 def legend_duplicates(fig) -> list[str]:
     legends = [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None] + list(fig.legends)
     dups = []
@@ -75,8 +101,13 @@ def _figures(cam):
     """Every picture of the cam's face (its pipeline's names), drawn as cams plot draws them."""
     from cams.present.faces import presenter
 
-    return {name: plots.picture(kind, cam) for name, kind in presenter(cam).pictures.items()
-            if plots.missing(kind, cam) is None}  # the forces: only a cam with [dynamics]
+    figures = {name: plots.picture(kind, cam) for name, kind in presenter(cam).pictures.items()
+               if plots.missing(kind, cam) is None}  # the forces: only a cam with [dynamics]
+    if cam.given.optimize is not None:
+        from cams.present.motion_plots import plot_motion_design
+
+        figures["optimized"] = plot_motion_design(cam)
+    return figures
 
 
 @pytest.mark.parametrize("name", ALL_EXAMPLES)
@@ -84,6 +115,7 @@ def test_every_picture_of_every_example_reads(name):
     cam = Cam.from_file(EXAMPLES / f"{name}.toml")
     for which, fig in _figures(cam).items():
         assert text_faults(fig) == [], which
+        assert legends_over_curves(fig) == [], which
         assert legend_duplicates(fig) == [], which
 
 

@@ -98,3 +98,12 @@ def test_names_the_font_lacks_print_no_warnings(tmp_path):
                         "--only", "motion"], capture_output=True, text=True)
     assert r.returncode == 0 and r.stderr == "", r.stderr
     assert (tmp_path / "out" / "插床进给凸轮_motion.png").stat().st_size > 1000
+
+
+def test_motion_picture_names_its_axes_no_smaller_than_their_numbers(cams_by_name):
+    """Each pane's quantity and unit (its y label) is printed at least as large as the numbers on its axis (it
+    was 8 pt beside 10 pt numbers: about 6 pt on the report's page)."""
+    fig = plot_motion(cams_by_name["rocker_force"].design)
+    for ax in fig.axes:
+        numbers = [t.get_fontsize() for t in ax.get_yticklabels()]
+        assert numbers and ax.yaxis.label.get_fontsize() >= max(numbers), ax.get_ylabel()
