@@ -23,8 +23,19 @@ def run(args) -> int:
             print(f"cams sweep: interrupted; {out} holds {state['rows']} row(s): run again with --resume to go on",
                   file=sys.stderr)
         else:
-            print("cams sweep: interrupted", file=sys.stderr)
+            if state.get("created") is not None:  # a header and a sidecar, no row: nothing to resume, nothing left
+                _remove(state["created"])
+            print("cams sweep: interrupted before a row was solved; nothing written", file=sys.stderr)
         return EXIT_INTERRUPTED
+
+
+def _remove(out: Path) -> None:
+    """Remove the files a sweep that wrote no row began at ``out``: the table, its sidecar, its Parquet parts."""
+    from cams.sweep.output import parts_dir, sidecar_path
+
+    for p in (out, sidecar_path(out)):
+        p.unlink(missing_ok=True)
+    shutil.rmtree(parts_dir(out), ignore_errors=True)
 
 
 def _n(k: int, what: str) -> str:
@@ -127,7 +138,7 @@ def _run(args, state: dict) -> int:
         except ImportError:
             raise InputError("--format", "parquet needs pyarrow: pip install 'cams[parquet]'") from None
     files, grid = _grid(args)
-    cluster = _before_sweep(args, out, files)
+    cluster = _before_sweep(args, out, files, grid)
     check_output_paths([("--out", args.out)], inputs=[("FILE", f) for f in files])
     identity = {**grid.identity(), "format": fmt, "columns": csv_header(grid.keys)}
     done: set[int] = set()
@@ -137,9 +148,11 @@ def _run(args, state: dict) -> int:
         rows = read_rows(fmt, out, grid.keys)
         done = _indexes(out, rows, grid.size)
         before_failed = sum(map(failed, rows))
-    else:
-        write_identity(out, identity)
     append = bool(done) or (fmt == "parquet" and args.resume)
+    if not append:  # this run writes the table from its header: with no row solved, it leaves none behind
+        state["created"] = out
+    if not resumed:
+        write_identity(out, identity)
     sink = sink_for(fmt, out, grid.keys, append=append)
     state["out"], state["rows"] = out, len(done)
 
@@ -163,12 +176,7 @@ def _run(args, state: dict) -> int:
     except BaseException as e:
         sink.close(finished=False)
         if isinstance(e, InputError) and not append and not state["rows"]:
-            # refused before a row was written (--dask's cluster unreachable): no file is left behind
-            from cams.sweep.output import parts_dir, sidecar_path
-
-            for p in (out, sidecar_path(out)):
-                p.unlink(missing_ok=True)
-            shutil.rmtree(parts_dir(out), ignore_errors=True)
+            _remove(out)  # refused before a row was written (--dask's cluster unreachable): no file is left behind
         raise
     sink.close(finished=True)
     infeasible = res.failed + before_failed
@@ -192,8 +200,9 @@ def _add_front_arguments(q) -> None:
                    "workers); pip install \"cams[dask]\"")
 
 
-def _before_sweep(args, out, files) -> str | None:
-    """Check the front's, the chart's and the cluster's options before solving; the cluster's address, if any.
+def _before_sweep(args, out, files, grid) -> str | None:
+    """Check the front's, the chart's and the cluster's options before solving (``--pareto``'s and ``--axes``'
+    columns against the header of the table about to be written); the cluster's address, if any.
 
     Returns
     -------
@@ -205,6 +214,15 @@ def _before_sweep(args, out, files) -> str | None:
     from cams.sweep.cluster import check_spec
 
     check_front_arguments(args, out, inputs=[("FILE", f) for f in files])
+    if args.pareto is not None or args.plot is not None:
+        from cams.commands.front import check_columns
+        from cams.sweep.outfile import table_of
+        from cams.sweep.output import csv_header
+
+        # a varied key of words (a law's name) or flags is a column the front cannot compare nor the chart draw
+        words = {k for k, vs in zip(grid.keys, grid.values, strict=True)
+                 if any(isinstance(v, (str, bool)) for v in vs)}
+        check_columns(args, table_of(out, csv_header(grid.keys), field="--out"), words)
     if args.dask is None:
         return None
     check_spec(args.dask, args.jobs)
