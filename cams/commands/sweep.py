@@ -79,7 +79,15 @@ def _grid(args):
             same = "" if first == f else f" (as {first!r})"
             raise InputError("FILE" if args.sweep_file is None else "--sweep-file",
                              f"{f!r} is given twice{same}; give each file once")
-    bases = [BaseFile(f, read_toml(f), file_hash(f)) for f in files]
+    bases = []
+    for f in files:
+        try:
+            bases.append(BaseFile(f, read_toml(f), file_hash(f)))
+        except InputError as e:  # a design file the sweep file names: the sweep file's `files` is at fault
+            if args.sweep_file is None:
+                raise
+            why = str(e).removeprefix(f"{e.field}: ")
+            raise InputError("--sweep-file", f"{args.sweep_file}: files: {why}") from None
     for b in bases:
         if args.sweep_file is None and "files" in b.design:
             raise InputError("FILE", f"{b.label!r} is a sweep file: give it as --sweep-file {b.label}")

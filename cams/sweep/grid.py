@@ -51,6 +51,14 @@ def parse_value(text: str) -> int | float | bool | str:
     return t
 
 
+def _float(text: str) -> float | None:
+    """``text`` read as a float (``nan`` and ``inf`` too), else None."""
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
 def parse_vary(spec: str) -> tuple[str, Any]:
     """``"KEY=a:b:n"`` -> (KEY, n values from a to b); ``"KEY=v1,v2,..."`` -> the listed values.
 
@@ -68,6 +76,10 @@ def parse_vary(spec: str) -> tuple[str, Any]:
         raise InputError("--vary", f"{spec!r} names no key")
     key_parts(key)
     vals: Any
+    if rng.count(":") == 2 and all(_float(p) is not None for p in rng.split(":")):
+        ends_ = [_float(p) for p in rng.split(":")]
+        if not all(math.isfinite(e) for e in ends_ if e is not None):  # nan:120:3, 100:inf:3
+            raise InputError("--vary", f"{spec!r}: a range a:b:n takes finite numbers")
     if ":" in rng and all(_NUMBER.fullmatch(p.strip()) for p in rng.split(":")):
         ends = rng.split(":")
         if len(ends) != 3 or not float(ends[2]).is_integer() or float(ends[2]) < 1:
@@ -451,7 +463,10 @@ def read_sweep_file(path: str | Path) -> tuple[list[str], list[tuple[str, Any]],
         if isinstance(v, dict):
             raise InputError("--sweep-file", f"vary.{key}: quote dotted keys (\"{key}.{next(iter(v), '')}\" = ...)")
         if isinstance(v, str):
-            vary.append(parse_vary(f"{key}={v}"))
+            try:
+                vary.append(parse_vary(f"{key}={v}"))
+            except InputError as e:  # the sweep file's entry, not a --vary option
+                raise InputError("--sweep-file", f"vary.{key} = {v!r}: {str(e).split(': ', 2)[-1]}") from None
         elif isinstance(v, list) and v and all(isinstance(x, (int, float, str, bool)) for x in v):
             nums = [x for x in v if isinstance(x, (int, float)) and not isinstance(x, bool)]
             key_parts(key, "--sweep-file")

@@ -190,3 +190,26 @@ def test_ctrl_c_before_a_row_leaves_nothing(tmp_path, monkeypatch):
     assert (r.returncode, r.stdout) == (130, "")
     assert r.stderr == "cams sweep: interrupted before a row was solved; nothing written\n"
     assert os.listdir(tmp_path) == []
+
+
+@pytest.mark.parametrize("rng", ["nan:120:3", "100:inf:3", "100:120:nan", "-inf:1e400:2"])
+def test_a_range_of_non_finite_numbers_is_said_so(tmp_path, rng):
+    """A range's ends and count are finite numbers: said so, naming the option or the sweep file's entry (it was
+    read as one word, "must be a number, got the string 'nan:120:3'", and a sweep file's range named --vary)."""
+    r = cams_cli("sweep", ROCKER, "--vary", f"follower.arm={rng}", "--out", tmp_path / "s.csv", "--quiet")
+    _one_line(r, f"cams sweep: error: --vary: 'follower.arm={rng}': a range a:b:n takes finite numbers")
+    sf = tmp_path / "sweep.toml"
+    sf.write_text(f'files = ["{ROCKER.as_posix()}"]\n[vary]\n"follower.arm" = "{rng}"\n', encoding="utf-8")
+    r = cams_cli("sweep", "--sweep-file", sf, "--out", tmp_path / "s.csv", "--quiet")
+    _one_line(r, f"cams sweep: error: --sweep-file: vary.follower.arm = '{rng}': a range a:b:n takes finite numbers")
+    assert sorted(os.listdir(tmp_path)) == ["sweep.toml"]
+
+
+def test_a_sweep_files_missing_design_is_its_files_entry(tmp_path):
+    """The design files a sweep file names are its ``files``: a missing one names --sweep-file (it named FILE,
+    an argument the command line did not have)."""
+    sf = tmp_path / "sweep.toml"
+    sf.write_text('files = ["absent.toml"]\n[vary]\n"follower.arm" = [100, 120]\n', encoding="utf-8")
+    r = cams_cli("sweep", "--sweep-file", sf, "--out", tmp_path / "s.csv", "--quiet")
+    err = _one_line(r, f"cams sweep: error: --sweep-file: {sf}: files: cannot read ")
+    assert "absent.toml" in err and sorted(os.listdir(tmp_path)) == ["sweep.toml"]
