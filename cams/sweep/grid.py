@@ -267,7 +267,8 @@ def _kind_error(e: CamsError) -> bool:
     """Whether an error says a value is of the wrong kind for its key (not merely out of range)."""
     s = str(e)
     return any(w in s for w in ("must be a number, got", "is not a valid option", "unknown law", "must be a string",
-                                "must be a table", "must be an integer", "must be [x, y]"))
+                                "must be a table", "must be an integer", "must be [x, y]", "needs a list of",
+                                "must be an array"))
 
 
 def _involves(field: str, keys: tuple[str, ...]) -> bool:

@@ -213,3 +213,11 @@ def test_a_sweep_files_missing_design_is_its_files_entry(tmp_path):
     r = cams_cli("sweep", "--sweep-file", sf, "--out", tmp_path / "s.csv", "--quiet")
     err = _one_line(r, f"cams sweep: error: --sweep-file: {sf}: files: cannot read ")
     assert "absent.toml" in err and sorted(os.listdir(tmp_path)) == ["sweep.toml"]
+
+
+def test_a_whole_motion_list_replaced_by_a_number_is_one_line(tmp_path):
+    """``--vary motion=1,2`` is a value of the wrong kind for its key, as ``follower=1`` is: one line before
+    solving (it was a table of rows each with the same error, exit 1)."""
+    r = cams_cli("sweep", ROCKER, "--vary", "motion=1,2", "--out", tmp_path / "s.csv", "--quiet")
+    _one_line(r, "cams sweep: error: motion: needs a list of phases ([[motion]] tables), got 1 (--vary motion=1)")
+    assert os.listdir(tmp_path) == []
