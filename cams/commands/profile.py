@@ -38,6 +38,11 @@ def _check_outputs(args) -> None:
     if args.table is not None:
         table_angles(1.0 if args.step is None else args.step)
     check_output_paths([(f"--{opt}", getattr(args, opt)) for opt in OUTPUTS], inputs=[("FILE", args.file)])
+    from cams.io.files import check_suffix
+
+    for opt, suffix, what in (("csv", ".csv", "CSV"), ("table", ".csv", "a CSV table"), ("dxf", ".dxf", "DXF"),
+                              ("svg", ".svg", "SVG")):
+        check_suffix(getattr(args, opt), f"--{opt}", (suffix,), what)
     if args.max_accel_error is not None:
         from cams.manufacture.motion import check_share
 
