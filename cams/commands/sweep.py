@@ -138,12 +138,12 @@ def _run(args, state: dict) -> int:
     if str(args.out) == "-" or not (out.parent.is_dir() and (not out.exists() or out.is_file())):
         raise InputError("--out", f"{args.out!r}: a sweep streams its rows into a regular file (to resume from it)")
     fmt = _format(args, out)
+    resumed = args.resume and (out.exists() or (fmt == "parquet" and parts_dir(out).exists()))
+    check_out(out, resumed=resumed)  # a sidecar's name (.sweep.json) said as such, before its .json below
     from cams.io.files import check_suffix
     from cams.sweep.outfile import PARQUET_SUFFIXES
 
     check_suffix(args.out, "--out", (".csv", *PARQUET_SUFFIXES), "the sweep's table (CSV or Parquet)")
-    resumed = args.resume and (out.exists() or (fmt == "parquet" and parts_dir(out).exists()))
-    check_out(out, resumed=resumed)
     if fmt == "parquet":
         try:
             import pyarrow  # noqa: F401

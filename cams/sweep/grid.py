@@ -386,16 +386,20 @@ def make_grid(files: list[BaseFile], vary: list[tuple[str, Any]], *, mode: str =
     for key, vals in zip(keys, values, strict=True):
         if len(vals) == 0:
             raise InputError(origin, f"{key!r} has no values")
-        twice = [v for k, v in enumerate(vals) if v in vals[:k]]
-        if mode == "grid" and twice:  # the same designs solved twice (zip pairs may repeat one key's value)
-            raise InputError(origin, f"{key!r}: the value {as_number(twice[0])!r} is given twice; give each once")
     if mode == "zip" and len({len(v) for v in values}) > 1:
         counts = ", ".join(f"{k}: {len(v)}" for k, v in zip(keys, values, strict=True))
         raise InputError("--zip", f"zipped keys give as many values each, got {counts}")
-    grid = Grid(files=tuple(files), keys=keys, values=values, mode=mode, method=method)
     count = len(files) * (math.prod(len(v) for v in values) if mode == "grid" else len(values[0]) if values else 1)
-    if count > MAX_DESIGNS:
+    if count > MAX_DESIGNS:  # before anything looks at the values one by one
         raise InputError(origin, f"the sweep has {count:,} designs; at most {MAX_DESIGNS:,} are accepted")
+    if mode == "grid":  # the same designs solved twice (zip pairs may repeat one key's value)
+        for key, vals in zip(keys, values, strict=True):
+            held: set = set()  # equal values hash alike (100 and 1e2): one pass, not a comparison of every pair
+            for v in vals:
+                if v in held:
+                    raise InputError(origin, f"{key!r}: the value {as_number(v)!r} is given twice; give each once")
+                held.add(v)
+    grid = Grid(files=tuple(files), keys=keys, values=values, mode=mode, method=method)
     first = tuple(v[0] for v in values)
     last = tuple(v[-1] for v in values)
     errors = [_check_base(b.design, keys, first, last, origin) for b in files]

@@ -221,3 +221,37 @@ def test_a_whole_motion_list_replaced_by_a_number_is_one_line(tmp_path):
     r = cams_cli("sweep", ROCKER, "--vary", "motion=1,2", "--out", tmp_path / "s.csv", "--quiet")
     _one_line(r, "cams sweep: error: motion: needs a list of phases ([[motion]] tables), got 1 (--vary motion=1)")
     assert os.listdir(tmp_path) == []
+
+
+def test_a_grid_too_large_is_refused_at_once(tmp_path):
+    """Two keys of 100,000 values (10^10 designs): refused by its count, in a moment. The values were first
+    compared pair by pair (5 x 10^9 comparisons a key): the command hung for minutes before saying so."""
+    import time
+
+    t0 = time.perf_counter()
+    r = cams_cli(
+        "sweep",
+        ROCKER,
+        "--vary",
+        "follower.arm=100:200:100000",
+        "--vary",
+        "follower.swing=10:20:100000",
+        "--out",
+        tmp_path / "s.csv",
+        "--quiet",
+    )
+    assert time.perf_counter() - t0 < 20
+    _one_line(r, "cams sweep: error: --vary: the sweep has 10,000,000,000 designs; at most 100,000 are accepted")
+    assert os.listdir(tmp_path) == []
+
+
+def test_a_value_twice_among_many_is_found_at_once(tmp_path):
+    """100,000 listed values, the last equal to the first written another way (1e2 for 100): said in a moment."""
+    import time
+
+    values = ",".join([*(str(100 + k) for k in range(99_999)), "1e2"])
+    t0 = time.perf_counter()
+    r = cams_cli("sweep", ROCKER, "--vary", f"follower.arm={values}", "--out", tmp_path / "s.csv", "--quiet")
+    assert time.perf_counter() - t0 < 20
+    _one_line(r, "cams sweep: error: --vary: 'follower.arm': the value 100 is given twice; give each once")
+    assert os.listdir(tmp_path) == []
