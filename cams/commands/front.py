@@ -145,9 +145,15 @@ def _numbers(table, name: str, usable, field: str, table_field: str = "TABLE") -
 
     col = table.column(name, field)
     cells = table.columns[col]
-    if col in ("error", "failures") or not isinstance(cells, np.ndarray) or cells.dtype.kind not in "fi":
-        raise InputError(field, f"{col!r} is not a column of numbers (words or True/False)")
     j = table.names.index(col)
+    if col in ("error", "failures") or not isinstance(cells, np.ndarray) or cells.dtype.kind not in "fi":
+        raw = [r[j].strip() for r in table.cells]
+        numbers = [_is_number(c) for c in raw]
+        if col not in ("error", "failures") and any(numbers):  # a column of numbers with a word in it: an edit
+            i = next(i for i, c in enumerate(raw) if c and not numbers[i])
+            raise InputError(table_field, f"{table.path}: data row {i + 1}, column {table.headers[j]!r} holds "
+                             f"{table.cells[i][j]!r}, not a number as the column's other cells")
+        raise InputError(field, f"{col!r} is not a column of numbers (words or True/False)")
     for i in np.flatnonzero(~np.isfinite(cells)):
         if table.cells[i][j].strip():
             raise InputError(table_field, f"{table.path}: data row {i + 1}, column {table.headers[j]!r} holds "
@@ -155,6 +161,14 @@ def _numbers(table, name: str, usable, field: str, table_field: str = "TABLE") -
     if usable.any() and np.all(np.isnan(cells[usable])):
         raise InputError(field, f"{col!r} is empty in every usable row: nothing to compare")
     return col
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def _usable(table, field: str):

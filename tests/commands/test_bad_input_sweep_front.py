@@ -255,3 +255,14 @@ def test_a_value_twice_among_many_is_found_at_once(tmp_path):
     assert time.perf_counter() - t0 < 20
     _one_line(r, "cams sweep: error: --vary: 'follower.arm': the value 100 is given twice; give each once")
     assert os.listdir(tmp_path) == []
+
+
+def test_a_word_in_a_column_of_numbers_names_the_cell(table, tmp_path):
+    """One cell of R0 edited to a word: said as that cell of TABLE (it was "'R0' is not a column of numbers", of
+    the column every front is drawn over)."""
+    rows = [list(r) for r in table]
+    rows[3][rows[0].index("R0_mm")] = "abc"
+    t = tmp_path / "t.csv"
+    _write(t, rows)
+    err = _one_line(cams_cli("front", t, "--pareto", "R0,L"), "cams front: error: TABLE: ")
+    assert "data row 3, column 'R0_mm' holds 'abc', not a number" in err and os.listdir(tmp_path) == ["t.csv"]
