@@ -150,9 +150,9 @@ def _numbers(table, name: str, usable, field: str, table_field: str = "TABLE") -
         raw = [r[j].strip() for r in table.cells]
         numbers = [_is_number(c) for c in raw]
         if col not in ("error", "failures") and any(numbers):  # a column of numbers with a word in it: an edit
-            i = next(i for i, c in enumerate(raw) if c and not numbers[i])
-            raise InputError(table_field, f"{table.path}: data row {i + 1}, column {table.headers[j]!r} holds "
-                             f"{table.cells[i][j]!r}, not a number as the column's other cells")
+            w = next(k for k, c in enumerate(raw) if c and not numbers[k])
+            raise InputError(table_field, f"{table.path}: data row {w + 1}, column {table.headers[j]!r} holds "
+                             f"{table.cells[w][j]!r}, not a number as the column's other cells")
         raise InputError(field, f"{col!r} is not a column of numbers (words or True/False)")
     for i in np.flatnonzero(~np.isfinite(cells)):
         if table.cells[i][j].strip():
