@@ -316,9 +316,14 @@ def _oscillator(rho: float, zeta: float, t: np.ndarray) -> np.ndarray:
     if d > 0:
         w = np.sqrt(d)
         c, sn = np.cos(w * t), np.sin(w * t) / w
-    elif d < 0:
+    elif d < 0:  # exp(mu t) cosh(w t) and exp(mu t) sinh(w t) / w from exp((mu -+ w) t): each factor alone overflows
         w = np.sqrt(-d)
-        c, sn = np.cosh(w * t), np.sinh(w * t) / w
+        x = 2 * w * t
+        near = np.abs(x) < 1  # e^x - 1 by expm1 there: no cancellation as w t -> 0
+        em, ep = np.exp((mu - w) * t), np.exp((mu + w) * t)
+        ec = 0.5 * (ep + em)
+        es = np.where(near, 0.5 * em * np.expm1(np.where(near, x, 0.0)), 0.5 * (ep - em)) / w
+        return ec[:, None, None] * np.eye(2) + es[:, None, None] * (a - mu * np.eye(2))
     else:
         c, sn = np.ones_like(t), t.copy()
     n = a - mu * np.eye(2)
