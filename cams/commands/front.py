@@ -289,9 +289,18 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
     if table.dropped:
         print(f"{path}: {table.dropped} line(s) left out: another count of cells than the header's (cut short by an "
               "interrupted writer, or edited)", file=sys.stderr)
+    from cams.io.files import all_or_nothing
+
+    saved, chart = None, None
+    with all_or_nothing():  # the front's CSV and the chart together or neither (a chart that cannot be written)
+        if front is not None:
+            saved = write_rows(pareto_path(path), table, front.rows, "--pareto")
+        if fig is not None:
+            from cams.present.sweepplot import save_chart
+
+            chart = save_chart(fig, args.plot)
     code = EXIT_OK
     if front is not None:
-        saved = write_rows(pareto_path(path), table, front.rows, "--pareto")
         names = ", ".join(f"{o} ({table.units[o.column]})" if table.units.get(o.column) else str(o) for o in objs)
         print(
             f"Pareto front over {names} (minimised unless max:): {len(front.rows)} of {n} rows "
@@ -305,10 +314,8 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
         if not len(front.rows):
             print(f"{path}: no usable row, the front is empty", file=sys.stderr)
             code = EXIT_CHECK_FAILED
-    if fig is not None:
-        from cams.present.sweepplot import save_chart
-
-        print(f"wrote {save_chart(fig, args.plot)}", file=sys.stderr)
+    if chart is not None:
+        print(f"wrote {chart}", file=sys.stderr)
     return code
 
 

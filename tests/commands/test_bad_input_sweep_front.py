@@ -266,3 +266,20 @@ def test_a_word_in_a_column_of_numbers_names_the_cell(table, tmp_path):
     _write(t, rows)
     err = _one_line(cams_cli("front", t, "--pareto", "R0,L"), "cams front: error: TABLE: ")
     assert "data row 3, column 'R0_mm' holds 'abc', not a number" in err and os.listdir(tmp_path) == ["t.csv"]
+
+
+def test_a_chart_that_cannot_be_written_leaves_no_front(table, tmp_path, monkeypatch):
+    """The chart's place refused only when written (a folder of a file system that takes no file: checked paths
+    cannot tell): the front's CSV was already saved and printed, exit 2 after it; now neither is left."""
+    import cams.present.sweepplot
+    from laws.errors import InputError
+
+    def refuse(fig, path, field="--plot"):
+        raise InputError("--plot", f"cannot write {str(path)!r}: No such file or directory")
+
+    monkeypatch.setattr(cams.present.sweepplot, "save_chart", refuse)
+    t = tmp_path / "t.csv"
+    _write(t, table)
+    r = cams_cli("front", t, "--pareto", "R0,L", "--plot", tmp_path / "c.png")
+    _one_line(r, "cams front: error: --plot: cannot write ")
+    assert os.listdir(tmp_path) == ["t.csv"]
