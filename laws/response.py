@@ -322,18 +322,22 @@ def _oscillator(rho, zeta: float, t) -> np.ndarray:
     if q > 0:
         w = np.sqrt(d)
         c, sn = np.cos(w * t), np.sin(w * t) / w
-    elif q < 0:
+    elif q < 0:  # exp(mu t) cosh(w t) and exp(mu t) sinh(w t) / w from exp((mu -+ w) t): each factor alone overflows
         w = np.sqrt(-d)
-        c, sn = np.cosh(w * t), np.sinh(w * t) / w
+        x = 2 * w * t
+        near = np.abs(x) < 1  # e^x - 1 by expm1 there: no cancellation as w t -> 0
+        em, ep = np.exp((mu - w) * t), np.exp((mu + w) * t)
+        c = 0.5 * (ep + em)
+        sn = np.where(near, 0.5 * em * np.expm1(np.where(near, x, 0.0)), 0.5 * (ep - em)) / w
     else:
         c = np.ones(np.broadcast_shapes(rho.shape, t.shape))
         sn = t * c
-    out = np.empty((*c.shape, 2, 2))  # c I + s (A - mu I), entry by entry
+    out = np.empty((*c.shape, 2, 2))  # c I + s (A - mu I), entry by entry (overdamped: exp(mu t) already in c, s)
     out[..., 0, 0] = c - sn * mu
     out[..., 0, 1] = sn * rho
     out[..., 1, 0] = -sn * rho
     out[..., 1, 1] = c + sn * (-2 * zeta * rho - mu)
-    return np.exp(mu * t)[..., None, None] * out
+    return out if q < 0 else np.exp(mu * t)[..., None, None] * out
 
 
 def _blocks(rho, zeta: float, g: np.ndarray, y: np.ndarray, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

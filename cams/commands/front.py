@@ -18,6 +18,7 @@ __all__ = [
     "add_front_arguments",
     "parse_axes",
     "check_front_arguments",
+    "check_columns",
     "pareto_path",
     "front_and_chart",
 ]
@@ -125,24 +126,108 @@ def _print_front(table, front, saved: Path | None) -> None:
         print(f"... {len(front.rows) - PRINTED_ROWS} more rows of the front in {saved}")
 
 
-def _numbers(table, name: str, usable, field: str) -> str:
+#: The columns of a sweep's table that hold words or flags, never numbers to compare or draw.
+WORDS = ("file", "verified", "buildable", "failures", "error")
+
+
+def _numbers(table, name: str, usable, field: str, table_field: str = "TABLE") -> str:
     """The column named ``name`` (with or without its unit), checked to hold numbers for a front or a chart.
 
     Raises
     ------
     InputError
         Naming ``field``: not a column; a column of words or flags (file, a law, error, verified...); a column
-        empty in every usable row (a rocker's offset: nothing to compare).
+        empty in every usable row (a rocker's offset: nothing to compare). Naming ``table_field``: a cell that
+        holds a number that is not finite (``nan``, ``inf``: a sweep leaves a cell without a value empty, so
+        such a cell is an edit, neither empty nor comparable).
     """
     import numpy as np
 
     col = table.column(name, field)
     cells = table.columns[col]
+    j = table.names.index(col)
     if col in ("error", "failures") or not isinstance(cells, np.ndarray) or cells.dtype.kind not in "fi":
+        raw = [r[j].strip() for r in table.cells]
+        numbers = [_is_number(c) for c in raw]
+        if col not in ("error", "failures") and any(numbers):  # a column of numbers with a word in it: an edit
+            w = next(k for k, c in enumerate(raw) if c and not numbers[k])
+            raise InputError(table_field, f"{table.path}: data row {w + 1}, column {table.headers[j]!r} holds "
+                             f"{table.cells[w][j]!r}, not a number as the column's other cells")
         raise InputError(field, f"{col!r} is not a column of numbers (words or True/False)")
+    for i in np.flatnonzero(~np.isfinite(cells)):
+        if table.cells[i][j].strip():
+            raise InputError(table_field, f"{table.path}: data row {i + 1}, column {table.headers[j]!r} holds "
+                             f"{table.cells[i][j]!r}: a sweep writes a finite number or leaves the cell empty")
     if usable.any() and np.all(np.isnan(cells[usable])):
         raise InputError(field, f"{col!r} is empty in every usable row: nothing to compare")
     return col
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _usable(table, field: str):
+    """Which rows of ``table`` a front may offer: no ``error``, no ``failures`` and, where the table has the
+    columns, ``verified`` and ``buildable`` True (an edited row that says it failed is not offered).
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: the table has no ``error`` or no ``failures`` column (it cannot say which rows are
+        usable).
+    """
+    import numpy as np
+
+    from cams.sweep.pareto import usable_mask
+
+    for need in ("error", "failures"):
+        if need not in table.columns:
+            raise InputError(field, f"{table.path} has no {need!r} column: a sweep's table has one, and the front "
+                             "keeps only the rows without error and failures")
+    usable = usable_mask(table.columns["error"], table.columns["failures"])
+    for flag in ("verified", "buildable"):
+        if flag in table.names:
+            j = table.names.index(flag)
+            usable &= np.array([r[j] == "True" for r in table.cells], dtype=bool)
+    return usable
+
+
+def check_columns(args, table, words: set[str] | frozenset[str] = frozenset()) -> None:
+    """Check that ``--pareto``'s and ``--axes``' columns are ``table``'s columns of numbers, each objective once:
+    ``cams sweep`` checks them against the header of the table it is about to write, before solving.
+
+    ``words`` are the varied keys whose values are words or flags (a law's name).
+
+    Raises
+    ------
+    InputError
+        Naming ``--pareto`` or ``--axes``: a column the table will not have (the message lists them), one that will
+        hold words or flags, or an objective given twice (with and without its unit suffix).
+    """
+    from cams.sweep.pareto import parse_objectives
+
+    def number(name: str, field: str) -> str:
+        col = table.column(name, field)
+        if col in WORDS or col in words:
+            raise InputError(field, f"{col!r} is not a column of numbers (words or True/False)")
+        return col
+
+    if args.pareto is not None:
+        seen: list[str] = []
+        for o in parse_objectives(args.pareto):
+            col = number(o.column, "--pareto")
+            if col in seen:
+                raise InputError("--pareto", f"{args.pareto!r}: column {col!r} is given twice")
+            seen.append(col)
+    if args.plot is not None:
+        for a in parse_axes(args):
+            if a is not None:
+                number(a, "--axes")
 
 
 def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
@@ -160,15 +245,15 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
         holds no numbers; naming ``field``: the table cannot be read. Nothing is written then.
     """
     from cams.sweep.outfile import read_table, write_rows
-    from cams.sweep.pareto import Objective, pareto_front, parse_objectives, usable_mask
+    from cams.sweep.pareto import Objective, pareto_front, parse_objectives
 
     table = read_table(path, field)
     n = len(table)
-    usable = usable_mask(table.columns.get("error", [None] * n), table.columns.get("failures", [None] * n))
+    usable = _usable(table, field)
     # every column named is resolved, the front computed and the chart built before anything is written
     objs: tuple[Objective, ...] = ()
     if args.pareto is not None:
-        objs = tuple(Objective(_numbers(table, o.column, usable, "--pareto"), o.maximise)
+        objs = tuple(Objective(_numbers(table, o.column, usable, "--pareto", field), o.maximise)
                      for o in parse_objectives(args.pareto))
         for k, o in enumerate(objs):
             if o.column in [p.column for p in objs[:k]]:  # R0 and R0_mm are one column
@@ -180,8 +265,8 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
 
         ax, ay, ac = parse_axes(args)
         if ax is not None and ay is not None:
-            x, y = _numbers(table, ax, usable, "--axes"), _numbers(table, ay, usable, "--axes")
-            colour = _numbers(table, ac, usable, "--axes") if ac else None
+            x, y = _numbers(table, ax, usable, "--axes", field), _numbers(table, ay, usable, "--axes", field)
+            colour = _numbers(table, ac, usable, "--axes", field) if ac else None
         elif len(objs) >= 2:
             x, y = objs[0].column, objs[1].column
             colour = objs[2].column if len(objs) > 2 else None
@@ -204,9 +289,18 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
     if table.dropped:
         print(f"{path}: {table.dropped} line(s) left out: another count of cells than the header's (cut short by an "
               "interrupted writer, or edited)", file=sys.stderr)
+    from cams.io.files import all_or_nothing
+
+    saved, chart = None, None
+    with all_or_nothing():  # the front's CSV and the chart together or neither (a chart that cannot be written)
+        if front is not None:
+            saved = write_rows(pareto_path(path), table, front.rows, "--pareto")
+        if fig is not None:
+            from cams.present.sweepplot import save_chart
+
+            chart = save_chart(fig, args.plot)
     code = EXIT_OK
     if front is not None:
-        saved = write_rows(pareto_path(path), table, front.rows, "--pareto")
         names = ", ".join(f"{o} ({table.units[o.column]})" if table.units.get(o.column) else str(o) for o in objs)
         print(
             f"Pareto front over {names} (minimised unless max:): {len(front.rows)} of {n} rows "
@@ -220,10 +314,8 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
         if not len(front.rows):
             print(f"{path}: no usable row, the front is empty", file=sys.stderr)
             code = EXIT_CHECK_FAILED
-    if fig is not None:
-        from cams.present.sweepplot import save_chart
-
-        print(f"wrote {save_chart(fig, args.plot)}", file=sys.stderr)
+    if chart is not None:
+        print(f"wrote {chart}", file=sys.stderr)
     return code
 
 

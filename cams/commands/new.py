@@ -24,6 +24,9 @@ def run(args) -> int:
     )
 
     path = check_output_path(args.out, "--out")
+    from cams.io.files import check_suffix
+
+    check_suffix(args.out, "--out", (".toml",), "a design file (TOML)")
     out = output_kind(path)
     if out[0] == "file" and out[1].exists() and not args.force:  # a device, a FIFO or - is written to, not replaced
         from laws.errors import InputError

@@ -38,6 +38,11 @@ def _check_outputs(args) -> None:
     if args.table is not None:
         table_angles(1.0 if args.step is None else args.step)
     check_output_paths([(f"--{opt}", getattr(args, opt)) for opt in OUTPUTS], inputs=[("FILE", args.file)])
+    from cams.io.files import check_suffix
+
+    for opt, suffix, what in (("csv", ".csv", "CSV"), ("table", ".csv", "a CSV table"), ("dxf", ".dxf", "DXF"),
+                              ("svg", ".svg", "SVG")):
+        check_suffix(getattr(args, opt), f"--{opt}", (suffix,), what)
     if args.max_accel_error is not None:
         from cams.manufacture.motion import check_share
 
@@ -201,6 +206,20 @@ def _curves_line(rc: dict) -> str:
     return f"curves ({rc['curve']}): " + ", ".join(parts) + f" (tolerance {rc['tolerance']:g} mm; {tail})"
 
 
+def _profile(cam, args):
+    """``cam.profile``; a tolerance the profile cannot carry names ``--tolerance`` when it was given there (the
+    design file's ``profile.tolerance`` otherwise)."""
+    from cams.profile.roller import ProfileSizeError
+    from laws.errors import InputError
+
+    try:
+        return cam.profile
+    except ProfileSizeError as e:
+        if args.tolerance is None:
+            raise
+        raise InputError("--tolerance", str(e).removeprefix(f"{e.field}: ")) from None
+
+
 def run(args) -> int:
     import sys
 
@@ -224,7 +243,7 @@ def run(args) -> int:
             cam = Cam(design, method=args.method, tolerance=chosen, solution=cam.solution)
             opts = cam.options
         a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
-        prof = None if cam.face.no_profile(design) is not None else cam.profile
+        prof = None if cam.face.no_profile(design) is not None else _profile(cam, args)
     bore = None
     if prof is not None:
         bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)

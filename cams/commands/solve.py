@@ -20,6 +20,9 @@ def _check_save(args, design) -> None:
     if getattr(design, "optimize", None) is None:
         raise InputError("--save-design", "the design has no [optimize] table: no law was designed, nothing to save")
     check_output_paths([("--save-design", args.save_design)], inputs=[("FILE", args.file)])
+    from cams.io.files import check_suffix
+
+    check_suffix(args.save_design, "--save-design", (".toml",), "a design file (TOML)")
     if writes_stdout(args.save_design):
         raise InputError("--save-design", "standard output carries the report: name a file")
 

@@ -23,8 +23,19 @@ def run(args) -> int:
             print(f"cams sweep: interrupted; {out} holds {state['rows']} row(s): run again with --resume to go on",
                   file=sys.stderr)
         else:
-            print("cams sweep: interrupted", file=sys.stderr)
+            if state.get("created") is not None:  # a header and a sidecar, no row: nothing to resume, nothing left
+                _remove(state["created"])
+            print("cams sweep: interrupted before a row was solved; nothing written", file=sys.stderr)
         return EXIT_INTERRUPTED
+
+
+def _remove(out: Path) -> None:
+    """Remove the files a sweep that wrote no row began at ``out``: the table, its sidecar, its Parquet parts."""
+    from cams.sweep.output import parts_dir, sidecar_path
+
+    for p in (out, sidecar_path(out)):
+        p.unlink(missing_ok=True)
+    shutil.rmtree(parts_dir(out), ignore_errors=True)
 
 
 def _n(k: int, what: str) -> str:
@@ -68,7 +79,15 @@ def _grid(args):
             same = "" if first == f else f" (as {first!r})"
             raise InputError("FILE" if args.sweep_file is None else "--sweep-file",
                              f"{f!r} is given twice{same}; give each file once")
-    bases = [BaseFile(f, read_toml(f), file_hash(f)) for f in files]
+    bases = []
+    for f in files:
+        try:
+            bases.append(BaseFile(f, read_toml(f), file_hash(f)))
+        except InputError as e:  # a design file the sweep file names: the sweep file's `files` is at fault
+            if args.sweep_file is None:
+                raise
+            why = str(e).removeprefix(f"{e.field}: ")
+            raise InputError("--sweep-file", f"{args.sweep_file}: files: {why}") from None
     for b in bases:
         if args.sweep_file is None and "files" in b.design:
             raise InputError("FILE", f"{b.label!r} is a sweep file: give it as --sweep-file {b.label}")
@@ -120,14 +139,18 @@ def _run(args, state: dict) -> int:
         raise InputError("--out", f"{args.out!r}: a sweep streams its rows into a regular file (to resume from it)")
     fmt = _format(args, out)
     resumed = args.resume and (out.exists() or (fmt == "parquet" and parts_dir(out).exists()))
-    check_out(out, resumed=resumed)
+    check_out(out, resumed=resumed)  # a sidecar's name (.sweep.json) said as such, before its .json below
+    from cams.io.files import check_suffix
+    from cams.sweep.outfile import PARQUET_SUFFIXES
+
+    check_suffix(args.out, "--out", (".csv", *PARQUET_SUFFIXES), "the sweep's table (CSV or Parquet)")
     if fmt == "parquet":
         try:
             import pyarrow  # noqa: F401
         except ImportError:
             raise InputError("--format", "parquet needs pyarrow: pip install 'cams[parquet]'") from None
     files, grid = _grid(args)
-    cluster = _before_sweep(args, out, files)
+    cluster = _before_sweep(args, out, files, grid)
     check_output_paths([("--out", args.out)], inputs=[("FILE", f) for f in files])
     identity = {**grid.identity(), "format": fmt, "columns": csv_header(grid.keys)}
     done: set[int] = set()
@@ -137,9 +160,11 @@ def _run(args, state: dict) -> int:
         rows = read_rows(fmt, out, grid.keys)
         done = _indexes(out, rows, grid.size)
         before_failed = sum(map(failed, rows))
-    else:
-        write_identity(out, identity)
     append = bool(done) or (fmt == "parquet" and args.resume)
+    if not append:  # this run writes the table from its header: with no row solved, it leaves none behind
+        state["created"] = out
+    if not resumed:
+        write_identity(out, identity)
     sink = sink_for(fmt, out, grid.keys, append=append)
     state["out"], state["rows"] = out, len(done)
 
@@ -163,12 +188,7 @@ def _run(args, state: dict) -> int:
     except BaseException as e:
         sink.close(finished=False)
         if isinstance(e, InputError) and not append and not state["rows"]:
-            # refused before a row was written (--dask's cluster unreachable): no file is left behind
-            from cams.sweep.output import parts_dir, sidecar_path
-
-            for p in (out, sidecar_path(out)):
-                p.unlink(missing_ok=True)
-            shutil.rmtree(parts_dir(out), ignore_errors=True)
+            _remove(out)  # refused before a row was written (--dask's cluster unreachable): no file is left behind
         raise
     sink.close(finished=True)
     infeasible = res.failed + before_failed
@@ -192,8 +212,9 @@ def _add_front_arguments(q) -> None:
                    "workers); pip install \"cams[dask]\"")
 
 
-def _before_sweep(args, out, files) -> str | None:
-    """Check the front's, the chart's and the cluster's options before solving; the cluster's address, if any.
+def _before_sweep(args, out, files, grid) -> str | None:
+    """Check the front's, the chart's and the cluster's options before solving (``--pareto``'s and ``--axes``'
+    columns against the header of the table about to be written); the cluster's address, if any.
 
     Returns
     -------
@@ -205,6 +226,15 @@ def _before_sweep(args, out, files) -> str | None:
     from cams.sweep.cluster import check_spec
 
     check_front_arguments(args, out, inputs=[("FILE", f) for f in files])
+    if args.pareto is not None or args.plot is not None:
+        from cams.commands.front import check_columns
+        from cams.sweep.outfile import table_of
+        from cams.sweep.output import csv_header
+
+        # a varied key of words (a law's name) or flags is a column the front cannot compare nor the chart draw
+        words = {k for k, vs in zip(grid.keys, grid.values, strict=True)
+                 if any(isinstance(v, (str, bool)) for v in vs)}
+        check_columns(args, table_of(out, csv_header(grid.keys), field="--out"), words)
     if args.dask is None:
         return None
     check_spec(args.dask, args.jobs)

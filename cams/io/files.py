@@ -38,8 +38,8 @@ from typing import Literal, TypeAlias
 
 from laws.errors import InputError
 
-__all__ = ["atomic_write", "all_or_nothing", "check_output_path", "check_output_paths", "ensure_folder",
-           "output_kind", "writes_stdout", "STDOUT"]
+__all__ = ["atomic_write", "all_or_nothing", "check_suffix", "check_output_path", "check_output_paths",
+           "ensure_folder", "output_kind", "writes_stdout", "STDOUT"]
 
 #: The output name for standard output.
 STDOUT = "-"
@@ -167,6 +167,28 @@ def writes_stdout(path: str | os.PathLike | None) -> bool:
         except OSError:
             return False
     return False
+
+
+#: The names of the kinds of file the commands read or write: an output whose name ends in one of them holds
+#: that kind (an SVG written as ``cam.png`` would be opened as a picture it is not).
+KNOWN_SUFFIXES = (".csv", ".dxf", ".svg", ".png", ".pdf", ".gif", ".html", ".htm", ".json", ".toml", ".parquet",
+                  ".pq", ".typ")
+
+
+def check_suffix(path: str | os.PathLike | None, field: str, allowed: tuple[str, ...], what: str) -> None:
+    """Refuse an output named as another kind of file than it holds: ``path``'s extension, when it is one of
+    :data:`KNOWN_SUFFIXES`, must be one of ``allowed`` (any other name, or none, is the user's choice).
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: ``--svg cam.png``, ``--out table.svg``...
+    """
+    if path is None:
+        return
+    suffix = Path(path).suffix.lower()
+    if suffix in KNOWN_SUFFIXES and suffix not in allowed:
+        raise InputError(field, f"{str(path)!r}: writes {what}, not a {suffix} file: give it a {allowed[0]} name")
 
 
 def check_output_path(path: str | os.PathLike, field: str) -> Path:

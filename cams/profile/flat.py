@@ -311,7 +311,7 @@ def flat_face_profile(design: FlatFaceDesign, base_radius: float, *, tolerance: 
     worst = float(np.max(np.abs(coarse.rho) * dtheta**2))
     n = int(np.ceil(2 * np.pi * np.sqrt(worst / (8 * tolerance))))
     if n > MAX_SAMPLES:
-        raise InputError(field, f"a chord tolerance of {tolerance:g} needs {n} points a turn, more than "
+        raise InputError(field, f"a chord tolerance of {tolerance:g} needs {n:.3g} points a turn, more than "
                          f"{MAX_SAMPLES}; use a larger tolerance")
     return replace(flat_face_cam(design, base_radius, samples=max(n, MIN_SAMPLES)), tolerance=float(tolerance))
 

@@ -51,6 +51,14 @@ def parse_value(text: str) -> int | float | bool | str:
     return t
 
 
+def _float(text: str) -> float | None:
+    """``text`` read as a float (``nan`` and ``inf`` too), else None."""
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
 def parse_vary(spec: str) -> tuple[str, Any]:
     """``"KEY=a:b:n"`` -> (KEY, n values from a to b); ``"KEY=v1,v2,..."`` -> the listed values.
 
@@ -68,6 +76,10 @@ def parse_vary(spec: str) -> tuple[str, Any]:
         raise InputError("--vary", f"{spec!r} names no key")
     key_parts(key)
     vals: Any
+    if rng.count(":") == 2 and all(_float(p) is not None for p in rng.split(":")):
+        ends_ = [_float(p) for p in rng.split(":")]
+        if not all(math.isfinite(e) for e in ends_ if e is not None):  # nan:120:3, 100:inf:3
+            raise InputError("--vary", f"{spec!r}: a range a:b:n takes finite numbers")
     if ":" in rng and all(_NUMBER.fullmatch(p.strip()) for p in rng.split(":")):
         ends = rng.split(":")
         if len(ends) != 3 or not float(ends[2]).is_integer() or float(ends[2]) < 1:
@@ -255,7 +267,8 @@ def _kind_error(e: CamsError) -> bool:
     """Whether an error says a value is of the wrong kind for its key (not merely out of range)."""
     s = str(e)
     return any(w in s for w in ("must be a number, got", "is not a valid option", "unknown law", "must be a string",
-                                "must be a table", "must be an integer", "must be [x, y]"))
+                                "must be a table", "must be an integer", "must be [x, y]", "needs a list of",
+                                "must be an array"))
 
 
 def _involves(field: str, keys: tuple[str, ...]) -> bool:
@@ -373,16 +386,20 @@ def make_grid(files: list[BaseFile], vary: list[tuple[str, Any]], *, mode: str =
     for key, vals in zip(keys, values, strict=True):
         if len(vals) == 0:
             raise InputError(origin, f"{key!r} has no values")
-        twice = [v for k, v in enumerate(vals) if v in vals[:k]]
-        if mode == "grid" and twice:  # the same designs solved twice (zip pairs may repeat one key's value)
-            raise InputError(origin, f"{key!r}: the value {as_number(twice[0])!r} is given twice; give each once")
     if mode == "zip" and len({len(v) for v in values}) > 1:
         counts = ", ".join(f"{k}: {len(v)}" for k, v in zip(keys, values, strict=True))
         raise InputError("--zip", f"zipped keys give as many values each, got {counts}")
-    grid = Grid(files=tuple(files), keys=keys, values=values, mode=mode, method=method)
     count = len(files) * (math.prod(len(v) for v in values) if mode == "grid" else len(values[0]) if values else 1)
-    if count > MAX_DESIGNS:
+    if count > MAX_DESIGNS:  # before anything looks at the values one by one
         raise InputError(origin, f"the sweep has {count:,} designs; at most {MAX_DESIGNS:,} are accepted")
+    if mode == "grid":  # the same designs solved twice (zip pairs may repeat one key's value)
+        for key, vals in zip(keys, values, strict=True):
+            held: set = set()  # equal values hash alike (100 and 1e2): one pass, not a comparison of every pair
+            for v in vals:
+                if v in held:
+                    raise InputError(origin, f"{key!r}: the value {as_number(v)!r} is given twice; give each once")
+                held.add(v)
+    grid = Grid(files=tuple(files), keys=keys, values=values, mode=mode, method=method)
     first = tuple(v[0] for v in values)
     last = tuple(v[-1] for v in values)
     errors = [_check_base(b.design, keys, first, last, origin) for b in files]
@@ -451,7 +468,10 @@ def read_sweep_file(path: str | Path) -> tuple[list[str], list[tuple[str, Any]],
         if isinstance(v, dict):
             raise InputError("--sweep-file", f"vary.{key}: quote dotted keys (\"{key}.{next(iter(v), '')}\" = ...)")
         if isinstance(v, str):
-            vary.append(parse_vary(f"{key}={v}"))
+            try:
+                vary.append(parse_vary(f"{key}={v}"))
+            except InputError as e:  # the sweep file's entry, not a --vary option
+                raise InputError("--sweep-file", f"vary.{key} = {v!r}: {str(e).split(': ', 2)[-1]}") from None
         elif isinstance(v, list) and v and all(isinstance(x, (int, float, str, bool)) for x in v):
             nums = [x for x in v if isinstance(x, (int, float)) and not isinstance(x, bool)]
             key_parts(key, "--sweep-file")

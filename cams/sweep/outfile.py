@@ -22,7 +22,16 @@ import numpy as np
 
 from laws.errors import InputError
 
-__all__ = ["UNITS", "PARQUET_SUFFIXES", "PARQUET_MAGIC", "SweepTable", "split_unit", "read_table", "write_rows"]
+__all__ = [
+    "UNITS",
+    "PARQUET_SUFFIXES",
+    "PARQUET_MAGIC",
+    "SweepTable",
+    "split_unit",
+    "read_table",
+    "table_of",
+    "write_rows",
+]
 
 #: The names of a Parquet table (``cams sweep`` writes any other as CSV unless ``--format`` says Parquet).
 PARQUET_SUFFIXES = (".parquet", ".pq")
@@ -171,7 +180,8 @@ def _read_parquet(path: Path, data: bytes | None, field: str) -> tuple[list[str]
     data_ = t.to_pydict()
 
     def cell(v) -> str:
-        if v is None or (isinstance(v, float) and math.isnan(v)):
+        # null is an empty cell (what a sweep writes there); a float NaN is kept as "nan", an edit a front refuses
+        if v is None:
             return ""
         if isinstance(v, float):
             r = repr(v)  # the shortest text that reads back the same number, as the CSV writer's
@@ -238,13 +248,39 @@ def read_table(path: str | os.PathLike, field: str = "--from") -> SweepTable:
             header, cells, dropped = _read_parquet(p, data, field)
         else:
             header, cells, dropped = _read_csv(p, data, field)
+    return table_of(p, header, cells, dropped, field)
+
+
+def table_of(
+    path: str | os.PathLike, header: Sequence[str], cells: list | None = None, dropped: int = 0, field: str = "--from"
+) -> SweepTable:
+    """The :class:`SweepTable` of a ``header`` and its rows' ``cells`` (none: the table a sweep is about to write,
+    whose columns a front's options are checked against before solving).
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: a header that names one column twice (an edited table: which one would a front read?).
+    """
+    cells = [] if cells is None else cells
+    twice = sorted({h for h in header if list(header).count(h) > 1})
+    if twice:
+        raise InputError(
+            field, f"{path}: the header names the column {twice[0]!r} twice; a sweep's table names each column once"
+        )
     names = [split_unit(h)[0] for h in header]
     if len(set(names)) != len(names):  # e.g. "R0" and "R0_mm" both: keep the headers whole
         names = list(header)
     units = {n: (split_unit(h)[1] if n != h else "") for n, h in zip(names, header, strict=True)}
     columns = {n: _cells_to_column([r[j] for r in cells]) for j, n in enumerate(names)}
     return SweepTable(
-        path=p, headers=tuple(header), names=tuple(names), units=units, columns=columns, cells=cells, dropped=dropped
+        path=Path(path),
+        headers=tuple(header),
+        names=tuple(names),
+        units=units,
+        columns=columns,
+        cells=cells,
+        dropped=dropped,
     )
 
 
