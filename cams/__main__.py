@@ -2,6 +2,7 @@
 
 import sys
 
-from cams.cli import entry
+if __name__ == "__main__":  # run as ``python -m cams``; imported (a walk over the modules), it does nothing
+    from cams.cli import entry
 
-sys.exit(entry())
+    sys.exit(entry())
