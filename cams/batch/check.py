@@ -135,8 +135,7 @@ class _Inversion:
         eps = self.eps[d]
         v, (tx, ty, ux, uy) = self.invert(d, s, ds)
         wx, wy, nx, ny, rx, ry = v.wx, v.wy, v.nx, v.ny, v.rx, v.ry
-        w2 = wx * wx + wy * wy
-        w = np.sqrt(w2)
+        w2, w = v.w2, v.w
         vx = d2s * tx + ds * ds * ux + eps * ds * ty
         vy = d2s * ty + ds * ds * uy - eps * ds * tx
         kappa = -eps * (wx * vy - wy * vx - eps * w2) / (w2 * w)

@@ -75,6 +75,8 @@ class Inverted:
     ----------
     wx, wy : ndarray
         ``W = dA/dphi - eps k x (A - O)``, the roller centre's velocity relative to the cam, length per radian.
+    w2, w : ndarray
+        ``|W|^2`` and ``|W|``, length squared per radian squared and length per radian.
     nx, ny : ndarray
         The pitch curve's unit outward normal (``W`` turned by ``eps`` 90 degrees, over ``|W|``); NaN where
         ``|W|`` is not above the floor (the roller centre on the cam centre with no relative motion: undefined).
@@ -86,6 +88,8 @@ class Inverted:
 
     wx: np.ndarray
     wy: np.ndarray
+    w2: np.ndarray
+    w: np.ndarray
     nx: np.ndarray
     ny: np.ndarray
     ex: np.ndarray
@@ -129,16 +133,20 @@ def invert(ax, ay, tx, ty, ox, oy, ds, eps, floor) -> Inverted:
     """
     rx, ry = ax - ox, ay - oy
     # W = dA/dphi - eps k x (A - O), the roller centre's velocity relative to the cam (per radian)
-    wx = ds * tx - eps * -ry
+    wx = ds * tx + eps * ry
     wy = ds * ty - eps * rx
     # outward normal: W turned by eps * 90 degrees (the pitch curve runs round the cam centre in the sense -eps)
-    nx, ny = eps * -wy, eps * wx
-    norm = np.sqrt(nx * nx + ny * ny)
-    defined = norm > floor
-    norm = np.where(defined, norm, 1.0)
-    nx, ny = np.where(defined, nx / norm, np.nan), np.where(defined, ny / norm, np.nan)
+    nx, ny = -eps * wy, eps * wx
+    w2 = wx * wx + wy * wy
+    w = np.sqrt(w2)
+    defined = w > floor
+    if np.all(defined):  # the same values as below, without the masks
+        nx, ny = nx / w, ny / w
+    else:
+        norm = np.where(defined, w, 1.0)
+        nx, ny = np.where(defined, nx / norm, np.nan), np.where(defined, ny / norm, np.nan)
     t = np.sqrt(tx * tx + ty * ty)
-    return Inverted(wx, wy, nx, ny, tx / t, ty / t, rx, ry)
+    return Inverted(wx, wy, w2, w, nx, ny, tx / t, ty / t, rx, ry)
 
 
 def pressure_angle(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndarray) -> np.ndarray:
