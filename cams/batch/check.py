@@ -21,8 +21,10 @@ the same point (``(W_out - C) . n`` is larger by ``2 r``).
 Every largest value is found on a grid per phase and the local maxima of the grid (the ends included) that can
 matter are refined by zooming into their bracket of two steps, tenfold a step, as the per-design check does (the
 pressure angle's to the last digits; the curvature's to a thousandth of a step); all designs, phases and maxima
-at once. The kernel's margin, the turns and the distance from the cam centre are the grid's (their margins,
-:data:`cams.batch.MARGIN` of R0, are far above what a grid step can hide).
+at once. The inversion (:func:`cams.verify.pressure.invert`), the grid's maxima
+(:func:`cams.verify.pressure.grid_peaks`) and their zoom (:func:`cams.verify.pressure.zoom`) are the per-design
+check's own, called on the arrays of many designs. The kernel's margin, the turns and the distance from the cam
+centre are the grid's (their margins, :data:`cams.batch.MARGIN` of R0, are far above what a grid step can hide).
 """
 
 from __future__ import annotations
