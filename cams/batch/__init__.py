@@ -52,8 +52,6 @@ PRESSURE_MARGIN = 1e-8
 MARGIN = 1e-3
 #: Designs sized and checked at once.
 CHUNK = 128
-#: The largest turn of the pitch curve's direction at a phase joint (radians) taken as no corner.
-JOINT = 1e-9
 
 
 def _batchable(design, method: str | None) -> bool:
@@ -115,8 +113,6 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
             groups.setdefault(key, []).append(k)
     for (prog, phases, _), idx in groups.items():
         program = prog.program if isinstance(prog, _Same) else prog
-        if _joint_jumps(program):
-            continue
         with np.errstate(all="ignore"):
             for a in range(0, len(idx), CHUNK):  # arrays that stay in the processor's cache
                 try:
@@ -128,7 +124,7 @@ def size_batch(designs: Sequence, method: str | None = None) -> list[dict | None
 
 def _judge(designs, idx: list[int], phases: list[int], program, out: list) -> None:
     """Size and check the designs ``idx`` of one group; their rows into ``out`` where they pass with margin."""
-    from cams.batch.check import check_group
+    from cams.batch.check import JOINT, check_group
     from cams.batch.sizing import size_group
 
     group = [designs[k] for k in idx]
@@ -173,14 +169,6 @@ class _Same:
 
     def __eq__(self, other) -> bool:
         return isinstance(other, _Same) and other.program is self.program
-
-
-def _joint_jumps(program) -> bool:
-    """True when the law's velocity jumps at a phase joint (a corner of the pitch curve: not batched)."""
-    n = len(program.phases)
-    ds = [program.evaluate_phase(i, np.linspace(0.0, 1.0, 5)).ds for i in range(n)]
-    scale = max(1e-300, max(float(np.max(np.abs(v))) for v in ds))  # the analogue velocity's size
-    return any(abs(ds[i][-1] - ds[(i + 1) % n][0]) > 1e-12 * scale for i in range(n))
 
 
 def _row(design, centre, R0: float, bound: float, rise: float, ret: float, largest: float) -> dict:

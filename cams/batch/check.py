@@ -21,8 +21,10 @@ the same point (``(W_out - C) . n`` is larger by ``2 r``).
 Every largest value is found on a grid per phase and the local maxima of the grid (the ends included) that can
 matter are refined by zooming into their bracket of two steps, tenfold a step, as the per-design check does (the
 pressure angle's to the last digits; the curvature's to a thousandth of a step); all designs, phases and maxima
-at once. The kernel's margin, the turns and the distance from the cam centre are the grid's (their margins,
-:data:`cams.batch.MARGIN` of R0, are far above what a grid step can hide).
+at once. The inversion (:func:`cams.verify.pressure.invert`), the grid's maxima
+(:func:`cams.verify.pressure.grid_peaks`) and their zoom (:func:`cams.verify.pressure.zoom`) are the per-design
+check's own, called on the arrays of many designs. The kernel's margin, the turns and the distance from the cam
+centre are the grid's (their margins, :data:`cams.batch.MARGIN` of R0, are far above what a grid step can hide).
 """
 
 from __future__ import annotations
@@ -32,9 +34,10 @@ from typing import Any
 
 import numpy as np
 
-from cams.verify.pressure import ZOOM_POINTS, ZOOM_STEPS  # the independent check's zoom, the same
+# the independent check's inversion formula, grid maxima and zoom, on arrays of many designs
+from cams.verify.pressure import ZOOM_POINTS, ZOOM_STEPS, grid_peaks, invert, zoom
 
-__all__ = ["GroupCheck", "check_group", "GRID", "ZOOM_POINTS", "ZOOM_STEPS"]
+__all__ = ["GroupCheck", "check_group", "GRID", "JOINT", "ZOOM_POINTS", "ZOOM_STEPS"]
 
 #: Even steps per phase of the search.
 GRID = 300
@@ -45,6 +48,10 @@ DWELL_GRID = 90
 #: The pressure angle's grid maxima refined: those within this of their phase's grid maximum (radians; the grid
 #: lowers a maximum by some 1e-6 at most).
 NEAR = 1e-3
+#: The largest turn of the pitch curve's direction at a phase joint (radians) taken as no corner: the one test of
+#: a velocity jump's corner, far below the per-design path's (a turn whose cosine is below 1 - 1e-12, some
+#: 1.4e-6 rad), so a batched cam has no corner by either.
+JOINT = 1e-9
 
 
 @dataclass(frozen=True)
@@ -59,6 +66,8 @@ class GroupCheck:
     angle a grid step sweeps there (radians); ``reach``: its smallest distance from the cam centre (length, on the
     grid); ``joint``: the largest turn of the pitch curve's direction at a phase joint (radians); ``largest``: the
     cam's largest radius (the pitch curve's, refined, less the roller; a groove's outer wall: plus), length.
+    Where every cam of a chunk (:data:`CHUNK`) has a corner (``joint`` above :data:`JOINT`), ``joint`` alone is
+    computed, every other field NaN.
     """
 
     rise: np.ndarray
@@ -90,8 +99,34 @@ class _Inversion:
         self.roller = np.array([x.roller_radius for x in f], float)
         self.C = np.zeros_like(self.O)
         self.factor = np.array([d.limits.safety_factor for d in designs], float)
+        self.floor = np.array([1e-12 * d.scale for d in designs], float)  # |W| at or below: no normal (A = O)
         lims = [dict(d.constrained_phases()) for d in designs]
         self.limits = {i: np.array([lm.get(i, np.nan) for lm in lims]) for i in range(len(designs[0].program.phases))}
+
+    def frame(self, d: np.ndarray, s: np.ndarray):
+        """The follower's geometry of designs ``d`` at ``s`` (broadcast): the roller centre ``A``, its tangent
+        ``T = dA/ds`` and ``dT/ds``, components ``ax, ay, tx, ty, ux, uy`` (fixed frame)."""
+        arm, sg = self.arm[d], self.sense[d]
+        if self.all_rocker:
+            c, sn = np.cos(sg * s), np.sin(sg * s)
+            return arm * c, arm * sn, -sg * arm * sn, sg * arm * c, -arm * c, -arm * sn
+        if not self.rocker.any():
+            return 0.0, s, 0.0, 1.0, 0.0, 0.0
+        rk = self.rocker[d]
+        c, sn = np.cos(sg * s), np.sin(sg * s)
+        return (
+            np.where(rk, arm * c, 0.0),
+            np.where(rk, arm * sn, s),
+            np.where(rk, -sg * arm * sn, 0.0),
+            np.where(rk, sg * arm * c, 1.0),
+            np.where(rk, -arm * c, 0.0),
+            np.where(rk, -arm * sn, 0.0),
+        )
+
+    def invert(self, d: np.ndarray, s: np.ndarray, ds: np.ndarray):
+        """:func:`cams.verify.pressure.invert` for designs ``d`` at the motion ``s, s'`` (broadcast), and ``dT/ds``."""
+        ax, ay, tx, ty, ux, uy = self.frame(d, s)
+        return invert(ax, ay, tx, ty, self.O[d, 0], self.O[d, 1], ds, self.eps[d], self.floor[d]), (tx, ty, ux, uy)
 
     def at(self, d: np.ndarray, program, i: int, u: np.ndarray) -> dict:
         """At positions ``u`` (shape of ``d``, broadcast) of phase ``i``: ``gamma``, ``kappa``, ``p`` and the
@@ -99,28 +134,10 @@ class _Inversion:
         m = program.evaluate_phase(i, np.asarray(u, float).ravel())
         sh = np.broadcast_shapes(np.shape(d), np.shape(u))
         s, ds, d2s = (np.broadcast_to(v.reshape(np.shape(u)), sh) for v in (m.s, m.ds, m.d2s))
-        arm, sg, eps = self.arm[d], self.sense[d], self.eps[d]
-        if self.all_rocker:
-            c, sn = np.cos(sg * s), np.sin(sg * s)
-            ax, ay, tx, ty, ux, uy = arm * c, arm * sn, -sg * arm * sn, sg * arm * c, -arm * c, -arm * sn
-        elif not self.rocker.any():
-            ax, ay, tx, ty, ux, uy = 0.0, s, 0.0, 1.0, 0.0, 0.0
-        else:
-            rk = self.rocker[d]
-            c, sn = np.cos(sg * s), np.sin(sg * s)
-            ax = np.where(rk, arm * c, 0.0)
-            ay = np.where(rk, arm * sn, s)
-            tx = np.where(rk, -sg * arm * sn, 0.0)
-            ty = np.where(rk, sg * arm * c, 1.0)
-            ux = np.where(rk, -arm * c, 0.0)  # dT/ds
-            uy = np.where(rk, -arm * sn, 0.0)
-        rx, ry = ax - self.O[d, 0], ay - self.O[d, 1]
-        wx, wy = ds * tx + eps * ry, ds * ty - eps * rx
-        w2 = wx * wx + wy * wy
-        w = np.sqrt(w2)
-        nx, ny = -eps * wy / w, eps * wx / w
-        t = np.hypot(tx, ty)
-        gamma = np.arccos(np.clip((nx * tx + ny * ty) / t, -1.0, 1.0))
+        eps = self.eps[d]
+        v, (tx, ty, ux, uy) = self.invert(d, s, ds)
+        wx, wy, nx, ny, rx, ry = v.wx, v.wy, v.nx, v.ny, v.rx, v.ry
+        w2, w = v.w2, v.w
         vx = d2s * tx + ds * ds * ux + eps * ds * ty
         vy = d2s * ty + ds * ds * uy - eps * ds * tx
         kappa = -eps * (wx * vy - wy * vx - eps * w2) / (w2 * w)
@@ -132,13 +149,13 @@ class _Inversion:
         qx, qy = rx - rr * nx, ry - rr * ny
         W = (cp * qx + sp * qy, -sp * qx + cp * qy)
         return {
-            "gamma": gamma,
+            "gamma": v.angle,
             "kr": kappa * rr,
             "p": p,
             "rp": np.hypot(rx, ry),  # the pitch point's distance from the cam centre
             "W": W,
             "n": (nx, ny),
-            "e": (tx / t, ty / t),
+            "e": (v.ex, v.ey),
             "s": s,
             "d": np.broadcast_to(d, np.shape(s)),
             "i": i,
@@ -178,14 +195,6 @@ class _Inversion:
         return v["p"] - self.roller[:, None] - ((cp * cx - sp * cy) * nx + (sp * cx + cp * cy) * ny)
 
 
-def _peaks_of(g: np.ndarray, keep: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The grid's local maxima (ends included; the first of a plateau) of the rows of ``g`` where ``keep`` holds."""
-    low = np.full((len(g), 1), -np.inf)
-    left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
-    d, j = np.nonzero((g > left) & (g >= right) & keep)
-    return d, j
-
-
 def _largest(
     inv: _Inversion,
     program,
@@ -201,45 +210,36 @@ def _largest(
 
     ``grid`` holds the values on the grid per phase; the local maxima of a moving phase's grid within ``near`` of
     its phase's grid maximum and at least ``floor`` are refined by ``steps`` zoom steps (the others are the
-    grid's).
+    grid's): the independent check's :func:`cams.verify.pressure.grid_peaks` and
+    :func:`cams.verify.pressure.zoom`. An undefined value (NaN) counts as +inf: as bad as can be (the design goes
+    to the per-design path).
     """
     u = np.linspace(0.0, 1.0, GRID + 1)
     phases = list(grid)
     out = np.full((B, len(phases)), -np.inf)
-    rows: list[np.ndarray] = []
-    cols: list[np.ndarray] = []
-    los: list[np.ndarray] = []
-    his: list[np.ndarray] = []
-    bests: list[np.ndarray] = []
+    peaks = []
     for col, i in enumerate(phases):
         g = what(grid[i])
-        g = np.where(np.isnan(g), np.inf, g)  # undefined: as bad as can be (the design goes to the per-design path)
+        g = np.where(np.isnan(g), np.inf, g)
         out[:, col] = g.max(axis=1)
         if program.phases[i].kind == "dwell":  # constant: the grid's value is the phase's
             continue
         keep = (g >= out[:, col, None] - near) & (g >= floor)
-        pd, j = _peaks_of(g, keep)
-        rows.append(pd)
-        cols.append(np.full(len(pd), col))
-        los.append(u[np.maximum(j - 1, 0)])
-        his.append(u[np.minimum(j + 1, GRID)])
-        bests.append(g[pd, j])
-    if not rows:
+        pd, best, at, lo, hi = grid_peaks(g, u, keep)
+        peaks.append((pd, np.full(len(pd), col), best, at, lo, hi))
+    if not peaks:
         return out
-    d, q, lo, hi, best = (np.concatenate(a) for a in (rows, cols, los, his, bests))
-    t = np.linspace(0.0, 1.0, ZOOM_POINTS)
-    r = np.arange(len(d))
-    for _ in range(steps):
-        x = lo[:, None] + (hi - lo)[:, None] * t
+    d, q, best, at, lo, hi = (np.concatenate(a) for a in zip(*peaks, strict=True))
+    groups = [(k, i, np.flatnonzero(q == k)) for k, i in enumerate(phases)]
+    groups = [(i, on, d[on, None]) for _, i, on in groups if len(on)]
+
+    def values(x: np.ndarray) -> np.ndarray:
         gx = np.empty_like(x)
-        for k, i in enumerate(phases):
-            on = np.flatnonzero(q == k)
-            if len(on):
-                gx[on] = what(inv.at(d[on, None], program, i, x[on]))
-        gx = np.where(np.isnan(gx), np.inf, gx)
-        jx = np.argmax(gx, axis=1)
-        best = np.maximum(best, gx[r, jx])
-        lo, hi = x[r, np.maximum(jx - 1, 0)], x[r, np.minimum(jx + 1, ZOOM_POINTS - 1)]
+        for i, on, don in groups:
+            gx[on] = what(inv.at(don, program, i, x[on]))
+        return np.where(np.isnan(gx), np.inf, gx)
+
+    best, _ = zoom(values, lo, hi, best, at, steps)
     np.maximum.at(out, (d, q), best)
     return out
 
@@ -269,9 +269,23 @@ def _check(designs, centres: np.ndarray, program) -> GroupCheck:
     moving = [i for i, k in enumerate(kinds) if k != "dwell"]
     us = {i: np.linspace(0.0, 1.0, (DWELL_GRID if k == "dwell" else GRID) + 1) for i, k in enumerate(kinds)}
     allD = np.arange(B)[:, None]
+    # the joints first: the relative velocity's direction on both sides (a velocity jump makes a corner); a chunk
+    # whose every cam has one is sent back at once (the law's velocity jumps: no centre is without a corner)
+    joint = np.zeros(B)
+    for i in range(len(kinds)):
+        a = program.evaluate_phase(i, np.array([1.0]))
+        b = program.evaluate_phase((i + 1) % len(kinds), np.array([0.0]))
+        sa, sb = (np.broadcast_to(x, (B,)) for x in (a.s[0], b.s[0]))
+        # the same cam angle: s continuous; the relative velocity's direction from each side's s'
+        wa, _ = inv.invert(allD[:, 0], sa, a.ds[0])
+        wb, _ = inv.invert(allD[:, 0], sb, b.ds[0])
+        turn = np.arctan2(np.abs(wa.wx * wb.wy - wa.wy * wb.wx), wa.wx * wb.wx + wa.wy * wb.wy)
+        joint = np.maximum(joint, turn)
+    if (joint > JOINT).all():
+        nan = np.full(B, np.nan)
+        return GroupCheck(**{**{k: nan for k in GroupCheck.__dataclass_fields__}, "joint": joint})
     grid = {i: inv.at(allD, program, i, us[i][None]) for i in range(len(kinds))}
     g = _largest(inv, program, {i: grid[i] for i in moving}, lambda v: v["gamma"], B, near=NEAR)
-    every = list(grid)
     rise = np.full(B, np.nan)
     ret = np.full(B, np.nan)
     excess = np.full(B, -np.inf)
@@ -306,18 +320,6 @@ def _check(designs, centres: np.ndarray, program) -> GroupCheck:
     pitch = _largest(inv, program, grid, lambda v: v["rp"], B).max(axis=1)
     groove = np.array([d.limits.closure == "form" for d in designs])
     largest = pitch + np.where(groove, inv.roller, -inv.roller)
-    # the joints: the relative velocity's direction on both sides (a velocity jump makes a corner)
-    joint = np.zeros(B)
-    allD = np.arange(B)
-    for i in every:
-        a = program.evaluate_phase(i, np.array([1.0]))
-        b = program.evaluate_phase((i + 1) % len(kinds), np.array([0.0]))
-        sa, sb = (np.broadcast_to(x, (B,)) for x in (a.s[0], b.s[0]))
-        # the same cam angle: s continuous; the relative velocity's direction from each side's s'
-        wa = _velocity(inv, allD, sa, a.ds[0])
-        wb = _velocity(inv, allD, sb, b.ds[0])
-        turn = np.arctan2(np.abs(wa[0] * wb[1] - wa[1] * wb[0]), wa[0] * wb[0] + wa[1] * wb[1])
-        joint = np.maximum(joint, turn)
     return GroupCheck(
         rise=rise,
         ret=ret,
@@ -331,13 +333,3 @@ def _check(designs, centres: np.ndarray, program) -> GroupCheck:
         joint=joint,
         largest=largest,
     )
-
-
-def _velocity(inv: _Inversion, d, s, ds):
-    """The roller centre's velocity relative to the cam (fixed frame, per radian) at ``s, s'``."""
-    rk, arm, sg, eps = inv.rocker[d], inv.arm[d], inv.sense[d], inv.eps[d]
-    c, sn = np.cos(sg * s), np.sin(sg * s)
-    ax, ay = np.where(rk, arm * c, 0.0), np.where(rk, arm * sn, s)
-    tx, ty = np.where(rk, -sg * arm * sn, 0.0), np.where(rk, sg * arm * c, 1.0)
-    rx, ry = ax - inv.O[d, 0], ay - inv.O[d, 1]
-    return ds * tx + eps * ry, ds * ty - eps * rx

@@ -31,14 +31,14 @@ from laws.errors import InputError, show_value
 from laws.units import turn_degrees
 
 __all__ = ["pressure_angle", "contact_normal", "PressureReport", "SafetyReport", "check_pressure",
-           "check_pressure_many"]
+           "check_pressure_many", "Inverted", "invert", "grid_peaks", "zoom", "ZOOM_POINTS", "ZOOM_STEPS"]
 
 
 def contact_normal(design: CamDesign, centre: np.ndarray, s: np.ndarray, ds: np.ndarray):
     """Outward contact normal, rise direction and cam-centre-to-roller vector (fixed frame).
 
-    The one place of the inversion formula (used by :func:`pressure_angle` and
-    :mod:`cams.dynamics.forces`).
+    The inversion formula (:func:`invert`) for one design, as :func:`pressure_angle` and
+    :mod:`cams.dynamics.forces` use it.
 
     Parameters
     ----------
@@ -56,36 +56,97 @@ def contact_normal(design: CamDesign, centre: np.ndarray, s: np.ndarray, ds: np.
         the rise, and ``A - O`` (length unit). ``cos(gamma) = n . e``.
     """
     O = np.asarray(centre, dtype=float)
-    nx, ny, ex, ey, rx, ry = _normal(design, O[..., 0], O[..., 1], s, ds)
-    return np.stack([nx, ny], axis=-1), np.stack([ex, ey], axis=-1), np.stack([rx, ry], axis=-1)
+    v = _inverted(design, O[..., 0], O[..., 1], s, ds)
+    return np.stack([v.nx, v.ny], axis=-1), np.stack([v.ex, v.ey], axis=-1), np.stack([v.rx, v.ry], axis=-1)
 
 
-def _normal(design: CamDesign, ox, oy, s: np.ndarray, ds: np.ndarray):
-    """The one place of the inversion formula, by components: ``nx, ny, ex, ey, rx, ry`` of :func:`contact_normal`.
-
-    ``ox, oy`` (the centre's coordinates) broadcast with ``s`` and ``ds``.
-    Every value is computed from its own position and centre alone, by the
-    same operations whatever the shapes, so a centre's values do not depend on
-    the other centres or positions evaluated with it.
-    """
+def _inverted(design: CamDesign, ox, oy, s: np.ndarray, ds: np.ndarray) -> Inverted:
+    """:func:`invert` for one design at the motion ``s, ds``: the follower's frame at ``s``; ``ox, oy`` (the
+    centres' coordinates) broadcast with ``s`` and ``ds``."""
     A, T, _ = design.follower.frame(s)
-    tx, ty = T[..., 0], T[..., 1]
-    rx, ry = A[..., 0] - ox, A[..., 1] - oy
-    ds = np.asarray(ds)
-    eps = design.cam_sense
+    return invert(A[..., 0], A[..., 1], T[..., 0], T[..., 1], ox, oy, ds, design.cam_sense, 1e-12 * design.scale)
+
+
+@dataclass(frozen=True)
+class Inverted:
+    """The kinematic inversion at positions (:func:`invert`): arrays of one broadcast shape, the fixed frame.
+
+    Attributes
+    ----------
+    wx, wy : ndarray
+        ``W = dA/dphi - eps k x (A - O)``, the roller centre's velocity relative to the cam, length per radian.
+    w2, w : ndarray
+        ``|W|^2`` and ``|W|``, length squared per radian squared and length per radian.
+    nx, ny : ndarray
+        The pitch curve's unit outward normal (``W`` turned by ``eps`` 90 degrees, over ``|W|``); NaN where
+        ``|W|`` is not above the floor (the roller centre on the cam centre with no relative motion: undefined).
+    ex, ey : ndarray
+        The unit direction of the rise, ``T / |T|``.
+    rx, ry : ndarray
+        ``A - O``, length.
+    """
+
+    wx: np.ndarray
+    wy: np.ndarray
+    w2: np.ndarray
+    w: np.ndarray
+    nx: np.ndarray
+    ny: np.ndarray
+    ex: np.ndarray
+    ey: np.ndarray
+    rx: np.ndarray
+    ry: np.ndarray
+
+    @property
+    def angle(self) -> np.ndarray:
+        """The pressure angle ``arccos(n . e)``, radians in [0, pi]; NaN where the normal is undefined."""
+        return np.arccos(np.clip(self.nx * self.ex + self.ny * self.ey, -1.0, 1.0))
+
+
+def invert(ax, ay, tx, ty, ox, oy, ds, eps, floor) -> Inverted:
+    """The one place of the inversion formula, on arrays: the relative velocity, the outward normal, the rise.
+
+    Every argument is an array or a number, all broadcast together: positions of one design, or of many
+    designs at once (each with its own centre, sense and floor). Every value is computed from its own
+    position, centre, sense and floor alone, by the same operations whatever the shapes, so a value does not
+    depend on the other designs, centres or positions evaluated with it.
+
+    Parameters
+    ----------
+    ax, ay : array_like
+        The roller centre A (fixed frame, length).
+    tx, ty : array_like
+        Its tangent ``T = dA/ds`` (length per unit of s: 1 for a translating follower, the arm for a rocker).
+    ox, oy : array_like
+        The cam centre O (fixed frame, length).
+    ds : array_like
+        The displacement's derivative per radian of cam angle (rad or length per radian).
+    eps : array_like
+        The cam's sense of rotation, +1 counter-clockwise, -1 clockwise.
+    floor : array_like
+        The ``|W|`` (length) at or below which the normal is undefined: a small fraction of the follower's
+        size (``|W|`` is of the size of ``|A - O|`` and of the follower's motion, near 0 only at ``A = O``).
+
+    Returns
+    -------
+    Inverted
+    """
+    rx, ry = ax - ox, ay - oy
     # W = dA/dphi - eps k x (A - O), the roller centre's velocity relative to the cam (per radian)
-    wx = ds * tx - eps * -ry
+    wx = ds * tx + eps * ry
     wy = ds * ty - eps * rx
-    # outward normal: W turned by eps * 90 degrees
-    nx, ny = eps * -wy, eps * wx
-    norm = np.sqrt(nx * nx + ny * ny)
-    # |n| = |W| is of the size of |A - O| and of the follower's motion (both scale with the unit); it is
-    # near 0 only at the degenerate A = O, so a fraction of the follower's size cannot mislabel a defined normal
-    defined = norm > 1e-12 * design.scale
-    norm = np.where(defined, norm, 1.0)
-    nx, ny = np.where(defined, nx / norm, np.nan), np.where(defined, ny / norm, np.nan)
+    # outward normal: W turned by eps * 90 degrees (the pitch curve runs round the cam centre in the sense -eps)
+    nx, ny = -eps * wy, eps * wx
+    w2 = wx * wx + wy * wy
+    w = np.sqrt(w2)
+    defined = w > floor
+    if np.all(defined):  # the same values as below, without the masks
+        nx, ny = nx / w, ny / w
+    else:
+        norm = np.where(defined, w, 1.0)
+        nx, ny = np.where(defined, nx / norm, np.nan), np.where(defined, ny / norm, np.nan)
     t = np.sqrt(tx * tx + ty * ty)
-    return nx, ny, tx / t, ty / t, rx, ry
+    return Inverted(wx, wy, w2, w, nx, ny, tx / t, ty / t, rx, ry)
 
 
 def pressure_angle(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndarray) -> np.ndarray:
@@ -109,8 +170,7 @@ def pressure_angle(design: CamDesign, centre: np.ndarray, phase: int, u: np.ndar
     """
     m = design.program.evaluate_phase(phase, np.asarray(u, dtype=float))
     O = np.asarray(centre, dtype=float)
-    nx, ny, ex, ey, _, _ = _normal(design, O[..., 0], O[..., 1], m.s, m.ds)
-    return np.arccos(np.clip(nx * ex + ny * ey, -1.0, 1.0))
+    return _inverted(design, O[..., 0], O[..., 1], m.s, m.ds).angle
 
 
 @dataclass(frozen=True)
@@ -205,14 +265,89 @@ ZOOM_STEPS = 10
 CHUNK = 200_000
 
 
+def grid_peaks(g: np.ndarray, u: np.ndarray, keep: np.ndarray | bool = True):
+    """The local maxima of the rows of ``g``, sampled at the positions ``u``, and their brackets to zoom into.
+
+    A local maximum is a sample at least its neighbours (the ends included, with one neighbour: a value may
+    jump at a join between phases, where each side is its own one-sided limit; every sample of a plateau),
+    above -inf (-inf marks an undefined value) and where ``keep`` holds.
+
+    Parameters
+    ----------
+    g : ndarray, shape (k, n + 1)
+        Values of ``k`` rows (centres or designs) at the same positions.
+    u : ndarray, shape (n + 1,)
+        The positions, increasing.
+    keep : ndarray of bool (broadcast with ``g``) or bool, optional
+        The samples that may be a maximum.
+
+    Returns
+    -------
+    rows : ndarray of int
+        Each maximum's row of ``g``, in increasing order.
+    best, at : ndarray
+        Its value and position.
+    lo, hi : ndarray
+        Its bracket, the positions one sample either side (clipped at the ends): two sampling steps wide.
+    """
+    low = np.full((len(g), 1), -np.inf)
+    left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
+    c, j = np.nonzero((g >= left) & (g >= right) & (g > -np.inf) & keep)
+    n = len(u) - 1
+    return c, g[c, j], u[j], u[np.maximum(j - 1, 0)], u[np.minimum(j + 1, n)]
+
+
+def zoom(
+    values: Callable[[np.ndarray], np.ndarray],
+    lo: np.ndarray,
+    hi: np.ndarray,
+    best: np.ndarray,
+    at: np.ndarray,
+    steps: int = ZOOM_STEPS,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Refine maxima by zooming into their brackets, all at once: the peak zoom of the independent check.
+
+    Each bracket is sampled at :data:`ZOOM_POINTS` positions and shrunk to the two intervals about its largest
+    sample (tenfold), ``steps`` times; a maximum keeps the largest value seen, from its grid's (``best``) on.
+
+    Parameters
+    ----------
+    values : callable
+        ``values(x)``: the values at the positions ``x`` (shape (m, ZOOM_POINTS), row ``a`` inside maximum
+        ``a``'s bracket), the same shape; -inf where undefined (or +inf, where undefined must win), never NaN.
+    lo, hi : ndarray, shape (m,)
+        The brackets (:func:`grid_peaks`).
+    best, at : ndarray, shape (m,)
+        The maxima's values and positions on the grid.
+    steps : int, optional
+        Zoom steps.
+
+    Returns
+    -------
+    best, at : ndarray, shape (m,)
+        The refined values and their positions.
+    """
+    t = np.linspace(0.0, 1.0, ZOOM_POINTS)
+    rows = np.arange(len(lo))
+    for _ in range(steps):
+        x = lo[:, None] + (hi - lo)[:, None] * t
+        gx = values(x)
+        jx = np.argmax(gx, axis=1)
+        top = gx[rows, jx]
+        better = top > best
+        best = np.where(better, top, best)
+        at = np.where(better, x[rows, jx], at)
+        lo, hi = x[rows, np.maximum(jx - 1, 0)], x[rows, np.minimum(jx + 1, ZOOM_POINTS - 1)]
+    return best, at
+
+
 def _angles(design: CamDesign, i: int, ox, oy, s: np.ndarray, ds: np.ndarray) -> np.ndarray:
     """Pressure angle (radians) at the motion ``s, ds`` for the centres ``(ox, oy)`` (broadcast); -inf where undefined.
 
     -inf lies below every value, so the maxima below skip the undefined positions. ``i`` (the phase) is unused:
     the signature of the values :func:`_phases_max` searches.
     """
-    nx, ny, ex, ey, _, _ = _normal(design, ox, oy, s, ds)
-    g = np.arccos(np.clip(nx * ex + ny * ey, -1.0, 1.0))
+    g = _inverted(design, ox, oy, s, ds).angle
     g[np.isnan(g)] = -np.inf
     return g
 
@@ -236,7 +371,7 @@ def _phases_max(design: CamDesign, centres: np.ndarray, phases: list[int], grid:
     two sampling steps; the largest refined value wins. Refining only the
     highest sample would miss a second peak that the sampling lowered. The
     peaks of all phases and centres are zoomed together; each value is
-    computed from its own centre and position alone (:func:`_normal`), so a
+    computed from its own centre and position alone (:func:`invert`), so a
     centre's result does not depend on the other centres checked with it.
 
     Returns
@@ -247,34 +382,26 @@ def _phases_max(design: CamDesign, centres: np.ndarray, phases: list[int], grid:
     k = len(centres)
     ox, oy = centres[:, 0, None], centres[:, 1, None]
     u = np.linspace(0.0, 1.0, grid + 1)
-    low = np.full((k, 1), -np.inf)
     peaks = []
     for q, i in enumerate(phases):
         g = value(design, i, ox, oy, *_motion(design, i, u))  # the motion once for every centre
-        left, right = np.hstack([low, g[:, :-1]]), np.hstack([g[:, 1:], low])
-        c, j = np.nonzero((g >= left) & (g >= right) & (g > -np.inf))
-        peaks.append((c, j, np.full(len(c), q), g[c, j]))
-    c, j, ph, best_g = (np.concatenate(a) for a in zip(*peaks, strict=True))
-    best_u = u[j]
-    lo, hi = u[np.maximum(j - 1, 0)], u[np.minimum(j + 1, grid)]
+        c, g_at, u_at, lo, hi = grid_peaks(g, u)
+        peaks.append((c, np.full(len(c), q), g_at, u_at, lo, hi))
+    c, ph, best_g, best_u, lo, hi = (np.concatenate(a) for a in zip(*peaks, strict=True))
     cuts = np.searchsorted(ph, np.arange(len(phases) + 1)).tolist()  # the peaks come grouped by phase
-    t = np.linspace(0.0, 1.0, ZOOM_POINTS)
-    rows = np.arange(len(c))
     pox, poy = ox[c], oy[c]
     s, ds = np.empty((len(c), ZOOM_POINTS)), np.empty((len(c), ZOOM_POINTS))
-    for _ in range(ZOOM_STEPS):
-        x = lo[:, None] + (hi - lo)[:, None] * t
+
+    def values(x: np.ndarray) -> np.ndarray:
         gx = np.empty_like(s)
         for q, i in enumerate(phases):
             a, b = cuts[q], cuts[q + 1]
             if b > a:
                 s[a:b], ds[a:b] = _motion(design, i, x[a:b])
                 gx[a:b] = value(design, i, pox[a:b], poy[a:b], s[a:b], ds[a:b])
-        jx = np.argmax(gx, axis=1)
-        better = gx[rows, jx] > best_g
-        best_g = np.where(better, gx[rows, jx], best_g)
-        best_u = np.where(better, x[rows, jx], best_u)
-        lo, hi = x[rows, np.maximum(jx - 1, 0)], x[rows, np.minimum(jx + 1, ZOOM_POINTS - 1)]
+        return gx
+
+    best_g, best_u = zoom(values, lo, hi, best_g, best_u)
     out = []
     for q in range(len(phases)):
         a, b = cuts[q], cuts[q + 1]
@@ -290,10 +417,10 @@ def _safety(design: CamDesign, i: int, ox, oy, s: np.ndarray, ds: np.ndarray):
     """:func:`cams.verify.safety.safety_terms` of phase ``i`` at the motion ``s, ds`` for the centres ``(ox, oy)``."""
     f = design.follower
     assert isinstance(f, Rocker)
-    nx, ny, ex, ey, _, _ = _normal(design, ox, oy, s, ds)
+    v = _inverted(design, ox, oy, s, ds)
     _, _, lev = f.frame(s)
     pivot = f.pivot
-    return safety_terms(ox - pivot[0], oy - pivot[1], nx, ny, ex, ey, lev[..., 0], lev[..., 1], arm=f.arm,
+    return safety_terms(ox - pivot[0], oy - pivot[1], v.nx, v.ny, v.ex, v.ey, lev[..., 0], lev[..., 1], arm=f.arm,
                         factor=design.limits.safety_factor, limit=dict(design.constrained_phases())[i])
 
 
