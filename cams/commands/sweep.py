@@ -161,9 +161,8 @@ def _run(args, state: dict) -> int:
         done = _indexes(out, rows, grid.size)
         before_failed = sum(map(failed, rows))
     append = bool(done) or (fmt == "parquet" and args.resume)
-    if not append:  # this run writes the table from its header: with no row solved, it leaves none behind
+    if not resumed:  # this run begins the table and its sidecar: with no row solved, it leaves neither behind
         state["created"] = out
-    if not resumed:
         write_identity(out, identity)
     sink = sink_for(fmt, out, grid.keys, append=append)
     state["out"], state["rows"] = out, len(done)
@@ -187,7 +186,7 @@ def _run(args, state: dict) -> int:
                            cluster=cluster)
     except BaseException as e:
         sink.close(finished=False)
-        if isinstance(e, InputError) and not append and not state["rows"]:
+        if isinstance(e, InputError) and state.get("created") is not None and not state["rows"]:
             _remove(out)  # refused before a row was written (--dask's cluster unreachable): no file is left behind
         raise
     sink.close(finished=True)

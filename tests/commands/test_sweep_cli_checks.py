@@ -74,6 +74,38 @@ def test_ctrl_c_keeps_the_rows_done(tmp_path, capsys, monkeypatch):
     assert sorted(os.listdir(tmp_path)) == ["s.csv", "s.csv.sweep.json"]
 
 
+def _interrupt_at_once(job):
+    raise KeyboardInterrupt
+
+
+def test_ctrl_c_before_a_row_with_resume_and_nothing_to_resume(tmp_path, capsys, monkeypatch):
+    """``--resume`` on a Parquet table not there yet, then Ctrl-C while the first design is solved: the run began the
+    sidecar and the parts folder, so it removes them (they were left behind: "nothing written" was not so)."""
+    pytest.importorskip("pyarrow", reason="Parquet tables need pyarrow (the test extra installs it)")
+    monkeypatch.setattr(cams.sweep.engine, "evaluate", _interrupt_at_once)
+    rc, stdout, err = _run(capsys, ROCKER, "--vary", "follower.arm=100,120", "--out", tmp_path / "s.parquet",
+                           "--jobs", "1", "--quiet", "--per-design", "--resume")
+    assert (rc, stdout) == (130, "")
+    assert err == "cams sweep: interrupted before a row was solved; nothing written\n"
+    assert os.listdir(tmp_path) == []
+
+
+def test_ctrl_c_before_a_row_keeps_a_header_only_table_it_resumed(tmp_path, capsys, monkeypatch):
+    """``--resume`` on a header-only table and its sidecar, left by an earlier run, then Ctrl-C before a row: this run
+    did not create them, so both stay as they were (they were deleted)."""
+    out = tmp_path / "s.csv"
+    argv = [ROCKER, "--vary", "follower.arm=100,120", "--out", out, "--jobs", "1", "--quiet", "--per-design"]
+    assert _run(capsys, *argv)[0] == 0
+    out.write_text(out.read_text(encoding="utf-8").splitlines(keepends=True)[0], encoding="utf-8")  # the header
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert sorted(before) == ["s.csv", "s.csv.sweep.json"] and before["s.csv"].startswith(b"index,")
+    monkeypatch.setattr(cams.sweep.engine, "evaluate", _interrupt_at_once)
+    rc, stdout, err = _run(capsys, *argv, "--resume")
+    assert (rc, stdout) == (130, "")
+    assert err == "cams sweep: interrupted before a row was solved; nothing written\n"
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
+
+
 @pytest.mark.skipif(not (sys.platform.startswith("linux") and Path("/proc").is_dir()), reason="needs /proc")
 def test_ctrl_c_stops_the_pool(tmp_path):
     """SIGINT to the whole process group, as a terminal sends it: one line, exit 130, no worker left."""
