@@ -79,3 +79,29 @@ def test_smooth_joints_have_no_corner(centres):
     assert np.all(fd < 1e-5)
     assert np.all(chk.joint <= JOINT)
     assert np.all(np.isfinite(chk.rise))  # the whole check ran
+
+
+def test_a_corner_in_some_cams_of_a_chunk_sends_back_those_only(monkeypatch):
+    """Only some cams of a chunk with a corner: the whole check runs (no field is NaN), so the joint test alone must
+    send the cornered cam back (a chunk whose every cam has one is all NaN, rejected by every test). The check's
+    own fields, one cam's ``joint`` raised to 1e-6 rad, 1000 :data:`JOINT` (a velocity jump of some 1e-6 of the
+    roller's speed relative to the cam: no other test of the batch notices it)."""
+    from dataclasses import replace
+
+    import cams.batch.check
+
+    designs = [design_from_dict(rocker_dict(limits={"pressure_angle": a})) for a in (35, 40, 45)]
+    plain = size_batch(designs)
+    assert all(r is not None for r in plain)
+    real = cams.batch.check.check_group
+
+    def one_corner(group, centres, program):
+        chk = real(group, centres, program)
+        assert len(group) == 3 and all(np.isfinite(getattr(chk, k)).all() for k in ("rise", "ret", "convex"))
+        joint = chk.joint.copy()
+        joint[1] = 1e-6
+        assert joint[1] > JOINT and np.all(np.delete(joint, 1) <= JOINT)
+        return replace(chk, joint=joint)
+
+    monkeypatch.setattr(cams.batch.check, "check_group", one_corner)
+    assert size_batch(designs) == [plain[0], None, plain[2]]
