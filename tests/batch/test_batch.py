@@ -1,9 +1,12 @@
 """The batch solver against the per-design path (:class:`cams.cam.Cam`): the same R0 to the two certificates'
 bounds, the same largest pressure angles, the same verdicts; the rows it cannot vouch for sent back (None).
 
-The per-design path is the reference: a different solver (the exact method's exchange on its own nearest-point
-method), a different check (:mod:`cams.verify.pressure`, the profile's checks on the kernel's extrema and the
-sampled polygon), so agreement is not by construction.
+The per-design path is the reference for R0, the centre and the verdicts: a different solver (the exact method's
+exchange on its own nearest-point method) and different buildability checks (the profile's, on the kernel's
+extrema and the sampled polygon), so their agreement is not by construction. The largest pressure angles are not
+checked independently by that comparison: the batch's come from the per-design check's own inversion, grid maxima
+and zoom (:mod:`cams.verify.pressure`, on many designs at once), so they are also checked against the closed form
+of an offset translating follower, written out below.
 """
 
 from __future__ import annotations
@@ -178,3 +181,43 @@ def test_a_bore_it_clears_is_batched_at_the_per_design_size():
     assert cam.assessment.usable and s.governs == "pressure_angle"
     assert row is not None and abs(row["R0"] - s.R0) <= row["error_bound"] + s.error_bound
     assert Cam(fails).solution.governs == "bore"
+
+
+@pytest.mark.parametrize("rotation, eps, e", [("ccw", 1, 4.0), ("cw", -1, 4.0), ("ccw", 1, -3.0)])
+def test_largest_pressure_angles_of_an_offset_translating_follower(rotation, eps, e):
+    """The row's largest pressure angles against the closed form (tests/validation/test_reference.py derives it):
+    the cam centre ``O = (-e, -d0)``, ``d0 = sqrt(R0^2 - e^2)``, the roller's velocity relative to the cam
+    ``W = (eps (d0 + s), s' - eps e)``, so ``tan(gamma) = |s' - eps e| / (d0 + s)``; the cycloidal rise and return
+    written out here, the maximum by a fine grid refined around its best point."""
+    h, rise, ret = 20.0, np.radians(110.0), np.radians(130.0)
+    d = rocker_dict(
+        cam={"rotation": rotation},
+        motion=[
+            {"phase": "rise", "law": "cycloidal", "angle": 110},
+            {"phase": "dwell", "angle": 40},
+            {"phase": "return", "law": "cycloidal", "angle": 130},
+            {"phase": "dwell"},
+        ],
+        limits={"pressure_angle": 30},
+    )
+    d["follower"] = {"kind": "translating", "stroke": h, "roller_radius": 5.0, "offset": e}
+    (row,) = size_batch([design_from_dict(d)])
+    assert row is not None and row["offset"] == pytest.approx(e, abs=1e-12)
+    R0 = row["R0"]
+    d0 = np.sqrt(R0**2 - e**2)
+    assert (row["centre_x"], row["centre_y"]) == pytest.approx((-e, -d0), abs=1e-9 * R0)
+
+    def largest(beta: float, up: bool) -> float:
+        def gamma(u):
+            c = u - np.sin(2 * np.pi * u) / (2 * np.pi)  # cycloidal: S(u), S'(u) = 1 - cos(2 pi u)
+            s = h * c if up else h * (1.0 - c)
+            ds = (1.0 if up else -1.0) * h / beta * (1.0 - np.cos(2 * np.pi * u))
+            return np.arctan(np.abs(ds - eps * e) / (d0 + s))
+
+        u = np.linspace(0.0, 1.0, 200_001)
+        k = int(np.argmax(gamma(u)))
+        fine = np.linspace(u[max(k - 1, 0)], u[min(k + 1, len(u) - 1)], 20_001)  # steps of 5e-10
+        return float(np.degrees(gamma(fine).max()))
+
+    assert row["max_pressure_angle_rise"] == pytest.approx(largest(rise, True), abs=1e-9)
+    assert row["max_pressure_angle_return"] == pytest.approx(largest(ret, False), abs=1e-9)
