@@ -50,7 +50,7 @@ PRESSURE_MARGIN = 1e-8
 #: groove's concave too), the working profile at least ``MARGIN R0`` inside every tangent line from its kernel's
 #: point and from the cam centre; closer goes to the per-design path.
 MARGIN = 1e-3
-#: Designs sized and checked at once.
+#: Designs sized at once (checked in parts of :data:`cams.batch.check.CHUNK`, that module's own chunk).
 CHUNK = 128
 
 
