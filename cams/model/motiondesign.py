@@ -172,7 +172,9 @@ class MotionCertificate:
     gap : float or None
         ``(value - lower_bound) / |value|``.
     certified : bool
-        The cam verified, the caps met by the laws themselves and, where a bound is proven, the bound.
+        The design's checks: the cam verified, the caps met by the laws themselves, the size held and, for a
+        convex program's bound, a gap; what the commands' exit code takes (:mod:`cams.assess`). The JSON's
+        ``certified`` says more: this and :attr:`bound_proven` (its ``checked`` is this).
     degree, spans, continuity, pieces : int
         The spline space (``pieces``: subdivisions of a span for the conservative constraints).
     free : tuple of int
@@ -224,14 +226,22 @@ class MotionCertificate:
     seconds: float = 0.0
     notes: tuple[str, ...] = field(default_factory=tuple)
 
+    @property
+    def bound_proven(self) -> bool:
+        """False when a convex program's lower bound proves nothing beyond the trivial (0 or below, the value
+        above 0); True otherwise (a local optimum claims no bound)."""
+        return self.lower_bound is None or not (self.lower_bound <= 0 < self.value)
+
     def to_dict(self) -> dict:
-        """The JSON report's ``optimize`` object (units as in :class:`MotionCertificate`)."""
+        """The JSON report's ``optimize`` object (units as in :class:`MotionCertificate`): ``checked`` is
+        :attr:`certified`, ``certified`` that and :attr:`bound_proven` (no more than the text says)."""
         return {
             "objective": self.objective,
             "value": self.value,
             "lower_bound": self.lower_bound,
             "gap": self.gap,
-            "certified": self.certified,
+            "certified": self.certified and self.bound_proven,
+            "checked": self.certified,
             "degree": self.degree,
             "spans": self.spans,
             "continuity": self.continuity,

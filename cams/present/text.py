@@ -156,13 +156,14 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
         rows += [("optimality", f"a local optimum (sequential convex programming, {o['iterations']} iterations); "
                                 f"the linearized problem still predicts a decrease of {o['local_measure']:.2g} "
                                 "(relative) within a radius of 1e-3"),
-                 ("checked", "yes" if o["certified"] else "NO")]
+                 ("checked", "yes" if o["checked"] else "NO")]
     else:
         gap = "-" if o["gap"] is None else f"{o['gap']:.3g}"
         none = o["lower_bound"] <= 0 < o["value"]       # nothing above the trivial bound was proven
         said = ": none above 0 proven, how near the value is to the least is not known" if none else ""
         rows += [("proven lower bound", f"{o['lower_bound']:.6g} {unit}, gap {gap} (relative){said}"),
-                 ("certified", ("the laws checked, no bound proven" if none else "yes") if o["certified"] else "NO")]
+                 ("certified", "yes" if o["certified"] else "the laws checked, no bound proven" if o["checked"]
+                  else "NO")]
     rows.append(("space", f"degree {o['degree']}, {o['spans']} spans per free phase, C{o['continuity']} joints "
                           f"(the caps on Bernstein coefficients of {o['pieces']} pieces a span)"))
     sm = o.get("smoothing")

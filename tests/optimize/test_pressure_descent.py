@@ -298,14 +298,26 @@ def test_the_bound_does_not_depend_on_the_unit(uncapped):
 
 
 def test_a_bound_of_0_is_said_beside_it(uncapped):
-    """The certificate's rows: a proven bound reads as one; a bound of 0 (gap 1) says that nothing above 0 was
-    proven, on the bound's row and the certificate's, instead of a plain "yes"."""
+    """The certificate's rows and its JSON: a proven bound reads as one, ``certified`` and ``checked`` true; a
+    bound of 0 (gap 1) says that nothing above 0 was proven, on the bound's row and the certificate's, instead of
+    a plain "yes", and the JSON's ``certified`` is false beside ``checked`` true (it says no more than the text);
+    the exit code's rule (:func:`cams.assess.assess`) still takes the checks, which pass."""
+    from cams.assess import assess
     from cams.present.text import optimization_rows
 
     o = uncapped.optimization.to_dict()
+    assert o["certified"] is True and o["checked"] is True
     rows = dict(optimization_rows(o))
     assert rows["certified"] == "yes"
     assert "none above 0" not in rows["proven lower bound"]
-    rows = dict(optimization_rows({**o, "lower_bound": 0.0, "gap": 1.0}))
+    zero = replace(uncapped.optimization, lower_bound=0.0, gap=1.0)
+    o = zero.to_dict()
+    assert o["certified"] is False and o["checked"] is True
+    rows = dict(optimization_rows(o))
     assert rows["proven lower bound"].startswith("0 (ratio to the limit), gap 1 (relative): none above 0 proven")
-    assert rows["certified"] != "yes" and "no bound proven" in rows["certified"]
+    assert rows["certified"] == "the laws checked, no bound proven"
+    held = assess(uncapped.design, replace(uncapped, optimization=zero), no_profile="not built here")
+    assert held.certified is True and not any("certified" in f for f in held.failures)
+    o = replace(zero, certified=False).to_dict()
+    assert o["certified"] is False and o["checked"] is False
+    assert dict(optimization_rows(o))["certified"] == "NO"
