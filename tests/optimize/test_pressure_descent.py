@@ -123,8 +123,9 @@ def test_the_assembly_is_the_programs_matrix():
 def test_a_scaled_assembly_is_the_program_in_the_scaled_variables():
     """``scales``: densified, the solver's matrix is each column multiplied by its variable's scale, then each row
     divided by its norm, all by hand; the point it returns is the same program's point (a linear program with a
-    unique corner, found by enumerating its vertices), in the caller's variables; an enforced variable's scale
-    other than 1 is refused."""
+    unique corner, found by enumerating its vertices), in the caller's variables, and its proven lower bound is
+    below that exact optimum by at most 1e-6 (the boxes up to 1e5 wide); an enforced variable's scale other than 1
+    is refused."""
     from itertools import combinations
 
     rng = np.random.default_rng(5)
@@ -165,6 +166,8 @@ def test_a_scaled_assembly_is_the_program_in_the_scaled_variables():
     sol = asm.solve()
     assert sol.value == pytest.approx(best, rel=1e-7, abs=1e-9)
     assert sol.v == pytest.approx(point, rel=1e-5, abs=1e-5)  # an interior point method's vertex
+    # the proven bound, its residual paid at boxes of up to 1e5: below the exact optimum, by little
+    assert best - 1e-6 <= lower_bound(prog, sol) <= best
 
 
 @pytest.mark.parametrize("form", ["conservative", "relaxed"])
