@@ -174,11 +174,15 @@ def test_a_scaled_assembly_is_the_program_in_the_scaled_variables():
 def test_the_rows_as_parameters_are_the_built_programs(base, form):
     """At two ratios and a weighting: the pressure rows with the ratio as a parameter are the program built at
     that ratio with its pressure rows divided by the weights (but in the slack's column); the solver's matrix
-    assembled once and given those rows is the one assembled from that program. (The rows' coefficients are
+    assembled once and given those rows is the one assembled from that program, also with the variables' scales
+    the product hands the solver (:func:`_scales`; the relaxed form's are the boxes'). (The rows' coefficients are
     the same function's, ``pressure_sides``; what differs, and is checked, is how the ratio and the weights
     enter.)"""
     rows = pressure_rows(replace(base, objective="feasibility"), form)
     asm = Assembly(rows.program, rows.pattern)
+    s = _scales(base, rows.program, form)  # as _Programs hands them over
+    scaled = Assembly(rows.program, rows.pattern, scales=s)
+    assert (form == "relaxed") == bool(np.any(s[rows.pattern[1]] != 1.0))  # the parameter rows' columns scaled
     rng = np.random.default_rng(0)
     w = 0.5 + rng.random(rows.m)
     for ratio in (0.6, 0.93):
@@ -192,6 +196,11 @@ def test_the_rows_as_parameters_are_the_built_programs(base, form):
         once = _dense(asm, asm.matrix(*rows.values(ratio, w))[0])
         again = Assembly(prog)
         assert once == pytest.approx(_dense(again, again.matrix()[0]), rel=1e-13, abs=1e-15)
+        once = scaled.matrix(*rows.values(ratio, w))
+        again = Assembly(prog, scales=s)
+        data, rhs, _ = again.matrix()
+        assert _dense(scaled, once[0]) == pytest.approx(_dense(again, data), rel=1e-13, abs=1e-15)
+        assert once[1] == pytest.approx(rhs, rel=1e-13, abs=1e-15)
 
 
 def test_the_decrease_still_possible_bounds_the_rest_of_the_descent(base):
