@@ -199,3 +199,22 @@ def test_oscillator_against_pade_exponential(zeta):
         assert np.allclose(many_speeds[k], want, rtol=1e-12, atol=1e-12 * np.max(np.abs(want)))
         want = ref(3.1, ts[k])
         assert np.allclose(many_times[k], want, rtol=1e-12, atol=1e-12 * np.max(np.abs(want)))
+
+
+@pytest.mark.parametrize("rho", [200.0, 300.0, 1e3, 1e4])
+def test_overdamped_oscillator_where_cosh_overflows(rho):
+    """Overdamped (zeta 1.6) over a turn, t = 2 pi, at speeds where cosh(w t) and sinh(w t) overflow alone (their
+    product with exp(mu t) is below 1e-191, or 0): finite, and scipy's Pade exponential's to 1e-11 (exactly 0
+    where both underflow)."""
+    from scipy.linalg import expm
+
+    from laws.response import _oscillator
+
+    zeta, t = 1.6, 2 * np.pi
+    with np.errstate(over="ignore"):
+        assert np.isinf(np.cosh(rho * np.sqrt(zeta**2 - 1) * t))
+    got = _oscillator(rho, zeta, t)
+    want = expm(np.array([[0.0, rho], [-rho, -2 * zeta * rho]]) * t)
+    assert np.all(np.isfinite(got))
+    assert np.allclose(got, want, rtol=1e-11, atol=1e-11 * np.max(np.abs(want)))
+    assert (rho < 1e3) == bool(np.all(want != 0))  # the slower two decay to a number, the faster two to 0
