@@ -529,7 +529,7 @@ class _Programs:
     def __init__(self, base: Request, form: str):
         self.form = form
         self.rows = pressure_rows(replace(base, objective="feasibility"), form)
-        self.assembly = Assembly(self.rows.program, self.rows.pattern, scales=_scales(base, self.rows.program, form))
+        self.assembly = Assembly(self.rows.program, self.rows.pattern, scales=_scales(base, self.rows.program.n, form))
 
     def solve(self, ratio: float, weights: np.ndarray | None = None) -> Solution:
         return self.assembly.solve(*self.rows.values(ratio, weights))
@@ -538,9 +538,10 @@ class _Programs:
         return self.rows.program_at(ratio, weights)
 
 
-def _scales(base: Request, prog: ConicProgram, form: str) -> np.ndarray:
-    """The variables' scales for the solver (:class:`optimize.motion.conic.Assembly`): a coefficient's box's
-    half-width, else 1 (the geometry's and the slack's boxes are enforced).
+def _scales(base: Request, n: int, form: str) -> np.ndarray:
+    """The ``n`` variables' scales for the solver (:class:`optimize.motion.conic.Assembly`) of ``base``'s
+    programs (:func:`optimize.motion.translating.build`): a coefficient's box's half-width (the space's
+    :meth:`~optimize.motion.space.Space.bounds`), else 1 (the geometry's and the slack's boxes are enforced).
 
     The relaxed programs give bounds: every coefficient's box pays the residual there. The conservative ones give
     the laws: only the coefficients of a free phase without caps are scaled (their boxes declared, far wider than
@@ -549,13 +550,13 @@ def _scales(base: Request, prog: ConicProgram, form: str) -> np.ndarray:
     conservative program's margin is 1e-7).
     """
     sp = base.space
-    out = np.ones(prog.n)
+    out = np.ones(n)
     take = np.ones(sp.size, bool)
     if form == "conservative":
         take = sp.declared(base.caps)
         for k in {k for k, _ in base.caps}:
             take[sp.offset(k):sp.offset(k) + sp.per_phase] = False
-    half = np.maximum(np.abs(prog.lo), np.abs(prog.hi))[:sp.size]
+    half = sp.bounds(base.caps)
     out[:sp.size] = np.where(take & (half > 0), half, 1.0)
     return out
 
@@ -566,7 +567,7 @@ def _proven_above(base: Request, ratio: float, relaxed: _Programs | None = None)
     ``relaxed``: the relaxed programs already built, if any."""
     if relaxed is None:
         rel = build(replace(base, objective="feasibility", ratio=ratio), "relaxed")
-        return lower_bound(rel, Assembly(rel, scales=_scales(base, rel, "relaxed")).solve()) > 0
+        return lower_bound(rel, Assembly(rel, scales=_scales(base, rel.n, "relaxed")).solve()) > 0
     return lower_bound(relaxed.program(ratio), relaxed.solve(ratio)) > 0
 
 

@@ -180,7 +180,7 @@ def test_the_rows_as_parameters_are_the_built_programs(base, form):
     enter.)"""
     rows = pressure_rows(replace(base, objective="feasibility"), form)
     asm = Assembly(rows.program, rows.pattern)
-    s = _scales(base, rows.program, form)  # as _Programs hands them over
+    s = _scales(base, rows.program.n, form)  # as _Programs hands them over
     scaled = Assembly(rows.program, rows.pattern, scales=s)
     assert (form == "relaxed") == bool(np.any(s[rows.pattern[1]] != 1.0))  # the parameter rows' columns scaled
     rng = np.random.default_rng(0)
@@ -326,7 +326,7 @@ def test_the_scaled_assembly_proves_what_the_unscaled_one_cannot(uncapped):
     assert req.caps == {}
     prog = build(req, "relaxed")
     plain = lower_bound(prog, Assembly(prog).solve())
-    sol = Assembly(prog, scales=_scales(req, prog, "relaxed")).solve()
+    sol = Assembly(prog, scales=_scales(req, prog.n, "relaxed")).solve()
     scaled = lower_bound(prog, sol)
     assert 0 < scaled <= sol.value <= scaled + 1e-6
     assert plain < 0 and plain < scaled - 0.1
