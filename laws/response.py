@@ -281,11 +281,12 @@ def _augmented(generator: np.ndarray, rho, *, ratio: float, zeta: float, offset:
     """
     n = generator.shape[0]
     m = np.zeros((*np.shape(rho), n + 3, n + 3))
-    top = m[..., :2, :].T  # the rows of x and v, transposed (a view): top[j, i] is m[..., i, j], speeds last
-    top[1, 0] = rho
-    top[0, 1], top[1, 1], top[2, 1], top[n + 2, 1] = -rho, -2 * zeta * rho, rho * ratio, -rho * offset
+    # per radian of cam: x' = rho v, v' = rho (ratio s - x - offset) - 2 zeta rho v + 2 zeta ds/dphi
+    m[..., 0, 1] = rho
+    m[..., 1, 0], m[..., 1, 1] = -rho, -2 * zeta * rho
+    m[..., 1, 2], m[..., 1, n + 2] = rho * ratio, -rho * offset
     if n >= 2:
-        top[3, 1] = 2 * zeta  # 2 zeta rho ds/dtau = 2 zeta ds/dphi
+        m[..., 1, 3] = 2 * zeta  # 2 zeta rho ds/dtau = 2 zeta ds/dphi
     m[..., 2 : n + 2, 2 : n + 2] = generator
     return m
 
