@@ -430,6 +430,9 @@ def pressure_rows(req: Request, form: str) -> PressureRows:
             c.append(bottom0)
             lim.append(np.full(top0.size, side.limit))
     Um, Wm = np.vstack(U), np.vstack(W)
+    m = Um.shape[0]  # the slack's column is -1 on the pressure rows alone: they must be the program's first m rows
+    if not (np.all(prog.G[:m, n - 1] == -1.0) and (m == prog.G.shape[0] or prog.G[m, n - 1] == 0.0)):
+        raise AssertionError("the pressure rows are not the feasibility program's first rows")
     nz = (Um != 0) | (Wm != 0)
     nz[:, n - 1] = True
     rr, kk = np.nonzero(nz)

@@ -203,6 +203,24 @@ def test_the_rows_as_parameters_are_the_built_programs(base, form):
         assert once[1] == pytest.approx(rhs, rel=1e-13, abs=1e-15)
 
 
+def test_pressure_rows_refuse_a_program_whose_first_rows_are_not_theirs(base, monkeypatch):
+    """The assembly overwrites the program's first m rows with the pressure rows: a program built with another
+    row in front of them (its last row moved first) is refused."""
+    import optimize.motion.translating as translating
+
+    built = translating._program
+
+    def moved(*args, **kwargs):
+        p = built(*args, **kwargs)
+        return replace(p, G=np.roll(p.G, 1, axis=0), h=np.roll(p.h, 1))
+
+    req = replace(base, objective="feasibility")
+    pressure_rows(req, "relaxed")
+    monkeypatch.setattr(translating, "_program", moved)
+    with pytest.raises(AssertionError, match="first rows"):
+        pressure_rows(req, "relaxed")
+
+
 def test_the_decrease_still_possible_bounds_the_rest_of_the_descent(base):
     """Dinkelbach's iteration on the conservative program run on to the end (the ratio's decrease below 1e-6
     relative): at every weighted step, the estimate of the decrease still possible is at least what the steps
