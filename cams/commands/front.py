@@ -172,8 +172,8 @@ def _is_number(text: str) -> bool:
 
 
 def _usable(table, field: str):
-    """Which rows of ``table`` a front may offer: no ``error``, no ``failures`` and, where the table has the
-    columns, ``verified`` and ``buildable`` True (an edited row that says it failed is not offered).
+    """Which rows of ``table`` a front may offer: :func:`cams.sweep.pareto.usable_mask` (the rows
+    :func:`cams.sweep.output.failed` passes).
 
     Raises
     ------
@@ -181,20 +181,9 @@ def _usable(table, field: str):
         Naming ``field``: the table has no ``error`` or no ``failures`` column (it cannot say which rows are
         usable).
     """
-    import numpy as np
-
     from cams.sweep.pareto import usable_mask
 
-    for need in ("error", "failures"):
-        if need not in table.columns:
-            raise InputError(field, f"{table.path} has no {need!r} column: a sweep's table has one, and the front "
-                             "keeps only the rows without error and failures")
-    usable = usable_mask(table.columns["error"], table.columns["failures"])
-    for flag in ("verified", "buildable"):
-        if flag in table.names:
-            j = table.names.index(flag)
-            usable &= np.array([r[j] == "True" for r in table.cells], dtype=bool)
-    return usable
+    return usable_mask(table.columns, field=field, name=str(table.path))
 
 
 def check_columns(args, table, words: set[str] | frozenset[str] = frozenset()) -> None:
