@@ -194,15 +194,25 @@ def assess(design, solution, *, checks=None, forces=None, no_profile: str | None
 
 
 def assess_cam(cam) -> Assessment:
-    """Assess a :class:`cams.cam.Cam`: its solution, the checks of its profile, its ``[dynamics]`` forces."""
+    """Assess a :class:`cams.cam.Cam`: its solution, the checks of its profile, its ``[dynamics]`` forces.
+
+    Raises
+    ------
+    ProfileSizeError
+        The profile cannot carry a tolerance given on the command line
+        (``--tolerance``): bad input. One the design file gives makes the cam
+        not buildable instead ("no profile").
+    """
     from cams.profile.roller import ProfileSizeError
 
     checks, no_profile = None, None
     if cam.face.no_profile(cam.design) is None:
         try:
             checks = cam.checks
-        except ProfileSizeError as e:  # a valid design whose profile the tolerance cannot carry: not buildable
-            no_profile = str(e)
+        except ProfileSizeError as e:
+            if e.field == "--tolerance":  # the tolerance asked for on the command line: bad input, not the cam's
+                raise
+            no_profile = str(e)  # a valid design whose profile its own tolerance cannot carry: not buildable
     has_dynamics = cam.design.dynamics is not None  # else no forces module to import
     has_contact = cam.design.contact is not None
     return assess(cam.design, cam.solution, checks=checks, forces=cam.forces if has_dynamics else None,

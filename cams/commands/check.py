@@ -25,13 +25,6 @@ def run(args) -> int:
         a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
         report = cam.computed("checks")  # None: a knife edge in a groove, or no profile at the tolerance
         _ = cam.forces  # the [dynamics] line's, computed before the bar is erased
-    if report is None and args.tolerance is not None and "no profile" in a.short:
-        # the tolerance asked for on the command line cannot be carried: bad input, as for cams profile, not a cam
-        # that is not buildable
-        from laws.errors import InputError
-
-        why = next(f for s, f in zip(a.short, a.failures, strict=True) if s == "no profile")
-        raise InputError("--tolerance", why.removeprefix("no profile: ").removeprefix("profile.tolerance: "))
     rep = {"name": design.name, "passed": False, "checks": []} if report is None else report.to_dict()
     rep.update(a.to_dict())
     passed = a.usable and report is not None and report.passed

@@ -130,30 +130,27 @@ def _print_front(table, front, saved: Path | None) -> None:
 WORDS = ("file", "verified", "buildable", "failures", "error")
 
 
-def _numbers(table, name: str, usable, field: str, table_field: str = "TABLE") -> str:
-    """The column named ``name`` (with or without its unit), checked to hold numbers for a front or a chart.
+def _numbers(table, name: str, usable, field: str, table_field: str) -> str:
+    """The column named ``name`` (with or without its unit), its cells checked to be numbers for a front or a
+    chart: :func:`check_columns` has passed it (a column of the table, not of words or flags).
 
     Raises
     ------
     InputError
-        Naming ``field``: not a column; a column of words or flags (file, a law, error, verified...); a column
-        empty in every usable row (a rocker's offset: nothing to compare). Naming ``table_field``: a cell that
-        holds a number that is not finite (``nan``, ``inf``: a sweep leaves a cell without a value empty, so
-        such a cell is an edit, neither empty nor comparable).
+        Naming ``table_field``: a cell that is not a number in a column of numbers (an edit), or a cell that holds
+        a number that is not finite (``nan``, ``inf``: a sweep leaves a cell without a value empty, so such a cell
+        is an edit, neither empty nor comparable). Naming ``field``: a column empty in every usable row (a
+        rocker's offset: nothing to compare).
     """
     import numpy as np
 
     col = table.column(name, field)
     cells = table.columns[col]
     j = table.names.index(col)
-    if col in ("error", "failures") or not isinstance(cells, np.ndarray) or cells.dtype.kind not in "fi":
-        raw = [r[j].strip() for r in table.cells]
-        numbers = [_is_number(c) for c in raw]
-        if col not in ("error", "failures") and any(numbers):  # a column of numbers with a word in it: an edit
-            w = next(k for k, c in enumerate(raw) if c and not numbers[k])
-            raise InputError(table_field, f"{table.path}: data row {w + 1}, column {table.headers[j]!r} holds "
-                             f"{table.cells[w][j]!r}, not a number as the column's other cells")
-        raise InputError(field, f"{col!r} is not a column of numbers (words or True/False)")
+    if not _numeric(cells):  # a column of numbers with a word in it (check_columns passed it): an edit
+        w = next(k for k, r in enumerate(table.cells) if r[j].strip() and not _is_number(r[j].strip()))
+        raise InputError(table_field, f"{table.path}: data row {w + 1}, column {table.headers[j]!r} holds "
+                         f"{table.cells[w][j]!r}, not a number as the column's other cells")
     for i in np.flatnonzero(~np.isfinite(cells)):
         if table.cells[i][j].strip():
             raise InputError(table_field, f"{table.path}: data row {i + 1}, column {table.headers[j]!r} holds "
@@ -161,6 +158,22 @@ def _numbers(table, name: str, usable, field: str, table_field: str = "TABLE") -
     if usable.any() and np.all(np.isnan(cells[usable])):
         raise InputError(field, f"{col!r} is empty in every usable row: nothing to compare")
     return col
+
+
+def _numeric(cells) -> bool:
+    """Whether a column read back (:class:`cams.sweep.outfile.SweepTable`) holds numbers only."""
+    import numpy as np
+
+    return isinstance(cells, np.ndarray) and cells.dtype.kind in "fi"
+
+
+def _words(table) -> frozenset[str]:
+    """The columns of ``table`` that hold words or flags: not numbers, and no cell a number (a column of numbers
+    with a word in it is an edit, which :func:`_numbers` names by its row)."""
+    return frozenset(
+        n for j, n in enumerate(table.names)
+        if not _numeric(table.columns[n]) and not any(_is_number(r[j].strip()) for r in table.cells)
+    )
 
 
 def _is_number(text: str) -> bool:
@@ -172,8 +185,8 @@ def _is_number(text: str) -> bool:
 
 
 def _usable(table, field: str):
-    """Which rows of ``table`` a front may offer: no ``error``, no ``failures`` and, where the table has the
-    columns, ``verified`` and ``buildable`` True (an edited row that says it failed is not offered).
+    """Which rows of ``table`` a front may offer: :func:`cams.sweep.pareto.usable_mask` (the rows
+    :func:`cams.sweep.output.failed` passes).
 
     Raises
     ------
@@ -181,20 +194,9 @@ def _usable(table, field: str):
         Naming ``field``: the table has no ``error`` or no ``failures`` column (it cannot say which rows are
         usable).
     """
-    import numpy as np
-
     from cams.sweep.pareto import usable_mask
 
-    for need in ("error", "failures"):
-        if need not in table.columns:
-            raise InputError(field, f"{table.path} has no {need!r} column: a sweep's table has one, and the front "
-                             "keeps only the rows without error and failures")
-    usable = usable_mask(table.columns["error"], table.columns["failures"])
-    for flag in ("verified", "buildable"):
-        if flag in table.names:
-            j = table.names.index(flag)
-            usable &= np.array([r[j] == "True" for r in table.cells], dtype=bool)
-    return usable
+    return usable_mask(table.columns, field=field, name=str(table.path))
 
 
 def check_columns(args, table, words: set[str] | frozenset[str] = frozenset()) -> None:
@@ -251,13 +253,11 @@ def front_and_chart(args, path: str | Path, *, field: str = "--out") -> int:
     n = len(table)
     usable = _usable(table, field)
     # every column named is resolved, the front computed and the chart built before anything is written
+    check_columns(args, table, words=_words(table))  # columns of the table, of numbers, each objective once
     objs: tuple[Objective, ...] = ()
     if args.pareto is not None:
         objs = tuple(Objective(_numbers(table, o.column, usable, "--pareto", field), o.maximise)
                      for o in parse_objectives(args.pareto))
-        for k, o in enumerate(objs):
-            if o.column in [p.column for p in objs[:k]]:  # R0 and R0_mm are one column
-                raise InputError("--pareto", f"{args.pareto!r}: column {o.column!r} is given twice")
     front = pareto_front(table.columns, objs, usable=usable) if objs else None
     fig = None
     if args.plot is not None:

@@ -206,20 +206,6 @@ def _curves_line(rc: dict) -> str:
     return f"curves ({rc['curve']}): " + ", ".join(parts) + f" (tolerance {rc['tolerance']:g} mm; {tail})"
 
 
-def _profile(cam, args):
-    """``cam.profile``; a tolerance the profile cannot carry names ``--tolerance`` when it was given there (the
-    design file's ``profile.tolerance`` otherwise)."""
-    from cams.profile.roller import ProfileSizeError
-    from laws.errors import InputError
-
-    try:
-        return cam.profile
-    except ProfileSizeError as e:
-        if args.tolerance is None:
-            raise
-        raise InputError("--tolerance", str(e).removeprefix(f"{e.field}: ")) from None
-
-
 def run(args) -> int:
     import sys
 
@@ -243,7 +229,7 @@ def run(args) -> int:
             cam = Cam(design, method=args.method, tolerance=chosen, solution=cam.solution)
             opts = cam.options
         a = cam.assessment  # one rule for every command (cams.assess): verified and buildable
-        prof = None if cam.face.no_profile(design) is not None else _profile(cam, args)
+        prof = None if cam.face.no_profile(design) is not None else cam.profile
     bore = None
     if prof is not None:
         bore = opts.bore_radius if opts.bore_radius is not None else default_bore_radius(prof)

@@ -76,9 +76,10 @@ MAX_POINTS = 2_000_000
 class ProfileSizeError(InputError):
     """The profile needs more than :data:`MAX_POINTS` points at its chord tolerance.
 
-    An input error where the tolerance was asked for (``cams profile
-    --tolerance``); where a command only assesses a sized cam it makes the cam
-    not buildable at that tolerance (:func:`cams.assess.assess_cam`).
+    Raised once, where the points are counted (:func:`build_profile`), naming
+    the field the tolerance was given in (``--tolerance`` on the command line:
+    bad input, which :func:`cams.assess.assess_cam` re-raises; the design
+    file's ``profile.tolerance``: the cam is not buildable at it).
     """
 
 
@@ -268,7 +269,7 @@ def _merge(a: np.ndarray, b: np.ndarray, kept: np.ndarray) -> np.ndarray:
     return out
 
 
-def _sample(design: CamDesign, centre, tol: float, r: float, groove: bool) -> list[np.ndarray]:
+def _sample(design: CamDesign, centre, tol: float, r: float, groove: bool, field: str) -> list[np.ndarray]:
     """Adaptive normalized positions ``u`` of every phase (0 and 1 included), one array per phase.
 
     Each chord is split at its middle while the sagitta of any exported curve,
@@ -314,8 +315,7 @@ def _sample(design: CamDesign, centre, tol: float, r: float, groove: bool) -> li
         if not np.any(split):
             break
         if len(u) + int(split.sum()) > MAX_POINTS:
-            raise ProfileSizeError("profile.tolerance",
-                                   f"{tol:g} needs more than {MAX_POINTS} points; choose a larger tolerance")
+            raise ProfileSizeError(field, f"{tol:g} needs more than {MAX_POINTS} points; choose a larger tolerance")
         # the mid-points of the split chords go between their ends (the k-th split one to idx + 1 + k);
         # the two halves of each split chord are the next round's fresh chords
         new = idx[split] + 1 + np.arange(int(split.sum()))
@@ -382,6 +382,9 @@ def build_profile(
     InputError
         ``tolerance <= 0`` or above 5 % of the cam's smallest radius; a groove
         with a knife edge (roller radius 0).
+    ProfileSizeError
+        Naming ``field``: the profile needs more than :data:`MAX_POINTS`
+        points at ``tolerance``.
     """
     f = design.follower
     r = float(f.roller_radius)
@@ -397,7 +400,7 @@ def build_profile(
     nph = len(prog.phases)
     blocks: list[dict] = []
     closing = None
-    for i, u in enumerate(_sample(design, centre, tol, r, groove)):
+    for i, u in enumerate(_sample(design, centre, tol, r, groove, field)):
         g = pitch_phase(design, centre, i, u[:-1])
         blocks.append(_rows(g, i, g.offset(-r), g.offset(r) if groove else None))
         if r > 0:

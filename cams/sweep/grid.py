@@ -52,11 +52,10 @@ def parse_value(text: str) -> int | float | bool | str:
 
 
 def _float(text: str) -> float | None:
-    """``text`` read as a float (``nan`` and ``inf`` too), else None."""
-    try:
-        return float(text)
-    except ValueError:
-        return None
+    """``text`` read as a float: a number as a listed value reads (:func:`parse_value`), or ``nan``, ``inf``,
+    ``infinity`` (signed, any case); else None."""
+    t = text.strip()
+    return float(t) if _NUMBER.fullmatch(t) or t.lower().lstrip("+-") in ("nan", "inf", "infinity") else None
 
 
 def parse_vary(spec: str) -> tuple[str, Any]:
@@ -76,15 +75,14 @@ def parse_vary(spec: str) -> tuple[str, Any]:
         raise InputError("--vary", f"{spec!r} names no key")
     key_parts(key)
     vals: Any
-    if rng.count(":") == 2 and all(_float(p) is not None for p in rng.split(":")):
-        ends_ = [_float(p) for p in rng.split(":")]
-        if not all(math.isfinite(e) for e in ends_ if e is not None):  # nan:120:3, 100:inf:3
+    parts = rng.split(":")
+    ends = [e for e in map(_float, parts) if e is not None]
+    if len(parts) > 1 and len(ends) == len(parts):  # a:b:n, every part a number (nan and inf too)
+        if len(ends) == 3 and not all(math.isfinite(e) for e in ends):  # nan:120:3, 100:inf:3, 1:2:1e400
             raise InputError("--vary", f"{spec!r}: a range a:b:n takes finite numbers")
-    if ":" in rng and all(_NUMBER.fullmatch(p.strip()) for p in rng.split(":")):
-        ends = rng.split(":")
-        if len(ends) != 3 or not float(ends[2]).is_integer() or float(ends[2]) < 1:
+        if len(ends) != 3 or not ends[2].is_integer() or ends[2] < 1:
             raise InputError("--vary", f"{spec!r}: a range is a:b:n with a count n >= 1")
-        a, b, n = float(ends[0]), float(ends[1]), int(float(ends[2]))
+        a, b, n = ends[0], ends[1], int(ends[2])
         if n == 1 and a != b:  # linspace would keep a alone: b silently dropped
             raise InputError("--vary", f"{spec!r}: a range of one value has a == b (or give the value alone)")
         if n > MAX_DESIGNS:

@@ -22,6 +22,8 @@ import shutil
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from cams.batch import SIZE_KEYS, VERDICT_KEYS
 from laws.errors import InputError
 
@@ -109,12 +111,25 @@ def csv_row(row: dict) -> list[str]:
     return [cell(k, v, eb) for k, v in row.items()]
 
 
+#: The flags a row may hold; a usable row holds each of them True (:func:`failed`).
+FLAGS = ("verified", "buildable")
+
+
 def failed(row: dict) -> bool:
     """A row that is not usable: no solution (an ``error``) or failures of the one rule (:mod:`cams.assess`).
 
     Either cell counts when it holds something: None, NaN (an empty Parquet cell) and blank text are empty, as
-    in a table read back."""
-    return _given(row.get("error")) or _given(row.get("failures"))
+    in a table read back. A row that holds ``verified`` or ``buildable`` fails unless that flag is True (``True``
+    in a table read back): a row edited to say it failed, its ``failures`` left empty, is not usable. A row the
+    sweep writes says the same in its ``failures`` (the one rule fails a row that is not verified or not
+    buildable with a reason)."""
+    return (_given(row.get("error")) or _given(row.get("failures"))
+            or any(k in row and not _true(row[k]) for k in FLAGS))
+
+
+def _true(v) -> bool:
+    """A flag that is set: True (numpy's too) or the text ``True`` (a column read back with other words in it)."""
+    return v is True or (isinstance(v, np.bool_) and bool(v)) or v == "True"
 
 
 def _given(v) -> bool:

@@ -6,9 +6,11 @@ and strictly better on at least one; the front is the set of designs no design d
 points dominate neither each other: all of them are on the front when one is (:attr:`Front.ties`
 says which).
 
-Rows that are not usable (an ``error``, or ``failures``: :class:`cams.assess.Assessment`'s rule, the
-sweep's ``failed`` count) and rows with an empty (or not finite) objective are left out of the
-comparison, and counted (:attr:`Front.unusable`, :attr:`Front.empty`).
+Rows that are not usable (an ``error``, ``failures``: :class:`cams.assess.Assessment`'s rule, or a
+``verified`` or ``buildable`` flag not True: :func:`cams.sweep.output.failed`, the sweep's ``failed``
+count) and rows with an empty (or not finite) objective are left out of the comparison, and counted
+(:attr:`Front.unusable`, :attr:`Front.empty`). A table without ``error`` and ``failures`` columns cannot
+say which rows are usable: refused unless the caller says (``usable``).
 
 Cost: sorting, then one pass for two objectives (O(n log n)); for three or more, one vectorised
 pass over the remaining points per point of the front (O(n h) for a front of h points), a second or
@@ -134,12 +136,31 @@ def non_dominated(points: np.ndarray, maximise: Sequence[bool] | None = None) ->
     return on[inverse]
 
 
-def usable_mask(error: Sequence, failures: Sequence) -> np.ndarray:
-    """True for the rows with neither an ``error`` nor ``failures`` (None, NaN and ``""`` are empty): the rows
-    :func:`cams.sweep.output.failed` passes."""
-    from cams.sweep.output import failed  # the package's __init__ imports this module: no cycle at import
-    return np.array([not failed({"error": e, "failures": f}) for e, f in zip(error, failures, strict=True)],
-                    dtype=bool)
+def usable_mask(columns: Mapping[str, Sequence], *, field: str = "--pareto", name: str = "the table") -> np.ndarray:
+    """True for the rows :func:`cams.sweep.output.failed` passes: neither an ``error`` nor ``failures`` (None, NaN
+    and ``""`` are empty) and, where the table has the columns, ``verified`` and ``buildable`` True.
+
+    Parameters
+    ----------
+    columns : mapping of str to sequence
+        The table's columns, all of one length (name -> values).
+    field, name : str
+        The field and the table named when a column is missing.
+
+    Raises
+    ------
+    InputError
+        Naming ``field``: no ``error`` or no ``failures`` column (the table cannot say which rows are usable).
+    """
+    from cams.sweep.output import FLAGS, failed  # the package's __init__ imports this module: no cycle at import
+
+    for need in ("error", "failures"):
+        if need not in columns:
+            raise InputError(field, f"{name} has no {need!r} column: a sweep's table has one, and the front keeps "
+                             "only the rows without error and failures")
+    keys = [k for k in ("error", "failures", *FLAGS) if k in columns]
+    rows = zip(*(columns[k] for k in keys), strict=True)
+    return np.array([not failed(dict(zip(keys, r, strict=True))) for r in rows], dtype=bool)
 
 
 @dataclass(frozen=True)
@@ -154,7 +175,7 @@ class Front:
         Indices (0-based positions in the table) of the rows on the front, sorted by the first objective
         (best first), then the next ones.
     unusable : int
-        Rows left out for an ``error`` or ``failures``.
+        Rows left out as not usable (:func:`usable_mask`).
     empty : int
         Usable rows left out for an empty (or not finite) objective.
     compared : int
@@ -183,13 +204,14 @@ def pareto_front(
     objectives : sequence of Objective
         Their ``column`` is a key of ``columns``.
     usable : array of bool, optional
-        Which rows may be compared; default: :func:`usable_mask` of the ``error`` and ``failures`` columns
-        when the table has them, else every row.
+        Which rows may be compared; default: :func:`usable_mask` of ``columns`` (a table without ``error`` and
+        ``failures`` columns is refused then: give ``usable`` to compare rows that are not a sweep's).
 
     Raises
     ------
     InputError
-        Naming ``--pareto``: an objective that is not a column, or whose values are not numbers.
+        Naming ``--pareto``: an objective that is not a column, or whose values are not numbers; a table
+        without ``error`` or ``failures`` column and no ``usable``.
     """
     names = list(columns)
     n = len(columns[names[0]]) if names else 0
@@ -202,12 +224,7 @@ def pareto_front(
             vals.append(np.array([np.nan if v is None or (isinstance(v, str) and not v) else v for v in cells], float))
         except (TypeError, ValueError):
             raise InputError("--pareto", f"{o.column!r} is not a column of numbers") from None
-    if usable is None:
-        if "error" in columns or "failures" in columns:
-            usable = usable_mask(columns.get("error", [None] * n), columns.get("failures", [None] * n))
-        else:
-            usable = np.ones(n, dtype=bool)
-    usable = np.asarray(usable, dtype=bool)
+    usable = usable_mask(columns) if usable is None else np.asarray(usable, dtype=bool)
     p = np.column_stack(vals) if vals else np.zeros((n, 0))
     finite = np.all(np.isfinite(p), axis=1)
     cand = np.flatnonzero(usable & finite)

@@ -17,10 +17,17 @@ ROCKER = EXAMPLES / "rocker_force.toml"
 
 
 @pytest.mark.parametrize("command", [["check"], ["profile", "--csv", "p.csv"]])
-def test_a_tolerance_too_fine_is_bad_input(tmp_path, command):
+def test_a_tolerance_too_fine_is_bad_input(tmp_path, monkeypatch, command):
+    """Refused where the points are counted, naming the field it came from; the failing profile is built once."""
+    import cams.profile.roller as roller
+
+    calls = []
+    sample = roller._sample
+    monkeypatch.setattr(roller, "_sample", lambda *a: calls.append(a[-1]) or sample(*a))
     name, *rest = command
     r = cams_cli(name, ROCKER, "--tolerance", "1e-300", *rest, cwd=tmp_path)
     assert (r.returncode, r.stdout) == (2, ""), (r.returncode, r.stdout, r.stderr)
+    assert calls == ["--tolerance"]
     assert (
         r.stderr == f"cams {name}: error: --tolerance: 1e-300 needs more than {MAX_POINTS} points; choose a "
         "larger tolerance\n"

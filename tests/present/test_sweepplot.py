@@ -25,7 +25,7 @@ def _by_label(ax, start):
 
 @pytest.fixture(scope="module")
 def chart():
-    usable = usable_mask(COLS["error"], COLS["failures"])
+    usable = usable_mask(COLS)
     front = pareto_front(COLS, parse_objectives("R0,max_pressure_angle_rise"), usable=usable)
     fig = sweep_chart(
         COLS, UNITS, "R0", "max_pressure_angle_rise", colour="L", usable=usable, front=front.rows, step=True

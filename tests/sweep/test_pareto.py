@@ -56,7 +56,7 @@ def test_minimising_is_the_default(t):
 def test_equal_points_are_both_on_the_front():
     p = np.array([[1.0, 2.0], [1.0, 2.0], [2.0, 1.0], [2.0, 3.0]])
     assert non_dominated(p).tolist() == [True, True, True, False]
-    f = pareto_front({"a": p[:, 0], "b": p[:, 1]}, parse_objectives("a,b"))
+    f = pareto_front({"a": p[:, 0], "b": p[:, 1]}, parse_objectives("a,b"), usable=np.ones(len(p), dtype=bool))
     assert f.rows.tolist() == [0, 1, 2]
     assert f.ties == ((0, 1),)
 
@@ -92,13 +92,42 @@ def test_unusable_and_empty_rows_are_left_out_and_counted():
     # rows 1 and 4 are unusable (failures, error), rows 2 and 5 have an empty R0: of rows 0 and 3, 3 wins on L, 0 on R0
     assert (f.unusable, f.empty, f.compared) == (2, 2, 2)
     assert f.rows.tolist() == [0, 3]
-    assert usable_mask(cols["error"], cols["failures"]).tolist() == [True, False, True, True, False, True]
+    assert usable_mask(cols).tolist() == [True, False, True, True, False, True]
 
 
 def test_maximise_one_objective():
-    cols = {"R0": [1.0, 2.0, 3.0], "L": [1.0, 3.0, 2.0]}
+    cols = {"R0": [1.0, 2.0, 3.0], "L": [1.0, 3.0, 2.0], "error": [None] * 3, "failures": [None] * 3}
     assert pareto_front(cols, parse_objectives("R0,max:L")).rows.tolist() == [0, 1]
     assert pareto_front(cols, parse_objectives("R0,L")).rows.tolist() == [0]
+
+
+def test_a_flag_not_true_makes_a_row_unusable():
+    """``verified``/``buildable`` False, empty or a word, ``failures`` left empty: not usable, as ``cams front``
+    has it (row 0 would dominate every other row). Without the flags, error and failures alone decide."""
+    cols = {
+        "R0": [1.0, 2.0, 3.0, 4.0, 5.0],
+        "L": [1.0, 2.0, 3.0, 4.0, 5.0],
+        "error": [None] * 5,
+        "failures": [None] * 5,
+        "verified": [False, True, None, "yes", True],
+        "buildable": np.array([True, True, True, True, False]),
+    }
+    assert usable_mask(cols).tolist() == [False, True, False, False, False]
+    f = pareto_front(cols, parse_objectives("R0,L"))
+    assert (f.rows.tolist(), f.unusable) == ([1], 4)
+    bare = {k: cols[k] for k in ("R0", "L", "error", "failures")}
+    assert pareto_front(bare, parse_objectives("R0,L")).rows.tolist() == [0]
+
+
+@pytest.mark.parametrize("drop", ["error", "failures"])
+def test_a_table_that_cannot_say_which_rows_are_usable_is_refused(drop):
+    """The API's default is the command's rule: without ``error`` or ``failures`` no row is known usable; a
+    caller with other rows says which are (``usable``)."""
+    cols = {"R0": [1.0, 2.0], "L": [2.0, 1.0], "error": [None, None], "failures": [None, None]}
+    del cols[drop]
+    with pytest.raises(InputError, match=f"^--pareto: the table has no '{drop}' column"):
+        pareto_front(cols, parse_objectives("R0,L"))
+    assert pareto_front(cols, parse_objectives("R0,L"), usable=np.ones(2, dtype=bool)).rows.tolist() == [0, 1]
 
 
 def test_objectives_parsed():
