@@ -116,6 +116,9 @@ def draw_flat_mechanism(ax, cam, profile, phi: float):
         (stem,) = ax.plot(p["stem"][:, 0], p["stem"][:, 1], color="#c53030", lw=FACE_WIDTH_PT,
                           solid_capstyle="round", label=body, transform=beside(p["normal"]))
         ax.plot(0, 0, "ko", ms=5)
+    # the face and stem are drawn a few points beside their data (``beside``), and matplotlib's autoscaling passes
+    # over a line whose transform is not the data's: their data are taken into the view's limits here
+    ax.update_datalim(np.concatenate([p["face"], p["stem"]]))
     ax.plot(*centre, "k+", ms=10)
     ax.set_aspect("equal")
     ax.grid(True, lw=0.3)

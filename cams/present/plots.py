@@ -668,24 +668,6 @@ def _draw(ax, cam, profile, phi: float) -> Callable[[float], list]:
     return presenter(cam).draw_mechanism(ax, cam, profile, phi)
 
 
-def _hold_shifted_lines(ax) -> None:
-    """Widen ``ax``'s view to hold the lines drawn a fixed few points beside their data (a flat face and its stem
-    or arm, whose stroke is shifted off the cam's outline): matplotlib's autoscaling passes over a line whose
-    transform is not the data's, and the follower would run out of the picture. A line in axes units along one
-    direction (a follower's axis drawn across the view) is not shifted by a constant and is left out."""
-    near = 5.0 / 72.0 * ax.figure.dpi  # five points, in pixels
-    for line in ax.get_lines():
-        xy = np.column_stack([line.get_xdata(), line.get_ydata()]).astype(float)
-        xy = xy[np.all(np.isfinite(xy), axis=1)]
-        transform = line.get_transform()
-        if len(xy) == 0 or transform == ax.transData:
-            continue
-        shift = transform.transform(xy) - ax.transData.transform(xy)
-        if np.ptp(shift, axis=0).max() < 1e-6 and np.abs(shift).max() <= near:
-            ax.update_datalim(xy)
-    ax.autoscale_view()
-
-
 #: The profile picture's axes' width (inches) on an A4-wide figure, and the height of its title, axis labels and
 #: legend below (inches), as the examples' fitted pictures have them: the height the fitting starts from
 #: (:func:`_fit_height`'s ``guess``), so that it ends in one or two rounds instead of four.
@@ -711,7 +693,6 @@ def plot_profile(cam, *, phi: float | None = None):
     fig = _figure(w=A4_WIDTH_IN, h=6.0)
     ax = fig.add_subplot()
     _draw(ax, cam, profile, phi)
-    _hold_shifted_lines(ax)
     _title(ax, f"{d.name}: cam at φ = {np.degrees(phi):.1f}°")
     _legend_below(fig, ax)
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()  # the drawing's extent, to scale (equal aspect)
