@@ -35,34 +35,12 @@ NAMED_CHILDREN = {
 
 #: A design whose program has velocity jumps (a linear rise) with [dynamics]: its forces carry `impacts` entries
 #: and `between_impacts`, which no example has (the examples' laws are smooth).
-IMPACTS = """name = "impacts"
-[follower]
-kind = "translating"
-stroke = 30.0
-roller_radius = 8.0
-[cam]
-rotation = "ccw"
-rpm = 300
-[[motion]]
-phase = "rise"
-law = "linear"
-angle = 150
-[[motion]]
-phase = "dwell"
-angle = 30
-[[motion]]
-phase = "return"
-law = "cycloidal"
-angle = 120
-[[motion]]
-phase = "dwell"
-[limits]
-pressure_angle = 30
-closure = "force"
-[dynamics]
-mass = 0.5
-load = 5.0
-"""
+IMPACTS = (
+    (ROOT / "examples" / "translating_force.toml").read_text(encoding="utf-8")
+    .replace('law = "poly4567"', 'law = "linear"')
+    .replace('rotation = "ccw"', 'rotation = "ccw"\nrpm = 300')
+    + "[dynamics]\nmass = 0.5\nload = 5.0\n"
+)
 
 
 def _fenceless(text: str) -> str:
