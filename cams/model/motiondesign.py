@@ -234,7 +234,8 @@ class MotionCertificate:
 
     def to_dict(self) -> dict:
         """The JSON report's ``optimize`` object (units as in :class:`MotionCertificate`): ``checked`` is
-        :attr:`certified`, ``certified`` that and :attr:`bound_proven` (no more than the text says)."""
+        :attr:`certified`, ``certified`` that and :attr:`bound_proven` (no more than the text says), and
+        ``bound_proven`` the rule the text and the picture word the bound by."""
         return {
             "objective": self.objective,
             "value": self.value,
@@ -242,6 +243,7 @@ class MotionCertificate:
             "gap": self.gap,
             "certified": self.certified and self.bound_proven,
             "checked": self.certified,
+            "bound_proven": self.bound_proven,
             "degree": self.degree,
             "spans": self.spans,
             "continuity": self.continuity,

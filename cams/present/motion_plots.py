@@ -154,7 +154,7 @@ def plot_motion_design(cam):
     else:
         gap = "-" if info["gap"] is None else f"{info['gap']:.3g} (relative)"  # as cams solve prints it
         how = f"proven lower bound {info['lower_bound']:.6g}{unit}, gap {gap}"
-        if info["lower_bound"] <= 0 < info["value"]:
+        if not info["bound_proven"]:
             how += " (none above 0 proven)"
     sm = info.get("smoothing")
     smooth = ""

@@ -159,7 +159,7 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
                  ("checked", "yes" if o["checked"] else "NO")]
     else:
         gap = "-" if o["gap"] is None else f"{o['gap']:.3g}"
-        none = o["lower_bound"] <= 0 < o["value"]       # nothing above the trivial bound was proven
+        none = not o["bound_proven"]       # nothing above the trivial bound was proven
         said = ": none above 0 proven, how near the value is to the least is not known" if none else ""
         rows += [("proven lower bound", f"{o['lower_bound']:.6g} {unit}, gap {gap} (relative){said}"),
                  ("certified", "yes" if o["certified"] else "the laws checked, no bound proven" if o["checked"]

@@ -359,13 +359,13 @@ def test_a_bound_of_0_is_said_beside_it(uncapped):
     from cams.present.text import optimization_rows
 
     o = uncapped.optimization.to_dict()
-    assert o["certified"] is True and o["checked"] is True
+    assert o["certified"] is True and o["checked"] is True and o["bound_proven"] is True
     rows = dict(optimization_rows(o))
     assert rows["certified"] == "yes"
     assert "none above 0" not in rows["proven lower bound"]
     zero = replace(uncapped.optimization, lower_bound=0.0, gap=1.0)
     o = zero.to_dict()
-    assert o["certified"] is False and o["checked"] is True
+    assert o["certified"] is False and o["checked"] is True and o["bound_proven"] is False
     rows = dict(optimization_rows(o))
     assert rows["proven lower bound"].startswith("0 (ratio to the limit), gap 1 (relative): none above 0 proven")
     assert rows["certified"] == "the laws checked, no bound proven"
