@@ -36,6 +36,8 @@ MAX_DESIGNS = 100_000
 MODES = ("grid", "zip")
 
 _NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
+#: nan, inf and infinity, one sign at most, any case (what ``float`` reads of them)
+_NOT_FINITE = re.compile(r"[+-]?(nan|inf|infinity)", re.IGNORECASE)
 
 
 def parse_value(text: str) -> int | float | bool | str:
@@ -55,7 +57,7 @@ def _float(text: str) -> float | None:
     """``text`` read as a float: a number as a listed value reads (:func:`parse_value`), or ``nan``, ``inf``,
     ``infinity`` (signed, any case); else None."""
     t = text.strip()
-    return float(t) if _NUMBER.fullmatch(t) or t.lower().lstrip("+-") in ("nan", "inf", "infinity") else None
+    return float(t) if _NUMBER.fullmatch(t) or _NOT_FINITE.fullmatch(t) else None
 
 
 def parse_vary(spec: str) -> tuple[str, Any]:

@@ -28,4 +28,7 @@ def test_a_range_and_what_is_not_one():
     assert np.array_equal(parse_vary("k=.5:-.5:2")[1], [0.5, -0.5])
     # a part that is no number as a listed value reads ("1_0", a word): one word, refused later by the schema
     assert parse_vary("k=1_0:nan:3") == ("k", ("1_0:nan:3",))
+    # two signs are no number float reads: one word too, never float's ValueError
+    assert parse_vary("k=--inf:1:3") == ("k", ("--inf:1:3",))
+    assert parse_vary("k=+-nan:1:3") == ("k", ("+-nan:1:3",))
     assert parse_vary("k=a:b:c") == ("k", ("a:b:c",))
