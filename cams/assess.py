@@ -203,6 +203,7 @@ def assess_cam(cam) -> Assessment:
         (``--tolerance``): bad input. One the design file gives makes the cam
         not buildable instead ("no profile").
     """
+    from cams.model.options import OVERRIDE_FIELD
     from cams.profile.roller import ProfileSizeError
 
     checks, no_profile = None, None
@@ -210,7 +211,7 @@ def assess_cam(cam) -> Assessment:
         try:
             checks = cam.checks
         except ProfileSizeError as e:
-            if e.field == "--tolerance":  # the tolerance asked for on the command line: bad input, not the cam's
+            if e.field == OVERRIDE_FIELD:  # the tolerance asked for on the command line: bad input, not the cam's
                 raise
             no_profile = str(e)  # a valid design whose profile its own tolerance cannot carry: not buildable
     has_dynamics = cam.design.dynamics is not None  # else no forces module to import

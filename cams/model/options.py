@@ -46,6 +46,11 @@ def check_tolerance(tol: object, field: str) -> float:
     return float(tol)
 
 
+#: The field a tolerance given on the command line is reported under (:func:`resolve_tolerance`); a profile that
+#: cannot carry it is bad input, not the cam's fault (:func:`cams.assess.assess_cam`).
+OVERRIDE_FIELD = "--tolerance"
+
+
 def resolve_tolerance(given: float | None, override: float | None = None) -> tuple[float | None, str]:
     """The chord tolerance to use and the field a bad one is reported under.
 
@@ -56,7 +61,7 @@ def resolve_tolerance(given: float | None, override: float | None = None) -> tup
     raises :class:`InputError` naming that field unless the tolerance is a
     number > 0.
     """
-    field = "profile.tolerance" if override is None else "--tolerance"
+    field = "profile.tolerance" if override is None else OVERRIDE_FIELD
     tol = given if override is None else override
     return (None if tol is None else check_tolerance(tol, field)), field
 

@@ -350,7 +350,7 @@ def build_profile(
     *,
     tolerance: float | None = None,
     groove: bool | None = None,
-    field: str = "tolerance",
+    field: str = "profile.tolerance",
 ) -> Profile:
     """Sample the pitch curve and working profile(s) of a sized cam.
 
