@@ -23,6 +23,7 @@ import numpy as np
 from cams.kinematics.inversion import invert_phase, pressure_angle
 from cams.present.faces import presenter_of_face
 from cams.present.plots import draw_limits, legend_once
+from cams.present.text import bound_words, objective_unit
 from laws.units import TWO_PI
 
 __all__ = ["plot_motion_design"]
@@ -148,12 +149,11 @@ def plot_motion_design(cam):
     if ref is not None:
         sizes = (face.reference_size(ref), face.size_of(sol))
         _cams_panel(fig.add_subplot(grid[3 if panel else 2, :]), given, designed, sizes)
-    unit = {"R0": " mm", "L": " mm", "pressure_angle": " of the limit"}.get(info["objective"], " (normalized)")
+    unit = " " + objective_unit(info)
     if info["lower_bound"] is None:
         how = f"a local optimum ({info['iterations']} iterations)"
     else:
-        gap = "-" if info["gap"] is None else f"{info['gap']:.3g} (relative)"  # as cams solve prints it
-        how = f"proven lower bound {info['lower_bound']:.6g}{unit}, gap {gap}"
+        how = f"proven lower bound {bound_words(info)}"  # as cams solve prints it
         if not info["bound_proven"]:
             how += " (none above 0 proven)"
     sm = info.get("smoothing")

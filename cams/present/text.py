@@ -148,9 +148,21 @@ def _peak(v: float | None) -> str:
     return "inf" if v is None else f"{v:.4f}"
 
 
+def objective_unit(o: dict) -> str:
+    """The unit of the motion design's objective ``o["objective"]`` (``o``: the JSON's ``optimize``)."""
+    return _OBJECTIVE_UNITS.get(o["objective"], "")
+
+
+def bound_words(o: dict) -> str:
+    """The proven lower bound and the relative gap, its unit beside, as ``cams solve`` prints them (``o``: the
+    JSON's ``optimize``, with a ``lower_bound``)."""
+    gap = "-" if o["gap"] is None else f"{o['gap']:.3g}"
+    return f"{o['lower_bound']:.6g} {objective_unit(o)}, gap {gap} (relative)"
+
+
 def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]:
     """The ``optimize`` part of a report (:mod:`cams.motion_design`) as ``(label, value)`` rows, units beside."""
-    unit = _OBJECTIVE_UNITS.get(o["objective"], "")
+    unit = objective_unit(o)
     rows = [("minimized", f"{o['objective']}: {o['value']:.6g} {unit}")]
     if o["lower_bound"] is None:
         rows += [("optimality", f"a local optimum (sequential convex programming, {o['iterations']} iterations); "
@@ -158,10 +170,9 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
                                 "(relative) within a radius of 1e-3"),
                  ("checked", "yes" if o["checked"] else "NO")]
     else:
-        gap = "-" if o["gap"] is None else f"{o['gap']:.3g}"
         none = not o["bound_proven"]       # nothing above the trivial bound was proven
         said = ": none above 0 proven, how near the value is to the least is not known" if none else ""
-        rows += [("proven lower bound", f"{o['lower_bound']:.6g} {unit}, gap {gap} (relative){said}"),
+        rows += [("proven lower bound", bound_words(o) + said),
                  ("certified", "yes" if o["certified"] else "the laws checked, no bound proven" if o["checked"]
                   else "NO")]
     rows.append(("space", f"degree {o['degree']}, {o['spans']} spans per free phase, C{o['continuity']} joints "
@@ -186,7 +197,7 @@ def optimization_rows(o: dict, R0: float | None = None) -> list[tuple[str, str]]
 
 def _smoothing_text(sm: dict, o: dict) -> str:
     """What the second stage's slack bought (:mod:`cams.motion_design`'s ``smoothing``), in words."""
-    unit = _OBJECTIVE_UNITS.get(o["objective"], "")
+    unit = objective_unit(o)
     if unit == "mm":
         f = length_format(max(abs(sm["value_before"]), abs(sm["value_after"])))
         value = f"{sm['value_before']:{f}} -> {sm['value_after']:{f}} mm"
