@@ -22,7 +22,7 @@ import numpy as np
 
 from cams.kinematics.inversion import invert_phase, pressure_angle
 from cams.present.faces import presenter_of_face
-from cams.present.plots import draw_limits, legend_once
+from cams.present.plots import draw_limits, legend_above
 from cams.present.text import bound_words, objective_unit
 from laws.units import TWO_PI
 
@@ -88,7 +88,7 @@ def _pressure_panel(ax, given, designed, centres, n: int = 721) -> None:
     ax.grid(True, lw=0.3)
     ax.tick_params(labelsize=7)
     # above the pane: the curves' peaks can lie anywhere along the turn, and a legend inside would cover them
-    legend_once(ax, fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=4, frameon=False)
+    legend_above(ax, ncol=4)
 
 
 def _cams_panel(ax, given, designed, sizes) -> None:

@@ -32,7 +32,8 @@ __all__ = ["plot_zone", "plot_motion", "plot_pressure", "plot_flat_pressure", "p
            "plot_forces", "picture", "PICTURES", "NEEDS", "missing", "no_forces", "plot_contact", "no_contact",
            "no_vibration", "plot_vibration", "lay_out",
            "animate_profile", "save", "prepare", "rendered", "write_rendered",
-           "FORMATS", "DPI", "EFFORT", "fix_layout", "mark_failing", "draw_limits", "legend_once", "A4_WIDTH_IN"]
+           "FORMATS", "DPI", "EFFORT", "fix_layout", "mark_failing", "draw_limits", "legend_once", "legend_above",
+           "A4_WIDTH_IN"]
 
 #: Figure width that reads well on an A4 page (inches).
 A4_WIDTH_IN = 7.5
@@ -97,7 +98,7 @@ def legend_once(ax, **kw):
     return ax.legend(*_unique_handles(ax), **kw)
 
 
-def _legend_above(ax, *also, ncol: int = 3):
+def legend_above(ax, *also, ncol: int = 3):
     """The legend of ``ax`` (and of the axes ``also`` drawn over it, a twin's other scale) above it, each label
     once, in one frameless band: it covers none of the curves, wherever they run (the figure's title then goes
     over the whole figure, :func:`_suptitle`; constrained layout makes room between them)."""
@@ -596,7 +597,7 @@ def plot_forces(cam):
         _mark_phases(ax, d.program.starts)
     for ax in axes[1:]:
         legend_once(ax, fontsize=7, loc="best")
-    _legend_above(ax_n)  # a translating follower's pane holds three curves: no room inside that covers none
+    legend_above(ax_n)  # a translating follower's pane holds three curves: no room inside that covers none
     _suptitle(fig, f"{d.name}: forces at the cam at {cf.rpm:.4g} rpm")
     return fig
 
@@ -898,7 +899,7 @@ def plot_vibration(cam):
         legend_once(ax, fontsize=7, loc="best")
     # the displacement pane's two scales under one legend, above the pane: "best" weighs one scale's curves
     # only, and a legend inside would cover the other's (a dwell's flat line runs the whole width)
-    _legend_above(ax_s, ax_e)
+    legend_above(ax_s, ax_e)
     _suptitle(fig, f"{d.name}: follower train at {v.rpm:.4g} rpm, natural frequency {v.natural_frequency:.4g} Hz")
     return fig
 
