@@ -8,7 +8,7 @@ matplotlib is imported inside the functions (figures built with ``matplotlib.fig
 pyplot state).
 
 Artists, by label (what the tests read back): ``"designs"`` (the usable rows, a scatter coloured by
-the third column when one is given), ``"unusable"`` (grey x markers: rows with an error or failures,
+the third column when one is given), ``"unusable"`` (grey x markers: rows with an error, failures or a check not passed,
 at their values when they have them), ``"Pareto front"`` (the front's points, highlighted) and
 ``"front (step)"`` (the staircase through them, for two minimised or maximised objectives).
 """
@@ -121,7 +121,7 @@ def sweep_chart(
             s=26,
             linewidths=1.0,
             zorder=1,
-            label=f"unusable ({n_bad}: error or failures{where})",
+            label=f"unusable ({n_bad}: an error, failures or a check not passed{where})",
         )
     if front is not None and len(front):
         f = np.asarray(front, dtype=int)
